@@ -1,0 +1,17 @@
+#pragma once
+/// @file
+/// Each subcommand registers its options on the app and returns the function that runs it.
+
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace hotlap::app {
+
+/// Runs a parsed subcommand; returns the process exit code.
+using CommandRunner = std::function<int()>;
+
+/// `hotlap replay`: thermal and wear models over a telemetry log.
+CommandRunner RegisterReplayCommand(CLI::App& app);
+
+}  // namespace hotlap::app

@@ -1,0 +1,47 @@
+// hotlap: race-car tyre and brake thermal management. main() parses and dispatches.
+
+#include <cstdio>
+#include <exception>
+#include <map>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.h"
+#include "hotlap/common/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"hotlap " HOTLAP_VERSION
+               ": tyre and brake thermal models, fitting and lap simulation for race cars"};
+  app.set_version_flag("--version", std::string(HOTLAP_VERSION));
+  app.require_subcommand(1);
+  std::map<CLI::App*, hotlap::app::CommandRunner> runners;
+  const auto add = [&](hotlap::app::CommandRunner (*reg)(CLI::App&)) {
+    // Each Register* adds exactly one subcommand; remember which runner belongs to it.
+    const size_t before = app.get_subcommands({}).size();
+    hotlap::app::CommandRunner run = reg(app);
+    runners[app.get_subcommands({}).at(before)] = std::move(run);
+  };
+  add(&hotlap::app::RegisterReplayCommand);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    for (auto& [sub, run] : runners) {
+      if (sub->parsed()) return run();
+    }
+    return 1;
+  } catch (const hotlap::InputError& e) {
+    std::fprintf(stderr, "hotlap: error: %s\n", e.what());
+    return 2;
+  } catch (const hotlap::NumericalError& e) {
+    std::fprintf(stderr, "hotlap: numerical failure: %s\n", e.what());
+    return 3;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "hotlap: internal error: %s\n", e.what());
+    return 4;
+  }
+}

@@ -1,0 +1,118 @@
+#pragma once
+/// @file
+/// The two-mass brake disc / calliper thermal model of the NASCAR paper (000:24-34; spec
+/// section 5), one instance per corner.
+///
+/// The convective conductances hA(u, T) = z' P z, z = [1, u/(100 m/s), (T - 273.15 K)/(1000 K)],
+/// are stored and fitted through the lower-triangular Cholesky factor L of P = L L', so they are
+/// sums of squares and never negative for any speed or temperature (the second law holds without
+/// inequality constraints). The braking power uses the exact max(-Fx, 0) of (000:26).
+
+#include <tuple>
+
+#include "hotlap/common/field_cast.h"
+#include "hotlap/common/scalar.h"
+
+namespace hotlap::brake {
+
+/// Lower-triangular Cholesky factor L of the 3x3 matrix P of hA = z' P z, entries in sqrt(W/K).
+template <Scalar T>
+struct ConvectionPolynomial {
+  T l11{}, l21{}, l22{}, l31{}, l32{}, l33{};
+
+  /// hA(u, T) in W/K: the squared norm of L' z (spec section 5).
+  T Conductance(const T& speed, const T& temp) const;
+
+  template <class Self>
+  static auto FieldsOf(Self& s) {
+    return std::tie(s.l11, s.l21, s.l22, s.l31, s.l32, s.l33);
+  }
+};
+
+/// Parameters of one corner's brake, SI.
+template <Scalar T>
+struct BrakeThermalParams {
+  T heat_partition{};          ///< gamma: share of braking power into the disc (000:24)
+  T mass_participation{};      ///< xi: share of the disc mass at the surface temperature (000:24)
+  T disc_mass{};               ///< m_d, kg
+  T disc_heat_capacity{};      ///< c_d, J/(kg K)
+  T calliper_mass{};           ///< m_k, kg (calliper and pads)
+  T calliper_heat_capacity{};  ///< c_k, J/(kg K)
+  T pad_conductivity{};        ///< k_p, W/(m K) (000:27)
+  T pad_area{};                ///< A_pad, m^2 (000:27)
+  T pad_thickness{};           ///< l_pad, m (000:27)
+  T disc_emissivity{};         ///< eps_d (000:28)
+  T calliper_emissivity{};     ///< eps_k (000:29)
+  T disc_radiating_area{};     ///< A_disc, m^2 (000:28)
+  T calliper_radiating_area{}; ///< A_cal, m^2 (000:29)
+  ConvectionPolynomial<T> disc_convection;      ///< hA_d(u, T_d) (000:30, 32)
+  ConvectionPolynomial<T> calliper_convection;  ///< hA_k(u, T_k) (000:31, 33)
+
+  template <class Self>
+  static auto FieldsOf(Self& s) {
+    return std::tuple_cat(
+        std::tie(s.heat_partition, s.mass_participation, s.disc_mass, s.disc_heat_capacity,
+                 s.calliper_mass, s.calliper_heat_capacity, s.pad_conductivity, s.pad_area,
+                 s.pad_thickness, s.disc_emissivity, s.calliper_emissivity, s.disc_radiating_area,
+                 s.calliper_radiating_area),
+        decltype(s.disc_convection)::FieldsOf(s.disc_convection),
+        decltype(s.calliper_convection)::FieldsOf(s.calliper_convection));
+  }
+  template <Scalar U>
+  BrakeThermalParams<U> Cast() const {
+    BrakeThermalParams<U> out;
+    CastFields(*this, out);
+    return out;
+  }
+};
+
+/// What one corner's brake sees: speed m/s (|u| used), tyre Fx N (negative braking),
+/// cooling-air temperature T_0 in K.
+template <Scalar T>
+struct BrakeInput {
+  T speed{};
+  T fx{};
+  T cooling_air_temp{};
+};
+
+/// Disc surface and calliper temperatures, K; the same struct holds their derivatives (K/s).
+template <Scalar T>
+struct BrakeState {
+  T disc_temp{};
+  T calliper_temp{};
+
+  friend BrakeState operator+(const BrakeState& a, const BrakeState& b) {
+    return {a.disc_temp + b.disc_temp, a.calliper_temp + b.calliper_temp};
+  }
+  friend BrakeState operator*(double k, const BrakeState& a) {
+    return {k * a.disc_temp, k * a.calliper_temp};
+  }
+};
+
+/// The heat flows of (000:24-25), W, signed as they enter them:
+/// xi m_d c_d dT_d/dt = gamma q1 - q2 - q3 - q4,  m_k c_k dT_k/dt = (1-gamma) q1 + q2 - q5 - q6.
+template <Scalar T>
+struct BrakeHeatFlows {
+  T q1{};  ///< braking power u max(-Fx, 0) (000:26)
+  T q2{};  ///< conduction disc -> pads/calliper (000:27)
+  T q3{};  ///< disc radiation (000:28)
+  T q4{};  ///< disc convection (000:30)
+  T q5{};  ///< calliper radiation (000:29)
+  T q6{};  ///< calliper convection (000:31)
+};
+
+/// Braking power at one corner, W: |u| max(-Fx, 0) (000:26), exact (non-smooth) form.
+template <Scalar T>
+T CalcBrakePower(const T& speed, const T& fx);
+
+template <Scalar T>
+BrakeHeatFlows<T> CalcBrakeHeatFlows(const BrakeThermalParams<T>& params,
+                                     const BrakeState<T>& state, const BrakeInput<T>& input);
+
+/// Time derivative of the brake state (000:24-25). If `flows` is given, the heat flows used are
+/// written there.
+template <Scalar T>
+BrakeState<T> CalcBrakeDerivatives(const BrakeThermalParams<T>& params, const BrakeState<T>& state,
+                                   const BrakeInput<T>& input, BrakeHeatFlows<T>* flows = nullptr);
+
+}  // namespace hotlap::brake

@@ -1,0 +1,55 @@
+#include "hotlap/common/data_path.h"
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "hotlap/common/error.h"
+#include "hotlap/common/string_match.h"
+
+namespace hotlap {
+
+namespace fs = std::filesystem;
+
+namespace {
+fs::path ExecutableDir() {
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? fs::path() : exe.parent_path();
+}
+}  // namespace
+
+fs::path DataDir() {
+  if (const char* env = std::getenv("HOTLAP_DATA_DIR"); env != nullptr && *env != '\0') {
+    return env;
+  }
+  std::error_code ec;
+  const fs::path installed = ExecutableDir() / ".." / "share" / "hotlap" / "data";
+  if (fs::is_directory(installed, ec)) return installed;
+  return fs::path(HOTLAP_SOURCE_DIR) / "data";
+}
+
+fs::path ResolveCarFile(std::string_view name_or_path) {
+  std::error_code ec;
+  const fs::path given(name_or_path);
+  if (fs::is_regular_file(given, ec)) return given;
+  if (fs::is_directory(given, ec) && fs::is_regular_file(given / "car.yaml", ec)) {
+    return given / "car.yaml";
+  }
+  const fs::path cars = DataDir() / "cars";
+  const fs::path builtin = cars / given / "car.yaml";
+  if (given.is_relative() && fs::is_regular_file(builtin, ec)) return builtin;
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(cars, ec)) {
+    if (fs::is_regular_file(entry.path() / "car.yaml", ec)) {
+      names.push_back(entry.path().filename().string());
+    }
+  }
+  throw InputError("no car '" + std::string(name_or_path) +
+                   "': not a car.yaml file, and not a built-in car (built-in: " +
+                   QuotedList(names) + ")");
+}
+
+}  // namespace hotlap

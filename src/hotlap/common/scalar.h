@@ -1,0 +1,53 @@
+#pragma once
+/// @file
+/// The scalar types every model is templated on, and the few helpers that let one piece of model
+/// code run on all of them.
+///
+/// How to use: write a model as `template <Scalar T> ... Calc...(const Params<T>&, ...)`, call the
+/// math functions unqualified after `using std::exp;` etc. so that argument-dependent lookup picks
+/// ceres' overloads for Jets, and use ValueOf(x) only to choose a branch or a table interval (never
+/// inside the arithmetic, or derivatives are lost). Definitions live in the .cc file and are
+/// instantiated for every type in HOTLAP_FOR_EACH_SCALAR.
+///
+/// Pitfall: a branch chosen on ValueOf(x) is exact for forward-mode AD at every point except on
+/// the switching surface itself, where the one-sided derivative is returned.
+
+#include <concepts>
+#include <type_traits>
+
+#include <ceres/jet.h>
+
+namespace hotlap {
+
+template <typename T>
+struct IsJet : std::false_type {};
+template <typename T, int N>
+struct IsJet<ceres::Jet<T, N>> : std::true_type {};
+
+/// A scalar a model can be evaluated on: double (simulation) or a ceres::Jet (fitting).
+template <typename T>
+concept Scalar = std::same_as<T, double> || IsJet<T>::value;
+
+/// The plain value of a scalar, for branching and table look-up.
+inline double ValueOf(double x) { return x; }
+template <typename T, int N>
+double ValueOf(const ceres::Jet<T, N>& x) {
+  return ValueOf(x.a);
+}
+
+/// Jet sizes the library is compiled for: 2 (two-parameter fits and state derivatives),
+/// 5 (tyre p1..p5), 7 (tyre thermal and wear), 14 (brake gamma, xi and 12 convection entries).
+using Jet2 = ceres::Jet<double, 2>;
+using Jet5 = ceres::Jet<double, 5>;
+using Jet7 = ceres::Jet<double, 7>;
+using Jet14 = ceres::Jet<double, 14>;
+
+}  // namespace hotlap
+
+/// Calls MACRO(T) once for every scalar type the models are instantiated for.
+#define HOTLAP_FOR_EACH_SCALAR(MACRO) \
+  MACRO(double)                       \
+  MACRO(::hotlap::Jet2)               \
+  MACRO(::hotlap::Jet5)               \
+  MACRO(::hotlap::Jet7)               \
+  MACRO(::hotlap::Jet14)

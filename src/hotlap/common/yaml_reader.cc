@@ -1,0 +1,190 @@
+#include "hotlap/common/yaml_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <charconv>
+
+#include <fmt/format.h>
+
+#include "hotlap/common/error.h"
+#include "hotlap/common/string_match.h"
+
+namespace hotlap {
+
+namespace fs = std::filesystem;
+
+bool Range::Contains(double x) const {
+  if (!std::isfinite(x)) return false;
+  const bool above = min_inclusive ? x >= min : x > min;
+  const bool below = max_inclusive ? x <= max : x < max;
+  return above && below;
+}
+
+std::string Range::Describe() const {
+  const std::string u = unit.empty() || unit == "1" ? "" : " " + unit;
+  const bool has_min = std::isfinite(min);
+  const bool has_max = std::isfinite(max);
+  if (has_min && !has_max) return fmt::format("{} {:g}{}", min_inclusive ? ">=" : ">", min, u);
+  if (!has_min && has_max) return fmt::format("{} {:g}{}", max_inclusive ? "<=" : "<", max, u);
+  if (!has_min && !has_max) return "a finite number" + u;
+  return fmt::format("in {}{:g}, {:g}{}{}", min_inclusive ? "[" : "(", min, max,
+                     max_inclusive ? "]" : ")", u);
+}
+
+YamlReader::YamlReader(YAML::Node node, fs::path file, std::string prefix)
+    : node_(std::move(node)), file_(std::move(file)), prefix_(std::move(prefix)) {}
+
+YamlReader YamlReader::Load(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) {
+    throw InputError(fmt::format("cannot read '{}': no such file", path.string()));
+  }
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path.string());
+  } catch (const YAML::ParserException& e) {
+    throw InputError(fmt::format("{}:{}:{}: YAML syntax error: {}", path.string(), e.mark.line + 1,
+                                 e.mark.column + 1, e.msg));
+  } catch (const YAML::Exception& e) {
+    throw InputError(fmt::format("cannot read '{}': {}", path.string(), e.what()));
+  }
+  if (!root.IsMap()) {
+    throw InputError(fmt::format("{}: expected a mapping of 'field: value' lines at the top level",
+                                 path.string()));
+  }
+  return YamlReader(root, path, "");
+}
+
+std::string YamlReader::Where(std::string_view key) const {
+  return fmt::format("{}: field '{}{}'", file_.string(), prefix_, key);
+}
+
+void YamlReader::Fail(std::string_view key, const std::string& message) const {
+  throw InputError(Where(key) + ": " + message);
+}
+
+bool YamlReader::Has(std::string_view key) const { return node_[std::string(key)].IsDefined(); }
+
+void YamlReader::FailMissing(std::string_view key, const std::string& expected) const {
+  std::vector<std::string> unread;
+  for (const auto& kv : node_) {
+    const std::string k = kv.first.as<std::string>();
+    if (std::find(read_keys_.begin(), read_keys_.end(), k) == read_keys_.end()) unread.push_back(k);
+  }
+  std::string message = fmt::format("{}: missing field '{}{}' ({})", file_.string(), prefix_, key,
+                                    expected);
+  const auto close = ClosestNames(key, unread);
+  if (!close.empty()) {
+    message += fmt::format("; found {} instead (units are part of the key: a different unit "
+                           "suffix is not accepted)",
+                           QuotedList(close));
+  }
+  throw InputError(message);
+}
+
+YAML::Node YamlReader::Get(std::string_view key) {
+  YAML::Node value = node_[std::string(key)];
+  if (!value.IsDefined()) FailMissing(key, "required");
+  read_keys_.emplace_back(key);
+  return value;
+}
+
+double YamlReader::ToNumber(const YAML::Node& node, std::string_view key) const {
+  if (!node.IsScalar()) Fail(key, "expected a number");
+  const std::string text = node.Scalar();
+  double value = 0.0;
+  const char* begin = text.data();
+  const char* end = text.data() + text.size();
+  if (begin != end && *begin == '+') ++begin;
+  const auto [ptr, ec] = std::from_chars(begin, end, value);
+  if (ec != std::errc() || ptr != end) Fail(key, fmt::format("'{}' is not a number", text));
+  if (!std::isfinite(value)) Fail(key, fmt::format("'{}' is not a finite number", text));
+  return value;
+}
+
+void YamlReader::CheckRange(double value, std::string_view key, const Range& range) const {
+  if (!range.Contains(value)) {
+    Fail(key, fmt::format("value {:g} is out of range: must be {}", value, range.Describe()));
+  }
+}
+
+double YamlReader::Number(std::string_view key, const Range& range) {
+  if (!Has(key)) FailMissing(key, "a number " + range.Describe());
+  const double value = ToNumber(Get(key), key);
+  CheckRange(value, key, range);
+  return value;
+}
+
+std::optional<double> YamlReader::OptionalNumber(std::string_view key, const Range& range) {
+  if (!Has(key)) return std::nullopt;
+  return Number(key, range);
+}
+
+std::string YamlReader::String(std::string_view key) {
+  if (!Has(key)) FailMissing(key, "a text value");
+  const YAML::Node value = Get(key);
+  if (!value.IsScalar() || value.Scalar().empty()) Fail(key, "expected a non-empty text value");
+  return value.Scalar();
+}
+
+std::optional<std::string> YamlReader::OptionalString(std::string_view key) {
+  if (!Has(key)) return std::nullopt;
+  return String(key);
+}
+
+std::string YamlReader::Choice(std::string_view key, const std::vector<std::string>& allowed) {
+  if (!Has(key)) FailMissing(key, "one of " + QuotedList(allowed));
+  const std::string value = String(key);
+  if (std::find(allowed.begin(), allowed.end(), value) == allowed.end()) {
+    Fail(key, fmt::format("'{}' is not allowed: must be one of {}", value, QuotedList(allowed)));
+  }
+  return value;
+}
+
+fs::path YamlReader::FilePath(std::string_view key) {
+  const std::string text = String(key);
+  const fs::path path = file_.parent_path() / text;
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) {
+    Fail(key, fmt::format("file '{}' (resolved to '{}') does not exist", text, path.string()));
+  }
+  return path;
+}
+
+YamlReader YamlReader::Map(std::string_view key) {
+  if (!Has(key)) FailMissing(key, "a mapping");
+  const YAML::Node value = Get(key);
+  if (!value.IsMap()) Fail(key, "expected a mapping of 'field: value' lines");
+  return YamlReader(value, file_, prefix_ + std::string(key) + ".");
+}
+
+std::vector<YamlReader> YamlReader::MapList(std::string_view key, size_t min_items) {
+  if (!Has(key)) FailMissing(key, "a list of mappings");
+  const YAML::Node value = Get(key);
+  if (!value.IsSequence() || value.size() < min_items) {
+    Fail(key, fmt::format("expected a list of at least {} entries", min_items));
+  }
+  std::vector<YamlReader> items;
+  for (size_t i = 0; i < value.size(); ++i) {
+    const std::string item_key = fmt::format("{}[{}]", key, i);
+    if (!value[i].IsMap()) Fail(item_key, "expected a mapping of 'field: value' pairs");
+    items.push_back(YamlReader(value[i], file_, prefix_ + item_key + "."));
+  }
+  return items;
+}
+
+void YamlReader::Finish() const {
+  std::vector<std::string> unknown;
+  for (const auto& kv : node_) {
+    const std::string k = kv.first.as<std::string>();
+    if (std::find(read_keys_.begin(), read_keys_.end(), k) == read_keys_.end()) unknown.push_back(k);
+  }
+  if (unknown.empty()) return;
+  std::string message = fmt::format("{}: unknown field '{}{}'", file_.string(), prefix_, unknown[0]);
+  const auto close = ClosestNames(unknown[0], read_keys_);
+  if (!close.empty()) message += fmt::format(" (did you mean {}?)", QuotedList(close));
+  if (unknown.size() > 1) message += fmt::format(" and {} more unknown field(s)", unknown.size() - 1);
+  throw InputError(message);
+}
+
+}  // namespace hotlap

@@ -1,0 +1,97 @@
+#pragma once
+/// @file
+/// Strict reading of YAML parameter files.
+///
+/// How to use: open a file with YamlReader::Load, read each field with the typed getters, each
+/// with the range it must lie in, then call Finish(): any key that was not read is an error (a
+/// misspelt key or a key with a unit this field does not take is never silently ignored).
+/// Units live in the key (`tread_mass_kg`); a key with the wrong unit suffix therefore shows up
+/// as a missing field plus an unknown key, and the message says both. Every message names the
+/// file, the field (dotted path), the value and the allowed range.
+
+#include <filesystem>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+namespace hotlap {
+
+/// The allowed interval of a number, with its unit for messages.
+struct Range {
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  bool min_inclusive = true;
+  bool max_inclusive = true;
+  std::string unit;
+
+  static Range Positive(std::string unit) { return {0.0, kInf, false, true, std::move(unit)}; }
+  static Range NonNegative(std::string unit) { return {0.0, kInf, true, true, std::move(unit)}; }
+  static Range Closed(double lo, double hi, std::string unit) {
+    return {lo, hi, true, true, std::move(unit)};
+  }
+  /// (lo, hi]: lower bound excluded.
+  static Range OpenClosed(double lo, double hi, std::string unit) {
+    return {lo, hi, false, true, std::move(unit)};
+  }
+  static Range Any(std::string unit) { return {-kInf, kInf, true, true, std::move(unit)}; }
+
+  bool Contains(double x) const;
+  /// "> 0 kg", "in [0, 1]", "in (0, 1] 1", ...
+  std::string Describe() const;
+
+ private:
+  static constexpr double kInf = std::numeric_limits<double>::infinity();
+};
+
+/// A mapping node of one YAML file, read strictly.
+class YamlReader {
+ public:
+  /// Parses `path`; InputError if it cannot be read or parsed, or is not a mapping.
+  static YamlReader Load(const std::filesystem::path& path);
+
+  /// Required number within `range`.
+  double Number(std::string_view key, const Range& range);
+  /// Optional number within `range`.
+  std::optional<double> OptionalNumber(std::string_view key, const Range& range);
+  /// Required non-empty string.
+  std::string String(std::string_view key);
+  std::optional<std::string> OptionalString(std::string_view key);
+  /// Required string that must be one of `allowed`.
+  std::string Choice(std::string_view key, const std::vector<std::string>& allowed);
+  /// Required path, relative to this file's folder; the file must exist.
+  std::filesystem::path FilePath(std::string_view key);
+  /// Required nested mapping.
+  YamlReader Map(std::string_view key);
+  /// Required list of at least `min_items` mappings (a table written as `- {a_mm: 1, b: 2}` rows);
+  /// read each one strictly and call its Finish().
+  std::vector<YamlReader> MapList(std::string_view key, size_t min_items);
+  bool Has(std::string_view key) const;
+
+  /// Errors on any key that was never read, with the closest expected names.
+  void Finish() const;
+
+  /// "FILE: field 'a.b'" for messages about `key`.
+  std::string Where(std::string_view key) const;
+  /// Throws InputError "FILE: field 'a.b': message".
+  [[noreturn]] void Fail(std::string_view key, const std::string& message) const;
+
+  const std::filesystem::path& file() const { return file_; }
+
+ private:
+  YamlReader(YAML::Node node, std::filesystem::path file, std::string prefix);
+  YAML::Node Get(std::string_view key);  // marks as read; fails if missing
+  [[noreturn]] void FailMissing(std::string_view key, const std::string& expected) const;
+  double ToNumber(const YAML::Node& node, std::string_view key) const;
+  void CheckRange(double value, std::string_view key, const Range& range) const;
+
+  YAML::Node node_;
+  std::filesystem::path file_;
+  std::string prefix_;  // "" at top level, "outer.inner." below
+  std::vector<std::string> read_keys_;
+};
+
+}  // namespace hotlap

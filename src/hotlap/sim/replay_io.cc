@@ -1,0 +1,91 @@
+#include "hotlap/sim/replay_io.h"
+
+#include <fmt/format.h>
+
+#include "hotlap/common/error.h"
+#include "hotlap/common/units.h"
+
+namespace hotlap::sim {
+
+namespace {
+
+std::vector<double> AmbientLike(const Telemetry& log, std::string_view quantity,
+                                const std::optional<double>& fallback, std::string_view option) {
+  if (log.Has(quantity)) return log.FilledChannel(quantity);
+  if (fallback) return std::vector<double>(log.size(), *fallback);
+  throw InputError(fmt::format("{}: no '{}_C' (or '{}_K') column, and no {} option was given",
+                               log.path().string(), quantity, quantity, option));
+}
+
+double StartValue(const Telemetry& log, std::string_view quantity, Corner c,
+                  const std::optional<double>& override_value, double car_default) {
+  if (auto measured = log.FirstValue(quantity, c)) return *measured;
+  if (override_value) return *override_value;
+  return car_default;
+}
+
+}  // namespace
+
+ReplayInputs ReplayInputsFromTelemetry(const Telemetry& log,
+                                       const InitialTemperatureOverrides& overrides) {
+  ReplayInputs in;
+  in.time = log.Channel("time");
+  for (Corner c : kAllCorners) {
+    CornerChannels& ch = in.corners[CornerIndex(c)];
+    ch.speed = log.CornerSpeed(c);
+    ch.fx = log.FilledChannel("fx", c);
+    ch.fy = log.FilledChannel("fy", c);
+    ch.fz = log.FilledChannel("fz", c);
+    ch.slip_angle = log.FilledChannel("slip_angle", c);
+    ch.slip_ratio = log.FilledChannel("slip_ratio", c);
+  }
+  in.ambient_temp = AmbientLike(log, "ambient_temp", overrides.ambient_temp, "--ambient-temp-C");
+  in.track_temp = AmbientLike(log, "track_temp", overrides.track_temp, "--track-temp-C");
+  return in;
+}
+
+ReplayInitialState InitialStateFor(const Telemetry& log, const vehicle::Car& car,
+                                   const InitialTemperatureOverrides& o) {
+  ReplayInitialState s;
+  for (Corner c : kAllCorners) {
+    const int i = CornerIndex(c);
+    s.tyres[i].tread_temp = StartValue(log, "tread_temp", c, o.tread_temp, car.initial.tread_temp);
+    s.tyres[i].carcass_temp =
+        StartValue(log, "carcass_temp", c, o.carcass_temp, car.initial.carcass_temp);
+    s.tyres[i].wear = 0.0;
+    s.brakes[i].disc_temp = StartValue(log, "disc_temp", c, o.disc_temp, car.initial.disc_temp);
+    s.brakes[i].calliper_temp =
+        StartValue(log, "calliper_temp", c, o.calliper_temp, car.initial.calliper_temp);
+  }
+  return s;
+}
+
+ColumnSet ReplayResultColumns(const ReplayResult& result, bool with_heat_flows) {
+  ColumnSet out;
+  const auto add = [&](std::string name, std::vector<double> values) {
+    out.names.push_back(std::move(name));
+    out.values.push_back(std::move(values));
+  };
+  const auto celsius = [](std::vector<double> kelvin) {
+    for (double& x : kelvin) x = KelvinToCelsius(x);
+    return kelvin;
+  };
+  add("time_s", result.time);
+  for (Corner c : kAllCorners) {
+    const CornerHistory& h = result.corners[CornerIndex(c)];
+    const std::string_view n = CornerName(c);
+    add(fmt::format("tread_temp_{}_C", n), celsius(h.tread_temp));
+    add(fmt::format("carcass_temp_{}_C", n), celsius(h.carcass_temp));
+    add(fmt::format("wear_{}_mm", n), h.wear);
+    add(fmt::format("grip_factor_{}", n), h.grip_factor);
+    add(fmt::format("disc_temp_{}_C", n), celsius(h.disc_temp));
+    add(fmt::format("calliper_temp_{}_C", n), celsius(h.calliper_temp));
+    add(fmt::format("brake_power_{}_W", n), h.brake_power);
+    if (with_heat_flows) {
+      for (int q = 0; q < 7; ++q) add(fmt::format("q{}_{}_W", q + 1, n), h.heat_flows[q]);
+    }
+  }
+  return out;
+}
+
+}  // namespace hotlap::sim

@@ -1,0 +1,31 @@
+#pragma once
+/// @file
+/// Loading tyre compound and tyre thermal parameter files (YAML, units in the keys; see
+/// data/cars/gen7/tyres/ and docs/file-formats.md). Every value is checked against its allowed
+/// range; any problem throws InputError naming the file, field, value and range.
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "hotlap/tyre/compound.h"
+#include "hotlap/tyre/tyre_thermal.h"
+
+namespace hotlap::tyre {
+
+/// A tyre as loaded from its file.
+struct TyreFile {
+  std::string name;
+  std::filesystem::path path;
+  std::filesystem::path compound_path;
+  TyreThermalParams<double> params;
+  std::shared_ptr<const TyreCompound> compound;
+};
+
+/// Loads a compound file (`model: cubic_grip_wear`).
+TyreCompound LoadTyreCompound(const std::filesystem::path& path);
+
+/// Loads a tyre file (`model: two_mass_thermal`) and the compound file it names.
+TyreFile LoadTyreFile(const std::filesystem::path& path);
+
+}  // namespace hotlap::tyre
