@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs every build and test dependency of hotlap from Debian's packages (bookworm).
+# Idempotent: safe to run any number of times. Needs root (or sudo) and the Debian archive.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config git
+  libeigen3-dev          # linear algebra: small fixed-size systems, Cholesky convection matrices
+  libceres-dev           # least squares and Jet automatic differentiation (fitting, model AD)
+  libyaml-cpp-dev        # parameter files
+  libcli11-dev           # command-line parsing
+  libfmt-dev             # formatted terminal output
+  nlohmann-json3-dev     # --json summaries
+  libgtest-dev libgmock-dev  # unit tests
+  libbenchmark-dev       # benchmarks in bench/
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

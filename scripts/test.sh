@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# The README's second command (and CI's): install dependencies, build, run the whole test suite.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+bash scripts/build.sh
+cd build
+ctest --output-on-failure --parallel "$(nproc)" --timeout 900

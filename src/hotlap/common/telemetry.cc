@@ -1,0 +1,370 @@
+#include "hotlap/common/telemetry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <span>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "hotlap/common/csv.h"
+#include "hotlap/common/error.h"
+#include "hotlap/common/string_match.h"
+
+namespace hotlap {
+namespace {
+
+// A unit a file may use: si = value * scale + offset.
+struct UnitInfo {
+  std::string_view name;
+  double scale;
+  double offset;
+};
+
+// A quantity of the spec's table; units[0] is the canonical file unit.
+struct QuantityInfo {
+  std::string_view name;
+  bool per_corner;  // false: whole car only (the index channels)
+  std::span<const UnitInfo> units;
+};
+
+constexpr double kCelsiusToKelvin = 273.15;
+constexpr UnitInfo kSeconds[] = {{"s", 1.0, 0.0}};
+constexpr UnitInfo kMetres[] = {{"m", 1.0, 0.0}};
+constexpr UnitInfo kSpeed[] = {{"mps", 1.0, 0.0}, {"kph", 1.0 / 3.6, 0.0}, {"mph", 0.44704, 0.0}};
+constexpr UnitInfo kForce[] = {{"N", 1.0, 0.0}, {"kN", 1000.0, 0.0}};
+constexpr UnitInfo kAngle[] = {{"rad", 1.0, 0.0}, {"deg", std::numbers::pi / 180.0, 0.0}};
+constexpr UnitInfo kNone[] = {{"1", 1.0, 0.0}};
+constexpr UnitInfo kTemperature[] = {{"C", 1.0, kCelsiusToKelvin}, {"K", 1.0, 0.0}};
+constexpr UnitInfo kWear[] = {{"mm", 1.0, 0.0}};  // wear is held in mm
+constexpr UnitInfo kLength[] = {{"m", 1.0, 0.0}, {"mm", 0.001, 0.0}};
+constexpr UnitInfo kPower[] = {{"W", 1.0, 0.0}, {"kW", 1000.0, 0.0}};
+constexpr UnitInfo kHeatFlow[] = {{"W", 1.0, 0.0}};
+
+constexpr QuantityInfo kQuantities[] = {
+    {"time", false, kSeconds},
+    {"distance", false, kMetres},
+    {"speed", true, kSpeed},
+    {"fx", true, kForce},
+    {"fy", true, kForce},
+    {"fz", true, kForce},
+    {"slip_angle", true, kAngle},
+    {"slip_ratio", true, kNone},
+    {"ambient_temp", true, kTemperature},
+    {"track_temp", true, kTemperature},
+    {"tread_temp", true, kTemperature},
+    {"carcass_temp", true, kTemperature},
+    {"disc_temp", true, kTemperature},
+    {"calliper_temp", true, kTemperature},
+    {"wear", true, kWear},
+    {"rolling_radius", true, kLength},
+    {"grip_factor", true, kNone},
+    {"brake_power", true, kPower},
+    {"q1", true, kHeatFlow},
+    {"q2", true, kHeatFlow},
+    {"q3", true, kHeatFlow},
+    {"q4", true, kHeatFlow},
+    {"q5", true, kHeatFlow},
+    {"q6", true, kHeatFlow},
+    {"q7", true, kHeatFlow},
+};
+
+const QuantityInfo* FindQuantity(std::string_view name) {
+  for (const QuantityInfo& q : kQuantities) {
+    if (q.name == name) return &q;
+  }
+  return nullptr;
+}
+
+const QuantityInfo& KnownQuantity(std::string_view name) {
+  const QuantityInfo* q = FindQuantity(name);
+  if (q == nullptr) {
+    throw std::invalid_argument("'" + std::string(name) +
+                                "' is not a telemetry quantity of the spec's table");
+  }
+  return *q;
+}
+
+const UnitInfo* FindUnit(const QuantityInfo& q, std::string_view unit) {
+  for (const UnitInfo& u : q.units) {
+    if (u.name == unit) return &u;
+  }
+  return nullptr;
+}
+
+bool IsDimensionless(const QuantityInfo& q) { return q.units.front().name == "1"; }
+
+// "FILE: " or "" when there is no file.
+std::string FilePrefix(const std::filesystem::path& file) {
+  return file.empty() ? std::string() : file.string() + ": ";
+}
+
+// Every column name the spec accepts for this channel, canonical unit first.
+std::vector<std::string> ExpectedColumns(const QuantityInfo& q, std::optional<Corner> corner) {
+  std::vector<std::string> names;
+  for (const UnitInfo& u : q.units) names.push_back(ChannelColumn(q.name, corner, u.name));
+  return names;
+}
+
+std::string AcceptedUnitList(const QuantityInfo& q) {
+  if (IsDimensionless(q)) return "none (a dimensionless column has no unit suffix)";
+  std::vector<std::string> names;
+  for (const UnitInfo& u : q.units) names.emplace_back(u.name);
+  return QuotedList(names);
+}
+
+std::string ChannelKey(std::string_view quantity, std::optional<Corner> corner) {
+  std::string key(quantity);
+  if (corner) key += "_" + std::string(CornerName(*corner));
+  return key;
+}
+
+// Up to three columns of `columns` close to any of `expected`, best matches of the canonical
+// name first.
+std::vector<std::string> ClosestColumns(const std::vector<std::string>& expected,
+                                        const std::vector<std::string>& columns) {
+  std::vector<std::string> found;
+  for (const std::string& name : expected) {
+    for (std::string& c : ClosestNames(name, columns)) {
+      if (found.size() < 3 && std::find(found.begin(), found.end(), c) == found.end()) {
+        found.push_back(std::move(c));
+      }
+    }
+  }
+  return found;
+}
+
+std::string ClosestText(const std::vector<std::string>& expected,
+                        const std::vector<std::string>& columns) {
+  const std::vector<std::string> closest = ClosestColumns(expected, columns);
+  if (closest.empty()) return "no similar column in the file";
+  return "closest columns in the file: " + QuotedList(closest);
+}
+
+}  // namespace
+
+std::optional<ChannelName> ParseChannelName(std::string_view column,
+                                            const std::filesystem::path& file_for_messages) {
+  // The longest known quantity that the column starts with, followed by '_' or the end.
+  const QuantityInfo* quantity = nullptr;
+  for (const QuantityInfo& q : kQuantities) {
+    const bool matches = column.substr(0, q.name.size()) == q.name &&
+                         (column.size() == q.name.size() || column[q.name.size()] == '_');
+    if (matches && (quantity == nullptr || q.name.size() > quantity->name.size())) quantity = &q;
+  }
+  if (quantity == nullptr) return std::nullopt;
+
+  // The rest, "", "<unit>", "<corner>" or "<corner>_<unit>".
+  std::vector<std::string_view> parts;
+  if (column.size() > quantity->name.size()) {
+    std::string_view rest = column.substr(quantity->name.size() + 1);
+    while (true) {
+      const size_t underscore = rest.find('_');
+      parts.push_back(rest.substr(0, underscore));
+      if (underscore == std::string_view::npos) break;
+      rest.remove_prefix(underscore + 1);
+    }
+  }
+  ChannelName name{std::string(quantity->name), std::nullopt, "1"};
+  std::optional<std::string_view> unit;
+  if (parts.size() == 1) {
+    name.corner = ParseCorner(parts[0]);
+    if (!name.corner) unit = parts[0];
+  } else if (parts.size() == 2) {
+    name.corner = ParseCorner(parts[0]);
+    // Not `<corner>_<unit>` (e.g. `time_of_day`): not a channel of the spec, carried through.
+    if (!name.corner) return std::nullopt;
+    unit = parts[1];
+  } else if (parts.size() > 2) {
+    return std::nullopt;
+  }
+
+  const std::string prefix = FilePrefix(file_for_messages) + "column '" + std::string(column) + "'";
+  if (name.corner && !quantity->per_corner) {
+    throw InputError(fmt::format(
+        "{}: {} is for the whole car and takes no corner; write '{}'", prefix, quantity->name,
+        ChannelColumn(quantity->name, std::nullopt, quantity->units.front().name)));
+  }
+  if (!unit) {
+    if (IsDimensionless(*quantity)) return name;
+    throw InputError(fmt::format("{} has no unit; write {}", prefix,
+                                 QuotedList(ExpectedColumns(*quantity, name.corner))));
+  }
+  if (FindUnit(*quantity, *unit) == nullptr) {
+    throw InputError(fmt::format("{}: unit '{}' is not accepted for {}; accepted units: {}", prefix,
+                                 *unit, quantity->name, AcceptedUnitList(*quantity)));
+  }
+  name.unit = std::string(*unit);
+  return name;
+}
+
+std::string ChannelColumn(std::string_view quantity, std::optional<Corner> corner,
+                          std::string_view unit) {
+  std::string column = ChannelKey(quantity, corner);
+  if (!unit.empty() && unit != "1") column += "_" + std::string(unit);
+  return column;
+}
+
+std::vector<std::string_view> AcceptedUnits(std::string_view quantity) {
+  std::vector<std::string_view> units;
+  for (const UnitInfo& u : KnownQuantity(quantity).units) units.push_back(u.name);
+  return units;
+}
+
+std::string_view CanonicalUnit(std::string_view quantity) {
+  return KnownQuantity(quantity).units.front().name;
+}
+
+double ConvertSiToCanonical(std::string_view quantity, double si_value) {
+  const UnitInfo& canonical = KnownQuantity(quantity).units.front();
+  return (si_value - canonical.offset) / canonical.scale;
+}
+
+Telemetry Telemetry::Read(const std::filesystem::path& path, std::string_view index_quantity) {
+  if (index_quantity != "time" && index_quantity != "distance") {
+    throw std::invalid_argument(
+        "Telemetry::Read: index quantity must be 'time' or 'distance', not '" +
+        std::string(index_quantity) + "'");
+  }
+  CsvTable table = ReadCsv(path);
+  const std::string file = path.string();
+
+  Telemetry log;
+  log.path_ = path;
+  log.metadata_ = std::move(table.metadata);
+  log.columns_ = table.columns;
+  log.line_numbers_ = std::move(table.line_numbers);
+  log.index_quantity_ = std::string(index_quantity);
+
+  for (size_t c = 0; c < table.columns.size(); ++c) {
+    const std::string& column = table.columns[c];
+    const std::optional<ChannelName> name = ParseChannelName(column, path);
+    if (!name) {
+      log.unknown_columns_.emplace_back(column, std::move(table.values[c]));
+      continue;
+    }
+    const std::string key = ChannelKey(name->quantity, name->corner);
+    if (const auto it = log.channels_.find(key); it != log.channels_.end()) {
+      throw InputError(fmt::format(
+          "{}: columns '{}' (column {}) and '{}' (column {}) are the same "
+          "channel; keep one",
+          file, it->second.column, table.ColumnIndex(it->second.column) + 1, column, c + 1));
+    }
+    // Convert to SI; NaN (empty) stays NaN.
+    const UnitInfo& unit = *FindUnit(KnownQuantity(name->quantity), name->unit);
+    std::vector<double> values = std::move(table.values[c]);
+    for (double& v : values) v = v * unit.scale + unit.offset;
+    log.channels_.emplace(key, StoredChannel{column, std::move(values)});
+  }
+
+  // The index: present, complete, strictly increasing.
+  const StoredChannel& index = log.Get(index_quantity, std::nullopt);
+  for (size_t i = 0; i < index.values.size(); ++i) {
+    if (std::isnan(index.values[i])) {
+      throw InputError(
+          fmt::format("{}:{}: '{}' is empty; the index column needs a value on every "
+                      "row",
+                      file, log.LineOf(i), index.column));
+    }
+    if (i > 0 && !(index.values[i] > index.values[i - 1])) {
+      throw InputError(
+          fmt::format("{}:{}: '{}' must be strictly increasing, but {} follows {} "
+                      "(line {})",
+                      file, log.LineOf(i), index.column, index.values[i], index.values[i - 1],
+                      log.LineOf(i - 1)));
+    }
+  }
+  return log;
+}
+
+const Telemetry::StoredChannel* Telemetry::Find(std::string_view quantity,
+                                                std::optional<Corner> corner) const {
+  const QuantityInfo& q = KnownQuantity(quantity);
+  if (corner && !q.per_corner) {
+    throw std::invalid_argument("telemetry quantity '" + std::string(quantity) +
+                                "' has no corners");
+  }
+  const auto it = channels_.find(ChannelKey(quantity, corner));
+  return it == channels_.end() ? nullptr : &it->second;
+}
+
+const Telemetry::StoredChannel& Telemetry::Get(std::string_view quantity,
+                                               std::optional<Corner> corner) const {
+  if (const StoredChannel* channel = Find(quantity, corner)) return *channel;
+  const std::vector<std::string> expected = ExpectedColumns(KnownQuantity(quantity), corner);
+  throw InputError(fmt::format("{}: missing column {}; {}", path_.string(), QuotedList(expected),
+                               ClosestText(expected, columns_)));
+}
+
+bool Telemetry::Has(std::string_view quantity, std::optional<Corner> corner) const {
+  return Find(quantity, corner) != nullptr;
+}
+
+const std::vector<double>& Telemetry::Channel(std::string_view quantity,
+                                              std::optional<Corner> corner) const {
+  return Get(quantity, corner).values;
+}
+
+const std::string& Telemetry::ColumnOf(std::string_view quantity,
+                                       std::optional<Corner> corner) const {
+  return Get(quantity, corner).column;
+}
+
+std::vector<double> Telemetry::Fill(const StoredChannel& channel) const {
+  std::vector<double> values = channel.values;
+  const std::vector<double>& x = index();
+  // Rows that hold a value.
+  std::vector<size_t> measured;
+  for (size_t i = 0; i < values.size(); ++i) {
+    if (!std::isnan(values[i])) measured.push_back(i);
+  }
+  if (measured.empty()) {
+    throw InputError(
+        fmt::format("{}: column '{}' has no value on any row", path_.string(), channel.column));
+  }
+  // Constant before the first and after the last measured sample.
+  for (size_t i = 0; i < measured.front(); ++i) values[i] = values[measured.front()];
+  for (size_t i = measured.back() + 1; i < values.size(); ++i) values[i] = values[measured.back()];
+  // Linear in the index between measured neighbours.
+  for (size_t k = 0; k + 1 < measured.size(); ++k) {
+    const size_t a = measured[k];
+    const size_t b = measured[k + 1];
+    for (size_t i = a + 1; i < b; ++i) {
+      const double w = (x[i] - x[a]) / (x[b] - x[a]);
+      values[i] = values[a] + w * (values[b] - values[a]);
+    }
+  }
+  return values;
+}
+
+std::vector<double> Telemetry::FilledChannel(std::string_view quantity,
+                                             std::optional<Corner> corner) const {
+  return Fill(Get(quantity, corner));
+}
+
+std::vector<double> Telemetry::CornerSpeed(Corner corner) const {
+  if (const StoredChannel* speed = Find("speed", corner)) return Fill(*speed);
+  if (const StoredChannel* speed = Find("speed", std::nullopt)) return Fill(*speed);
+  const QuantityInfo& q = KnownQuantity("speed");
+  std::vector<std::string> expected = ExpectedColumns(q, corner);
+  const std::vector<std::string> whole_car = ExpectedColumns(q, std::nullopt);
+  const std::string message =
+      fmt::format("{}: missing the speed at {}: expected {}, or the whole-car {}; ", path_.string(),
+                  CornerName(corner), QuotedList(expected), QuotedList(whole_car));
+  expected.insert(expected.end(), whole_car.begin(), whole_car.end());
+  throw InputError(message + ClosestText(expected, columns_));
+}
+
+std::optional<double> Telemetry::FirstValue(std::string_view quantity,
+                                            std::optional<Corner> corner) const {
+  const StoredChannel* channel = Find(quantity, corner);
+  if (channel == nullptr) return std::nullopt;
+  for (double v : channel->values) {
+    if (!std::isnan(v)) return v;
+  }
+  return std::nullopt;
+}
+
+}  // namespace hotlap
