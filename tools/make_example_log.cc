@@ -8,9 +8,9 @@
 //     banked 25 deg and turns 3-4 of 688 m banked 23 deg (public bankings), each a 150 m clothoid,
 //     an arc and a 150 m clothoid turning through 180 deg, so turns 3-4 are the tighter end.
 //  2. Speed: the cornering limit of a 1542 kg car with friction 0.95 and downforce on the banked
-//     surface, then a forward pass limited by 400 kW at the wheels (670 hp less driveline losses) less drag and a
-//     backward pass limited to 2.5 m/s^2 of braking less drag (oval braking is light). Two braking
-//     zones follow: into turn 1 and into turn 3.
+//     surface, then a forward pass limited by 400 kW at the wheels (670 hp less driveline losses)
+//     less drag and a backward pass limited to 2.5 m/s^2 of braking less drag (oval braking is
+//     light). Two braking zones follow: into turn 1 and into turn 3.
 //  3. Forces per corner: static loads (52 % front, 53 % left), aero load split 45/55, lateral and
 //     longitudinal load transfer (CoG 0.43 m, track 1.65 m, wheelbase 2.794 m), lateral force
 //     shared in proportion to load so the right-side tyres carry more, drive on the rear axle,
@@ -39,13 +39,13 @@ constexpr double kLength = 2198.0;
 constexpr double kMass = 1542.0;
 constexpr double kMu = 0.95;
 constexpr double kAirDensity = 1.2;
-constexpr double kDragArea = 1.05;      // Cd A, m^2
-constexpr double kLiftArea = 1.6;       // Cl A, m^2
-constexpr double kPower = 400e3;        // W at the wheels
-constexpr double kBrakeDecel = 2.5;     // m/s^2 from the brakes
-constexpr double kCogHeight = 0.43;     // m
-constexpr double kTrack = 1.65;         // m
-constexpr double kWheelbase = 2.794;    // m
+constexpr double kDragArea = 1.05;    // Cd A, m^2
+constexpr double kLiftArea = 1.6;     // Cl A, m^2
+constexpr double kPower = 400e3;      // W at the wheels
+constexpr double kBrakeDecel = 2.5;   // m/s^2 from the brakes
+constexpr double kCogHeight = 0.43;   // m
+constexpr double kTrack = 1.65;       // m
+constexpr double kWheelbase = 2.794;  // m
 
 struct TrackPoint {
   double curvature;  // 1/m, positive turning left
@@ -145,8 +145,8 @@ int main(int argc, char** argv) {
     const double ax = u * dvds;
     const TrackPoint p = TrackAt(s);
     const double cb = std::cos(p.bank), sb = std::sin(p.bank);
-    const double ay = u * u * p.curvature * cb - kGravity * sb;            // in the banked plane
-    const double normal = kGravity * cb + u * u * p.curvature * sb;        // per unit mass
+    const double ay = u * u * p.curvature * cb - kGravity * sb;      // in the banked plane
+    const double normal = kGravity * cb + u * u * p.curvature * sb;  // per unit mass
     const double downforce = 0.5 * kAirDensity * kLiftArea * u * u;
     const double total_fz = kMass * normal + downforce;
     // Loads: static share scaled by the normal acceleration, aero split, load transfer.
@@ -156,7 +156,7 @@ int main(int argc, char** argv) {
     fz[1] = kMass * normal * front * (1 - left) + 0.45 * downforce / 2;
     fz[2] = kMass * normal * (1 - front) * left + 0.55 * downforce / 2;
     fz[3] = kMass * normal * (1 - front) * (1 - left) + 0.55 * downforce / 2;
-    const double lateral_transfer = kMass * ay * kCogHeight / kTrack / 2;  // per axle
+    const double lateral_transfer = kMass * ay * kCogHeight / kTrack / 2;   // per axle
     const double long_transfer = kMass * ax * kCogHeight / kWheelbase / 2;  // per side
     fz[0] += -lateral_transfer - long_transfer;
     fz[1] += +lateral_transfer - long_transfer;
@@ -204,6 +204,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::printf("wrote %s: %d samples, lap %.2f s, speeds %.1f..%.1f m/s\n", argv[1], samples,
-              lap_time, *std::min_element(v.begin(), v.end()), *std::max_element(v.begin(), v.end()));
+              lap_time, *std::min_element(v.begin(), v.end()),
+              *std::max_element(v.begin(), v.end()));
   return 0;
 }

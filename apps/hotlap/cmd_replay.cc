@@ -78,9 +78,8 @@ int RunReplay(const ReplayArgs& a) {
   const double duration = result.time.back() - result.time.front();
   fmt::print("hotlap replay: {} ({} samples, {:.2f} s of log) with car '{}'\n", a.telemetry,
              result.time.size(), duration, car.name);
-  fmt::print("{:<6} {:>23} {:>23} {:>23} {:>23} {:>8} {:>6}\n", "corner",
-             "tread degC pk/mean/end", "carcass degC", "disc degC", "calliper degC", "wear mm",
-             "grip");
+  fmt::print("{:<6} {:>23} {:>23} {:>23} {:>23} {:>8} {:>6}\n", "corner", "tread degC pk/mean/end",
+             "carcass degC", "disc degC", "calliper degC", "wear mm", "grip");
   nlohmann::json corners;
   for (Corner c : kAllCorners) {
     const sim::CornerHistory& h = result.corners[CornerIndex(c)];
@@ -91,8 +90,8 @@ int RunReplay(const ReplayArgs& a) {
     const double min_grip = *std::min_element(h.grip_factor.begin(), h.grip_factor.end());
     double brake_energy = 0.0;
     for (size_t i = 1; i < result.time.size(); ++i) {
-      brake_energy += 0.5 * (h.brake_power[i] + h.brake_power[i - 1]) *
-                      (result.time[i] - result.time[i - 1]);
+      brake_energy +=
+          0.5 * (h.brake_power[i] + h.brake_power[i - 1]) * (result.time[i] - result.time[i - 1]);
     }
     const auto triple = [](const sim::HistoryStats& s) {
       return fmt::format("{:.1f}/{:.1f}/{:.1f}", KelvinToCelsius(s.peak), KelvinToCelsius(s.mean),

@@ -47,7 +47,8 @@ BrakeFile LoadBrakeFile(const std::filesystem::path& path) {
   p.disc_emissivity = y.Number("disc_emissivity", Range::Closed(0.0, 1.0, ""));
   p.calliper_emissivity = y.Number("calliper_emissivity", Range::Closed(0.0, 1.0, ""));
   p.disc_radiating_area = y.Number("disc_radiating_area_m2", Range::NonNegative("m^2"));
-  p.calliper_radiating_area = 1e-4 * y.Number("calliper_radiating_area_cm2", Range::NonNegative("cm^2"));
+  p.calliper_radiating_area =
+      1e-4 * y.Number("calliper_radiating_area_cm2", Range::NonNegative("cm^2"));
   {
     YamlReader g = y.Map("geometry");
     out.geometry.disc_diameter = 1e-3 * g.Number("disc_diameter_mm", Range::Positive("mm"));

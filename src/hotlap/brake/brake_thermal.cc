@@ -34,12 +34,12 @@ BrakeHeatFlows<T> CalcBrakeHeatFlows(const BrakeThermalParams<T>& p, const Brake
   const T speed = abs(in.speed);
   BrakeHeatFlows<T> q;
   q.q1 = CalcBrakePower(in.speed, in.fx);
-  q.q2 = 2.0 * p.pad_conductivity * p.pad_area / p.pad_thickness * (td - tk);          // (000:27)
+  q.q2 = 2.0 * p.pad_conductivity * p.pad_area / p.pad_thickness * (td - tk);  // (000:27)
   q.q3 = p.disc_emissivity * kStefanBoltzmann * p.disc_radiating_area * (td * td * td * td - t0_4);
-  q.q4 = p.disc_convection.Conductance(speed, td) * (td - t0);                         // (000:30)
+  q.q4 = p.disc_convection.Conductance(speed, td) * (td - t0);  // (000:30)
   q.q5 = p.calliper_emissivity * kStefanBoltzmann * p.calliper_radiating_area *
-         (tk * tk * tk * tk - t0_4);                                                   // (000:29)
-  q.q6 = p.calliper_convection.Conductance(speed, tk) * (tk - t0);                     // (000:31)
+         (tk * tk * tk * tk - t0_4);                                // (000:29)
+  q.q6 = p.calliper_convection.Conductance(speed, tk) * (tk - t0);  // (000:31)
   return q;
 }
 
@@ -56,13 +56,13 @@ BrakeState<T> CalcBrakeDerivatives(const BrakeThermalParams<T>& p, const BrakeSt
   return dx;
 }
 
-#define HOTLAP_INSTANTIATE_BRAKE_THERMAL(T)                                                    \
-  template struct ConvectionPolynomial<T>;                                                     \
-  template T CalcBrakePower<T>(const T&, const T&);                                            \
-  template BrakeHeatFlows<T> CalcBrakeHeatFlows<T>(const BrakeThermalParams<T>&,               \
+#define HOTLAP_INSTANTIATE_BRAKE_THERMAL(T)                                                     \
+  template struct ConvectionPolynomial<T>;                                                      \
+  template T CalcBrakePower<T>(const T&, const T&);                                             \
+  template BrakeHeatFlows<T> CalcBrakeHeatFlows<T>(const BrakeThermalParams<T>&,                \
                                                    const BrakeState<T>&, const BrakeInput<T>&); \
-  template BrakeState<T> CalcBrakeDerivatives<T>(const BrakeThermalParams<T>&,                 \
-                                                 const BrakeState<T>&, const BrakeInput<T>&,   \
+  template BrakeState<T> CalcBrakeDerivatives<T>(const BrakeThermalParams<T>&,                  \
+                                                 const BrakeState<T>&, const BrakeInput<T>&,    \
                                                  BrakeHeatFlows<T>*);
 HOTLAP_FOR_EACH_SCALAR(HOTLAP_INSTANTIATE_BRAKE_THERMAL)
 

@@ -32,19 +32,19 @@ struct ConvectionPolynomial {
 /// Parameters of one corner's brake, SI.
 template <Scalar T>
 struct BrakeThermalParams {
-  T heat_partition{};          ///< gamma: share of braking power into the disc (000:24)
-  T mass_participation{};      ///< xi: share of the disc mass at the surface temperature (000:24)
-  T disc_mass{};               ///< m_d, kg
-  T disc_heat_capacity{};      ///< c_d, J/(kg K)
-  T calliper_mass{};           ///< m_k, kg (calliper and pads)
-  T calliper_heat_capacity{};  ///< c_k, J/(kg K)
-  T pad_conductivity{};        ///< k_p, W/(m K) (000:27)
-  T pad_area{};                ///< A_pad, m^2 (000:27)
-  T pad_thickness{};           ///< l_pad, m (000:27)
-  T disc_emissivity{};         ///< eps_d (000:28)
-  T calliper_emissivity{};     ///< eps_k (000:29)
-  T disc_radiating_area{};     ///< A_disc, m^2 (000:28)
-  T calliper_radiating_area{}; ///< A_cal, m^2 (000:29)
+  T heat_partition{};           ///< gamma: share of braking power into the disc (000:24)
+  T mass_participation{};       ///< xi: share of the disc mass at the surface temperature (000:24)
+  T disc_mass{};                ///< m_d, kg
+  T disc_heat_capacity{};       ///< c_d, J/(kg K)
+  T calliper_mass{};            ///< m_k, kg (calliper and pads)
+  T calliper_heat_capacity{};   ///< c_k, J/(kg K)
+  T pad_conductivity{};         ///< k_p, W/(m K) (000:27)
+  T pad_area{};                 ///< A_pad, m^2 (000:27)
+  T pad_thickness{};            ///< l_pad, m (000:27)
+  T disc_emissivity{};          ///< eps_d (000:28)
+  T calliper_emissivity{};      ///< eps_k (000:29)
+  T disc_radiating_area{};      ///< A_disc, m^2 (000:28)
+  T calliper_radiating_area{};  ///< A_cal, m^2 (000:29)
   ConvectionPolynomial<T> disc_convection;      ///< hA_d(u, T_d) (000:30, 32)
   ConvectionPolynomial<T> calliper_convection;  ///< hA_k(u, T_k) (000:31, 33)
 

@@ -24,7 +24,8 @@ void WriteFileAtomically(const std::filesystem::path& path,
   try {
     {
       std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-      if (!out) throw InputError("cannot write '" + path.string() + "': cannot create a file there");
+      if (!out)
+        throw InputError("cannot write '" + path.string() + "': cannot create a file there");
       write(out);
       out.flush();
       if (!out) throw InputError("cannot write '" + path.string() + "': write failed (disk full?)");

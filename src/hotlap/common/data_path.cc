@@ -47,9 +47,9 @@ fs::path ResolveCarFile(std::string_view name_or_path) {
       names.push_back(entry.path().filename().string());
     }
   }
-  throw InputError("no car '" + std::string(name_or_path) +
-                   "': not a car.yaml file, and not a built-in car (built-in: " +
-                   QuotedList(names) + ")");
+  throw InputError(
+      "no car '" + std::string(name_or_path) +
+      "': not a car.yaml file, and not a built-in car (built-in: " + QuotedList(names) + ")");
 }
 
 }  // namespace hotlap

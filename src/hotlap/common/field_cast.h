@@ -33,7 +33,8 @@ void CastFields(const From& from, To& to) {
   [&]<size_t... I>(std::index_sequence<I...>) {
     ((std::get<I>(dst) = ScalarCast<std::decay_t<decltype(std::get<I>(dst))>>(std::get<I>(src))),
      ...);
-  }(std::make_index_sequence<std::tuple_size_v<decltype(src)>>{});
+  }
+  (std::make_index_sequence<std::tuple_size_v<decltype(src)>>{});
 }
 
 }  // namespace hotlap

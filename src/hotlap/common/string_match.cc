@@ -20,8 +20,8 @@ int EditDistance(std::string_view a, std::string_view b) {
   return row[b.size()];
 }
 
-std::vector<std::string> ClosestNames(std::string_view name, const std::vector<std::string>& candidates,
-                                      int max_count) {
+std::vector<std::string> ClosestNames(std::string_view name,
+                                      const std::vector<std::string>& candidates, int max_count) {
   const int limit = std::max<int>(2, static_cast<int>(name.size()) / 2);
   std::vector<std::pair<int, std::string>> scored;
   for (const std::string& c : candidates) {

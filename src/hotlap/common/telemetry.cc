@@ -217,9 +217,9 @@ std::string_view CanonicalUnit(std::string_view quantity) {
   return KnownQuantity(quantity).units.front().name;
 }
 
-double ConvertSiToCanonical(std::string_view quantity, double si_value) {
+double ConvertSiToCanonical(std::string_view quantity, double value_si) {
   const UnitInfo& canonical = KnownQuantity(quantity).units.front();
-  return (si_value - canonical.offset) / canonical.scale;
+  return (value_si - canonical.offset) / canonical.scale;
 }
 
 Telemetry Telemetry::Read(const std::filesystem::path& path, std::string_view index_quantity) {

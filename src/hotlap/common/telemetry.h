@@ -67,7 +67,7 @@ std::string_view CanonicalUnit(std::string_view quantity);
 /// Converts a value from the internal SI unit of `quantity` to its canonical file unit, for
 /// writing: K -> C for temperatures (minus 273.15); every other quantity's canonical unit is its
 /// internal unit. NaN stays NaN. Throws std::invalid_argument for an unknown quantity.
-double ConvertSiToCanonical(std::string_view quantity, double si_value);
+double ConvertSiToCanonical(std::string_view quantity, double value_si);
 
 /// A telemetry log with every known channel converted to internal SI units on read:
 /// time s, distance m, speed m/s (kph, mph converted), forces N (kN converted), slip_angle rad

@@ -1,8 +1,8 @@
 #include "hotlap/common/yaml_reader.h"
 
 #include <algorithm>
-#include <cmath>
 #include <charconv>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -71,13 +71,14 @@ void YamlReader::FailMissing(std::string_view key, const std::string& expected) 
     const std::string k = kv.first.as<std::string>();
     if (std::find(read_keys_.begin(), read_keys_.end(), k) == read_keys_.end()) unread.push_back(k);
   }
-  std::string message = fmt::format("{}: missing field '{}{}' ({})", file_.string(), prefix_, key,
-                                    expected);
+  std::string message =
+      fmt::format("{}: missing field '{}{}' ({})", file_.string(), prefix_, key, expected);
   const auto close = ClosestNames(key, unread);
   if (!close.empty()) {
-    message += fmt::format("; found {} instead (units are part of the key: a different unit "
-                           "suffix is not accepted)",
-                           QuotedList(close));
+    message += fmt::format(
+        "; found {} instead (units are part of the key: a different unit "
+        "suffix is not accepted)",
+        QuotedList(close));
   }
   throw InputError(message);
 }
@@ -177,13 +178,16 @@ void YamlReader::Finish() const {
   std::vector<std::string> unknown;
   for (const auto& kv : node_) {
     const std::string k = kv.first.as<std::string>();
-    if (std::find(read_keys_.begin(), read_keys_.end(), k) == read_keys_.end()) unknown.push_back(k);
+    if (std::find(read_keys_.begin(), read_keys_.end(), k) == read_keys_.end())
+      unknown.push_back(k);
   }
   if (unknown.empty()) return;
-  std::string message = fmt::format("{}: unknown field '{}{}'", file_.string(), prefix_, unknown[0]);
+  std::string message =
+      fmt::format("{}: unknown field '{}{}'", file_.string(), prefix_, unknown[0]);
   const auto close = ClosestNames(unknown[0], read_keys_);
   if (!close.empty()) message += fmt::format(" (did you mean {}?)", QuotedList(close));
-  if (unknown.size() > 1) message += fmt::format(" and {} more unknown field(s)", unknown.size() - 1);
+  if (unknown.size() > 1)
+    message += fmt::format(" and {} more unknown field(s)", unknown.size() - 1);
   throw InputError(message);
 }
 

@@ -16,7 +16,8 @@ namespace {
 
 void CheckLength(const std::vector<double>& v, size_t n, const std::string& name) {
   if (v.size() != n) {
-    throw InputError(fmt::format("replay input '{}' has {} samples, expected {}", name, v.size(), n));
+    throw InputError(
+        fmt::format("replay input '{}' has {} samples, expected {}", name, v.size(), n));
   }
   for (size_t i = 0; i < n; ++i) {
     if (!std::isfinite(v[i])) {
@@ -62,9 +63,8 @@ ReplayResult RunReplay(const vehicle::Car& car, const ReplayInputs& in,
     CheckLength(ch.slip_angle, n, "slip_angle_" + corner);
     CheckLength(ch.slip_ratio, n, "slip_ratio_" + corner);
 
-    const CornerSamples samples{in.time,       ch.speed,      ch.fx,
-                                ch.fy,         ch.fz,         ch.slip_angle,
-                                ch.slip_ratio, in.ambient_temp, in.track_temp};
+    const CornerSamples samples{in.time,       ch.speed,      ch.fx,           ch.fy,        ch.fz,
+                                ch.slip_angle, ch.slip_ratio, in.ambient_temp, in.track_temp};
     const tyre::TyreFile& tyre_file = car.tyre(c);
     const brake::BrakeFile& brake_file = car.brake(c);
     CornerHistory& h = result.corners[CornerIndex(c)];
@@ -86,15 +86,14 @@ ReplayResult RunReplay(const vehicle::Car& car, const ReplayInputs& in,
           h.wear[k] = x.wear;
           h.grip_factor[k] = tyre_file.compound->GripFactor(x.tread_temp, x.wear);
           if (options.record_heat_flows) {
-            const auto q = tyre::CalcTyreHeatFlows(tyre_file.params, x,
-                                                   samples.TyreInputAt<double>(k, 0.0));
+            const auto q =
+                tyre::CalcTyreHeatFlows(tyre_file.params, x, samples.TyreInputAt<double>(k, 0.0));
             const std::array<double, 7> flows = {q.q1, q.q2, q.q3, q.q4, q.q5, q.q6, q.q7};
             for (int i = 0; i < 7; ++i) h.heat_flows[i][k] = flows[i];
           }
         });
     IntegrateBrake<double>(brake_file.params, samples, initial.brakes[CornerIndex(c)],
-                           options.max_step_s,
-                           [&](size_t k, const brake::BrakeState<double>& x) {
+                           options.max_step_s, [&](size_t k, const brake::BrakeState<double>& x) {
                              CheckTemperature(x.disc_temp, "disc", c, in.time[k]);
                              CheckTemperature(x.calliper_temp, "calliper", c, in.time[k]);
                              h.disc_temp[k] = x.disc_temp;

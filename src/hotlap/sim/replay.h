@@ -39,8 +39,8 @@ struct ReplayInitialState {
 };
 
 struct ReplayOptions {
-  double max_step_s = 0.02;         ///< longest RK4 sub-step
-  bool record_heat_flows = false;   ///< also return q1..q7 of every tyre
+  double max_step_s = 0.02;        ///< longest RK4 sub-step
+  bool record_heat_flows = false;  ///< also return q1..q7 of every tyre
 };
 
 /// Histories of one corner at the sample times (K, mm, W).

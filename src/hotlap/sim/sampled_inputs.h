@@ -5,6 +5,7 @@
 /// scalar so fitting can differentiate a whole replay with respect to the parameters.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <span>
 
@@ -33,7 +34,7 @@ struct CornerSamples {
   tyre::TyreInput<T> TyreInputAt(size_t k, double f) const {
     const size_t j = std::min(k + 1, time.size() - 1);
     const auto lerp = [&](std::span<const double> v) { return T(v[k] + f * (v[j] - v[k])); };
-    return {lerp(speed), lerp(fx),        lerp(fy),           lerp(fz),
+    return {lerp(speed),      lerp(fx),         lerp(fy),           lerp(fz),
             lerp(slip_angle), lerp(slip_ratio), lerp(ambient_temp), lerp(track_temp)};
   }
   /// Brake input at sample k moved a fraction `f` towards sample k+1 (cooling air = ambient).
@@ -45,31 +46,63 @@ struct CornerSamples {
   }
 };
 
-/// Number of equal RK4 sub-steps for the interval [t_k, t_k+1] so that none exceeds max_step.
-inline int SubStepsFor(double interval, double max_step) {
-  return std::max(1, static_cast<int>(std::ceil(interval / max_step - 1e-9)));
+/// Number of equal RK4 sub-steps for a stretch of `length` so that none exceeds max_step.
+inline int SubStepsFor(double length, double max_step) {
+  return std::max(1, static_cast<int>(std::ceil(length / max_step - 1e-9)));
 }
 
-/// Integrates `derivative(state, input)` over the samples from `state` at time[0]; calls
-/// `on_sample(k, state)` for every sample k, the first with the initial state. `input_at(k, f)`
-/// gives the input a fraction f of the way from sample k to k+1.
-template <class State, class InputAt, class Derivative, class OnSample>
-void IntegrateOverSamples(std::span<const double> time, State state, double max_step,
-                          InputAt&& input_at, Derivative&& derivative, OnSample&& on_sample) {
+/// Fractions in (0, 1), sorted, where an input that the models take |x| or max(x, 0) of crosses
+/// zero between samples k and k+1 (speed, fx, fy, slip angle, slip ratio). The models' right-hand
+/// sides have a kink there, which would cost RK4 its order; the integrator steps onto it instead.
+struct Kinks {
+  std::array<double, 5> at{};
+  int count = 0;
+};
+
+inline Kinks KinksBetween(const CornerSamples& in, size_t k) {
+  Kinks kinks;
+  const size_t j = k + 1;
+  for (std::span<const double> v : {in.speed, in.fx, in.fy, in.slip_angle, in.slip_ratio}) {
+    const double a = v[k], b = v[j];
+    if ((a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0)) kinks.at[kinks.count++] = a / (a - b);
+  }
+  std::sort(kinks.at.begin(), kinks.at.begin() + kinks.count);
+  return kinks;
+}
+
+/// Integrates `derivative(state, terms)` over the samples from `state` at time[0]; calls
+/// `on_sample(k, state)` for every sample k, the first with the initial state. `terms_at(k, f)`
+/// gives the model's input terms a fraction f of the way from sample k to k+1. Each interval is
+/// split at the kinks of `samples` and every piece is covered by RK4 steps no longer than
+/// max_step; the input terms are computed once per distinct stage time.
+template <class State, class TermsAt, class Derivative, class OnSample>
+void IntegrateOverSamples(const CornerSamples& samples, State state, double max_step,
+                          TermsAt&& terms_at, Derivative&& derivative, OnSample&& on_sample) {
+  const std::span<const double> time = samples.time;
   on_sample(size_t{0}, state);
   for (size_t k = 0; k + 1 < time.size(); ++k) {
     const double interval = time[k + 1] - time[k];
-    const int n = SubStepsFor(interval, max_step);
-    // In-interval time is measured as the fraction of the interval, so the inputs at the RK4
-    // stages are exact linear interpolations.
-    const auto f = [&](double fraction, const State& x) {
-      return derivative(x, input_at(k, fraction));
+    // Time inside the interval is measured as the fraction of it, so the inputs at the RK4 stages
+    // are exact linear interpolations; the derivative is scaled by the interval length.
+    const auto f = [&](const State& x, const auto& terms) {
+      return interval * derivative(x, terms);
     };
-    const double fraction_step = 1.0 / n;
-    for (int i = 0; i < n; ++i) {
-      // Rk4Step in the fraction variable: scale the derivative by the interval length.
-      state = Rk4Step([&](double fr, const State& x) { return interval * f(fr, x); },
-                      i * fraction_step, state, fraction_step);
+    const Kinks kinks = KinksBetween(samples, k);
+    double from = 0.0;
+    auto start = terms_at(k, 0.0);
+    for (int piece = 0; piece <= kinks.count; ++piece) {
+      const double to = piece < kinks.count ? kinks.at[piece] : 1.0;
+      if (to <= from) continue;
+      const int n = SubStepsFor((to - from) * interval, max_step);
+      const double step = (to - from) / n;
+      for (int i = 0; i < n; ++i) {
+        const double a = from + i * step;
+        const auto middle = terms_at(k, a + 0.5 * step);
+        auto end = terms_at(k, i + 1 == n ? to : a + step);
+        state = Rk4StepWithInputs(f, state, step, start, middle, end);
+        start = std::move(end);
+      }
+      from = to;
     }
     on_sample(k + 1, state);
   }
@@ -81,10 +114,12 @@ void IntegrateTyre(const tyre::TyreThermalParams<T>& params, const tyre::TyreCom
                    const CornerSamples& in, const tyre::TyreState<T>& initial, double max_step,
                    OnSample&& on_sample) {
   IntegrateOverSamples(
-      in.time, initial, max_step,
-      [&](size_t k, double f) { return in.TyreInputAt<T>(k, f); },
-      [&](const tyre::TyreState<T>& x, const tyre::TyreInput<T>& u) {
-        return tyre::CalcTyreDerivatives(params, compound, x, u);
+      in, initial, max_step,
+      [&](size_t k, double f) {
+        return tyre::CalcTyreInputTerms(params, compound, in.TyreInputAt<T>(k, f));
+      },
+      [&](const tyre::TyreState<T>& x, const tyre::TyreInputTerms<T>& terms) {
+        return tyre::CalcTyreDerivatives(params, compound, x, terms);
       },
       on_sample);
 }
@@ -94,7 +129,7 @@ template <Scalar T, class OnSample>
 void IntegrateBrake(const brake::BrakeThermalParams<T>& params, const CornerSamples& in,
                     const brake::BrakeState<T>& initial, double max_step, OnSample&& on_sample) {
   IntegrateOverSamples(
-      in.time, initial, max_step, [&](size_t k, double f) { return in.BrakeInputAt<T>(k, f); },
+      in, initial, max_step, [&](size_t k, double f) { return in.BrakeInputAt<T>(k, f); },
       [&](const brake::BrakeState<T>& x, const brake::BrakeInput<T>& u) {
         return brake::CalcBrakeDerivatives(params, x, u);
       },

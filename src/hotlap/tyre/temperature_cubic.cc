@@ -4,8 +4,8 @@
 #include <cmath>
 #include <vector>
 
-#include <Eigen/Dense>
 #include <fmt/format.h>
+#include <Eigen/Dense>
 
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
@@ -23,9 +23,10 @@ TemperatureCubic TemperatureCubic::Create(const TemperatureCubicSpec& s, const s
                      Celsius(s.valid_max_temp)));
   }
   if (!(s.low_temp < s.optimal_temp && s.optimal_temp < s.high_temp)) {
-    fail(fmt::format("temperatures must be distinct and ordered low < optimal < high; got low {}, "
-                     "optimal {}, high {}",
-                     Celsius(s.low_temp), Celsius(s.optimal_temp), Celsius(s.high_temp)));
+    fail(
+        fmt::format("temperatures must be distinct and ordered low < optimal < high; got low {}, "
+                    "optimal {}, high {}",
+                    Celsius(s.low_temp), Celsius(s.optimal_temp), Celsius(s.high_temp)));
   }
   if (s.low_temp < s.valid_min_temp || s.high_temp > s.valid_max_temp) {
     fail(fmt::format("low and high temperatures ({}, {}) must lie inside the valid range [{}, {}]",
@@ -61,21 +62,23 @@ TemperatureCubic TemperatureCubic::Create(const TemperatureCubicSpec& s, const s
     if (v > max_value) max_value = v, max_at = t;
   }
   if (min_value <= 0.0) {
-    fail(fmt::format("the cubic is not positive on its valid range [{}, {}]: it reaches {:.4g} at "
-                     "{}; move the low/high values closer to 1 or narrow the valid range",
-                     Celsius(s.valid_min_temp), Celsius(s.valid_max_temp), min_value,
-                     Celsius(min_at)));
+    fail(fmt::format(
+        "the cubic is not positive on its valid range [{}, {}]: it reaches {:.4g} at "
+        "{}; move the low/high values closer to 1 or narrow the valid range",
+        Celsius(s.valid_min_temp), Celsius(s.valid_max_temp), min_value, Celsius(min_at)));
   }
   constexpr double kTol = 1e-12;
   if (s.kind == CubicKind::kGripMaximum && (cubic.b_ >= 0.0 || max_value > 1.0 + kTol)) {
-    fail(fmt::format("the optimal temperature {} is not the grip maximum on the valid range (the "
-                     "cubic reaches {:.4g} at {}); low and high values must be below 1",
-                     Celsius(s.optimal_temp), max_value, Celsius(max_at)));
+    fail(
+        fmt::format("the optimal temperature {} is not the grip maximum on the valid range (the "
+                    "cubic reaches {:.4g} at {}); low and high values must be below 1",
+                    Celsius(s.optimal_temp), max_value, Celsius(max_at)));
   }
   if (s.kind == CubicKind::kWearMinimum && (cubic.b_ <= 0.0 || min_value < 1.0 - kTol)) {
-    fail(fmt::format("the optimal temperature {} is not the wear-rate minimum on the valid range "
-                     "(the cubic reaches {:.4g} at {}); low and high values must be above 1",
-                     Celsius(s.optimal_temp), min_value, Celsius(min_at)));
+    fail(
+        fmt::format("the optimal temperature {} is not the wear-rate minimum on the valid range "
+                    "(the cubic reaches {:.4g} at {}); low and high values must be above 1",
+                    Celsius(s.optimal_temp), min_value, Celsius(min_at)));
   }
   return cubic;
 }

@@ -20,11 +20,11 @@ enum class CubicKind { kGripMaximum, kWearMinimum };
 /// The four conditions and the valid range, temperatures in kelvin.
 struct TemperatureCubicSpec {
   CubicKind kind = CubicKind::kGripMaximum;
-  double optimal_temp = 0.0;  ///< K; value 1, slope 0 here.
-  double low_temp = 0.0;      ///< K; below optimal_temp.
-  double low_value = 0.0;     ///< value at low_temp.
-  double high_temp = 0.0;     ///< K; above optimal_temp.
-  double high_value = 0.0;    ///< value at high_temp.
+  double optimal_temp = 0.0;    ///< K; value 1, slope 0 here.
+  double low_temp = 0.0;        ///< K; below optimal_temp.
+  double low_value = 0.0;       ///< value at low_temp.
+  double high_temp = 0.0;       ///< K; above optimal_temp.
+  double high_value = 0.0;      ///< value at high_temp.
   double valid_min_temp = 0.0;  ///< K; the cubic is evaluated with T clamped to the valid range.
   double valid_max_temp = 0.0;  ///< K
 };

@@ -39,12 +39,14 @@ GripWearTable ReadGripWearTable(YamlReader& parent, std::string_view key) {
   }
   for (size_t i = 1; i < table.wear_mm.size(); ++i) {
     if (!(table.wear_mm[i] > table.wear_mm[i - 1])) {
-      parent.Fail(key, fmt::format("wear_mm must be strictly increasing; row {} has {:g} after {:g}",
-                                   i, table.wear_mm[i], table.wear_mm[i - 1]));
+      parent.Fail(key,
+                  fmt::format("wear_mm must be strictly increasing; row {} has {:g} after {:g}", i,
+                              table.wear_mm[i], table.wear_mm[i - 1]));
     }
     if (table.factor[i] > table.factor[i - 1]) {
-      parent.Fail(key, fmt::format("grip must not rise with wear; row {} has factor {:g} after {:g}",
-                                   i, table.factor[i], table.factor[i - 1]));
+      parent.Fail(key,
+                  fmt::format("grip must not rise with wear; row {} has factor {:g} after {:g}", i,
+                              table.factor[i], table.factor[i - 1]));
     }
   }
   return table;
@@ -119,8 +121,8 @@ TyreFile LoadTyreFile(const std::filesystem::path& path) {
                                          p.rim_radius, p.unloaded_radius));
     }
     if (!(p.contact_width < p.width)) {
-      c.Fail("contact_width_m", fmt::format("{:g} m must be smaller than width_m ({:g} m)",
-                                            p.contact_width, p.width));
+      c.Fail("contact_width_m",
+             fmt::format("{:g} m must be smaller than width_m ({:g} m)", p.contact_width, p.width));
     }
     c.Finish();
   }

@@ -23,40 +23,40 @@ namespace hotlap::tyre {
 template <Scalar T>
 struct TyreThermalParams {
   // Fitted per corner (000 Table 4).
-  T p1{};  ///< share of the sliding power that heats the tread, 1 (000:9)
-  T p2{};  ///< carcass hysteresis per |Fx|, J/(kg N) (000:10)
-  T p3{};  ///< carcass hysteresis per |Fy|, J/(kg N) (000:10)
-  T p4{};  ///< carcass hysteresis per |Fz|, J/(kg N) (000:10)
-  T p5{};  ///< tread-carcass conductance per tread area, W/(m^2 K) (000:20)
+  T p1{};             ///< share of the sliding power that heats the tread, 1 (000:9)
+  T p2{};             ///< carcass hysteresis per |Fx|, J/(kg N) (000:10)
+  T p3{};             ///< carcass hysteresis per |Fy|, J/(kg N) (000:10)
+  T p4{};             ///< carcass hysteresis per |Fz|, J/(kg N) (000:10)
+  T p5{};             ///< tread-carcass conductance per tread area, W/(m^2 K) (000:20)
   T wear_coeff{};     ///< wp1, mm/s (000:23)
   T wear_exponent{};  ///< wp2, 1 (000:23)
   // Contact length c_l = p_cp1 |Fz|^p_cp2 (000:14, Table 2), Fz in N, c_l in m.
   T contact_length_coeff{};     ///< p_cp1
   T contact_length_exponent{};  ///< p_cp2
   // Constants (000 Table 3).
-  T tread_mass{};                  ///< m_t, kg
-  T carcass_mass{};                ///< m_c, kg
-  T tread_heat_capacity{};         ///< c_t, J/(kg K)
-  T carcass_heat_capacity{};       ///< c_c, J/(kg K)
-  T track_conductance{};           ///< h_tt, W/(m^2 K) (000:17)
-  T contact_width{};               ///< c_w, m
-  T reference_slip_angle{};        ///< alpha_c, rad (000:19)
-  T non_sliding_fraction_low{};    ///< c_s1 (000:19)
-  T non_sliding_fraction_high{};   ///< c_s2 (000:19)
-  T unloaded_radius{};             ///< r0, m (000:22)
-  T rim_radius{};                  ///< r_rim, m (000:22)
-  T diameter{};                    ///< D, m, as printed (see the file comment)
-  T width{};                       ///< W, m
-  T emissivity{};                  ///< eps of rubber, 1
+  T tread_mass{};                 ///< m_t, kg
+  T carcass_mass{};               ///< m_c, kg
+  T tread_heat_capacity{};        ///< c_t, J/(kg K)
+  T carcass_heat_capacity{};      ///< c_c, J/(kg K)
+  T track_conductance{};          ///< h_tt, W/(m^2 K) (000:17)
+  T contact_width{};              ///< c_w, m
+  T reference_slip_angle{};       ///< alpha_c, rad (000:19)
+  T non_sliding_fraction_low{};   ///< c_s1 (000:19)
+  T non_sliding_fraction_high{};  ///< c_s2 (000:19)
+  T unloaded_radius{};            ///< r0, m (000:22)
+  T rim_radius{};                 ///< r_rim, m (000:22)
+  T diameter{};                   ///< D, m, as printed (see the file comment)
+  T width{};                      ///< W, m
+  T emissivity{};                 ///< eps of rubber, 1
 
   template <class Self>
   static auto FieldsOf(Self& s) {
     return std::tie(s.p1, s.p2, s.p3, s.p4, s.p5, s.wear_coeff, s.wear_exponent,
-                    s.contact_length_coeff, s.contact_length_exponent, s.tread_mass,
-                    s.carcass_mass, s.tread_heat_capacity, s.carcass_heat_capacity,
-                    s.track_conductance, s.contact_width, s.reference_slip_angle,
-                    s.non_sliding_fraction_low, s.non_sliding_fraction_high, s.unloaded_radius,
-                    s.rim_radius, s.diameter, s.width, s.emissivity);
+                    s.contact_length_coeff, s.contact_length_exponent, s.tread_mass, s.carcass_mass,
+                    s.tread_heat_capacity, s.carcass_heat_capacity, s.track_conductance,
+                    s.contact_width, s.reference_slip_angle, s.non_sliding_fraction_low,
+                    s.non_sliding_fraction_high, s.unloaded_radius, s.rim_radius, s.diameter,
+                    s.width, s.emissivity);
   }
   /// The same parameters in another scalar type (derivative parts start at zero).
   template <Scalar U>
@@ -109,6 +109,23 @@ struct TyreHeatFlows {
   T q7{};  ///< radiation from the sidewalls (000:22)
 };
 
+/// The parts of the model that depend only on the parameters and the inputs, not on the state.
+/// An integrator computes them once per distinct input time (RK4's two middle stages share one
+/// set, and a step's last stage is the next step's first); the results are identical to
+/// evaluating the model from the raw input.
+template <Scalar T>
+struct TyreInputTerms {
+  TyreInput<T> input;
+  T tread_area{};         ///< A_tot = pi D W, m^2 (000:13)
+  T convection_area{};    ///< A_conv, m^2 (000:12)
+  T adhesion_area{};      ///< A_cp, m^2 (000:18)
+  T q1{};                 ///< W (000:9)
+  T q2{};                 ///< W (000:10)
+  T wear_power_factor{};  ///< (Q1 / Q_ref)^wp2 (000:23)
+  T speed_length_pow{};   ///< (|u| L)^0.805 of (000:15), (m^2/s)^0.805
+  T length{};             ///< L of (000:16), m
+};
+
 /// Contact patch length c_l = p_cp1 |Fz|^p_cp2, m (000:14). Zero for Fz = 0.
 template <Scalar T>
 T CalcContactLength(const TyreThermalParams<T>& params, const T& fz);
@@ -119,10 +136,19 @@ template <Scalar T>
 T CalcForcedConvectionCoefficient(const TyreThermalParams<T>& params, const T& speed,
                                   const T& tread_temp, const T& ambient_temp);
 
+/// The state-independent terms for one input.
+template <Scalar T>
+TyreInputTerms<T> CalcTyreInputTerms(const TyreThermalParams<T>& params,
+                                     const TyreCompound& compound, const TyreInput<T>& input);
+
 /// All seven heat flows (000:9-22).
 template <Scalar T>
 TyreHeatFlows<T> CalcTyreHeatFlows(const TyreThermalParams<T>& params, const TyreState<T>& state,
                                    const TyreInput<T>& input);
+/// All seven heat flows from precomputed input terms.
+template <Scalar T>
+TyreHeatFlows<T> CalcTyreHeatFlows(const TyreThermalParams<T>& params, const TyreState<T>& state,
+                                   const TyreInputTerms<T>& terms);
 
 /// Wear rate, mm/s: wp1 * w(T_t) * (Q1 / Q_ref)^wp2 (000:23).
 template <Scalar T>
@@ -134,6 +160,11 @@ T CalcWearRate(const TyreThermalParams<T>& params, const TyreCompound& compound,
 template <Scalar T>
 TyreState<T> CalcTyreDerivatives(const TyreThermalParams<T>& params, const TyreCompound& compound,
                                  const TyreState<T>& state, const TyreInput<T>& input,
+                                 TyreHeatFlows<T>* flows = nullptr);
+/// As above, from precomputed input terms.
+template <Scalar T>
+TyreState<T> CalcTyreDerivatives(const TyreThermalParams<T>& params, const TyreCompound& compound,
+                                 const TyreState<T>& state, const TyreInputTerms<T>& terms,
                                  TyreHeatFlows<T>* flows = nullptr);
 
 }  // namespace hotlap::tyre

@@ -24,7 +24,7 @@ struct InitialTemperatures {
 struct Car {
   std::string name;
   std::filesystem::path path;
-  std::array<tyre::TyreFile, 4> tyres;    ///< indexed by CornerIndex
+  std::array<tyre::TyreFile, 4> tyres;     ///< indexed by CornerIndex
   std::array<brake::BrakeFile, 4> brakes;  ///< indexed by CornerIndex
   InitialTemperatures initial;
 

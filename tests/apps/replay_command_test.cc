@@ -1,0 +1,210 @@
+// End-to-end tests of `hotlap replay`: a good run writes the documented columns and a JSON
+// summary that agrees with them; every kind of bad input gives one clear message, a non-zero
+// exit and no output file.
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "hotlap/common/csv.h"
+#include "hotlap/common/units.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kSource = HOTLAP_SOURCE_DIR;
+const fs::path kExample = kSource / "data/telemetry/darlington_example.csv";
+
+struct RunResult {
+  int exit_code;
+  std::string out;
+  std::string err;
+};
+
+std::string ReadText(const fs::path& p) {
+  std::ifstream f(p);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+class ReplayCommandTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("hotlap_cmd_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  RunResult Run(const std::string& args) {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string command =
+        std::string(HOTLAP_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
+    const int status = std::system(command.c_str());
+    return {WEXITSTATUS(status), ReadText(out), ReadText(err)};
+  }
+
+  // A copy of the example log with one edit applied to its text.
+  fs::path EditedLog(const std::function<std::string(std::string)>& edit) {
+    const fs::path p = dir_ / "edited.csv";
+    std::ofstream(p) << edit(ReadText(kExample));
+    return p;
+  }
+
+  // A copy of the gen7 car folder whose file `relative` has `from` replaced by `to`.
+  fs::path EditedCar(const std::string& relative, const std::string& from, const std::string& to) {
+    const fs::path car = dir_ / "gen7";
+    fs::copy(kSource / "data/cars/gen7", car, fs::copy_options::recursive);
+    std::string text = ReadText(car / relative);
+    const size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+    std::ofstream(car / relative) << text;
+    return car / "car.yaml";
+  }
+
+  // Runs with bad input and checks: exit code 2, a single "hotlap: error:" line mentioning
+  // every `needles`, and no output file.
+  void ExpectCleanFailure(const std::string& args, const std::vector<std::string>& needles) {
+    const fs::path out = dir_ / "out.csv", json = dir_ / "out.json";
+    const RunResult r = Run(args + " --out " + out.string() + " --json " + json.string());
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err.rfind("hotlap: error: ", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    for (const std::string& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_FALSE(fs::exists(json));
+    for (const auto& entry : fs::directory_iterator(dir_)) {  // no temporary left behind either
+      EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+    }
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(ReplayCommandTest, WritesDocumentedColumnsAndMatchingJson) {
+  const fs::path out = dir_ / "out.csv", json = dir_ / "out.json";
+  const RunResult r = Run("replay --telemetry " + kExample.string() + " --out " + out.string() +
+                          " --json " + json.string() + " --heat-flows");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("corner"), std::string::npos);
+
+  const hotlap::CsvTable table = hotlap::ReadCsv(out);
+  const hotlap::CsvTable input = hotlap::ReadCsv(kExample);
+  EXPECT_EQ(table.RowCount(), input.RowCount());  // one row per input row
+  EXPECT_EQ(table.columns.front(), "time_s");
+  for (const char* c : {"fl", "fr", "rl", "rr"}) {
+    for (const std::string q : {"tread_temp_", "carcass_temp_", "disc_temp_", "calliper_temp_"}) {
+      EXPECT_GE(table.ColumnIndex(q + c + "_C"), 0) << q << c;
+    }
+    EXPECT_GE(table.ColumnIndex(std::string("wear_") + c + "_mm"), 0);
+    EXPECT_GE(table.ColumnIndex(std::string("grip_factor_") + c), 0);
+    EXPECT_GE(table.ColumnIndex(std::string("brake_power_") + c + "_W"), 0);
+    for (int q = 1; q <= 7; ++q) {
+      EXPECT_GE(table.ColumnIndex("q" + std::to_string(q) + "_" + c + "_W"), 0);
+    }
+  }
+  const nlohmann::json j = nlohmann::json::parse(ReadText(json));
+  EXPECT_EQ(j["samples"].get<size_t>(), table.RowCount());
+  for (const char* c : {"fl", "fr", "rl", "rr"}) {
+    const auto& tread = table.values[table.ColumnIndex(std::string("tread_temp_") + c + "_C")];
+    const double peak = *std::max_element(tread.begin(), tread.end());
+    EXPECT_NEAR(j["corners"][c]["tread_temp_C"]["peak"].get<double>(), peak, 1e-6);
+    EXPECT_NEAR(j["corners"][c]["tread_temp_C"]["final"].get<double>(), tread.back(), 1e-6);
+    const auto& wear = table.values[table.ColumnIndex(std::string("wear_") + c + "_mm")];
+    EXPECT_NEAR(j["corners"][c]["wear_mm"].get<double>(), wear.back(),
+                1e-8 * wear.back());  // 9 digits
+    EXPECT_GT(wear.back(), 0.0);
+  }
+  // The outside (right) tyres work harder than the inside ones on an anticlockwise oval.
+  EXPECT_GT(j["corners"]["fr"]["tread_temp_C"]["peak"].get<double>(),
+            j["corners"]["fl"]["tread_temp_C"]["peak"].get<double>());
+  EXPECT_GT(j["corners"]["rr"]["wear_mm"].get<double>(),
+            j["corners"]["rl"]["wear_mm"].get<double>());
+}
+
+TEST_F(ReplayCommandTest, MissingColumnIsNamed) {
+  const fs::path log = EditedLog([](std::string s) {
+    return std::regex_replace(s, std::regex("fz_rl_N"), "fz_rl_unknown_thing");
+  });
+  ExpectCleanFailure("replay --telemetry " + log.string(), {"fz_rl", log.filename().string()});
+}
+
+TEST_F(ReplayCommandTest, UnknownUnitIsNamed) {
+  const fs::path log = EditedLog(
+      [](std::string s) { return std::regex_replace(s, std::regex("fx_fr_N"), "fx_fr_lbf"); });
+  ExpectCleanFailure("replay --telemetry " + log.string(), {"fx_fr_lbf", "lbf"});
+}
+
+TEST_F(ReplayCommandTest, NanCellIsNamedWithLineAndColumn) {
+  const fs::path log = EditedLog([](std::string s) {
+    // Replace the first value of the 10th data line's second column with nan.
+    size_t pos = 0;
+    for (int i = 0; i < 15; ++i) pos = s.find('\n', pos) + 1;
+    const size_t comma = s.find(',', pos);
+    const size_t next = s.find(',', comma + 1);
+    return s.substr(0, comma + 1) + "nan" + s.substr(next);
+  });
+  ExpectCleanFailure("replay --telemetry " + log.string(), {"edited.csv:16", "distance_m", "nan"});
+}
+
+TEST_F(ReplayCommandTest, TimeNotIncreasingIsNamed) {
+  const fs::path log = EditedLog([](std::string s) {
+    return std::regex_replace(s, std::regex("\n0\\.1,"), "\n0,",
+                              std::regex_constants::format_first_only);
+  });
+  ExpectCleanFailure("replay --telemetry " + log.string(), {"time_s", "increasing"});
+}
+
+TEST_F(ReplayCommandTest, NegativeMassIsNamed) {
+  const fs::path car = EditedCar("tyres/rr.yaml", "tread_mass_kg: 0.9", "tread_mass_kg: -0.9");
+  ExpectCleanFailure("replay --telemetry " + kExample.string() + " --car " + car.string(),
+                     {"rr.yaml", "construction.tread_mass_kg", "-0.9", "> 0 kg"});
+}
+
+TEST_F(ReplayCommandTest, CubicThatGoesNegativeIsRejected) {
+  const fs::path car = EditedCar("tyres/compound.yaml", "low_value: 0.90", "low_value: 0.05");
+  ExpectCleanFailure("replay --telemetry " + kExample.string() + " --car " + car.string(),
+                     {"compound.yaml", "grip_cubic", "not positive"});
+}
+
+TEST_F(ReplayCommandTest, UnreadableFileIsNamed) {
+  ExpectCleanFailure("replay --telemetry " + (dir_ / "no_such.csv").string(), {"no_such.csv"});
+}
+
+TEST_F(ReplayCommandTest, WrongUnitInParameterKeyIsNamed) {
+  const fs::path car = EditedCar("brakes/front.yaml", "disc_mass_kg: 8.8", "disc_mass_lb: 19.4");
+  ExpectCleanFailure("replay --telemetry " + kExample.string() + " --car " + car.string(),
+                     {"front.yaml", "disc_mass_kg", "disc_mass_lb"});
+}
+
+TEST_F(ReplayCommandTest, MissingOutputFolderFailsBeforeWork) {
+  const RunResult r = Run("replay --telemetry " + kExample.string() + " --out " +
+                          (dir_ / "nope" / "out.csv").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+}
+
+// The shipped example log is exactly what the documented generator writes.
+TEST(ExampleLogTest, ShippedLogIsReproducedByItsGenerator) {
+  const fs::path dir = fs::temp_directory_path() / "hotlap_example_log_test";
+  fs::create_directories(dir);
+  const fs::path out = dir / "example.csv";
+  const std::string command =
+      std::string(HOTLAP_MAKE_EXAMPLE_LOG) + " " + out.string() + " >/dev/null";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  EXPECT_EQ(ReadText(out), ReadText(kExample));
+  fs::remove_all(dir);
+}
+
+}  // namespace

@@ -1,0 +1,175 @@
+#include "hotlap/common/yaml_reader.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "hotlap/common/error.h"
+#include "test_util.h"
+
+namespace hotlap {
+namespace {
+
+using test::Contains;
+
+// Runs `f` and returns the InputError's message; fails the test if none is thrown.
+template <class F>
+std::string ErrorOf(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no InputError thrown";
+  return "";
+}
+
+TEST(RangeTest, ContainsHonoursOpenAndClosedEnds) {
+  EXPECT_TRUE(Range::Positive("kg").Contains(1e-300));
+  EXPECT_FALSE(Range::Positive("kg").Contains(0.0));
+  EXPECT_TRUE(Range::NonNegative("kg").Contains(0.0));
+  EXPECT_FALSE(Range::NonNegative("kg").Contains(-1e-300));
+  EXPECT_TRUE(Range::Closed(0, 1, "").Contains(1.0));
+  EXPECT_FALSE(Range::Closed(0, 1, "").Contains(1.0 + 1e-15));
+  EXPECT_FALSE(Range::OpenClosed(0, 1, "").Contains(0.0));
+  EXPECT_TRUE(Range::OpenClosed(0, 1, "").Contains(1.0));
+  EXPECT_TRUE(Range::Any("m").Contains(-1e300));
+  EXPECT_FALSE(Range::Any("m").Contains(std::numeric_limits<double>::infinity()));
+  EXPECT_FALSE(Range::Any("m").Contains(std::numeric_limits<double>::quiet_NaN()));
+}
+
+TEST(RangeTest, DescribeSaysTheBoundsAndUnit) {
+  EXPECT_EQ(Range::Positive("kg").Describe(), "> 0 kg");
+  EXPECT_EQ(Range::NonNegative("mm").Describe(), ">= 0 mm");
+  EXPECT_EQ(Range::Closed(0, 1, "").Describe(), "in [0, 1]");
+  EXPECT_EQ(Range::OpenClosed(0, 90, "deg").Describe(), "in (0, 90] deg");
+  EXPECT_EQ(Range::Any("m").Describe(), "a finite number m");
+}
+
+class YamlReaderTest : public ::testing::Test {
+ protected:
+  std::filesystem::path Write(const std::string& text) { return dir_.Write("f.yaml", text); }
+  test::TempDir dir_;
+};
+
+TEST_F(YamlReaderTest, ReadsEveryKindOfField) {
+  dir_.Write("other.yaml", "x: 1\n");
+  const auto path = Write(
+      "name: demo\n"
+      "model: a\n"
+      "mass_kg: 2.5\n"
+      "plus: +3\n"
+      "sci: 1e-3\n"
+      "ref: other.yaml\n"
+      "inner:\n"
+      "  depth_mm: 4\n"
+      "rows:\n"
+      "  - {a: 1}\n"
+      "  - {a: 2}\n");
+  YamlReader y = YamlReader::Load(path);
+  EXPECT_EQ(y.file(), path);
+  EXPECT_EQ(y.String("name"), "demo");
+  EXPECT_EQ(y.Choice("model", {"a", "b"}), "a");
+  EXPECT_EQ(y.Number("mass_kg", Range::Positive("kg")), 2.5);
+  EXPECT_EQ(y.Number("plus", Range::Any("")), 3.0);
+  EXPECT_EQ(y.Number("sci", Range::Any("")), 1e-3);
+  EXPECT_EQ(y.FilePath("ref"), dir_.path() / "other.yaml");
+  EXPECT_FALSE(y.OptionalNumber("absent", Range::Any("")).has_value());
+  EXPECT_FALSE(y.OptionalString("absent").has_value());
+  EXPECT_TRUE(y.Has("inner"));
+  EXPECT_FALSE(y.Has("absent"));
+  YamlReader inner = y.Map("inner");
+  EXPECT_EQ(inner.Number("depth_mm", Range::NonNegative("mm")), 4.0);
+  inner.Finish();
+  auto rows = y.MapList("rows", 2);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[1].Number("a", Range::Any("")), 2.0);
+  EXPECT_NO_THROW(y.Finish());
+}
+
+TEST_F(YamlReaderTest, MissingFileAndBadSyntaxAndNonMapping) {
+  EXPECT_TRUE(
+      Contains(ErrorOf([&] { YamlReader::Load(dir_.path() / "nope.yaml"); }), "no such file"));
+  const auto bad = Write("a: 1\nb: [1, 2\nc: 3\n");
+  const std::string m = ErrorOf([&] { YamlReader::Load(bad); });
+  EXPECT_TRUE(Contains(m, bad.string() + ":"));
+  EXPECT_TRUE(Contains(m, "YAML syntax error"));
+  const auto list = Write("- 1\n- 2\n");
+  EXPECT_TRUE(Contains(ErrorOf([&] { YamlReader::Load(list); }), "expected a mapping"));
+}
+
+TEST_F(YamlReaderTest, OutOfRangeNamesFileFieldValueAndRange) {
+  const auto path = Write("inner:\n  mass_kg: -2\n");
+  YamlReader y = YamlReader::Load(path);
+  YamlReader inner = y.Map("inner");
+  const std::string m = ErrorOf([&] { inner.Number("mass_kg", Range::Positive("kg")); });
+  EXPECT_EQ(m, path.string() + ": field 'inner.mass_kg': value -2 is out of range: must be > 0 kg");
+}
+
+TEST_F(YamlReaderTest, RejectsNonNumbers) {
+  YamlReader y =
+      YamlReader::Load(Write("a: abc\nb: 1.5kg\nc: .nan\nd: [1]\ne: \"\"\nf: 1e999\ng: 0x10\n"));
+  const Range any = Range::Any("");
+  EXPECT_TRUE(Contains(ErrorOf([&] { y.Number("a", any); }), "'abc' is not a number"));
+  EXPECT_TRUE(Contains(ErrorOf([&] { y.Number("b", any); }), "'1.5kg' is not a number"));
+  EXPECT_TRUE(Contains(ErrorOf([&] { y.Number("c", any); }), "field 'c'"));
+  EXPECT_TRUE(Contains(ErrorOf([&] { y.Number("d", any); }), "expected a number"));
+  EXPECT_TRUE(Contains(ErrorOf([&] { y.String("e"); }), "non-empty"));
+  EXPECT_TRUE(Contains(ErrorOf([&] { y.Number("f", any); }), "field 'f'"));  // overflows
+  EXPECT_TRUE(Contains(ErrorOf([&] { y.Number("g", any); }), "'0x10' is not a number"));
+}
+
+// A key with another unit suffix is a missing field plus a hint naming the key that was found.
+TEST_F(YamlReaderTest, MissingFieldSuggestsTheKeyFound) {
+  const auto path = Write("tread_mass_g: 900\n");
+  YamlReader y = YamlReader::Load(path);
+  const std::string m = ErrorOf([&] { y.Number("tread_mass_kg", Range::Positive("kg")); });
+  EXPECT_TRUE(Contains(m, path.string()));
+  EXPECT_TRUE(Contains(m, "missing field 'tread_mass_kg'"));
+  EXPECT_TRUE(Contains(m, "found 'tread_mass_g' instead"));
+  EXPECT_TRUE(Contains(m, "> 0 kg"));
+  // Nothing close: no suggestion.
+  YamlReader z = YamlReader::Load(Write("completely_different: 1\n"));
+  EXPECT_FALSE(Contains(ErrorOf([&] { z.Number("p1", Range::Any("")); }), "found"));
+}
+
+TEST_F(YamlReaderTest, FinishRejectsUnreadKeysWithSuggestion) {
+  const auto path = Write("emissivity: 0.9\nemisivity: 0.9\nextra: 1\n");
+  YamlReader y = YamlReader::Load(path);
+  y.Number("emissivity", Range::Closed(0, 1, ""));
+  const std::string m = ErrorOf([&] { y.Finish(); });
+  EXPECT_TRUE(Contains(m, path.string() + ": unknown field 'emisivity'"));
+  EXPECT_TRUE(Contains(m, "did you mean 'emissivity'"));
+  EXPECT_TRUE(Contains(m, "1 more unknown field"));
+}
+
+TEST_F(YamlReaderTest, ChoiceFilePathMapAndListErrors) {
+  const auto path =
+      Write("model: c\nref: missing.yaml\nscalar: 3\nrows:\n  - {a: 1}\nbadrows:\n  - 1\n  - 2\n");
+  YamlReader y = YamlReader::Load(path);
+  const std::string choice = ErrorOf([&] { y.Choice("model", {"a", "b"}); });
+  EXPECT_TRUE(Contains(choice, "field 'model'"));
+  EXPECT_TRUE(Contains(choice, "'c' is not allowed"));
+  EXPECT_TRUE(Contains(choice, "'a'"));
+  const std::string file = ErrorOf([&] { y.FilePath("ref"); });
+  EXPECT_TRUE(Contains(file, "field 'ref'"));
+  EXPECT_TRUE(Contains(file, "does not exist"));
+  EXPECT_TRUE(Contains(ErrorOf([&] { y.Map("scalar"); }), "expected a mapping"));
+  EXPECT_TRUE(Contains(ErrorOf([&] { y.Map("absent"); }), "missing field 'absent'"));
+  EXPECT_TRUE(Contains(ErrorOf([&] { y.MapList("rows", 2); }), "at least 2 entries"));
+  EXPECT_TRUE(Contains(ErrorOf([&] { y.MapList("badrows", 1); }), "field 'badrows[0]'"));
+}
+
+TEST_F(YamlReaderTest, FailNamesFileAndDottedField) {
+  const auto path = Write("outer:\n  inner:\n    x: 1\n");
+  YamlReader y = YamlReader::Load(path);
+  YamlReader inner = y.Map("outer").Map("inner");
+  EXPECT_EQ(inner.Where("x"), path.string() + ": field 'outer.inner.x'");
+  EXPECT_EQ(ErrorOf([&] { inner.Fail("x", "too big"); }),
+            path.string() + ": field 'outer.inner.x': too big");
+}
+
+}  // namespace
+}  // namespace hotlap

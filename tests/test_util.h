@@ -1,0 +1,94 @@
+#pragma once
+/// @file
+/// Small helpers shared by the tests: the repository's data folder, a fresh temporary folder per
+/// test, text files in and out, and a substring assertion for error messages.
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace hotlap::test {
+
+/// A path inside the source tree, e.g. SourcePath("data/cars/gen7/car.yaml"). Uses the compile
+/// definition HOTLAP_SOURCE_DIR, never the working directory.
+inline std::filesystem::path SourcePath(const std::string& relative) {
+  return std::filesystem::path(HOTLAP_SOURCE_DIR) / relative;
+}
+
+/// The shipped gen7 car folder.
+inline std::filesystem::path Gen7Dir() { return SourcePath("data/cars/gen7"); }
+
+/// Whole file as a string; throws if it cannot be read.
+inline std::string ReadTextFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("test: cannot read " + path.string());
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// Writes `text` byte for byte to `path` (creating its folder) and returns the path.
+inline std::filesystem::path WriteTextFile(const std::filesystem::path& path,
+                                           const std::string& text) {
+  std::filesystem::create_directories(path.parent_path());
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+/// `text` with the first occurrence of `from` replaced by `to`; throws if `from` is absent, so a
+/// test that edits a shipped file notices when that file changes under it.
+inline std::string ReplaceOnce(std::string text, const std::string& from, const std::string& to) {
+  const size_t at = text.find(from);
+  if (at == std::string::npos) throw std::runtime_error("test: '" + from + "' not found");
+  text.replace(at, from.size(), to);
+  return text;
+}
+
+/// Passes when `text` contains `part`; prints both otherwise.
+inline ::testing::AssertionResult Contains(const std::string& text, const std::string& part) {
+  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
+}
+
+/// A fresh folder under the system temp folder named after the running test (and the process),
+/// removed with everything in it when the object goes away.
+class TempDir {
+ public:
+  TempDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = info == nullptr ? std::string("no_test")
+                                       : std::string(info->test_suite_name()) + "_" + info->name();
+    std::replace_if(
+        name.begin(), name.end(), [](unsigned char c) { return !std::isalnum(c) && c != '_'; },
+        '_');
+    path_ = std::filesystem::temp_directory_path() /
+            ("hotlap_test_" + std::to_string(::getpid()) + "_" + name);
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+  /// Writes `text` to `relative` inside the folder and returns the full path.
+  std::filesystem::path Write(const std::string& relative, const std::string& text) const {
+    return WriteTextFile(path_ / relative, text);
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+}  // namespace hotlap::test
