@@ -1,17 +1,21 @@
 #pragma once
 /// @file
 /// Small helpers shared by the tests: the repository's data folder, a fresh temporary folder per
-/// test, text files in and out, and a substring assertion for error messages.
+/// test, text files in and out, a substring assertion for error messages, and central differences
+/// to check automatic derivatives against.
 
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstddef>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include <gtest/gtest.h>
 
@@ -56,6 +60,34 @@ inline std::string ReplaceOnce(std::string text, const std::string& from, const 
 inline ::testing::AssertionResult Contains(const std::string& text, const std::string& part) {
   if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
+}
+
+/// Central difference of `f` with respect to the double that `select(x)` refers to, with a relative
+/// step h = 1e-6 |value|: (f(x + h) - f(x - h)) / (2 h). `f` returns a double, or a std::array of
+/// doubles that is differenced element by element.
+template <class X, class Select, class F>
+auto CentralDifference(const X& x, Select select, F f) {
+  X up = x, down = x;
+  const double h = 1e-6 * std::abs(select(up));
+  select(up) += h;
+  select(down) -= h;
+  const auto fu = f(static_cast<const X&>(up));
+  const auto fdn = f(static_cast<const X&>(down));
+  if constexpr (std::is_floating_point_v<std::remove_cv_t<decltype(fu)>>) {
+    return (fu - fdn) / (2 * h);
+  } else {
+    auto d = fu;
+    for (std::size_t k = 0; k < d.size(); ++k) d[k] = (fu[k] - fdn[k]) / (2 * h);
+    return d;
+  }
+}
+
+/// Checks an automatic derivative `ad` against a central difference `fd` (CentralDifference).
+/// With the relative step 1e-6 the truncation error is ~1e-12 relative and the rounding error
+/// ~1e-16 / 1e-6 times (largest term / derivative); 1e-5 relative covers both, with an absolute
+/// floor of 1e-9 of the quantity's `scale` for derivatives that are (near) zero.
+inline void ExpectNearDerivative(double ad, double fd, double scale, const std::string& what) {
+  EXPECT_NEAR(ad, fd, 1e-5 * std::max(std::abs(ad), std::abs(fd)) + 1e-9 * scale) << what;
 }
 
 /// A fresh folder under the system temp folder named after the running test (and the process),

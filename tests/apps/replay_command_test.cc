@@ -4,9 +4,7 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <regex>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -14,6 +12,7 @@
 
 #include "hotlap/common/csv.h"
 #include "hotlap/common/units.h"
+#include "test_util.h"
 
 namespace {
 
@@ -28,48 +27,34 @@ struct RunResult {
   std::string err;
 };
 
-std::string ReadText(const fs::path& p) {
-  std::ifstream f(p);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
+using hotlap::test::ReadTextFile;
+using hotlap::test::WriteTextFile;
 
+// A fresh folder per test, removed with everything in it at the end.
 class ReplayCommandTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("hotlap_cmd_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   RunResult Run(const std::string& args) {
     const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
     const std::string command =
         std::string(HOTLAP_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
     const int status = std::system(command.c_str());
-    return {WEXITSTATUS(status), ReadText(out), ReadText(err)};
+    return {WEXITSTATUS(status), ReadTextFile(out), ReadTextFile(err)};
   }
 
   // A copy of the example log with one edit applied to its text.
   fs::path EditedLog(const std::function<std::string(std::string)>& edit) {
-    const fs::path p = dir_ / "edited.csv";
-    std::ofstream(p) << edit(ReadText(kExample));
-    return p;
+    return WriteTextFile(dir_ / "edited.csv", edit(ReadTextFile(kExample)));
   }
 
   // A copy of the gen7 car folder whose file `relative` has `from` replaced by `to`.
   fs::path EditedCar(const std::string& relative, const std::string& from, const std::string& to) {
     const fs::path car = dir_ / "gen7";
     fs::copy(kSource / "data/cars/gen7", car, fs::copy_options::recursive);
-    std::string text = ReadText(car / relative);
+    std::string text = ReadTextFile(car / relative);
     const size_t at = text.find(from);
     EXPECT_NE(at, std::string::npos) << from;
     text.replace(at, from.size(), to);
-    std::ofstream(car / relative) << text;
+    WriteTextFile(car / relative, text);
     return car / "car.yaml";
   }
 
@@ -89,7 +74,8 @@ class ReplayCommandTest : public ::testing::Test {
     }
   }
 
-  fs::path dir_;
+  const hotlap::test::TempDir tmp_;
+  const fs::path dir_ = tmp_.path();
 };
 
 TEST_F(ReplayCommandTest, WritesDocumentedColumnsAndMatchingJson) {
@@ -114,7 +100,7 @@ TEST_F(ReplayCommandTest, WritesDocumentedColumnsAndMatchingJson) {
       EXPECT_GE(table.ColumnIndex("q" + std::to_string(q) + "_" + c + "_W"), 0);
     }
   }
-  const nlohmann::json j = nlohmann::json::parse(ReadText(json));
+  const nlohmann::json j = nlohmann::json::parse(ReadTextFile(json));
   EXPECT_EQ(j["samples"].get<size_t>(), table.RowCount());
   for (const char* c : {"fl", "fr", "rl", "rr"}) {
     const auto& tread = table.values[table.ColumnIndex(std::string("tread_temp_") + c + "_C")];
@@ -197,14 +183,12 @@ TEST_F(ReplayCommandTest, MissingOutputFolderFailsBeforeWork) {
 
 // The shipped example log is exactly what the documented generator writes.
 TEST(ExampleLogTest, ShippedLogIsReproducedByItsGenerator) {
-  const fs::path dir = fs::temp_directory_path() / "hotlap_example_log_test";
-  fs::create_directories(dir);
-  const fs::path out = dir / "example.csv";
+  const hotlap::test::TempDir dir;
+  const fs::path out = dir.path() / "example.csv";
   const std::string command =
       std::string(HOTLAP_MAKE_EXAMPLE_LOG) + " " + out.string() + " >/dev/null";
   ASSERT_EQ(std::system(command.c_str()), 0);
-  EXPECT_EQ(ReadText(out), ReadText(kExample));
-  fs::remove_all(dir);
+  EXPECT_EQ(ReadTextFile(out), ReadTextFile(kExample));
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include "hotlap/common/rk4.h"
 #include "hotlap/common/scalar.h"
+#include "test_util.h"
 
 namespace hotlap::brake {
 namespace {
@@ -202,10 +203,13 @@ TEST(BrakeThermalTest, RelaxesWhileCoastingFromBelow) {
   ExpectBrakeRelaxesMonotonically(250.0, 60.0, 0.0);
 }
 
-// Central differences, relative step 1e-6; 1e-5 relative tolerance with a small absolute floor
-// for derivatives that vanish (see tyre_thermal_test.cc for the error budget).
-void ExpectNearDerivative(double ad, double fd, double scale, const std::string& what) {
-  EXPECT_NEAR(ad, fd, 1e-5 * std::max(std::abs(ad), std::abs(fd)) + 1e-9 * scale) << what;
+using test::CentralDifference;
+using test::ExpectNearDerivative;
+
+// Both temperature rates {dT_d/dt, dT_k/dt} at the worked input.
+std::array<double, 2> Rates(const BrakeThermalParams<double>& p, const BrakeState<double>& x) {
+  const BrakeState<double> d = CalcBrakeDerivatives(p, x, WorkedInput());
+  return {d.disc_temp, d.calliper_temp};
 }
 
 std::array<double*, 14> FittedFields(BrakeThermalParams<double>& p) {
@@ -242,16 +246,12 @@ TEST(BrakeThermalTest, ParameterDerivativesMatchFiniteDifferences) {
   const BrakeInput<Jet14> inj{Jet14(70.0), Jet14(-3000.0), Jet14(298.15)};
   const BrakeState<Jet14> d = CalcBrakeDerivatives(pj, xj, inj);
   for (int i = 0; i < 14; ++i) {
-    BrakeThermalParams<double> up = p, down = p;
-    const double h = 1e-6 * std::abs(*FittedFields(up)[i]);
-    *FittedFields(up)[i] += h;
-    *FittedFields(down)[i] -= h;
-    const BrakeState<double> fu = CalcBrakeDerivatives(up, WorkedState(), WorkedInput());
-    const BrakeState<double> fdn = CalcBrakeDerivatives(down, WorkedState(), WorkedInput());
-    ExpectNearDerivative(d.disc_temp.v[i], (fu.disc_temp - fdn.disc_temp) / (2 * h), 500.0,
-                         "dT_d/dt, parameter " + std::to_string(i));
-    ExpectNearDerivative(d.calliper_temp.v[i], (fu.calliper_temp - fdn.calliper_temp) / (2 * h),
-                         5.0, "dT_k/dt, parameter " + std::to_string(i));
+    const std::array<double, 2> fd = CentralDifference(
+        p, [i](BrakeThermalParams<double>& q) -> double& { return *FittedFields(q)[i]; },
+        [](const BrakeThermalParams<double>& q) { return Rates(q, WorkedState()); });
+    ExpectNearDerivative(d.disc_temp.v[i], fd[0], 500.0, "dT_d/dt, parameter " + std::to_string(i));
+    ExpectNearDerivative(d.calliper_temp.v[i], fd[1], 5.0,
+                         "dT_k/dt, parameter " + std::to_string(i));
   }
   // The disc ignores the calliper's polynomial and vice versa; gamma moves both.
   EXPECT_EQ(d.disc_temp.v[8], 0.0);
@@ -266,18 +266,12 @@ TEST(BrakeThermalTest, StateDerivativesMatchFiniteDifferences) {
   const BrakeInput<Jet2> inj{Jet2(70.0), Jet2(-3000.0), Jet2(298.15)};
   const BrakeState<Jet2> d = CalcBrakeDerivatives(p.Cast<Jet2>(), xj, inj);
   for (int i = 0; i < 2; ++i) {
-    BrakeState<double> up = WorkedState(), down = WorkedState();
-    double& ui = i == 0 ? up.disc_temp : up.calliper_temp;
-    double& di = i == 0 ? down.disc_temp : down.calliper_temp;
-    const double h = 1e-6 * ui;
-    ui += h;
-    di -= h;
-    const BrakeState<double> fu = CalcBrakeDerivatives(p, up, WorkedInput());
-    const BrakeState<double> fdn = CalcBrakeDerivatives(p, down, WorkedInput());
-    ExpectNearDerivative(d.disc_temp.v[i], (fu.disc_temp - fdn.disc_temp) / (2 * h), 1.0,
-                         "dT_d/dt, state " + std::to_string(i));
-    ExpectNearDerivative(d.calliper_temp.v[i], (fu.calliper_temp - fdn.calliper_temp) / (2 * h),
-                         0.01, "dT_k/dt, state " + std::to_string(i));
+    const std::array<double, 2> fd = CentralDifference(
+        WorkedState(),
+        [i](BrakeState<double>& x) -> double& { return i == 0 ? x.disc_temp : x.calliper_temp; },
+        [&](const BrakeState<double>& x) { return Rates(p, x); });
+    ExpectNearDerivative(d.disc_temp.v[i], fd[0], 1.0, "dT_d/dt, state " + std::to_string(i));
+    ExpectNearDerivative(d.calliper_temp.v[i], fd[1], 0.01, "dT_k/dt, state " + std::to_string(i));
   }
   EXPECT_LT(d.disc_temp.v[0], 0.0);
   EXPECT_GT(d.calliper_temp.v[0], 0.0);  // a hotter disc feeds the calliper through the pads
@@ -314,10 +308,9 @@ TYPED_TEST(BrakeScalarTest, EveryFunctionInstantiatesAndAgreesWithDouble) {
   same(dt.disc_temp, d.disc_temp);
   same(dt.calliper_temp, d.calliper_temp);
   if constexpr (IsJet<T>::value) {
-    const double h = 1e-6 * 600.0;
-    const double fd = (CalcBrakeDerivatives(p, {600.0 + h, 400.0}, WorkedInput()).disc_temp -
-                       CalcBrakeDerivatives(p, {600.0 - h, 400.0}, WorkedInput()).disc_temp) /
-                      (2 * h);
+    const double fd = CentralDifference(
+        WorkedState(), [](BrakeState<double>& x) -> double& { return x.disc_temp; },
+        [&](const BrakeState<double>& x) { return Rates(p, x)[0]; });
     ExpectNearDerivative(dt.disc_temp.v[0], fd, 1.0, "d(dT_d/dt)/dT_d");
   }
 }

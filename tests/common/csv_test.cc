@@ -1,14 +1,10 @@
 #include "hotlap/common/csv.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <locale>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -16,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "hotlap/common/error.h"
+#include "test_util.h"
 
 namespace hotlap {
 namespace {
@@ -24,41 +21,12 @@ namespace fs = std::filesystem;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Passes when `text` contains `part`; prints both otherwise.
-::testing::AssertionResult Contains(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
-}
+using test::Contains;
+using test::ReadTextFile;
 
-// A fresh folder under the system temp folder, removed with everything in it at the end.
+// A fresh folder per test (removed with everything in it at the end) and helpers on it.
 class CsvTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("hotlap_csv_test_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-
-  // Writes `text` byte for byte to a file in the folder and returns its path.
-  fs::path WriteText(const std::string& name, const std::string& text) {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
-
-  static std::string ReadText(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
   // The names of everything in the folder.
   std::vector<std::string> Listing() const {
     std::vector<std::string> names;
@@ -71,7 +39,7 @@ class CsvTest : public ::testing::Test {
 
   // The message of the InputError that reading `text` throws ("" and a failure if none).
   std::string ReadError(const std::string& text, const std::string& name = "bad.csv") {
-    const fs::path path = WriteText(name, text);
+    const fs::path path = tmp_.Write(name, text);
     try {
       ReadCsv(path);
     } catch (const InputError& e) {
@@ -81,7 +49,8 @@ class CsvTest : public ::testing::Test {
     return "";
   }
 
-  fs::path dir_;
+  const test::TempDir tmp_;
+  const fs::path dir_ = tmp_.path();
 };
 
 TEST_F(CsvTest, RoundTripKeepsValuesEmptyCellsAndMetadata) {
@@ -123,21 +92,21 @@ TEST_F(CsvTest, WritesTheExpectedText) {
   const fs::path path = dir_ / "small.csv";
   WriteCsv(path, {{"track", "darlington"}, {"a note", ""}}, {"time_s", "x"},
            {{0.0, 0.1, 2.0}, {1.5, kNaN, -3e-7}});
-  EXPECT_EQ(ReadText(path), "# track: darlington\n# a note\ntime_s,x\n0,1.5\n0.1,\n2,-3e-07\n");
+  EXPECT_EQ(ReadTextFile(path), "# track: darlington\n# a note\ntime_s,x\n0,1.5\n0.1,\n2,-3e-07\n");
   // No temporary file is left beside it.
   EXPECT_EQ(Listing(), std::vector<std::string>{"small.csv"});
 }
 
 TEST_F(CsvTest, ReadsBomCrlfBlankLinesSpacesAndPlusSign) {
-  const fs::path path = WriteText("log.csv",
-                                  "\xEF\xBB\xBF# track :  darlington \r\n"
-                                  "#free text, no colon\r\n"
-                                  "\r\n"
-                                  " time_s , speed_mps ,note\r\n"
-                                  "0, 1.5 ,\r\n"
-                                  "   \r\n"
-                                  "0.5,+2e1,-0.25\r\n"
-                                  "1,,7");  // no line end at the end of the file
+  const fs::path path = tmp_.Write("log.csv",
+                                   "\xEF\xBB\xBF# track :  darlington \r\n"
+                                   "#free text, no colon\r\n"
+                                   "\r\n"
+                                   " time_s , speed_mps ,note\r\n"
+                                   "0, 1.5 ,\r\n"
+                                   "   \r\n"
+                                   "0.5,+2e1,-0.25\r\n"
+                                   "1,,7");  // no line end at the end of the file
   const CsvTable table = ReadCsv(path);
   ASSERT_EQ(table.metadata.size(), 2u);
   EXPECT_EQ(table.metadata[0], (std::pair<std::string, std::string>{"track", "darlington"}));
@@ -172,7 +141,7 @@ TEST_F(CsvTest, NumbersIgnoreTheGlobalLocale) {
   WriteCsv(path, {}, {"time_s", "x"}, {{0.0, 1.0}, {2.5, -12345.125}});
   const CsvTable table = ReadCsv(path);
   std::locale::global(saved);
-  EXPECT_EQ(ReadText(path), "time_s,x\n0,2.5\n1,-12345.125\n");
+  EXPECT_EQ(ReadTextFile(path), "time_s,x\n0,2.5\n1,-12345.125\n");
   EXPECT_EQ(table.values[1], (std::vector<double>{2.5, -12345.125}));
 }
 
@@ -205,7 +174,7 @@ TEST_F(CsvTest, UnparsableCellsAreErrorsNamingFileLineAndColumn) {
 }
 
 TEST_F(CsvTest, TinyNumbersUnderflowToZero) {
-  const CsvTable table = ReadCsv(WriteText("tiny.csv", "time_s,x\n0,1e-400\n1,-1e-400\n"));
+  const CsvTable table = ReadCsv(tmp_.Write("tiny.csv", "time_s,x\n0,1e-400\n1,-1e-400\n"));
   EXPECT_EQ(table.values[1][0], 0.0);
   EXPECT_EQ(table.values[1][1], 0.0);
   EXPECT_TRUE(std::signbit(table.values[1][1]));
@@ -266,16 +235,16 @@ TEST_F(CsvTest, MismatchedColumnsAreProgrammingErrorsAndWriteNothing) {
 }
 
 TEST_F(CsvTest, FailedWriteLeavesTheOldFileAndNoTemporary) {
-  const fs::path path = WriteText("out.csv", "time_s\n1\n");
+  const fs::path path = tmp_.Write("out.csv", "time_s\n1\n");
   EXPECT_THROW(WriteCsv(path, {}, {"a", "b"}, {{1.0, 2.0}, {1.0}}), std::invalid_argument);
-  EXPECT_EQ(ReadText(path), "time_s\n1\n");
+  EXPECT_EQ(ReadTextFile(path), "time_s\n1\n");
   EXPECT_EQ(Listing(), std::vector<std::string>{"out.csv"});
 }
 
 TEST_F(CsvTest, WriteThatFailsOnRenameLeavesNoFile) {
   // A non-empty folder under the target name: the temporary is written, the rename fails.
   fs::create_directories(dir_ / "out.csv");
-  WriteText("out.csv/keep", "x");
+  tmp_.Write("out.csv/keep", "x");
   EXPECT_THROW(WriteCsv(dir_ / "out.csv", {}, {"a"}, {{1.0}}), InputError);
   EXPECT_EQ(Listing(), std::vector<std::string>{"out.csv"});
   EXPECT_TRUE(fs::is_directory(dir_ / "out.csv"));

@@ -1,10 +1,7 @@
 #include "hotlap/common/telemetry.h"
 
-#include <unistd.h>
-
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -15,6 +12,7 @@
 
 #include "hotlap/common/csv.h"
 #include "hotlap/common/error.h"
+#include "test_util.h"
 
 namespace hotlap {
 namespace {
@@ -23,11 +21,7 @@ namespace fs = std::filesystem;
 
 constexpr double kTol = 1e-12;
 
-// Passes when `text` contains `part`; prints both otherwise.
-::testing::AssertionResult Contains(const std::string& text, const std::string& part) {
-  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
-}
+using test::Contains;
 
 // The message of the InputError that `f` throws ("" and a failure if none).
 template <typename F>
@@ -41,28 +35,11 @@ std::string InputErrorOf(F&& f) {
   return "";
 }
 
-// A fresh folder under the system temp folder, removed with everything in it at the end.
+// A fresh folder per test, removed with everything in it at the end.
 class TelemetryTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("hotlap_telemetry_test_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-
-  fs::path WriteText(const std::string& name, const std::string& text) {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
-
-  fs::path dir_;
+  const test::TempDir tmp_;
+  const fs::path dir_ = tmp_.path();
 };
 
 // ---- Column names ----
@@ -167,7 +144,7 @@ TEST(ChannelNameTest, UnitTablesAndCanonicalConversion) {
 // ---- Reading ----
 
 TEST_F(TelemetryTest, ConvertsEveryUnitToSi) {
-  const fs::path path = WriteText(
+  const fs::path path = tmp_.Write(
       "units.csv",
       "# track: darlington\n"
       "time_s,speed_kph,speed_fl_mph,fx_fl_kN,fy_fl_N,slip_angle_fl_deg,slip_angle_fr_rad,"
@@ -205,7 +182,7 @@ TEST_F(TelemetryTest, ConvertsEveryUnitToSi) {
 
 TEST_F(TelemetryTest, UnknownColumnsAreCarriedThroughRaw) {
   const Telemetry log = Telemetry::Read(
-      WriteText("log.csv", "throttle_pct,time_s,time_of_day,fx_fl_kN\n50,0,3600,1\n,1,3601,2\n"));
+      tmp_.Write("log.csv", "throttle_pct,time_s,time_of_day,fx_fl_kN\n50,0,3600,1\n,1,3601,2\n"));
   ASSERT_EQ(log.unknown_columns().size(), 2u);
   EXPECT_EQ(log.unknown_columns()[0].first, "throttle_pct");
   EXPECT_EQ(log.unknown_columns()[0].second[0], 50.0);
@@ -217,7 +194,7 @@ TEST_F(TelemetryTest, UnknownColumnsAreCarriedThroughRaw) {
 }
 
 TEST_F(TelemetryTest, BadUnitInTheFileNamesTheFile) {
-  const fs::path path = WriteText("lbf.csv", "time_s,fx_fl_lbf\n0,1\n");
+  const fs::path path = tmp_.Write("lbf.csv", "time_s,fx_fl_lbf\n0,1\n");
   const std::string message = InputErrorOf([&] { Telemetry::Read(path); });
   EXPECT_TRUE(Contains(message, path.string() + ": column 'fx_fl_lbf'"));
   EXPECT_TRUE(Contains(message, "'N' or 'kN'"));
@@ -225,7 +202,7 @@ TEST_F(TelemetryTest, BadUnitInTheFileNamesTheFile) {
 
 TEST_F(TelemetryTest, ReadsADistanceIndexedFile) {
   const Telemetry log = Telemetry::Read(
-      WriteText("lap.csv", "distance_m,speed_mps,time_s\n0,50,0\n10,51,0.2\n20,52,0.39\n"),
+      tmp_.Write("lap.csv", "distance_m,speed_mps,time_s\n0,50,0\n10,51,0.2\n20,52,0.39\n"),
       "distance");
   EXPECT_EQ(log.index_quantity(), "distance");
   EXPECT_EQ(log.index(), (std::vector<double>{0.0, 10.0, 20.0}));
@@ -233,29 +210,29 @@ TEST_F(TelemetryTest, ReadsADistanceIndexedFile) {
 }
 
 TEST_F(TelemetryTest, IndexMustBeStrictlyIncreasing) {
-  const fs::path path = WriteText("order.csv", "# a: b\ntime_s,x\n0,1\n0.5,2\n\n0.5,3\n");
+  const fs::path path = tmp_.Write("order.csv", "# a: b\ntime_s,x\n0,1\n0.5,2\n\n0.5,3\n");
   std::string message = InputErrorOf([&] { Telemetry::Read(path); });
   EXPECT_TRUE(Contains(message, path.string() + ":6:"));
   EXPECT_TRUE(Contains(message, "'time_s' must be strictly increasing"));
   EXPECT_TRUE(Contains(message, "0.5 follows 0.5 (line 4)"));
 
-  const fs::path back = WriteText("back.csv", "time_s,x\n0,1\n2,2\n1.5,3\n");
+  const fs::path back = tmp_.Write("back.csv", "time_s,x\n0,1\n2,2\n1.5,3\n");
   message = InputErrorOf([&] { Telemetry::Read(back); });
   EXPECT_TRUE(Contains(message, back.string() + ":4:"));
   EXPECT_TRUE(Contains(message, "1.5 follows 2 (line 3)"));
 
-  const fs::path gap = WriteText("gap.csv", "time_s,x\n0,1\n,2\n");
+  const fs::path gap = tmp_.Write("gap.csv", "time_s,x\n0,1\n,2\n");
   message = InputErrorOf([&] { Telemetry::Read(gap); });
   EXPECT_TRUE(Contains(message, gap.string() + ":3: 'time_s' is empty"));
 
   // A distance-indexed read checks distance, not time.
-  const fs::path by_distance = WriteText("d.csv", "distance_m,time_s\n0,5\n1,4\n1,3\n");
+  const fs::path by_distance = tmp_.Write("d.csv", "distance_m,time_s\n0,5\n1,4\n1,3\n");
   message = InputErrorOf([&] { Telemetry::Read(by_distance, "distance"); });
   EXPECT_TRUE(Contains(message, by_distance.string() + ":4: 'distance_m'"));
 }
 
 TEST_F(TelemetryTest, MissingIndexListsWhatWasExpected) {
-  const fs::path path = WriteText("noindex.csv", "tme_s,x\n0,1\n");
+  const fs::path path = tmp_.Write("noindex.csv", "tme_s,x\n0,1\n");
   const std::string message = InputErrorOf([&] { Telemetry::Read(path); });
   EXPECT_TRUE(Contains(message, path.string() + ": missing column 'time_s'"));
   EXPECT_TRUE(Contains(message, "closest columns in the file: 'tme_s'"));
@@ -263,7 +240,7 @@ TEST_F(TelemetryTest, MissingIndexListsWhatWasExpected) {
 
 TEST_F(TelemetryTest, MissingChannelSuggestsTheClosestColumns) {
   const Telemetry log = Telemetry::Read(
-      WriteText("log.csv", "time_s,fx_fr_N,fy_rr_N,throttle_pct\n0,1,2,3\n1,1,2,3\n"));
+      tmp_.Write("log.csv", "time_s,fx_fr_N,fy_rr_N,throttle_pct\n0,1,2,3\n1,1,2,3\n"));
   std::string message = InputErrorOf([&] { log.Channel("fx", Corner::kFrontLeft); });
   EXPECT_TRUE(Contains(message, "log.csv: missing column 'fx_fl_N' or 'fx_fl_kN'"));
   EXPECT_TRUE(Contains(message, "closest columns in the file: 'fx_fr_N'"));
@@ -280,23 +257,23 @@ TEST_F(TelemetryTest, MissingChannelSuggestsTheClosestColumns) {
 }
 
 TEST_F(TelemetryTest, TwoColumnsForOneChannelAreAnError) {
-  const fs::path path = WriteText("dup.csv", "time_s,speed_mps,fx_fl_N,speed_kph\n0,1,2,3\n");
+  const fs::path path = tmp_.Write("dup.csv", "time_s,speed_mps,fx_fl_N,speed_kph\n0,1,2,3\n");
   std::string message = InputErrorOf([&] { Telemetry::Read(path); });
   EXPECT_TRUE(Contains(message, path.string() + ": columns 'speed_mps' (column 2) and "
                                                 "'speed_kph' (column 4)"));
   // Corner channels too, and a dimensionless one written both ways.
   message = InputErrorOf(
-      [&] { Telemetry::Read(WriteText("dup2.csv", "time_s,fx_fl_N,fx_fl_kN\n0,1,2\n")); });
+      [&] { Telemetry::Read(tmp_.Write("dup2.csv", "time_s,fx_fl_N,fx_fl_kN\n0,1,2\n")); });
   EXPECT_TRUE(Contains(message, "'fx_fl_N' (column 2) and 'fx_fl_kN' (column 3)"));
   message = InputErrorOf([&] {
-    Telemetry::Read(WriteText("dup3.csv", "time_s,slip_ratio_fl,slip_ratio_fl_1\n0,1,2\n"));
+    Telemetry::Read(tmp_.Write("dup3.csv", "time_s,slip_ratio_fl,slip_ratio_fl_1\n0,1,2\n"));
   });
   EXPECT_TRUE(Contains(message, "'slip_ratio_fl' (column 2) and 'slip_ratio_fl_1' (column 3)"));
 }
 
 TEST_F(TelemetryTest, FilledChannelInterpolatesInTheIndex) {
   // Uneven time steps: interpolation must follow time, not the row number.
-  const Telemetry log = Telemetry::Read(WriteText(
+  const Telemetry log = Telemetry::Read(tmp_.Write(
       "gaps.csv", "time_s,tread_temp_fl_C,fz_fl_N\n0,,1\n1,,\n2,80,\n3,,\n6,,\n7,90,\n8,,\n9,,\n"));
   const std::vector<double>& raw = log.Channel("tread_temp", Corner::kFrontLeft);
   EXPECT_TRUE(std::isnan(raw[0]));
@@ -311,7 +288,7 @@ TEST_F(TelemetryTest, FilledChannelInterpolatesInTheIndex) {
 }
 
 TEST_F(TelemetryTest, FilledChannelWithNoValueIsAnError) {
-  const fs::path path = WriteText("empty.csv", "time_s,wear_fl_mm\n0,\n1,\n");
+  const fs::path path = tmp_.Write("empty.csv", "time_s,wear_fl_mm\n0,\n1,\n");
   const Telemetry log = Telemetry::Read(path);
   const std::string message = InputErrorOf([&] { log.FilledChannel("wear", Corner::kFrontLeft); });
   EXPECT_TRUE(Contains(message, path.string() + ": column 'wear_fl_mm' has no value on any row"));
@@ -320,7 +297,7 @@ TEST_F(TelemetryTest, FilledChannelWithNoValueIsAnError) {
 
 TEST_F(TelemetryTest, CornerSpeedPrefersTheCornerChannel) {
   const Telemetry log = Telemetry::Read(
-      WriteText("speed.csv", "time_s,speed_kph,speed_fl_mps\n0,36,11\n1,72,\n2,108,13\n"));
+      tmp_.Write("speed.csv", "time_s,speed_kph,speed_fl_mps\n0,36,11\n1,72,\n2,108,13\n"));
   EXPECT_EQ(log.CornerSpeed(Corner::kFrontLeft), (std::vector<double>{11.0, 12.0, 13.0}));
   const std::vector<double> rear = log.CornerSpeed(Corner::kRearRight);
   ASSERT_EQ(rear.size(), 3u);
@@ -331,7 +308,7 @@ TEST_F(TelemetryTest, CornerSpeedPrefersTheCornerChannel) {
 }
 
 TEST_F(TelemetryTest, CornerSpeedWithNoSpeedListsBothNames) {
-  const Telemetry log = Telemetry::Read(WriteText("nospeed.csv", "time_s,sped_mps\n0,1\n1,2\n"));
+  const Telemetry log = Telemetry::Read(tmp_.Write("nospeed.csv", "time_s,sped_mps\n0,1\n1,2\n"));
   const std::string message = InputErrorOf([&] { log.CornerSpeed(Corner::kRearLeft); });
   EXPECT_TRUE(Contains(message, "'speed_rl_mps', 'speed_rl_kph' or 'speed_rl_mph'"));
   EXPECT_TRUE(Contains(message, "'speed_mps', 'speed_kph' or 'speed_mph'"));
@@ -340,7 +317,7 @@ TEST_F(TelemetryTest, CornerSpeedWithNoSpeedListsBothNames) {
 
 TEST_F(TelemetryTest, FirstValueSkipsEmptyCellsAndIsInSi) {
   const Telemetry log = Telemetry::Read(
-      WriteText("first.csv", "time_s,ambient_temp_C,fx_fl_kN\n0,,\n1,25,\n2,26,\n"));
+      tmp_.Write("first.csv", "time_s,ambient_temp_C,fx_fl_kN\n0,,\n1,25,\n2,26,\n"));
   ASSERT_TRUE(log.FirstValue("ambient_temp").has_value());
   EXPECT_NEAR(*log.FirstValue("ambient_temp"), 298.15, kTol);
   EXPECT_FALSE(log.FirstValue("fx", Corner::kFrontLeft).has_value());
@@ -349,21 +326,21 @@ TEST_F(TelemetryTest, FirstValueSkipsEmptyCellsAndIsInSi) {
 
 TEST_F(TelemetryTest, LineOfCountsMetadataAndBlankLines) {
   const Telemetry log =
-      Telemetry::Read(WriteText("lines.csv", "# a: 1\n\ntime_s,x\n0,1\n\n\n1,2\n"));
+      Telemetry::Read(tmp_.Write("lines.csv", "# a: 1\n\ntime_s,x\n0,1\n\n\n1,2\n"));
   EXPECT_EQ(log.LineOf(0), 4);
   EXPECT_EQ(log.LineOf(1), 7);
   EXPECT_THROW(log.LineOf(2), std::out_of_range);
 }
 
 TEST_F(TelemetryTest, AskingForAnUnknownQuantityIsAProgrammingError) {
-  const Telemetry log = Telemetry::Read(WriteText("log.csv", "time_s\n0\n"));
+  const Telemetry log = Telemetry::Read(tmp_.Write("log.csv", "time_s\n0\n"));
   EXPECT_THROW(log.Channel("throttle"), std::invalid_argument);
   EXPECT_THROW(log.Has("fxx", Corner::kFrontLeft), std::invalid_argument);
   EXPECT_THROW(log.Channel("time", Corner::kFrontLeft), std::invalid_argument);
 }
 
 TEST_F(TelemetryTest, RewriteInCanonicalUnitsReadsBackTheSame) {
-  const Telemetry log = Telemetry::Read(WriteText(
+  const Telemetry log = Telemetry::Read(tmp_.Write(
       "in.csv", "# car: gt3\ntime_s,tread_temp_fr_K,speed_kph,lap_flag\n0,350,100,1\n0.1,,101,\n"));
   // Write canonical units, as a result writer would, then read again.
   std::vector<std::string> columns;

@@ -6,7 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -16,6 +17,7 @@
 #include "hotlap/common/telemetry.h"
 #include "hotlap/common/units.h"
 #include "hotlap/sim/replay_io.h"
+#include "test_util.h"
 
 namespace hotlap::sim {
 namespace {
@@ -31,39 +33,6 @@ ReplayInputs ExampleInputs() {
   const Telemetry log =
       Telemetry::Read(fs::path(HOTLAP_SOURCE_DIR) / "data/telemetry/darlington_example.csv");
   return ReplayInputsFromTelemetry(log, {});
-}
-
-// Linear resampling of every channel onto a uniform grid at `rate_hz` (inputs stay linear
-// between the new samples, so this is a different, equally valid, log of a similar lap).
-ReplayInputs Resample(const ReplayInputs& in, double rate_hz) {
-  ReplayInputs out;
-  const double t0 = in.time.front(), t1 = in.time.back();
-  const int n = static_cast<int>(std::floor((t1 - t0) * rate_hz)) + 1;
-  for (int k = 0; k < n; ++k) out.time.push_back(t0 + k / rate_hz);
-  const auto resample = [&](const std::vector<double>& v) {
-    std::vector<double> r(n);
-    size_t j = 0;
-    for (int k = 0; k < n; ++k) {
-      const double t = out.time[k];
-      while (j + 2 < in.time.size() && in.time[j + 1] < t) ++j;
-      const double f = std::clamp((t - in.time[j]) / (in.time[j + 1] - in.time[j]), 0.0, 1.0);
-      r[k] = v[j] + f * (v[j + 1] - v[j]);
-    }
-    return r;
-  };
-  for (int c = 0; c < 4; ++c) {
-    const CornerChannels& a = in.corners[c];
-    CornerChannels& b = out.corners[c];
-    b.speed = resample(a.speed);
-    b.fx = resample(a.fx);
-    b.fy = resample(a.fy);
-    b.fz = resample(a.fz);
-    b.slip_angle = resample(a.slip_angle);
-    b.slip_ratio = resample(a.slip_ratio);
-  }
-  out.ambient_temp = resample(in.ambient_temp);
-  out.track_temp = resample(in.track_temp);
-  return out;
 }
 
 ReplayInitialState WarmStart(const vehicle::Car& car) {
@@ -97,7 +66,7 @@ class ReplayRateTest : public ::testing::TestWithParam<double> {};
 // logging rates from 10 Hz to 1 kHz.
 TEST_P(ReplayRateTest, DefaultStepIsWithinToleranceOfMuchFinerStep) {
   const vehicle::Car car = Gen7();
-  const ReplayInputs inputs = Resample(ExampleInputs(), GetParam());
+  const ReplayInputs inputs = ResampleReplayInputs(ExampleInputs(), GetParam());
   ReplayOptions normal;
   ReplayOptions fine;
   fine.max_step_s = normal.max_step_s / 32.0;
@@ -179,9 +148,102 @@ TEST(ReplayTest, HistoryStatsUseTimeWeightedMean) {
   EXPECT_DOUBLE_EQ(s.mean, 6.25);
 }
 
+// Four samples at uneven times from t = 10 s with a kink at 11 s; every channel differs.
+ReplayInputs KinkedInputs() {
+  ReplayInputs in;
+  in.time = {10.0, 10.5, 11.0, 12.0};
+  for (int c = 0; c < 4; ++c) {
+    CornerChannels& ch = in.corners[c];
+    ch.speed = {10.0 + c, 20.0 + c, 30.0 + c, 50.0 + c};
+    ch.fx = {-100.0 * c, 0.0, 100.0, 300.0};
+    ch.fy = {1.0, 2.0, 3.0, 5.0};
+    ch.fz = {4000.0, 4100.0, 4200.0, 4400.0};
+    ch.slip_angle = {0.0, 0.01, 0.02, 0.04};
+    ch.slip_ratio = {0.0, -0.01, -0.02, -0.04};
+  }
+  in.ambient_temp = {290.0, 291.0, 292.0, 294.0};
+  in.track_temp = {300.0, 302.0, 304.0, 308.0};
+  return in;
+}
+
+TEST(ReplayTest, ResampleCoversTheLogOnAUniformGrid) {
+  const ReplayInputs in = KinkedInputs();
+  const ReplayInputs r = ResampleReplayInputs(in, 4.0);
+  // floor(2 s * 4 Hz) + 1 samples at 10, 10.25, ..., 12 s.
+  ASSERT_EQ(r.time.size(), 9u);
+  for (size_t k = 0; k < r.time.size(); ++k) {
+    EXPECT_DOUBLE_EQ(r.time[k], 10.0 + 0.25 * k) << k;
+  }
+  for (int c = 0; c < 4; ++c) {
+    const CornerChannels& ch = r.corners[c];
+    for (const std::vector<double>* v :
+         {&ch.speed, &ch.fx, &ch.fy, &ch.fz, &ch.slip_angle, &ch.slip_ratio}) {
+      EXPECT_EQ(v->size(), 9u);
+    }
+    EXPECT_DOUBLE_EQ(ch.speed[1], 15.0 + c);  // t = 10.25 s, a quarter of the way to 11 s
+    EXPECT_DOUBLE_EQ(ch.speed[4], 30.0 + c);  // on the sample at 11 s
+    EXPECT_DOUBLE_EQ(ch.speed[6], 40.0 + c);  // t = 11.5 s, past the kink
+    EXPECT_DOUBLE_EQ(ch.speed[8], 50.0 + c);  // the last sample
+  }
+  EXPECT_DOUBLE_EQ(r.corners[2].fx[1], -100.0);
+  EXPECT_DOUBLE_EQ(r.corners[3].fz[7], 4350.0);
+  EXPECT_DOUBLE_EQ(r.ambient_temp[6], 293.0);
+  EXPECT_DOUBLE_EQ(r.track_temp[2], 302.0);
+  // The result is a log the replay accepts.
+  const vehicle::Car car = Gen7();
+  EXPECT_NO_THROW(RunReplay(car, r, WarmStart(car), {}));
+}
+
+TEST(ReplayTest, ResampleRepeatsLapsWithOneSampleSpacingBetweenThem) {
+  const ReplayInputs in = KinkedInputs();
+  const ReplayInputs r = ResampleReplayInputs(in, 4.0, 3);
+  // Period 2 s + 0.5 s (the first spacing); floor(2.5 s * 4 Hz) = 10 samples a lap.
+  const size_t per_lap = 10;
+  ASSERT_EQ(r.time.size(), 3 * per_lap);
+  for (size_t l = 0; l < 3; ++l) {
+    for (size_t k = 0; k < per_lap; ++k) {
+      EXPECT_DOUBLE_EQ(r.time[l * per_lap + k], 10.0 + 2.5 * l + 0.25 * k) << l << " " << k;
+    }
+  }
+  for (size_t i = 1; i < r.time.size(); ++i) ASSERT_GT(r.time[i], r.time[i - 1]) << i;
+  EXPECT_DOUBLE_EQ(r.corners[0].speed[6], 40.0);  // t = 11.5 s into the first lap
+  EXPECT_DOUBLE_EQ(r.corners[0].speed[9], 50.0);  // 12.25 s: past the log, held
+  for (int c = 0; c < 4; ++c) {
+    const CornerChannels& ch = r.corners[c];
+    for (const std::vector<double>* v : {&ch.speed, &ch.fx, &ch.fy, &ch.fz, &ch.slip_angle,
+                                         &ch.slip_ratio, &r.ambient_temp, &r.track_temp}) {
+      ASSERT_EQ(v->size(), 3 * per_lap);
+      for (size_t i = per_lap; i < v->size(); ++i) {
+        EXPECT_EQ((*v)[i], (*v)[i - per_lap]) << "corner " << c << " sample " << i;
+      }
+    }
+  }
+}
+
+TEST(ReplayTest, ResampleRejectsBadArguments) {
+  const ReplayInputs in = KinkedInputs();
+  EXPECT_THROW(ResampleReplayInputs(in, 0.0), InputError);
+  EXPECT_THROW(ResampleReplayInputs(in, -10.0), InputError);
+  EXPECT_THROW(ResampleReplayInputs(in, std::nan("")), InputError);
+  EXPECT_THROW(ResampleReplayInputs(in, 10.0, 0), InputError);
+  EXPECT_THROW(ResampleReplayInputs(in, 10.0, -2), InputError);
+  EXPECT_THROW(ResampleReplayInputs(in, 0.1), InputError);  // a single sample in 2 s
+  ReplayInputs one = in;
+  for (auto* v : {&one.time, &one.ambient_temp, &one.track_temp}) v->resize(1);
+  for (CornerChannels& ch : one.corners) {
+    for (auto* v : {&ch.speed, &ch.fx, &ch.fy, &ch.fz, &ch.slip_angle, &ch.slip_ratio}) {
+      v->resize(1);
+    }
+  }
+  EXPECT_THROW(ResampleReplayInputs(one, 10.0), InputError);
+  ReplayInputs short_fy = in;
+  short_fy.corners[1].fy.pop_back();
+  EXPECT_THROW(ResampleReplayInputs(short_fy, 10.0), InputError);
+}
+
 TEST(ReplayTest, RejectsNonIncreasingTimeAndWrongLengths) {
   const vehicle::Car car = Gen7();
-  ReplayInputs in = Resample(ExampleInputs(), 10.0);
+  ReplayInputs in = ResampleReplayInputs(ExampleInputs(), 10.0);
   ReplayInputs bad_time = in;
   bad_time.time[5] = bad_time.time[4];
   EXPECT_THROW(RunReplay(car, bad_time, WarmStart(car), {}), InputError);
@@ -197,7 +259,7 @@ TEST(ReplayTest, RejectsNonIncreasingTimeAndWrongLengths) {
 
 TEST(ReplayTest, DivergenceIsReportedNotReturned) {
   const vehicle::Car car = Gen7();
-  ReplayInputs in = Resample(ExampleInputs(), 10.0);
+  ReplayInputs in = ResampleReplayInputs(ExampleInputs(), 10.0);
   // An absurd braking force heats the front-left disc far past any material limit.
   for (double& fx : in.corners[0].fx) fx = -5e6;
   EXPECT_THROW(RunReplay(car, in, WarmStart(car), {}), NumericalError);
@@ -205,16 +267,12 @@ TEST(ReplayTest, DivergenceIsReportedNotReturned) {
 
 // Initial temperatures: first measured value, else the command line, else the car file.
 TEST(ReplayIoTest, InitialStatePrefersMeasuredThenOverridesThenCar) {
-  const fs::path dir = fs::temp_directory_path() / "hotlap_replay_io_test";
-  fs::create_directories(dir);
-  const fs::path csv = dir / "log.csv";
-  {
-    std::ofstream f(csv);
-    f << "time_s,tread_temp_fl_C,disc_temp_fr_K\n"
-      << "0,,\n"
-      << "0.1,71.5,\n"
-      << "0.2,72,600\n";
-  }
+  const test::TempDir dir;
+  const fs::path csv = dir.Write("log.csv",
+                                 "time_s,tread_temp_fl_C,disc_temp_fr_K\n"
+                                 "0,,\n"
+                                 "0.1,71.5,\n"
+                                 "0.2,72,600\n");
   const Telemetry log = Telemetry::Read(csv);
   const vehicle::Car car = Gen7();
   InitialTemperatureOverrides o;
@@ -226,27 +284,23 @@ TEST(ReplayIoTest, InitialStatePrefersMeasuredThenOverridesThenCar) {
   EXPECT_DOUBLE_EQ(s.tyres[3].tread_temp, car.initial.tread_temp);   // car file
   EXPECT_DOUBLE_EQ(s.brakes[2].calliper_temp, car.initial.calliper_temp);
   EXPECT_DOUBLE_EQ(s.tyres[2].wear, 0.0);
-  fs::remove_all(dir);
 }
 
 TEST(ReplayIoTest, MissingAmbientNeedsAnOption) {
-  const fs::path dir = fs::temp_directory_path() / "hotlap_replay_io_ambient";
-  fs::create_directories(dir);
-  const fs::path csv = dir / "log.csv";
-  {
-    std::ofstream f(csv);
-    f << "time_s,speed_mps";
-    for (const char* c : {"fl", "fr", "rl", "rr"}) {
-      f << ",fx_" << c << "_N,fy_" << c << "_N,fz_" << c << "_N,slip_angle_" << c
-        << "_rad,slip_ratio_" << c;
-    }
-    f << ",track_temp_C\n";
-    for (int k = 0; k < 3; ++k) {
-      f << k * 0.1 << ",50";
-      for (int c = 0; c < 4; ++c) f << ",100,200,4000,0.01,0.001";
-      f << ",40\n";
-    }
+  std::ostringstream f;
+  f << "time_s,speed_mps";
+  for (const char* c : {"fl", "fr", "rl", "rr"}) {
+    f << ",fx_" << c << "_N,fy_" << c << "_N,fz_" << c << "_N,slip_angle_" << c
+      << "_rad,slip_ratio_" << c;
   }
+  f << ",track_temp_C\n";
+  for (int k = 0; k < 3; ++k) {
+    f << k * 0.1 << ",50";
+    for (int c = 0; c < 4; ++c) f << ",100,200,4000,0.01,0.001";
+    f << ",40\n";
+  }
+  const test::TempDir dir;
+  const fs::path csv = dir.Write("log.csv", f.str());
   const Telemetry log = Telemetry::Read(csv);
   try {
     ReplayInputsFromTelemetry(log, {});
@@ -259,7 +313,6 @@ TEST(ReplayIoTest, MissingAmbientNeedsAnOption) {
   const ReplayInputs in = ReplayInputsFromTelemetry(log, o);
   EXPECT_DOUBLE_EQ(in.ambient_temp[2], CelsiusToKelvin(20.0));
   EXPECT_DOUBLE_EQ(in.track_temp[0], CelsiusToKelvin(40.0));
-  fs::remove_all(dir);
 }
 
 }  // namespace

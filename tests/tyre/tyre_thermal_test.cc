@@ -10,6 +10,7 @@
 #include "hotlap/common/scalar.h"
 #include "hotlap/tyre/compound.h"
 #include "hotlap/tyre/temperature_cubic.h"
+#include "test_util.h"
 
 namespace hotlap::tyre {
 namespace {
@@ -238,12 +239,10 @@ void ExpectTyreRelaxesMonotonically(double start_temp) {
 TEST(TyreThermalTest, RelaxesTowardAmbientFromAbove) { ExpectTyreRelaxesMonotonically(380.0); }
 TEST(TyreThermalTest, RelaxesTowardAmbientFromBelow) { ExpectTyreRelaxesMonotonically(260.0); }
 
-// Central differences with a relative step of 1e-6: truncation ~1e-12 relative, rounding
-// ~1e-16 / 1e-6 times (largest term / derivative); 1e-5 relative covers both, with an absolute
-// floor of 1e-9 of the quantity's scale for derivatives that are (near) zero.
-void ExpectNearDerivative(double ad, double fd, double scale, const std::string& what) {
-  EXPECT_NEAR(ad, fd, 1e-5 * std::max(std::abs(ad), std::abs(fd)) + 1e-9 * scale) << what;
-}
+// Central differences with a relative step of 1e-6, checked with a relative tolerance of 1e-5
+// and an absolute floor of 1e-9 of the quantity's scale (error budget in test_util.h).
+using test::CentralDifference;
+using test::ExpectNearDerivative;
 
 using Outputs = std::array<double, 3>;  // dT_t/dt, dT_c/dt, wear rate
 Outputs Evaluate(const TyreThermalParams<double>& p, const TyreState<double>& x) {
@@ -272,14 +271,11 @@ TEST(TyreThermalTest, ParameterDerivativesMatchFiniteDifferences) {
       &TyreThermalParams<double>::p5,           &TyreThermalParams<double>::wear_coeff,
       &TyreThermalParams<double>::wear_exponent};
   for (int i = 0; i < 7; ++i) {
-    TyreThermalParams<double> up = p, down = p;
-    const double h = 1e-6 * std::abs(p.*fields[i]);
-    up.*fields[i] += h;
-    down.*fields[i] -= h;
-    const Outputs fu = Evaluate(up, x), fdn = Evaluate(down, x);
+    const Outputs fd = CentralDifference(
+        p, [&](TyreThermalParams<double>& q) -> double& { return q.*fields[i]; },
+        [&](const TyreThermalParams<double>& q) { return Evaluate(q, x); });
     for (int k = 0; k < 3; ++k) {
-      const double fd = (fu[k] - fdn[k]) / (2 * h);
-      ExpectNearDerivative(ad[k]->v[i], fd, kOutputScale[k] / std::abs(p.*fields[i]),
+      ExpectNearDerivative(ad[k]->v[i], fd[k], kOutputScale[k] / std::abs(p.*fields[i]),
                            "output " + std::to_string(k) + " parameter " + std::to_string(i));
     }
   }
@@ -300,15 +296,11 @@ TEST(TyreThermalTest, StateDerivativesMatchFiniteDifferences) {
   const TyreState<Jet2> d = CalcTyreDerivatives(p.Cast<Jet2>(), DefaultCompound(), xj, inj);
   const std::array<const Jet2*, 3> ad = {&d.tread_temp, &d.carcass_temp, &d.wear};
   for (int i = 0; i < 2; ++i) {
-    TyreState<double> up = x, down = x;
-    double& ui = i == 0 ? up.tread_temp : up.carcass_temp;
-    double& di = i == 0 ? down.tread_temp : down.carcass_temp;
-    const double h = 1e-6 * ui;
-    ui += h;
-    di -= h;
-    const Outputs fu = Evaluate(p, up), fdn = Evaluate(p, down);
+    const Outputs fd = CentralDifference(
+        x, [i](TyreState<double>& s) -> double& { return i == 0 ? s.tread_temp : s.carcass_temp; },
+        [&](const TyreState<double>& s) { return Evaluate(p, s); });
     for (int k = 0; k < 3; ++k) {
-      ExpectNearDerivative(ad[k]->v[i], (fu[k] - fdn[k]) / (2 * h), kOutputScale[k] / 300.0,
+      ExpectNearDerivative(ad[k]->v[i], fd[k], kOutputScale[k] / 300.0,
                            "output " + std::to_string(k) + " state " + std::to_string(i));
     }
   }
@@ -354,13 +346,11 @@ TYPED_TEST(TyreScalarTest, EveryFunctionInstantiatesAndAgreesWithDouble) {
   same(dt.carcass_temp, d.carcass_temp);
   same(dt.wear, d.wear);
   if constexpr (IsJet<T>::value) {
-    const double h = 1e-6 * x.tread_temp;
-    TyreState<double> up = x, down = x;
-    up.tread_temp += h;
-    down.tread_temp -= h;
-    const double fd = (CalcTyreDerivatives(p, compound, up, in).tread_temp -
-                       CalcTyreDerivatives(p, compound, down, in).tread_temp) /
-                      (2 * h);
+    const double fd = CentralDifference(
+        x, [](TyreState<double>& s) -> double& { return s.tread_temp; },
+        [&](const TyreState<double>& s) {
+          return CalcTyreDerivatives(p, compound, s, in).tread_temp;
+        });
     ExpectNearDerivative(dt.tread_temp.v[0], fd, 10.0 / 300.0, "d(dT_t/dt)/dT_t");
   }
 }

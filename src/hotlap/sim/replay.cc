@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -35,10 +37,9 @@ void CheckTemperature(double temp, const char* what, Corner c, double time) {
   }
 }
 
-}  // namespace
-
-ReplayResult RunReplay(const vehicle::Car& car, const ReplayInputs& in,
-                       const ReplayInitialState& initial, const ReplayOptions& options) {
+// The sample count, after checking it (at least two), the times (finite, strictly increasing) and
+// the two temperature channels.
+size_t CheckTimesAndTemperatures(const ReplayInputs& in) {
   const size_t n = in.time.size();
   if (n < 2) throw InputError("replay needs at least two samples");
   CheckLength(in.time, n, "time_s");
@@ -49,19 +50,31 @@ ReplayResult RunReplay(const vehicle::Car& car, const ReplayInputs& in,
   }
   CheckLength(in.ambient_temp, n, "ambient_temp");
   CheckLength(in.track_temp, n, "track_temp");
+  return n;
+}
+
+void CheckCornerChannels(const CornerChannels& ch, size_t n, Corner c) {
+  const std::string corner(CornerName(c));
+  CheckLength(ch.speed, n, "speed_" + corner);
+  CheckLength(ch.fx, n, "fx_" + corner);
+  CheckLength(ch.fy, n, "fy_" + corner);
+  CheckLength(ch.fz, n, "fz_" + corner);
+  CheckLength(ch.slip_angle, n, "slip_angle_" + corner);
+  CheckLength(ch.slip_ratio, n, "slip_ratio_" + corner);
+}
+
+}  // namespace
+
+ReplayResult RunReplay(const vehicle::Car& car, const ReplayInputs& in,
+                       const ReplayInitialState& initial, const ReplayOptions& options) {
+  const size_t n = CheckTimesAndTemperatures(in);
   if (!(options.max_step_s > 0.0)) throw InputError("replay max step must be > 0 s");
 
   ReplayResult result;
   result.time = in.time;
   for (Corner c : kAllCorners) {
     const CornerChannels& ch = in.corners[CornerIndex(c)];
-    const std::string corner(CornerName(c));
-    CheckLength(ch.speed, n, "speed_" + corner);
-    CheckLength(ch.fx, n, "fx_" + corner);
-    CheckLength(ch.fy, n, "fy_" + corner);
-    CheckLength(ch.fz, n, "fz_" + corner);
-    CheckLength(ch.slip_angle, n, "slip_angle_" + corner);
-    CheckLength(ch.slip_ratio, n, "slip_ratio_" + corner);
+    CheckCornerChannels(ch, n, c);
 
     const CornerSamples samples{in.time,       ch.speed,      ch.fx,           ch.fy,        ch.fz,
                                 ch.slip_angle, ch.slip_ratio, in.ambient_temp, in.track_temp};
@@ -102,6 +115,72 @@ ReplayResult RunReplay(const vehicle::Car& car, const ReplayInputs& in,
                            });
   }
   return result;
+}
+
+ReplayInputs ResampleReplayInputs(const ReplayInputs& in, double rate_hz, int laps) {
+  if (!(rate_hz > 0.0 && std::isfinite(rate_hz))) {
+    throw InputError(fmt::format("resampling rate must be finite and > 0 Hz, got {:g}", rate_hz));
+  }
+  if (laps < 1) throw InputError(fmt::format("resampling needs at least one lap, got {}", laps));
+  const size_t n = CheckTimesAndTemperatures(in);
+  for (Corner c : kAllCorners) CheckCornerChannels(in.corners[CornerIndex(c)], n, c);
+
+  const double t0 = in.time.front(), t1 = in.time.back();
+  const double period = t1 - t0 + (in.time[1] - in.time[0]);
+  // One lap alone covers [t0, t1]; repeated laps fill the whole period each.
+  const double per_lap_count =
+      laps == 1 ? std::floor((t1 - t0) * rate_hz) + 1.0 : std::floor(period * rate_hz);
+  const double total_count = per_lap_count * laps;
+  if (total_count < 2.0) {
+    throw InputError(fmt::format(
+        "resampling at {:g} Hz leaves fewer than two samples of a {:g} s log", rate_hz, t1 - t0));
+  }
+  if (total_count > static_cast<double>(std::numeric_limits<int>::max())) {
+    throw InputError(
+        fmt::format("resampling at {:g} Hz over {} laps gives too many samples", rate_hz, laps));
+  }
+  const size_t per_lap = static_cast<size_t>(per_lap_count);
+
+  // Interval and weight of every grid time within a lap, found by one forward scan: interval j
+  // holds time[j] <= t < time[j + 1] (the last interval also takes any t past the end, weight 1).
+  std::vector<size_t> interval(per_lap);
+  std::vector<double> weight(per_lap);
+  size_t j = 0;
+  for (size_t k = 0; k < per_lap; ++k) {
+    const double t = t0 + k / rate_hz;
+    while (j + 2 < n && in.time[j + 1] <= t) ++j;
+    interval[k] = j;
+    weight[k] = std::clamp((t - in.time[j]) / (in.time[j + 1] - in.time[j]), 0.0, 1.0);
+  }
+  const auto resample = [&](const std::vector<double>& v) {
+    std::vector<double> r(per_lap * laps);
+    for (size_t k = 0; k < per_lap; ++k) {
+      const size_t i = interval[k];
+      r[k] = v[i] + weight[k] * (v[i + 1] - v[i]);
+    }
+    for (int l = 1; l < laps; ++l) std::copy_n(r.begin(), per_lap, r.begin() + l * per_lap);
+    return r;
+  };
+
+  ReplayInputs out;
+  out.time.reserve(per_lap * laps);
+  for (int l = 0; l < laps; ++l) {
+    const double start = t0 + l * period;
+    for (size_t k = 0; k < per_lap; ++k) out.time.push_back(start + k / rate_hz);
+  }
+  for (int c = 0; c < 4; ++c) {
+    const CornerChannels& a = in.corners[c];
+    CornerChannels& b = out.corners[c];
+    b.speed = resample(a.speed);
+    b.fx = resample(a.fx);
+    b.fy = resample(a.fy);
+    b.fz = resample(a.fz);
+    b.slip_angle = resample(a.slip_angle);
+    b.slip_ratio = resample(a.slip_ratio);
+  }
+  out.ambient_temp = resample(in.ambient_temp);
+  out.track_temp = resample(in.track_temp);
+  return out;
 }
 
 HistoryStats CalcHistoryStats(const std::vector<double>& time, const std::vector<double>& values) {

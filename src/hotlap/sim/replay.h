@@ -60,6 +60,19 @@ struct ReplayResult {
 ReplayResult RunReplay(const vehicle::Car& car, const ReplayInputs& inputs,
                        const ReplayInitialState& initial, const ReplayOptions& options);
 
+/// The inputs resampled onto a uniform grid at rate_hz (linear interpolation, so the result is
+/// again a valid piecewise-linear log), repeated `laps` times back to back with period (last -
+/// first time + one original sample spacing). InputError if rate_hz <= 0 or laps < 1 or fewer than
+/// 2 samples.
+///
+/// With laps == 1 the grid covers [first, last] time: floor((last - first) * rate_hz) + 1 samples
+/// at first + k / rate_hz. With laps > 1 each lap has floor(period * rate_hz) samples at
+/// first + l * period + k / rate_hz, taking the values at first + k / rate_hz (held at the last
+/// sample past the end of the log). Also InputError if the channels and times differ in length or
+/// are not finite, the times are not strictly increasing, or the result would have fewer than 2
+/// samples.
+ReplayInputs ResampleReplayInputs(const ReplayInputs& in, double rate_hz, int laps = 1);
+
 /// Peak, time-weighted mean and final value of one history (trapezoidal time average).
 struct HistoryStats {
   double peak = 0.0;
