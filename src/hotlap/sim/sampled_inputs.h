@@ -64,9 +64,14 @@ inline Kinks KinksBetween(const CornerSamples& in, size_t k) {
   const size_t j = k + 1;
   for (std::span<const double> v : {in.speed, in.fx, in.fy, in.slip_angle, in.slip_ratio}) {
     const double a = v[k], b = v[j];
-    if ((a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0)) kinks.at[kinks.count++] = a / (a - b);
+    const bool crosses = (a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0);
+    if (!crosses || kinks.count == static_cast<int>(kinks.at.size())) continue;
+    // Insert in order (at most five entries).
+    const double fraction = a / (a - b);
+    int i = kinks.count++;
+    for (; i > 0 && kinks.at[i - 1] > fraction; --i) kinks.at[i] = kinks.at[i - 1];
+    kinks.at[i] = fraction;
   }
-  std::sort(kinks.at.begin(), kinks.at.begin() + kinks.count);
   return kinks;
 }
 
