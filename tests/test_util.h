@@ -19,7 +19,12 @@
 
 #include <gtest/gtest.h>
 
+#include "hotlap/common/scalar.h"
+
 namespace hotlap::test {
+
+/// Every scalar the models are instantiated for (HOTLAP_FOR_EACH_SCALAR), for typed tests.
+using AllScalarTypes = ::testing::Types<double, Jet2, Jet5, Jet7, Jet14>;
 
 /// A path inside the source tree, e.g. SourcePath("data/cars/gen7/car.yaml"). Uses the compile
 /// definition HOTLAP_SOURCE_DIR, never the working directory.

@@ -279,7 +279,7 @@ TEST(BrakeThermalTest, StateDerivativesMatchFiniteDifferences) {
 
 template <class T>
 class BrakeScalarTest : public ::testing::Test {};
-using ScalarTypes = ::testing::Types<double, Jet2, Jet5, Jet7, Jet14>;
+using ScalarTypes = test::AllScalarTypes;
 TYPED_TEST_SUITE(BrakeScalarTest, ScalarTypes);
 
 // Every function instantiates for every scalar, gives the double value, and (for Jets) carries a

@@ -312,7 +312,7 @@ TEST(TyreThermalTest, StateDerivativesMatchFiniteDifferences) {
 // seeded on the tread temperature that matches a central difference.
 template <class T>
 class TyreScalarTest : public ::testing::Test {};
-using ScalarTypes = ::testing::Types<double, Jet2, Jet5, Jet7, Jet14>;
+using ScalarTypes = test::AllScalarTypes;
 TYPED_TEST_SUITE(TyreScalarTest, ScalarTypes);
 
 TYPED_TEST(TyreScalarTest, EveryFunctionInstantiatesAndAgreesWithDouble) {
