@@ -285,6 +285,48 @@ TEST(TyreThermalTest, ParameterDerivativesMatchFiniteDifferences) {
   EXPECT_EQ(d.carcass_temp.v[0], 0.0);
 }
 
+// Input terms seeded from a nearby input's (the integrator's fast path, a binomial series for the
+// three powers) equal those computed from scratch, in value and in parameter derivatives, both
+// within the series' 2% reach and beyond it (where the direct power is used).
+TEST(TyreThermalTest, InputTermsFromNearbyInputMatchDirect) {
+  const TyreThermalParams<double> p = RearRightParams();
+  TyreThermalParams<Jet7> pj = p.Cast<Jet7>();
+  pj.contact_length_exponent.v[0] = 1.0;
+  pj.wear_exponent.v[1] = 1.0;
+  const TyreCompound compound = DefaultCompound();
+  const TyreConstants<Jet7> constants = CalcTyreConstants(pj);
+  const auto to_jet = [](const TyreInput<double>& in) {
+    return TyreInput<Jet7>{Jet7(in.speed),        Jet7(in.fx),         Jet7(in.fy),
+                           Jet7(in.fz),           Jet7(in.slip_angle), Jet7(in.slip_ratio),
+                           Jet7(in.ambient_temp), Jet7(in.track_temp)};
+  };
+  const TyreInput<double> base = WorkedInput();
+  const TyreInputTerms<Jet7> near = CalcTyreInputTerms(pj, constants, compound, to_jet(base));
+  for (double change : {0.0, 0.001, -0.015, 0.019, 0.05, -0.3}) {
+    TyreInput<double> in = base;
+    in.speed *= 1.0 + change;
+    in.fz *= 1.0 - change;
+    in.fx *= 1.0 + 0.5 * change;
+    const TyreInputTerms<Jet7> direct = CalcTyreInputTerms(pj, constants, compound, to_jet(in));
+    const TyreInputTerms<Jet7> seeded =
+        CalcTyreInputTerms(pj, constants, compound, to_jet(in), &near);
+    const auto same = [&](const Jet7& a, const Jet7& b, const char* what) {
+      EXPECT_NEAR(a.a, b.a, 1e-14 * std::abs(b.a)) << what << " change " << change;
+      for (int i = 0; i < 2; ++i) {
+        EXPECT_NEAR(a.v[i], b.v[i], 1e-12 * std::abs(b.v[i]) + 1e-300)
+            << what << " derivative " << i << " change " << change;
+      }
+    };
+    same(seeded.load_pow, direct.load_pow, "load power");
+    same(seeded.speed_length_pow, direct.speed_length_pow, "speed power");
+    same(seeded.wear_power_factor, direct.wear_power_factor, "wear power");
+    same(seeded.convection_factor, direct.convection_factor, "convection factor");
+  }
+  // The derivative seeds reached the powers.
+  EXPECT_NE(near.load_pow.v[0], 0.0);
+  EXPECT_NE(near.wear_power_factor.v[1], 0.0);
+}
+
 TEST(TyreThermalTest, StateDerivativesMatchFiniteDifferences) {
   const TyreThermalParams<double> p = RearRightParams();
   const TyreState<double> x = WorkedState();

@@ -7,14 +7,25 @@
 namespace hotlap::brake {
 
 template <Scalar T>
-T ConvectionPolynomial<T>::Conductance(const T& speed, const T& temp) const {
+typename ConvectionPolynomial<T>::AtSpeed ConvectionPolynomial<T>::ForSpeed(const T& speed) const {
+  using std::abs;
+  const T z2 = abs(speed) * 1e-2;
+  return {l11 + l21 * z2, l22 * z2};
+}
+
+template <Scalar T>
+T ConvectionPolynomial<T>::Conductance(const AtSpeed& s, const T& temp) const {
   // z = [1, u/100, (T - 273.15)/1000]; y = L' z; hA = y'y = z' L L' z (spec section 5).
-  const T z2 = speed / 100.0;
-  const T z3 = (temp - kZeroCelsius) / 1000.0;
-  const T y1 = l11 + l21 * z2 + l31 * z3;
-  const T y2 = l22 * z2 + l32 * z3;
+  const T z3 = (temp - kZeroCelsius) * 1e-3;
+  const T y1 = s.a + l31 * z3;
+  const T y2 = s.b + l32 * z3;
   const T y3 = l33 * z3;
   return y1 * y1 + y2 * y2 + y3 * y3;
+}
+
+template <Scalar T>
+T ConvectionPolynomial<T>::Conductance(const T& speed, const T& temp) const {
+  return Conductance(ForSpeed(speed), temp);
 }
 
 template <Scalar T>
@@ -24,45 +35,96 @@ T CalcBrakePower(const T& speed, const T& fx) {
 }
 
 template <Scalar T>
-BrakeHeatFlows<T> CalcBrakeHeatFlows(const BrakeThermalParams<T>& p, const BrakeState<T>& x,
-                                     const BrakeInput<T>& in) {
+BrakeConstants<T> CalcBrakeConstants(const BrakeThermalParams<T>& p) {
+  BrakeConstants<T> k;
+  k.pad_conductance = 2.0 * p.pad_conductivity * p.pad_area / p.pad_thickness;  // (000:27)
+  k.disc_radiation = p.disc_emissivity * kStefanBoltzmann * p.disc_radiating_area;
+  k.calliper_radiation = p.calliper_emissivity * kStefanBoltzmann * p.calliper_radiating_area;
+  k.inv_disc_capacity = 1.0 / (p.mass_participation * p.disc_mass * p.disc_heat_capacity);
+  k.inv_calliper_capacity = 1.0 / (p.calliper_mass * p.calliper_heat_capacity);
+  return k;
+}
+
+template <Scalar T>
+BrakeInputTerms<T> CalcBrakeInputTerms(const BrakeThermalParams<T>& p, const BrakeConstants<T>& k,
+                                       const BrakeInput<T>& in) {
   using std::abs;
+  BrakeInputTerms<T> t;
+  t.input = in;
+  t.power = CalcBrakePower(in.speed, in.fx);
+  t.disc_at_speed = p.disc_convection.ForSpeed(in.speed);
+  t.calliper_at_speed = p.calliper_convection.ForSpeed(in.speed);
+  const T t0_2 = in.cooling_air_temp * in.cooling_air_temp;
+  t.cooling_air_temp4 = t0_2 * t0_2;
+  t.constants = k;
+  return t;
+}
+
+template <Scalar T>
+BrakeInputTerms<T> CalcBrakeInputTerms(const BrakeThermalParams<T>& p, const BrakeInput<T>& in) {
+  return CalcBrakeInputTerms(p, CalcBrakeConstants(p), in);
+}
+
+template <Scalar T>
+BrakeHeatFlows<T> CalcBrakeHeatFlows(const BrakeThermalParams<T>& p, const BrakeState<T>& x,
+                                     const BrakeInputTerms<T>& t) {
   const T& td = x.disc_temp;
   const T& tk = x.calliper_temp;
-  const T& t0 = in.cooling_air_temp;
-  const T t0_4 = t0 * t0 * t0 * t0;
-  const T speed = abs(in.speed);
+  const T& t0 = t.input.cooling_air_temp;
+  const T td2 = td * td;
+  const T tk2 = tk * tk;
   BrakeHeatFlows<T> q;
-  q.q1 = CalcBrakePower(in.speed, in.fx);
-  q.q2 = 2.0 * p.pad_conductivity * p.pad_area / p.pad_thickness * (td - tk);  // (000:27)
-  q.q3 = p.disc_emissivity * kStefanBoltzmann * p.disc_radiating_area * (td * td * td * td - t0_4);
-  q.q4 = p.disc_convection.Conductance(speed, td) * (td - t0);  // (000:30)
-  q.q5 = p.calliper_emissivity * kStefanBoltzmann * p.calliper_radiating_area *
-         (tk * tk * tk * tk - t0_4);                                // (000:29)
-  q.q6 = p.calliper_convection.Conductance(speed, tk) * (tk - t0);  // (000:31)
+  q.q1 = t.power;                                                                 // (000:26)
+  q.q2 = t.constants.pad_conductance * (td - tk);                                 // (000:27)
+  q.q3 = t.constants.disc_radiation * (td2 * td2 - t.cooling_air_temp4);          // (000:28)
+  q.q4 = p.disc_convection.Conductance(t.disc_at_speed, td) * (td - t0);          // (000:30)
+  q.q5 = t.constants.calliper_radiation * (tk2 * tk2 - t.cooling_air_temp4);      // (000:29)
+  q.q6 = p.calliper_convection.Conductance(t.calliper_at_speed, tk) * (tk - t0);  // (000:31)
   return q;
+}
+
+template <Scalar T>
+BrakeHeatFlows<T> CalcBrakeHeatFlows(const BrakeThermalParams<T>& p, const BrakeState<T>& x,
+                                     const BrakeInput<T>& in) {
+  return CalcBrakeHeatFlows(p, x, CalcBrakeInputTerms(p, in));
+}
+
+template <Scalar T>
+BrakeState<T> CalcBrakeDerivatives(const BrakeThermalParams<T>& p, const BrakeState<T>& x,
+                                   const BrakeInputTerms<T>& t, BrakeHeatFlows<T>* flows) {
+  const BrakeHeatFlows<T> q = CalcBrakeHeatFlows(p, x, t);
+  if (flows != nullptr) *flows = q;
+  BrakeState<T> dx;
+  dx.disc_temp =
+      (p.heat_partition * q.q1 - q.q2 - q.q3 - q.q4) * t.constants.inv_disc_capacity;  // (000:24)
+  dx.calliper_temp = ((1.0 - p.heat_partition) * q.q1 + q.q2 - q.q5 - q.q6) *
+                     t.constants.inv_calliper_capacity;  // (000:25)
+  return dx;
 }
 
 template <Scalar T>
 BrakeState<T> CalcBrakeDerivatives(const BrakeThermalParams<T>& p, const BrakeState<T>& x,
                                    const BrakeInput<T>& in, BrakeHeatFlows<T>* flows) {
-  const BrakeHeatFlows<T> q = CalcBrakeHeatFlows(p, x, in);
-  if (flows != nullptr) *flows = q;
-  BrakeState<T> dx;
-  dx.disc_temp = (p.heat_partition * q.q1 - q.q2 - q.q3 - q.q4) /
-                 (p.mass_participation * p.disc_mass * p.disc_heat_capacity);  // (000:24)
-  dx.calliper_temp = ((1.0 - p.heat_partition) * q.q1 + q.q2 - q.q5 - q.q6) /
-                     (p.calliper_mass * p.calliper_heat_capacity);  // (000:25)
-  return dx;
+  return CalcBrakeDerivatives(p, x, CalcBrakeInputTerms(p, in), flows);
 }
 
-#define HOTLAP_INSTANTIATE_BRAKE_THERMAL(T)                                                     \
-  template struct ConvectionPolynomial<T>;                                                      \
-  template T CalcBrakePower<T>(const T&, const T&);                                             \
-  template BrakeHeatFlows<T> CalcBrakeHeatFlows<T>(const BrakeThermalParams<T>&,                \
-                                                   const BrakeState<T>&, const BrakeInput<T>&); \
-  template BrakeState<T> CalcBrakeDerivatives<T>(const BrakeThermalParams<T>&,                  \
-                                                 const BrakeState<T>&, const BrakeInput<T>&,    \
+#define HOTLAP_INSTANTIATE_BRAKE_THERMAL(T)                                                       \
+  template struct ConvectionPolynomial<T>;                                                        \
+  template T CalcBrakePower<T>(const T&, const T&);                                               \
+  template BrakeConstants<T> CalcBrakeConstants<T>(const BrakeThermalParams<T>&);                 \
+  template BrakeInputTerms<T> CalcBrakeInputTerms<T>(                                             \
+      const BrakeThermalParams<T>&, const BrakeConstants<T>&, const BrakeInput<T>&);              \
+  template BrakeInputTerms<T> CalcBrakeInputTerms<T>(const BrakeThermalParams<T>&,                \
+                                                     const BrakeInput<T>&);                       \
+  template BrakeHeatFlows<T> CalcBrakeHeatFlows<T>(const BrakeThermalParams<T>&,                  \
+                                                   const BrakeState<T>&, const BrakeInput<T>&);   \
+  template BrakeHeatFlows<T> CalcBrakeHeatFlows<T>(                                               \
+      const BrakeThermalParams<T>&, const BrakeState<T>&, const BrakeInputTerms<T>&);             \
+  template BrakeState<T> CalcBrakeDerivatives<T>(const BrakeThermalParams<T>&,                    \
+                                                 const BrakeState<T>&, const BrakeInput<T>&,      \
+                                                 BrakeHeatFlows<T>*);                             \
+  template BrakeState<T> CalcBrakeDerivatives<T>(const BrakeThermalParams<T>&,                    \
+                                                 const BrakeState<T>&, const BrakeInputTerms<T>&, \
                                                  BrakeHeatFlows<T>*);
 HOTLAP_FOR_EACH_SCALAR(HOTLAP_INSTANTIATE_BRAKE_THERMAL)
 

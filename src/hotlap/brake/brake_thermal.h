@@ -22,6 +22,14 @@ struct ConvectionPolynomial {
 
   /// hA(u, T) in W/K: the squared norm of L' z (spec section 5).
   T Conductance(const T& speed, const T& temp) const;
+  /// The speed-dependent parts of L' z: y1 = a + l31 z3, y2 = b + l32 z3 with a = l11 + l21 z2,
+  /// b = l22 z2, z2 = |u| / (100 m/s). Computed once per input by an integrator.
+  struct AtSpeed {
+    T a{}, b{};
+  };
+  AtSpeed ForSpeed(const T& speed) const;
+  /// hA at temperature `temp` for a speed given by ForSpeed, W/K.
+  T Conductance(const AtSpeed& at_speed, const T& temp) const;
 
   template <class Self>
   static auto FieldsOf(Self& s) {
@@ -101,18 +109,65 @@ struct BrakeHeatFlows {
   T q6{};  ///< calliper convection (000:31)
 };
 
+/// The parts of the model that depend only on the parameters, computed once per integration.
+template <Scalar T>
+struct BrakeConstants {
+  T pad_conductance{};        ///< 2 k_p A_pad / l_pad, W/K (000:27)
+  T disc_radiation{};         ///< eps_d sigma A_disc, W/K^4 (000:28)
+  T calliper_radiation{};     ///< eps_k sigma A_cal, W/K^4 (000:29)
+  T inv_disc_capacity{};      ///< 1 / (xi m_d c_d), K/J (000:24)
+  T inv_calliper_capacity{};  ///< 1 / (m_k c_k), K/J (000:25)
+};
+
+/// The parts of the model that depend only on the parameters and the input, computed once per
+/// distinct input time by an integrator (as tyre::TyreInputTerms); identical results to the raw
+/// input up to rounding.
+template <Scalar T>
+struct BrakeInputTerms {
+  BrakeInput<T> input;
+  T power{};                                                    ///< q1 (000:26), W
+  typename ConvectionPolynomial<T>::AtSpeed disc_at_speed;      ///< for hA_d (000:30)
+  typename ConvectionPolynomial<T>::AtSpeed calliper_at_speed;  ///< for hA_k (000:31)
+  T cooling_air_temp4{};                                        ///< T_0^4, K^4
+  BrakeConstants<T> constants;
+};
+
 /// Braking power at one corner, W: |u| max(-Fx, 0) (000:26), exact (non-smooth) form.
 template <Scalar T>
 T CalcBrakePower(const T& speed, const T& fx);
 
+/// The parameter-only terms.
+template <Scalar T>
+BrakeConstants<T> CalcBrakeConstants(const BrakeThermalParams<T>& params);
+
+/// The state-independent terms for one input.
+template <Scalar T>
+BrakeInputTerms<T> CalcBrakeInputTerms(const BrakeThermalParams<T>& params,
+                                       const BrakeInput<T>& input);
+/// The same with the parameter-only terms given (they must be those of the parameters).
+template <Scalar T>
+BrakeInputTerms<T> CalcBrakeInputTerms(const BrakeThermalParams<T>& params,
+                                       const BrakeConstants<T>& constants,
+                                       const BrakeInput<T>& input);
+
+/// All six heat flows (000:26-31).
 template <Scalar T>
 BrakeHeatFlows<T> CalcBrakeHeatFlows(const BrakeThermalParams<T>& params,
                                      const BrakeState<T>& state, const BrakeInput<T>& input);
+/// All six heat flows from precomputed input terms.
+template <Scalar T>
+BrakeHeatFlows<T> CalcBrakeHeatFlows(const BrakeThermalParams<T>& params,
+                                     const BrakeState<T>& state, const BrakeInputTerms<T>& terms);
 
 /// Time derivative of the brake state (000:24-25). If `flows` is given, the heat flows used are
 /// written there.
 template <Scalar T>
 BrakeState<T> CalcBrakeDerivatives(const BrakeThermalParams<T>& params, const BrakeState<T>& state,
                                    const BrakeInput<T>& input, BrakeHeatFlows<T>* flows = nullptr);
+/// As above, from precomputed input terms.
+template <Scalar T>
+BrakeState<T> CalcBrakeDerivatives(const BrakeThermalParams<T>& params, const BrakeState<T>& state,
+                                   const BrakeInputTerms<T>& terms,
+                                   BrakeHeatFlows<T>* flows = nullptr);
 
 }  // namespace hotlap::brake

@@ -76,15 +76,18 @@ inline Kinks KinksBetween(const CornerSamples& in, size_t k) {
 }
 
 /// Integrates `derivative(state, terms)` over the samples from `state` at time[0]; calls
-/// `on_sample(k, state)` for every sample k, the first with the initial state. `terms_at(k, f)`
-/// gives the model's input terms a fraction f of the way from sample k to k+1. Each interval is
+/// `on_sample(k, state)` for every sample k, the first with the initial state.
+/// `terms_at(k, f, near)` gives the model's input terms a fraction f of the way from sample k to
+/// k+1, and may reuse parts of `near` (the previous stage's terms, or null). Each interval is
 /// split at the kinks of `samples` and every piece is covered by RK4 steps no longer than
-/// max_step; the input terms are computed once per distinct stage time.
+/// max_step; the input terms are computed once per distinct stage time (a step's end is the next
+/// step's start, across samples too).
 template <class State, class TermsAt, class Derivative, class OnSample>
 void IntegrateOverSamples(const CornerSamples& samples, State state, double max_step,
                           TermsAt&& terms_at, Derivative&& derivative, OnSample&& on_sample) {
   const std::span<const double> time = samples.time;
   on_sample(size_t{0}, state);
+  auto start = terms_at(size_t{0}, 0.0, nullptr);
   for (size_t k = 0; k + 1 < time.size(); ++k) {
     const double interval = time[k + 1] - time[k];
     // Time inside the interval is measured as the fraction of it, so the inputs at the RK4 stages
@@ -94,16 +97,19 @@ void IntegrateOverSamples(const CornerSamples& samples, State state, double max_
     };
     const Kinks kinks = KinksBetween(samples, k);
     double from = 0.0;
-    auto start = terms_at(k, 0.0);
     for (int piece = 0; piece <= kinks.count; ++piece) {
       const double to = piece < kinks.count ? kinks.at[piece] : 1.0;
       if (to <= from) continue;
-      const int n = SubStepsFor((to - from) * interval, max_step);
+      const double length = (to - from) * interval;
+      const int n = length <= max_step ? 1 : SubStepsFor(length, max_step);
       const double step = (to - from) / n;
       for (int i = 0; i < n; ++i) {
         const double a = from + i * step;
-        const auto middle = terms_at(k, a + 0.5 * step);
-        auto end = terms_at(k, i + 1 == n ? to : a + step);
+        const auto middle = terms_at(k, a + 0.5 * step, &start);
+        const bool last = i + 1 == n;
+        // The interval's end is exactly sample k+1, which starts the next interval.
+        auto end = last && to == 1.0 ? terms_at(k + 1, 0.0, &middle)
+                                     : terms_at(k, last ? to : a + step, &middle);
         state = Rk4StepWithInputs(f, state, step, start, middle, end);
         start = std::move(end);
       }
@@ -118,10 +124,11 @@ template <Scalar T, class OnSample>
 void IntegrateTyre(const tyre::TyreThermalParams<T>& params, const tyre::TyreCompound& compound,
                    const CornerSamples& in, const tyre::TyreState<T>& initial, double max_step,
                    OnSample&& on_sample) {
+  const tyre::TyreConstants<T> constants = tyre::CalcTyreConstants(params);
   IntegrateOverSamples(
       in, initial, max_step,
-      [&](size_t k, double f) {
-        return tyre::CalcTyreInputTerms(params, compound, in.TyreInputAt<T>(k, f));
+      [&](size_t k, double f, const tyre::TyreInputTerms<T>* near) {
+        return tyre::CalcTyreInputTerms(params, constants, compound, in.TyreInputAt<T>(k, f), near);
       },
       [&](const tyre::TyreState<T>& x, const tyre::TyreInputTerms<T>& terms) {
         return tyre::CalcTyreDerivatives(params, compound, x, terms);
@@ -133,10 +140,14 @@ void IntegrateTyre(const tyre::TyreThermalParams<T>& params, const tyre::TyreCom
 template <Scalar T, class OnSample>
 void IntegrateBrake(const brake::BrakeThermalParams<T>& params, const CornerSamples& in,
                     const brake::BrakeState<T>& initial, double max_step, OnSample&& on_sample) {
+  const brake::BrakeConstants<T> constants = brake::CalcBrakeConstants(params);
   IntegrateOverSamples(
-      in, initial, max_step, [&](size_t k, double f) { return in.BrakeInputAt<T>(k, f); },
-      [&](const brake::BrakeState<T>& x, const brake::BrakeInput<T>& u) {
-        return brake::CalcBrakeDerivatives(params, x, u);
+      in, initial, max_step,
+      [&](size_t k, double f, const brake::BrakeInputTerms<T>*) {
+        return brake::CalcBrakeInputTerms(params, constants, in.BrakeInputAt<T>(k, f));
+      },
+      [&](const brake::BrakeState<T>& x, const brake::BrakeInputTerms<T>& terms) {
+        return brake::CalcBrakeDerivatives(params, x, terms);
       },
       on_sample);
 }

@@ -1,5 +1,6 @@
 #include "hotlap/tyre/tyre_thermal.h"
 
+#include <array>
 #include <cmath>
 
 #include "hotlap/common/units.h"
@@ -21,6 +22,43 @@ T PowPositive(const T& x, const E& y) {
 // Exponent of the Reynolds number in (000:15).
 constexpr double kReynoldsExponent = 0.805;
 
+}  // namespace
+
+template <Scalar T>
+BinomialSeries<T> BinomialSeries<T>::For(const T& exponent) {
+  BinomialSeries<T> s;
+  s.exponent = exponent;
+  s.coefficients[0] = T(1.0);
+  for (int n = 1; n < kTerms; ++n) {
+    s.coefficients[n] = s.coefficients[n - 1] * (exponent - (n - 1.0)) / double(n);
+  }
+  return s;
+}
+
+namespace {
+
+// x^y from a nearby x0 > 0 whose power p0 = x0^y is known: x^y = p0 (1 + r)^y, r = x / x0 - 1,
+// by the binomial series to r^8 when |r| <= 0.02 (remainder below 1e-15 relative), else
+// directly. Between two log samples the tyre's inputs change by much less than 2%, so most of an
+// integrator's powers come from the previous stage's at the cost of a few multiplications.
+template <Scalar T>
+T PowPositiveNear(const T& x, const BinomialSeries<T>& series, const T& x0, const T& p0) {
+  constexpr double kMaxRatio = 0.02;
+  if (!(ValueOf(x0) > 0.0)) return PowPositive(x, series.exponent);
+  const T r = x / x0 - 1.0;
+  if (!(std::abs(ValueOf(r)) <= kMaxRatio)) return PowPositive(x, series.exponent);
+  // Estrin's scheme for the 9 coefficients.
+  const auto& c = series.coefficients;
+  const T r2 = r * r;
+  const T r4 = r2 * r2;
+  const T s01 = c[0] + c[1] * r;
+  const T s23 = c[2] + c[3] * r;
+  const T s45 = c[4] + c[5] * r;
+  const T s67 = c[6] + c[7] * r;
+  const T sum = (s01 + s23 * r2) + (s45 + s67 * r2) * r4 + c[8] * (r4 * r4);
+  return p0 * sum;
+}
+
 // The forced-convection coefficient from its state-independent factor (000:15):
 // h = k/L 0.0239 (|u| L / nu)^0.805 = k/L 0.0239 (|u| L)^0.805 nu^-0.805.
 template <Scalar T>
@@ -28,10 +66,8 @@ T ForcedConvection(const T& length, const T& speed_length_pow, const T& tread_te
                    const T& ambient_temp) {
   if (ValueOf(speed_length_pow) == 0.0) return T(0.0);
   const T film_temp = 0.5 * (tread_temp + ambient_temp);
-  const T conductivity = AirConductivity(film_temp);
-  const T viscosity = AirKinematicViscosity(film_temp);
-  return conductivity / length * 0.0239 * speed_length_pow *
-         PowPositive(viscosity, -kReynoldsExponent);
+  static_assert(kReynoldsExponent == 0.805, "AirConvectionFactor's series is for 0.805");
+  return 0.0239 / length * speed_length_pow * AirConvectionFactor(film_temp);
 }
 
 template <Scalar T>
@@ -59,18 +95,47 @@ T CalcForcedConvectionCoefficient(const TyreThermalParams<T>& params, const T& s
   return ForcedConvection(length, speed_length_pow, tread_temp, ambient_temp);
 }
 
+template <Scalar T>
+TyreConstants<T> CalcTyreConstants(const TyreThermalParams<T>& p) {
+  TyreConstants<T> k;
+  k.tread_area = kPi * p.diameter * p.width;  // A_tot (000:13)
+  k.length = CharacteristicLength(p);         // (000:16)
+  k.convection_scale = 0.0239 / k.length;     // (000:15)
+  k.tread_to_carcass = p.p5 * k.tread_area;   // (000:20)
+  k.sidewall_radiation = p.emissivity * kStefanBoltzmann * 2.0 * kPi *
+                         (p.unloaded_radius * p.unloaded_radius - p.rim_radius * p.rim_radius);
+  k.inv_tread_capacity = 1.0 / (p.tread_mass * p.tread_heat_capacity);
+  k.inv_carcass_capacity = 1.0 / (p.carcass_mass * p.carcass_heat_capacity);
+  k.carcass_heating = p.carcass_mass / (kPi * p.diameter);
+  k.load_series = BinomialSeries<T>::For(p.contact_length_exponent);
+  k.speed_series = BinomialSeries<T>::For(T(kReynoldsExponent));
+  k.wear_series = BinomialSeries<T>::For(p.wear_exponent);
+  return k;
+}
+
 namespace {
 
 // Every input term except the wear factor, which needs the compound.
+// With `near` given (terms of a nearby input), its powers seed this input's (PowPositiveNear).
 template <Scalar T>
-TyreInputTerms<T> CalcHeatInputTerms(const TyreThermalParams<T>& p, const TyreInput<T>& in) {
+TyreInputTerms<T> CalcHeatInputTerms(const TyreThermalParams<T>& p, const TyreConstants<T>& k,
+                                     const TyreInput<T>& in, const TyreInputTerms<T>* near) {
   using std::abs;
   using std::tan;
   TyreInputTerms<T> t;
   t.input = in;
   const T speed = abs(in.speed);
-  t.tread_area = kPi * p.diameter * p.width;                            // A_tot (000:13)
-  const T contact_length = CalcContactLength(p, in.fz);                 // c_l (000:14)
+  t.tread_area = k.tread_area;  // A_tot (000:13)
+  const T fz = abs(in.fz);
+  // c_l = p_cp1 |Fz|^p_cp2 (000:14); zero at Fz = 0, where the power's derivative is singular.
+  if (ValueOf(fz) == 0.0) {
+    t.load_pow = T(0.0);
+  } else if (near != nullptr) {
+    t.load_pow = PowPositiveNear(fz, k.load_series, T(abs(near->input.fz)), near->load_pow);
+  } else {
+    t.load_pow = PowPositive(fz, p.contact_length_exponent);
+  }
+  const T contact_length = p.contact_length_coeff * t.load_pow;         // c_l (000:14)
   t.convection_area = t.tread_area - p.contact_width * contact_length;  // A_conv (000:12)
   // Share of the patch that does not slide, (000:19), unclamped as in the paper.
   const T non_sliding = abs(in.slip_angle) / p.reference_slip_angle *
@@ -78,53 +143,82 @@ TyreInputTerms<T> CalcHeatInputTerms(const TyreThermalParams<T>& p, const TyreIn
                         p.non_sliding_fraction_low;
   t.adhesion_area = p.contact_width * non_sliding * contact_length;  // A_cp (000:18)
   t.q1 = p.p1 * speed * (abs(in.fx * in.slip_ratio) + abs(in.fy * tan(in.slip_angle)));  // (000:9)
-  t.q2 = speed * p.carcass_mass / (kPi * p.diameter) *
+  t.q2 = speed * k.carcass_heating *
          (p.p2 * abs(in.fx) + p.p3 * abs(in.fy) + p.p4 * abs(in.fz));  // (000:10)
-  t.length = CharacteristicLength(p);
-  t.speed_length_pow =
-      ValueOf(speed) == 0.0 ? T(0.0) : PowPositive(T(speed * t.length), kReynoldsExponent);
+  t.length = k.length;
+  if (ValueOf(speed) == 0.0) {
+    t.speed_length_pow = T(0.0);
+  } else if (near != nullptr) {
+    t.speed_length_pow =
+        PowPositiveNear(T(speed * t.length), k.speed_series, T(abs(near->input.speed) * t.length),
+                        near->speed_length_pow);
+  } else {
+    t.speed_length_pow = PowPositive(T(speed * t.length), kReynoldsExponent);
+  }
+  // h_forc A_conv without the air properties (000:15).
+  t.convection_factor = k.convection_scale * t.speed_length_pow * t.convection_area;
+  t.track_conductance = p.track_conductance * t.adhesion_area;
+  t.tread_to_carcass = k.tread_to_carcass;
+  t.tread_radiation = p.emissivity * kStefanBoltzmann * (t.tread_area - t.adhesion_area);
+  t.sidewall_radiation = k.sidewall_radiation;
+  const T ambient2 = in.ambient_temp * in.ambient_temp;
+  t.ambient_temp4 = ambient2 * ambient2;
+  t.inv_tread_capacity = k.inv_tread_capacity;
+  t.inv_carcass_capacity = k.inv_carcass_capacity;
   return t;
 }
 
 }  // namespace
 
 template <Scalar T>
+TyreInputTerms<T> CalcTyreInputTerms(const TyreThermalParams<T>& p, const TyreConstants<T>& k,
+                                     const TyreCompound& compound, const TyreInput<T>& in,
+                                     const TyreInputTerms<T>* near) {
+  TyreInputTerms<T> t = CalcHeatInputTerms(p, k, in, near);
+  // (000:23); no sliding power, no wear (the power's derivative is singular at 0).
+  const T power_ratio = t.q1 / compound.wear_reference_power;
+  if (ValueOf(t.q1) <= 0.0) {
+    t.wear_power_factor = T(0.0);
+  } else if (near != nullptr) {
+    t.wear_power_factor =
+        PowPositiveNear(power_ratio, k.wear_series, T(near->q1 / compound.wear_reference_power),
+                        near->wear_power_factor);
+  } else {
+    t.wear_power_factor = PowPositive(power_ratio, p.wear_exponent);
+  }
+  t.wear_rate_factor = p.wear_coeff * t.wear_power_factor;
+  return t;
+}
+
+template <Scalar T>
 TyreInputTerms<T> CalcTyreInputTerms(const TyreThermalParams<T>& p, const TyreCompound& compound,
                                      const TyreInput<T>& in) {
-  TyreInputTerms<T> t = CalcHeatInputTerms(p, in);
-  // (000:23); no sliding power, no wear (the power's derivative is singular at 0).
-  t.wear_power_factor = ValueOf(t.q1) <= 0.0
-                            ? T(0.0)
-                            : PowPositive(T(t.q1 / compound.wear_reference_power), p.wear_exponent);
-  return t;
+  return CalcTyreInputTerms<T>(p, CalcTyreConstants(p), compound, in, nullptr);
 }
 
 template <Scalar T>
 TyreHeatFlows<T> CalcTyreHeatFlows(const TyreThermalParams<T>& p, const TyreState<T>& x,
                                    const TyreInputTerms<T>& t) {
   const TyreInput<T>& in = t.input;
-  const T h_forced = ForcedConvection(t.length, t.speed_length_pow, x.tread_temp, in.ambient_temp);
-  const T tread4 = x.tread_temp * x.tread_temp * x.tread_temp * x.tread_temp;
-  const T carcass4 = x.carcass_temp * x.carcass_temp * x.carcass_temp * x.carcass_temp;
-  const T ambient4 = in.ambient_temp * in.ambient_temp * in.ambient_temp * in.ambient_temp;
-  const T sidewall_area =
-      2.0 * kPi * (p.unloaded_radius * p.unloaded_radius - p.rim_radius * p.rim_radius);
+  const T film_temp = 0.5 * (x.tread_temp + in.ambient_temp);
+  const T tread2 = x.tread_temp * x.tread_temp;
+  const T carcass2 = x.carcass_temp * x.carcass_temp;
   TyreHeatFlows<T> q;
-  q.q1 = t.q1;                                                                    // (000:9)
-  q.q2 = t.q2;                                                                    // (000:10)
-  q.q3 = h_forced * t.convection_area * (x.tread_temp - in.ambient_temp);         // (000:11)
-  q.q4 = p.track_conductance * t.adhesion_area * (x.tread_temp - in.track_temp);  // (000:17)
-  q.q5 = p.p5 * t.tread_area * (x.carcass_temp - x.tread_temp);                   // (000:20)
-  q.q6 = p.emissivity * kStefanBoltzmann * (t.tread_area - t.adhesion_area) *
-         (tread4 - ambient4);                                                      // (000:21)
-  q.q7 = p.emissivity * kStefanBoltzmann * sidewall_area * (carcass4 - ambient4);  // (000:22)
+  q.q1 = t.q1;  // (000:9)
+  q.q2 = t.q2;  // (000:10)
+  q.q3 = t.convection_factor * AirConvectionFactor(film_temp) *
+         (x.tread_temp - in.ambient_temp);                                // (000:11, 15)
+  q.q4 = t.track_conductance * (x.tread_temp - in.track_temp);            // (000:17)
+  q.q5 = t.tread_to_carcass * (x.carcass_temp - x.tread_temp);            // (000:20)
+  q.q6 = t.tread_radiation * (tread2 * tread2 - t.ambient_temp4);         // (000:21)
+  q.q7 = t.sidewall_radiation * (carcass2 * carcass2 - t.ambient_temp4);  // (000:22)
   return q;
 }
 
 template <Scalar T>
 TyreHeatFlows<T> CalcTyreHeatFlows(const TyreThermalParams<T>& p, const TyreState<T>& x,
                                    const TyreInput<T>& in) {
-  return CalcTyreHeatFlows(p, x, CalcHeatInputTerms(p, in));
+  return CalcTyreHeatFlows(p, x, CalcHeatInputTerms<T>(p, CalcTyreConstants(p), in, nullptr));
 }
 
 template <Scalar T>
@@ -142,9 +236,9 @@ TyreState<T> CalcTyreDerivatives(const TyreThermalParams<T>& p, const TyreCompou
   const TyreHeatFlows<T> q = CalcTyreHeatFlows(p, x, t);
   if (flows != nullptr) *flows = q;
   TyreState<T> dx;
-  dx.tread_temp = (q.q1 - q.q3 - q.q4 + q.q5 - q.q6) / (p.tread_mass * p.tread_heat_capacity);
-  dx.carcass_temp = (q.q2 - q.q5 - q.q7) / (p.carcass_mass * p.carcass_heat_capacity);
-  dx.wear = p.wear_coeff * compound.wear_rate.Evaluate(x.tread_temp) * t.wear_power_factor;
+  dx.tread_temp = (q.q1 - q.q3 - q.q4 + q.q5 - q.q6) * t.inv_tread_capacity;  // (000:7)
+  dx.carcass_temp = (q.q2 - q.q5 - q.q7) * t.inv_carcass_capacity;            // (000:8)
+  dx.wear = t.wear_rate_factor * compound.wear_rate.Evaluate(x.tread_temp);   // (000:23)
   return dx;
 }
 
@@ -156,11 +250,16 @@ TyreState<T> CalcTyreDerivatives(const TyreThermalParams<T>& p, const TyreCompou
 }
 
 #define HOTLAP_INSTANTIATE_TYRE_THERMAL(T)                                                         \
+  template struct BinomialSeries<T>;                                                               \
   template T CalcContactLength<T>(const TyreThermalParams<T>&, const T&);                          \
   template T CalcForcedConvectionCoefficient<T>(const TyreThermalParams<T>&, const T&, const T&,   \
                                                 const T&);                                         \
+  template TyreConstants<T> CalcTyreConstants<T>(const TyreThermalParams<T>&);                     \
   template TyreInputTerms<T> CalcTyreInputTerms<T>(const TyreThermalParams<T>&,                    \
                                                    const TyreCompound&, const TyreInput<T>&);      \
+  template TyreInputTerms<T> CalcTyreInputTerms<T>(const TyreThermalParams<T>&,                    \
+                                                   const TyreConstants<T>&, const TyreCompound&,   \
+                                                   const TyreInput<T>&, const TyreInputTerms<T>*); \
   template TyreHeatFlows<T> CalcTyreHeatFlows<T>(const TyreThermalParams<T>&, const TyreState<T>&, \
                                                  const TyreInput<T>&);                             \
   template TyreHeatFlows<T> CalcTyreHeatFlows<T>(const TyreThermalParams<T>&, const TyreState<T>&, \

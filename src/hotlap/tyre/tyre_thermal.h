@@ -11,6 +11,7 @@
 /// the fitted p-values were identified with it, so it is used as printed. `c_s` is not clamped
 /// (as in the paper), so above about 11 deg of slip the "non-sliding" area exceeds the patch.
 
+#include <array>
 #include <tuple>
 
 #include "hotlap/common/field_cast.h"
@@ -109,6 +110,32 @@ struct TyreHeatFlows {
   T q7{};  ///< radiation from the sidewalls (000:22)
 };
 
+/// Coefficients C(a, n), n = 0..8, of the binomial series (1 + r)^a = sum C(a, n) r^n.
+template <Scalar T>
+struct BinomialSeries {
+  static constexpr int kTerms = 9;
+  T exponent{};
+  std::array<T, kTerms> coefficients{};
+  static BinomialSeries For(const T& exponent);
+};
+
+/// The parts of the model that depend only on the parameters, computed once per integration.
+template <Scalar T>
+struct TyreConstants {
+  T tread_area{};            ///< A_tot = pi D W, m^2 (000:13)
+  T length{};                ///< L of (000:16), m
+  T convection_scale{};      ///< 0.0239 / L, 1/m (000:15)
+  T tread_to_carcass{};      ///< p5 A_tot, W/K (000:20)
+  T sidewall_radiation{};    ///< eps sigma 2 pi (r0^2 - r_rim^2), W/K^4 (000:22)
+  T inv_tread_capacity{};    ///< 1 / (m_t c_t), K/J
+  T inv_carcass_capacity{};  ///< 1 / (m_c c_c), K/J
+  T carcass_heating{};       ///< m_c / (pi D), kg/m (000:10)
+  // Series of the three powers of the model, for CalcTyreInputTerms' `near`.
+  BinomialSeries<T> load_series;   ///< exponent p_cp2 (000:14)
+  BinomialSeries<T> speed_series;  ///< exponent 0.805 (000:15)
+  BinomialSeries<T> wear_series;   ///< exponent wp2 (000:23)
+};
+
 /// The parts of the model that depend only on the parameters and the inputs, not on the state.
 /// An integrator computes them once per distinct input time (RK4's two middle stages share one
 /// set, and a step's last stage is the next step's first); the results are identical to
@@ -122,8 +149,19 @@ struct TyreInputTerms {
   T q1{};                 ///< W (000:9)
   T q2{};                 ///< W (000:10)
   T wear_power_factor{};  ///< (Q1 / Q_ref)^wp2 (000:23)
+  T load_pow{};           ///< |Fz|^p_cp2 of (000:14), N^p_cp2
   T speed_length_pow{};   ///< (|u| L)^0.805 of (000:15), (m^2/s)^0.805
   T length{};             ///< L of (000:16), m
+  // Products of the above with parameters, so that the state-dependent part is multiplications.
+  T convection_factor{};     ///< 0.0239 (|u| L)^0.805 A_conv / L: q3 = it k nu^-0.805 (T_t - T_amb)
+  T track_conductance{};     ///< h_tt A_cp, W/K (000:17)
+  T tread_to_carcass{};      ///< p5 A_tot, W/K (000:20)
+  T tread_radiation{};       ///< eps sigma (A_tot - A_cp), W/K^4 (000:21)
+  T sidewall_radiation{};    ///< eps sigma 2 pi (r0^2 - r_rim^2), W/K^4 (000:22)
+  T ambient_temp4{};         ///< T_amb^4, K^4
+  T inv_tread_capacity{};    ///< 1 / (m_t c_t), K/J
+  T inv_carcass_capacity{};  ///< 1 / (m_c c_c), K/J
+  T wear_rate_factor{};      ///< wp1 (Q1 / Q_ref)^wp2, mm/s (000:23)
 };
 
 /// Contact patch length c_l = p_cp1 |Fz|^p_cp2, m (000:14). Zero for Fz = 0.
@@ -136,10 +174,23 @@ template <Scalar T>
 T CalcForcedConvectionCoefficient(const TyreThermalParams<T>& params, const T& speed,
                                   const T& tread_temp, const T& ambient_temp);
 
+/// The parameter-only terms.
+template <Scalar T>
+TyreConstants<T> CalcTyreConstants(const TyreThermalParams<T>& params);
+
 /// The state-independent terms for one input.
 template <Scalar T>
 TyreInputTerms<T> CalcTyreInputTerms(const TyreThermalParams<T>& params,
                                      const TyreCompound& compound, const TyreInput<T>& input);
+/// The same with the parameter-only terms given (they must be those of `params`). If `near` is
+/// given (the terms of a nearby input, such as the previous integrator stage's), the three powers
+/// are taken from its powers by a series when the bases differ by at most 2% (same value within
+/// 1e-15 relative, several times cheaper than exp and log).
+template <Scalar T>
+TyreInputTerms<T> CalcTyreInputTerms(const TyreThermalParams<T>& params,
+                                     const TyreConstants<T>& constants,
+                                     const TyreCompound& compound, const TyreInput<T>& input,
+                                     const TyreInputTerms<T>* near = nullptr);
 
 /// All seven heat flows (000:9-22).
 template <Scalar T>
