@@ -14,4 +14,7 @@ using CommandRunner = std::function<int()>;
 /// `hotlap replay`: thermal and wear models over a telemetry log.
 CommandRunner RegisterReplayCommand(CLI::App& app);
 
+/// `hotlap tyre eval|fit`: tyre force models at a point or over a sweep, and fitted to rig data.
+CommandRunner RegisterTyreCommand(CLI::App& app);
+
 }  // namespace hotlap::app

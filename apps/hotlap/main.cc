@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
     runners[app.get_subcommands({}).at(before)] = std::move(run);
   };
   add(&hotlap::app::RegisterReplayCommand);
+  add(&hotlap::app::RegisterTyreCommand);
 
   try {
     app.parse(argc, argv);
