@@ -194,8 +194,10 @@ constexpr auto kTable = std::to_array<MagicFormulaParamInfo>({
     {"SSZ4", "ALIGNING_COEFFICIENTS", TirQuantity::kNone, 0, &P::SSZ4, "Variation of distance s/R0 with load and camber"},
 });
 
-static_assert(std::tuple_size_v<decltype(P::FieldsOf(std::declval<P&>()))> == kTable.size(),
-              "MagicFormulaParams::FieldsOf and the table must list the same fields");
+#define HOTLAP_COUNT_FIELD(name) +1
+static_assert(0 HOTLAP_MAGIC_FORMULA_FIELDS(HOTLAP_COUNT_FIELD) == kTable.size(),
+              "HOTLAP_MAGIC_FORMULA_FIELDS and the table must list the same fields");
+#undef HOTLAP_COUNT_FIELD
 
 }  // namespace
 

@@ -25,6 +25,28 @@
 
 namespace hotlap::tyre {
 
+/// Calls X(NAME) for every coefficient of MagicFormulaParams, in file order (cheap to compile,
+/// unlike a 200-element std::tie).
+#define HOTLAP_MAGIC_FORMULA_FIELDS(X) \
+  X(LONGVL) X(VXLOW) X(UNLOADED_RADIUS) X(WIDTH) X(ASPECT_RATIO) X(RIM_RADIUS) X(RIM_WIDTH) \
+  X(INFLPRES) X(NOMPRES) X(FNOMIN) X(VERTICAL_STIFFNESS) X(BREFF) X(DREFF) X(FREFF) X(Q_RE0) \
+  X(Q_V1) X(Q_V2) X(Q_FZ2) X(Q_FCX) X(Q_FCY) X(PFZ1) X(PRESMIN) X(PRESMAX) X(FZMIN) X(FZMAX) \
+  X(KPUMIN) X(KPUMAX) X(ALPMIN) X(ALPMAX) X(CAMMIN) X(CAMMAX) X(LFZO) X(LCX) X(LMUX) X(LEX) \
+  X(LKX) X(LHX) X(LVX) X(LCY) X(LMUY) X(LEY) X(LKY) X(LHY) X(LVY) X(LTR) X(LRES) X(LXAL) X(LYKA) \
+  X(LVYKA) X(LS) X(LKYC) X(LKZC) X(LVMX) X(LMX) X(LMY) X(LMP) X(PCX1) X(PDX1) X(PDX2) X(PDX3) \
+  X(PEX1) X(PEX2) X(PEX3) X(PEX4) X(PKX1) X(PKX2) X(PKX3) X(PHX1) X(PHX2) X(PVX1) X(PVX2) X(PPX1) \
+  X(PPX2) X(PPX3) X(PPX4) X(RBX1) X(RBX2) X(RBX3) X(RCX1) X(REX1) X(REX2) X(RHX1) X(QSX1) X(QSX2) \
+  X(QSX3) X(QSX4) X(QSX5) X(QSX6) X(QSX7) X(QSX8) X(QSX9) X(QSX10) X(QSX11) X(QSX12) X(QSX13) \
+  X(QSX14) X(PPMX1) X(PCY1) X(PDY1) X(PDY2) X(PDY3) X(PEY1) X(PEY2) X(PEY3) X(PEY4) X(PEY5) \
+  X(PKY1) X(PKY2) X(PKY3) X(PKY4) X(PKY5) X(PKY6) X(PKY7) X(PHY1) X(PHY2) X(PHY3) X(PVY1) X(PVY2) \
+  X(PVY3) X(PVY4) X(PPY1) X(PPY2) X(PPY3) X(PPY4) X(PPY5) X(RBY1) X(RBY2) X(RBY3) X(RBY4) X(RCY1) \
+  X(REY1) X(REY2) X(RHY1) X(RHY2) X(RVY1) X(RVY2) X(RVY3) X(RVY4) X(RVY5) X(RVY6) X(QSY1) X(QSY2) \
+  X(QSY3) X(QSY4) X(QSY5) X(QSY6) X(QSY7) X(QSY8) X(QBZ1) X(QBZ2) X(QBZ3) X(QBZ4) X(QBZ5) X(QBZ9) \
+  X(QBZ10) X(QCZ1) X(QDZ1) X(QDZ2) X(QDZ3) X(QDZ4) X(QDZ6) X(QDZ7) X(QDZ8) X(QDZ9) X(QDZ10) \
+  X(QDZ11) X(QEZ1) X(QEZ2) X(QEZ3) X(QEZ4) X(QEZ5) X(QHZ1) X(QHZ2) X(QHZ3) X(QHZ4) X(PPZ1) \
+  X(PPZ2) X(SSZ1) X(SSZ2) X(SSZ3) X(SSZ4)
+
+
 /// Which set of Magic Formula equations a file was fitted for (FITTYP, see tir_file.h).
 enum class MagicFormulaVersion {
   kMf52,  ///< MF 5.2 / PAC2002 (FITTYP 5, 6, 21)
@@ -238,16 +260,14 @@ struct MagicFormulaParams {
   T SSZ3{};  ///< variation of distance s/R0 with camber, 1
   T SSZ4{};  ///< variation of distance s/R0 with load and camber, 1
 
-  template <class Self>
-  static auto FieldsOf(Self& s) {
-    return std::tie(s.LONGVL, s.VXLOW, s.UNLOADED_RADIUS, s.WIDTH, s.ASPECT_RATIO, s.RIM_RADIUS, s.RIM_WIDTH, s.INFLPRES, s.NOMPRES, s.FNOMIN, s.VERTICAL_STIFFNESS, s.BREFF, s.DREFF, s.FREFF, s.Q_RE0, s.Q_V1, s.Q_V2, s.Q_FZ2, s.Q_FCX, s.Q_FCY, s.PFZ1, s.PRESMIN, s.PRESMAX, s.FZMIN, s.FZMAX, s.KPUMIN, s.KPUMAX, s.ALPMIN, s.ALPMAX, s.CAMMIN, s.CAMMAX, s.LFZO, s.LCX, s.LMUX, s.LEX, s.LKX, s.LHX, s.LVX, s.LCY, s.LMUY, s.LEY, s.LKY, s.LHY, s.LVY, s.LTR, s.LRES, s.LXAL, s.LYKA, s.LVYKA, s.LS, s.LKYC, s.LKZC, s.LVMX, s.LMX, s.LMY, s.LMP, s.PCX1, s.PDX1, s.PDX2, s.PDX3, s.PEX1, s.PEX2, s.PEX3, s.PEX4, s.PKX1, s.PKX2, s.PKX3, s.PHX1, s.PHX2, s.PVX1, s.PVX2, s.PPX1, s.PPX2, s.PPX3, s.PPX4, s.RBX1, s.RBX2, s.RBX3, s.RCX1, s.REX1, s.REX2, s.RHX1, s.QSX1, s.QSX2, s.QSX3, s.QSX4, s.QSX5, s.QSX6, s.QSX7, s.QSX8, s.QSX9, s.QSX10, s.QSX11, s.QSX12, s.QSX13, s.QSX14, s.PPMX1, s.PCY1, s.PDY1, s.PDY2, s.PDY3, s.PEY1, s.PEY2, s.PEY3, s.PEY4, s.PEY5, s.PKY1, s.PKY2, s.PKY3, s.PKY4, s.PKY5, s.PKY6, s.PKY7, s.PHY1, s.PHY2, s.PHY3, s.PVY1, s.PVY2, s.PVY3, s.PVY4, s.PPY1, s.PPY2, s.PPY3, s.PPY4, s.PPY5, s.RBY1, s.RBY2, s.RBY3, s.RBY4, s.RCY1, s.REY1, s.REY2, s.RHY1, s.RHY2, s.RVY1, s.RVY2, s.RVY3, s.RVY4, s.RVY5, s.RVY6, s.QSY1, s.QSY2, s.QSY3, s.QSY4, s.QSY5, s.QSY6, s.QSY7, s.QSY8, s.QBZ1, s.QBZ2, s.QBZ3, s.QBZ4, s.QBZ5, s.QBZ9, s.QBZ10, s.QCZ1, s.QDZ1, s.QDZ2, s.QDZ3, s.QDZ4, s.QDZ6, s.QDZ7, s.QDZ8, s.QDZ9, s.QDZ10, s.QDZ11, s.QEZ1, s.QEZ2, s.QEZ3, s.QEZ4, s.QEZ5, s.QHZ1, s.QHZ2, s.QHZ3, s.QHZ4, s.PPZ1, s.PPZ2, s.SSZ1, s.SSZ2, s.SSZ3, s.SSZ4);
-  }
   /// The same coefficients in another scalar type (derivative parts start at zero).
   template <Scalar U>
   MagicFormulaParams<U> Cast() const {
     MagicFormulaParams<U> out;
     out.version = version;
-    CastFields(*this, out);
+#define HOTLAP_CAST_FIELD(name) out.name = ScalarCast<U>(name);
+    HOTLAP_MAGIC_FORMULA_FIELDS(HOTLAP_CAST_FIELD)
+#undef HOTLAP_CAST_FIELD
     return out;
   }
 };
