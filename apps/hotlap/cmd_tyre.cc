@@ -14,10 +14,12 @@
 #include "hotlap/common/csv.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
+#include "hotlap/ident/mf_fit.h"
 #include "hotlap/ident/rig_data.h"
 #include "hotlap/ident/unitire_fit.h"
 #include "hotlap/tyre/tyre_force_model.h"
 #include "hotlap/tyre/tyre_force_params_io.h"
+#include "hotlap/tyre/tir_file.h"
 #include "hotlap/tyre/tyre_params_io.h"
 #include "output.h"
 
@@ -246,6 +248,7 @@ struct FitArgs {
   std::vector<double> predict_temps_C;
   std::string out;
   std::string json;
+  std::string base;
   double temp_tolerance_K = 1.5;
 };
 
@@ -336,8 +339,71 @@ int RunFitUniTire(const FitArgs& a) {
   return fit.converged ? 0 : 3;
 }
 
-int RunFitMagicFormula(const std::string&, const std::string&, const std::string&) {
-  throw InputError("TEMPORARY");
+int RunFitMagicFormula(const FitArgs& a) {
+  if (!a.fit_temps_C.empty() || !a.predict_temps_C.empty()) {
+    throw InputError(
+        "--fit-temps-C and --predict-temps-C are for --model unitire; the Magic Formula has no "
+        "temperature");
+  }
+  const std::vector<ident::RigSample> samples = ident::ReadRigCsv(a.data);
+  ident::MagicFormulaFitOptions options;
+  if (!a.base.empty()) options.base = tyre::LoadMagicFormula(a.base);
+  fmt::print("hotlap tyre fit: Magic Formula pure-slip coefficients to {} ({} samples){}\n",
+             a.data, samples.size(), a.base.empty() ? "" : ", starting from " + a.base);
+  std::fflush(stdout);
+  const ident::MagicFormulaFitResult fit = ident::FitMagicFormula(samples, options);
+  for (const std::string& w : fit.warnings) fmt::print("warning: {}\n", w);
+  fmt::print("{} after {} iterations; {} free coefficients ({} side-slip, {} longitudinal samples)\n",
+             fit.converged ? "converged" : "NOT converged", fit.iterations,
+             fit.fitted_coefficients.size(), fit.lateral_samples, fit.longitudinal_samples);
+
+  const auto& table = tyre::MagicFormulaParamTable();
+  const auto value_of = [&](const tyre::MagicFormulaParams<double>& p, const std::string& name) {
+    for (const tyre::MagicFormulaParamInfo& info : table) {
+      if (info.name == name) return p.*info.field;
+    }
+    return std::nan("");
+  };
+  nlohmann::json coefficients = nlohmann::json::object();
+  fmt::print("{:>8} {:>14} {:>14}\n", "coef", "start", "fitted");
+  for (const std::string& name : fit.fitted_coefficients) {
+    const double start = value_of(fit.initial_guess, name);
+    const double value = value_of(fit.params, name);
+    fmt::print("{:>8} {:>14.6g} {:>14.6g}\n", name, start, value);
+    coefficients[name] = RoundSignificant(value);
+  }
+  nlohmann::json metrics = nlohmann::json::array();
+  fmt::print("{:>8} {:>10} {:>8} {:>10} {:>10} {:>9}\n", "channel", "Fz N", "samples", "rms N",
+             "peak N", "rms/peak");
+  for (const ident::MagicFormulaFitMetrics& m : fit.metrics) {
+    fmt::print("{:>8} {:>10.0f} {:>8} {:>10.2f} {:>10.1f} {:>8.2f}%\n", m.channel, m.fz_N,
+               m.samples, m.rms_N, m.peak_N, 100.0 * m.rms_rel_peak);
+    metrics.push_back({{"channel", m.channel},
+                       {"fz_N", RoundSignificant(m.fz_N)},
+                       {"samples", m.samples},
+                       {"rms_N", RoundSignificant(m.rms_N)},
+                       {"peak_N", RoundSignificant(m.peak_N)},
+                       {"rms_rel_peak", RoundSignificant(m.rms_rel_peak)}});
+  }
+  tyre::WriteTirFile(
+      a.out, fit.params,
+      fmt::format("pure-slip coefficients fitted by hotlap {} tyre fit to {}\nfree: {}",
+                  HOTLAP_VERSION, std::filesystem::path(a.data).filename().string(),
+                  fmt::join(fit.fitted_coefficients, " ")));
+  fmt::print("wrote {}\n", a.out);
+  if (!a.json.empty()) {
+    WriteJsonFile(a.json, {{"command", "tyre fit"},
+                           {"model", "mf"},
+                           {"data", a.data},
+                           {"out", a.out},
+                           {"converged", fit.converged},
+                           {"iterations", fit.iterations},
+                           {"coefficients", coefficients},
+                           {"metrics", metrics},
+                           {"warnings", fit.warnings}});
+    fmt::print("wrote {}\n", a.json);
+  }
+  return fit.converged ? 0 : 3;
 }
 
 int RunFit(const FitArgs& a) {
@@ -345,9 +411,10 @@ int RunFit(const FitArgs& a) {
   if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
   if (a.model == "unitire") {
     if (a.fit_temps_C.empty()) throw InputError("--fit-temps-C is required for --model unitire");
+    if (!a.base.empty()) throw InputError("--base is only used with --model mf");
     return RunFitUniTire(a);
   }
-  return RunFitMagicFormula(a.data, a.out, a.json);
+  return RunFitMagicFormula(a);
 }
 
 }  // namespace
@@ -394,6 +461,9 @@ CommandRunner RegisterTyreCommand(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   f->add_option("--out", fit->out, "Fitted parameter file (.yaml for unitire, .tir for mf)")
       ->required();
+  f->add_option("--base", fit->base,
+                "mf: .tir to start from and to keep the coefficients the fit does not free "
+                "(default: generic coefficients sized to the data)");
   f->add_option("--json", fit->json, "Write the summary as JSON (docs/json-output.md)");
 
   return [e, f, eval, fit] {

@@ -13,6 +13,7 @@
 
 #include "hotlap/common/csv.h"
 #include "hotlap/common/units.h"
+#include "hotlap/ident/mf_fit.h"
 #include "hotlap/ident/rig_data.h"
 #include "hotlap/ident/unitire_fit.h"
 #include "hotlap/tyre/tyre_force_model.h"
@@ -128,6 +129,37 @@ TEST_F(TyreCommandTest, FitPredictsHeldOutTemperatures) {
   EXPECT_EQ(tyre::LoadTyreForceModel(out).kind(), "unitire");
 }
 
+// Magic Formula fit from rig data of a known .tir with 1% noise: writes a .tir that loads and
+// reproduces the curves, and the JSON carries the coefficients and per-load metrics.
+TEST_F(TyreCommandTest, FitMagicFormulaWritesATirFile) {
+  const tyre::MagicFormulaParams<double> truth = tyre::LoadMagicFormula(kTir);
+  std::vector<double> loads = {0.5 * truth.FNOMIN, truth.FNOMIN, 1.5 * truth.FNOMIN}, alphas,
+                      kappas, cambers = {0.0};
+  for (double a = -15.0; a <= 15.0; a += 1.0) alphas.push_back(a * 3.14159265358979323846 / 180);
+  for (double k = -0.3; k <= 0.3001; k += 0.03) kappas.push_back(k);
+  const auto samples = ident::SynthesizeMagicFormulaRigData(truth, loads, cambers, alphas, kappas,
+                                                            10.0, CelsiusToKelvin(50), 0.01, 5);
+  const fs::path rig = dir() / "rig.csv";
+  ident::WriteRigCsv(rig, {{"source", "synthesized"}}, samples);
+  const fs::path out = dir() / "fitted.tir", json = dir() / "fit.json";
+  const RunResult r = Run("tyre fit --model mf --data " + rig.string() + " --out " +
+                          out.string() + " --json " + json.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const nlohmann::json j = Json(json);
+  EXPECT_TRUE(j["converged"].get<bool>());
+  ASSERT_TRUE(j["coefficients"].contains("PDY1"));
+  ASSERT_TRUE(j["coefficients"].contains("PKX1"));
+  ASSERT_EQ(j["metrics"].size(), 6u);
+  for (const auto& m : j["metrics"]) EXPECT_LT(m["rms_rel_peak"].get<double>(), 0.015) << m;
+  const tyre::TyreForceModel<double> fitted = tyre::LoadTyreForceModel(out, "mf");
+  tyre::TyreOperatingPoint<double> op;
+  op.fz = truth.FNOMIN;
+  op.slip_angle = 0.1;
+  op.speed = 10.0;
+  const double fy_truth = tyre::CalcMagicFormula(truth, op, {}).fy;
+  EXPECT_NEAR(tyre::CalcTyreForces(fitted, op).fy, fy_truth, 0.02 * std::abs(fy_truth));
+}
+
 TEST_F(TyreCommandTest, BadInputFailsCleanlyWithoutOutput) {
   const fs::path json = dir() / "bad.json", csv = dir() / "bad.csv";
   struct Case {
@@ -146,6 +178,11 @@ TEST_F(TyreCommandTest, BadInputFailsCleanlyWithoutOutput) {
       {"tyre fit --model unitire --data " + (dir() / "missing.csv").string() +
            " --fit-temps-C 0 --out " + (dir() / "f.yaml").string(),
        "missing.csv"},
+      {"tyre fit --model mf --data " + (dir() / "missing.csv").string() + " --out " +
+           (dir() / "f.tir").string(),
+       "missing.csv"},
+      {"tyre fit --model mf --data x.csv --fit-temps-C 20 --out " + (dir() / "f.tir").string(),
+       "no temperature"},
   };
   for (const Case& c : cases) {
     const RunResult r = Run(c.args + " --json " + json.string());

@@ -346,10 +346,10 @@ TirFile ReadTirFile(const std::filesystem::path& path) {
   return ParseTirFile(ReadWholeFile(path), path);
 }
 
-std::string FormatTirFile(const MagicFormulaParams<double>& params) {
-  const auto line = [](std::string_view key, const std::string& value, std::string_view comment) {
+std::string FormatTirFile(const MagicFormulaParams<double>& params, std::string_view comment) {
+  const auto line = [](std::string_view key, const std::string& value, std::string_view note) {
     std::string out = fmt::format("{:<24} = {:<24}", key, value);
-    if (!comment.empty()) out += fmt::format(" ${}", comment);
+    if (!note.empty()) out += fmt::format(" ${}", note);
     while (!out.empty() && out.back() == ' ') out.pop_back();
     return out + "\n";
   };
@@ -366,6 +366,11 @@ std::string FormatTirFile(const MagicFormulaParams<double>& params) {
   out += line("FILE_FORMAT", "'ASCII'", "");
   out += fmt::format("! {} coefficients written by hotlap; SI units\n",
                      MagicFormulaVersionName(params.version));
+  while (!comment.empty()) {
+    const size_t end = comment.find('\n');
+    out += fmt::format("! {}\n", comment.substr(0, end));
+    comment = end == std::string_view::npos ? std::string_view{} : comment.substr(end + 1);
+  }
   out += header("UNITS");
   out += line("LENGTH", "'meter'", "");
   out += line("FORCE", "'newton'", "");
@@ -388,8 +393,9 @@ std::string FormatTirFile(const MagicFormulaParams<double>& params) {
   return out;
 }
 
-void WriteTirFile(const std::filesystem::path& path, const MagicFormulaParams<double>& params) {
-  const std::string text = FormatTirFile(params);
+void WriteTirFile(const std::filesystem::path& path, const MagicFormulaParams<double>& params,
+                  std::string_view comment) {
+  const std::string text = FormatTirFile(params, comment);
   WriteFileAtomically(path, [&](std::ostream& out) { out << text; });
 }
 

@@ -86,10 +86,13 @@ TirFile ParseTirFile(std::string_view text, const std::filesystem::path& path);
 
 /// The `.tir` text for `params`: SI units, FITTYP 6 (MF 5.2), 61 or 62, every coefficient of
 /// MagicFormulaParams with its description, numbers written so that they read back exactly.
-std::string FormatTirFile(const MagicFormulaParams<double>& params);
+/// `comment` (several lines allowed) is written near the top as `!` comment lines, e.g. where the
+/// coefficients came from.
+std::string FormatTirFile(const MagicFormulaParams<double>& params, std::string_view comment = {});
 
-/// Writes FormatTirFile(params) to `path` atomically (see WriteFileAtomically). InputError when
-/// the file cannot be written.
-void WriteTirFile(const std::filesystem::path& path, const MagicFormulaParams<double>& params);
+/// Writes FormatTirFile(params, comment) to `path` atomically (see WriteFileAtomically).
+/// InputError when the file cannot be written.
+void WriteTirFile(const std::filesystem::path& path, const MagicFormulaParams<double>& params,
+                  std::string_view comment = {});
 
 }  // namespace hotlap::tyre

@@ -1,0 +1,565 @@
+#include "hotlap/ident/mf_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+#include <stdexcept>
+#include <string_view>
+
+#include <ceres/ceres.h>
+#include <ceres/dynamic_autodiff_cost_function.h>
+#include <fmt/format.h>
+
+#include "hotlap/common/error.h"
+#include "hotlap/tyre/magic_formula.h"
+
+namespace hotlap::ident {
+
+namespace {
+
+using tyre::MagicFormulaParams;
+
+// The coefficients this fit can free, by `.tir` name.
+#define HOTLAP_MF_FITTABLE(X)                                                                   \
+  X(PCY1) X(PDY1) X(PDY2) X(PDY3) X(PEY1) X(PEY2) X(PEY3) X(PKY1) X(PKY2) X(PKY4) X(PKY6) X(PKY7)        \
+      X(PHY1) X(PHY2) X(PVY1) X(PVY2) X(PVY3) X(PVY4) X(PCX1) X(PDX1) X(PDX2) X(PDX3) X(PEX1) \
+          X(PEX2) X(PEX3) X(PEX4) X(PKX1) X(PKX2) X(PKX3) X(PHX1) X(PHX2) X(PVX1) X(PVX2)
+
+enum class Coef {
+#define HOTLAP_ENUM(name) name,
+  HOTLAP_MF_FITTABLE(HOTLAP_ENUM)
+#undef HOTLAP_ENUM
+};
+
+std::string_view CoefName(Coef c) {
+  switch (c) {
+#define HOTLAP_NAME(name) \
+  case Coef::name:        \
+    return #name;
+    HOTLAP_MF_FITTABLE(HOTLAP_NAME)
+#undef HOTLAP_NAME
+  }
+  return "?";
+}
+
+template <Scalar T>
+T& Field(MagicFormulaParams<T>& p, Coef c) {
+  switch (c) {
+#define HOTLAP_FIELD(name) \
+  case Coef::name:         \
+    return p.name;
+    HOTLAP_MF_FITTABLE(HOTLAP_FIELD)
+#undef HOTLAP_FIELD
+  }
+  throw std::logic_error("mf_fit: unknown coefficient");
+}
+
+// A free coefficient and its bounds.
+struct Free {
+  Coef coef;
+  double lower;
+  double upper;
+};
+
+enum class Channel { kLateral, kLongitudinal };
+
+bool IsLateral(const RigSample& s) { return std::abs(s.slip_ratio) <= 1e-6; }
+bool IsLongitudinal(const RigSample& s) { return s.fx && std::abs(s.slip_angle) <= 1e-6; }
+double Measured(const RigSample& s, Channel c) { return c == Channel::kLateral ? s.fy : *s.fx; }
+double Slip(const RigSample& s, Channel c) {
+  return c == Channel::kLateral ? s.slip_angle : s.slip_ratio;
+}
+
+template <Scalar T>
+tyre::TyreOperatingPoint<T> OperatingPoint(const RigSample& s) {
+  tyre::TyreOperatingPoint<T> op;
+  op.fz = T(s.fz);
+  op.slip_ratio = T(s.slip_ratio);
+  op.slip_angle = T(s.slip_angle);
+  op.camber = T(s.camber);
+  op.speed = T(s.speed);
+  op.tread_temp = T(s.tread_temp);
+  return op;
+}
+
+// Load groups: sorted loads no more than 2% apart.
+struct LoadGroups {
+  std::vector<int> index;  // per sample
+  std::vector<double> mean;
+};
+
+LoadGroups GroupLoads(const std::vector<const RigSample*>& samples) {
+  std::vector<size_t> order(samples.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  std::sort(order.begin(), order.end(),
+            [&](size_t a, size_t b) { return samples[a]->fz < samples[b]->fz; });
+  LoadGroups g;
+  g.index.assign(samples.size(), -1);
+  std::vector<int> count;
+  double last = 0.0;
+  for (size_t k = 0; k < order.size(); ++k) {
+    const double fz = samples[order[k]]->fz;
+    if (k == 0 || fz - last > 0.02 * fz) {
+      g.mean.push_back(0.0);
+      count.push_back(0);
+    }
+    g.index[order[k]] = static_cast<int>(g.mean.size()) - 1;
+    g.mean.back() += fz;
+    ++count.back();
+    last = fz;
+  }
+  for (size_t i = 0; i < g.mean.size(); ++i) g.mean[i] /= count[i];
+  return g;
+}
+
+// Per load group of zero-camber samples: slope of F against slip at zero slip (secant through
+// the two smallest slips, extrapolated to zero) and the peak |F|.
+struct CurveEstimate {
+  double fz = 0.0;
+  double slope = 0.0;  // dF/dslip at 0, N (per rad or per unit slip ratio)
+  double peak = 0.0;
+};
+
+std::vector<CurveEstimate> EstimateCurves(const std::vector<const RigSample*>& samples,
+                                          Channel channel) {
+  std::vector<const RigSample*> flat;
+  for (const RigSample* s : samples) {
+    if (std::abs(s->camber) <= 1e-4) flat.push_back(s);
+  }
+  const LoadGroups groups = GroupLoads(flat);
+  std::vector<CurveEstimate> out;
+  for (size_t g = 0; g < groups.mean.size(); ++g) {
+    std::vector<std::pair<double, double>> pts;  // (slip, force)
+    double peak = 0.0;
+    for (size_t i = 0; i < flat.size(); ++i) {
+      if (groups.index[i] != static_cast<int>(g)) continue;
+      pts.emplace_back(Slip(*flat[i], channel), Measured(*flat[i], channel));
+      peak = std::max(peak, std::abs(pts.back().second));
+    }
+    std::vector<double> levels;
+    for (const auto& [x, y] : pts) {
+      if (std::abs(x) > 1e-9) levels.push_back(std::abs(x));
+    }
+    if (levels.empty() || !(peak > 0.0)) continue;
+    std::sort(levels.begin(), levels.end());
+    levels.erase(std::unique(levels.begin(), levels.end(),
+                             [](double a, double b) { return b <= a * (1.0 + 1e-6); }),
+                 levels.end());
+    const auto secant = [&](double level) {
+      double sxy = 0.0, sxx = 0.0;
+      for (const auto& [x, y] : pts) {
+        if (std::abs(std::abs(x) - level) <= 1e-6 * level) {
+          sxy += x * y;
+          sxx += x * x;
+        }
+      }
+      return sxy / sxx;
+    };
+    double slope = secant(levels[0]);
+    if (levels.size() >= 2) {
+      const double k2 = secant(levels[1]);
+      const double w = levels[0] / (levels[1] - levels[0]);
+      const double extrapolated = slope - (k2 - slope) * w;
+      // Keep the extrapolation modest and on the same side.
+      slope = std::clamp(extrapolated, std::min(slope, 1.5 * slope), std::max(slope, 1.5 * slope));
+    }
+    if (slope == 0.0 || !std::isfinite(slope)) continue;
+    out.push_back({groups.mean[g], slope, peak});
+  }
+  return out;
+}
+
+// Least squares y = c0 + c1 x (c1 = 0 with one point).
+std::pair<double, double> LineFit(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = static_cast<double>(x.size());
+  const double mx = std::accumulate(x.begin(), x.end(), 0.0) / n;
+  const double my = std::accumulate(y.begin(), y.end(), 0.0) / n;
+  double sxy = 0.0, sxx = 0.0;
+  for (size_t i = 0; i < x.size(); ++i) {
+    sxy += (x[i] - mx) * (y[i] - my);
+    sxx += (x[i] - mx) * (x[i] - mx);
+  }
+  const double c1 = sxx > 0.0 ? sxy / sxx : 0.0;
+  return {my - c1 * mx, c1};
+}
+
+double Median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// Starting lateral coefficients from the curves: friction line in dfz, cornering stiffness law
+// K = PKY1 Fz0 sin(2 atan(Fz / (PKY2 Fz0))), i.e. Fz/K linear in Fz^2.
+void GuessLateral(const std::vector<CurveEstimate>& curves, MagicFormulaParams<double>& p) {
+  if (curves.empty()) return;
+  const double fz0 = p.FNOMIN * p.LFZO;
+  std::vector<double> dfz, mu, fz2, fz_over_k;
+  for (const CurveEstimate& c : curves) {
+    dfz.push_back((c.fz - fz0) / fz0);
+    mu.push_back(c.peak / c.fz);
+    fz2.push_back(c.fz * c.fz);
+    fz_over_k.push_back(c.fz / std::abs(c.slope));
+  }
+  const auto [mu0, mu1] = LineFit(dfz, mu);
+  p.PDY1 = std::clamp(mu0, 0.2, 3.5);
+  p.PDY2 = curves.size() >= 2 ? std::clamp(mu1 / 1.0, -0.9, 0.9) : p.PDY2;
+  const double sign = curves.front().slope < 0.0 ? -1.0 : 1.0;  // ISO-W: negative
+  p.PKY4 = 2.0;
+  const auto [a, b] = LineFit(fz2, fz_over_k);
+  if (curves.size() >= 2 && a > 0.0 && b > 0.0) {
+    const double pky1 = 1.0 / (2.0 * fz0 * std::sqrt(a * b));
+    p.PKY1 = sign * std::clamp(pky1, 1.0, 250.0);
+    p.PKY2 = std::clamp(2.0 * pky1 * a, 0.1, 9.0);
+  } else {
+    // One load (or a stiffness still rising linearly): keep PKY2, scale PKY1 to the slope.
+    double k = 0.0, shape = 0.0;
+    for (const CurveEstimate& c : curves) {
+      const double x = c.fz / (std::max(p.PKY2, 0.1) * fz0);
+      k += std::abs(c.slope);
+      shape += fz0 * std::sin(2.0 * std::atan(x));
+    }
+    p.PKY1 = sign * std::clamp(k / shape, 1.0, 250.0);
+  }
+  p.PCY1 = 1.3;
+  p.PEY1 = 0.0;
+  p.PEY2 = 0.0;
+  p.PEY3 = 0.0;
+  for (double* shift : {&p.PHY1, &p.PHY2, &p.PVY1, &p.PVY2, &p.PDY3, &p.PKY6, &p.PKY7, &p.PVY3,
+                        &p.PVY4}) {
+    *shift = 0.0;
+  }
+}
+
+// Starting longitudinal coefficients: friction line in dfz, K/Fz = PKX1 + PKX2 dfz.
+void GuessLongitudinal(const std::vector<CurveEstimate>& curves, MagicFormulaParams<double>& p) {
+  if (curves.empty()) return;
+  const double fz0 = p.FNOMIN * p.LFZO;
+  std::vector<double> dfz, mu, k;
+  for (const CurveEstimate& c : curves) {
+    dfz.push_back((c.fz - fz0) / fz0);
+    mu.push_back(c.peak / c.fz);
+    k.push_back(c.slope / c.fz);
+  }
+  const auto [mu0, mu1] = LineFit(dfz, mu);
+  const auto [k0, k1] = LineFit(dfz, k);
+  p.PDX1 = std::clamp(mu0, 0.2, 3.5);
+  p.PDX2 = curves.size() >= 2 ? std::clamp(mu1, -0.9, 0.9) : p.PDX2;
+  p.PKX1 = std::clamp(k0, 1.0, 250.0);
+  p.PKX2 = curves.size() >= 2 ? std::clamp(k1, -9.0, 9.0) : p.PKX2;
+  p.PKX3 = 0.0;
+  p.PCX1 = 1.65;
+  for (double* c : {&p.PEX1, &p.PEX2, &p.PEX3, &p.PEX4, &p.PHX1, &p.PHX2, &p.PVX1, &p.PVX2,
+                    &p.PDX3}) {
+    *c = 0.0;
+  }
+}
+
+// The free coefficients of one channel, by what the samples can identify.
+std::vector<Free> FreeSet(Channel channel, size_t loads, bool camber, bool both_signs,
+                          double stiffness_sign) {
+  std::vector<Free> f;
+  if (channel == Channel::kLateral) {
+    const double lo = stiffness_sign < 0.0 ? -300.0 : 0.5;
+    const double hi = stiffness_sign < 0.0 ? -0.5 : 300.0;
+    f = {{Coef::PCY1, 1.0, 2.5}, {Coef::PDY1, 0.05, 5.0},  {Coef::PEY1, -20.0, 1.0},
+         {Coef::PKY1, lo, hi},   {Coef::PHY1, -0.1, 0.1}, {Coef::PVY1, -0.5, 0.5}};
+    if (loads >= 2) {
+      f.insert(f.end(), {{Coef::PDY2, -1.0, 1.0},
+                         {Coef::PEY2, -20.0, 20.0},
+                         {Coef::PKY2, 0.05, 10.0},
+                         {Coef::PHY2, -0.1, 0.1},
+                         {Coef::PVY2, -0.5, 0.5}});
+    }
+    if (loads >= 3) f.push_back({Coef::PKY4, 1.0, 5.0});
+    if (both_signs) f.push_back({Coef::PEY3, -1.0, 1.0});
+    if (camber) {
+      f.insert(f.end(), {{Coef::PDY3, -50.0, 50.0}, {Coef::PKY6, -10.0, 10.0},
+                         {Coef::PVY3, -5.0, 5.0}});
+      if (loads >= 2) f.insert(f.end(), {{Coef::PKY7, -10.0, 10.0}, {Coef::PVY4, -5.0, 5.0}});
+    }
+  } else {
+    f = {{Coef::PCX1, 1.0, 2.5},  {Coef::PDX1, 0.05, 5.0}, {Coef::PEX1, -20.0, 1.0},
+         {Coef::PKX1, 0.5, 300.0}, {Coef::PHX1, -0.1, 0.1}, {Coef::PVX1, -0.5, 0.5}};
+    if (loads >= 2) {
+      f.insert(f.end(), {{Coef::PDX2, -1.0, 1.0},
+                         {Coef::PEX2, -20.0, 20.0},
+                         {Coef::PKX2, -10.0, 10.0},
+                         {Coef::PHX2, -0.1, 0.1},
+                         {Coef::PVX2, -0.5, 0.5}});
+    }
+    if (loads >= 3) f.insert(f.end(), {{Coef::PEX3, -20.0, 20.0}, {Coef::PKX3, -5.0, 5.0}});
+    if (both_signs) f.push_back({Coef::PEX4, -1.0, 1.0});
+    if (camber) f.push_back({Coef::PDX3, -50.0, 50.0});
+  }
+  return f;
+}
+
+struct Residual {
+  const MagicFormulaParams<double>* base;
+  const std::vector<Free>* free;
+  RigSample sample;
+  Channel channel;
+  double scale;
+
+  template <typename T>
+  bool operator()(T const* const* x, T* r) const {
+    MagicFormulaParams<T> p = base->Cast<T>();
+    for (size_t i = 0; i < free->size(); ++i) Field(p, (*free)[i].coef) = x[0][i];
+    const tyre::TyreForces<T> f = tyre::CalcMagicFormula(p, OperatingPoint<T>(sample), {});
+    r[0] = ((channel == Channel::kLateral ? f.fy : f.fx) - Measured(sample, channel)) / scale;
+    return true;
+  }
+};
+
+struct ChannelFit {
+  bool converged = true;
+  int iterations = 0;
+};
+
+// Fits the channel's free coefficients of `params` (updated in place) to `samples`, from several
+// starting curvatures, keeping the lowest cost.
+ChannelFit FitChannel(const std::vector<const RigSample*>& samples, Channel channel,
+                      const std::vector<Free>& free, int max_iterations,
+                      MagicFormulaParams<double>& params) {
+  double scale = 0.0;
+  for (const RigSample* s : samples) scale = std::max(scale, std::abs(Measured(*s, channel)));
+  if (!(scale > 0.0)) scale = 1.0;
+  const int n = static_cast<int>(free.size());
+  std::vector<double> x0;
+  for (const Free& f : free) {
+    const double margin = 1e-6 * (f.upper - f.lower);
+    x0.push_back(std::clamp(Field(params, f.coef), f.lower + margin, f.upper - margin));
+  }
+  const MagicFormulaParams<double> base = params;
+  const Coef curvature = channel == Channel::kLateral ? Coef::PEY1 : Coef::PEX1;
+  ChannelFit out;
+  double best_cost = std::numeric_limits<double>::infinity();
+  std::vector<double> best;
+  for (double e : {0.0, -1.0, 0.5, -3.0}) {
+    std::vector<double> x = x0;
+    for (int i = 0; i < n; ++i) {
+      if (free[i].coef == curvature) x[i] = e;
+    }
+    ceres::Problem problem;
+    for (const RigSample* s : samples) {
+      auto* cost = new ceres::DynamicAutoDiffCostFunction<Residual, 14>(
+          new Residual{&base, &free, *s, channel, scale});
+      cost->AddParameterBlock(n);
+      cost->SetNumResiduals(1);
+      problem.AddResidualBlock(cost, nullptr, x.data());
+    }
+    for (int i = 0; i < n; ++i) {
+      problem.SetParameterLowerBound(x.data(), i, free[i].lower);
+      problem.SetParameterUpperBound(x.data(), i, free[i].upper);
+    }
+    ceres::Solver::Options options;
+    options.linear_solver_type = ceres::DENSE_QR;
+    options.max_num_iterations = max_iterations;
+    options.function_tolerance = 1e-12;
+    options.gradient_tolerance = 1e-14;
+    options.parameter_tolerance = 1e-12;
+    options.logging_type = ceres::SILENT;
+    options.num_threads = 1;
+    ceres::Solver::Summary summary;
+    ceres::Solve(options, &problem, &summary);
+    out.iterations += static_cast<int>(summary.iterations.size());
+    if (summary.final_cost < best_cost) {
+      best_cost = summary.final_cost;
+      best = x;
+      out.converged = summary.termination_type == ceres::CONVERGENCE;
+    }
+  }
+  for (int i = 0; i < n; ++i) Field(params, free[i].coef) = best[i];
+  return out;
+}
+
+void CheckSamples(std::span<const RigSample> samples) {
+  for (size_t i = 0; i < samples.size(); ++i) {
+    const RigSample& s = samples[i];
+    const bool finite = std::isfinite(s.slip_angle) && std::isfinite(s.slip_ratio) &&
+                        std::isfinite(s.camber) && std::isfinite(s.speed) &&
+                        std::isfinite(s.tread_temp) && std::isfinite(s.fy) && std::isfinite(s.mz) &&
+                        (!s.fx || std::isfinite(*s.fx));
+    if (!finite) throw InputError(fmt::format("rig sample {}: a value is not a finite number", i));
+    if (!(s.fz > 0.0)) throw InputError(fmt::format("rig sample {}: fz {:g} N must be > 0", i, s.fz));
+  }
+}
+
+std::vector<MagicFormulaFitMetrics> Metrics(const MagicFormulaParams<double>& params,
+                                            const std::vector<const RigSample*>& samples,
+                                            Channel channel) {
+  const LoadGroups groups = GroupLoads(samples);
+  std::vector<MagicFormulaFitMetrics> rows(groups.mean.size());
+  std::vector<double> sum2(rows.size(), 0.0);
+  for (size_t i = 0; i < samples.size(); ++i) {
+    const RigSample& s = *samples[i];
+    const tyre::TyreForces<double> f =
+        tyre::CalcMagicFormula(params, OperatingPoint<double>(s), {});
+    const double model = channel == Channel::kLateral ? f.fy : f.fx;
+    const double measured = Measured(s, channel);
+    MagicFormulaFitMetrics& m = rows[groups.index[i]];
+    sum2[groups.index[i]] += (model - measured) * (model - measured);
+    m.peak_N = std::max(m.peak_N, std::abs(measured));
+    ++m.samples;
+  }
+  for (size_t g = 0; g < rows.size(); ++g) {
+    rows[g].channel = channel == Channel::kLateral ? "fy" : "fx";
+    rows[g].fz_N = groups.mean[g];
+    rows[g].rms_N = std::sqrt(sum2[g] / rows[g].samples);
+    rows[g].rms_rel_peak = rows[g].peak_N > 0.0 ? rows[g].rms_N / rows[g].peak_N : 0.0;
+  }
+  return rows;
+}
+
+}  // namespace
+
+MagicFormulaFitResult FitMagicFormula(std::span<const RigSample> samples,
+                                      const MagicFormulaFitOptions& options) {
+  CheckSamples(samples);
+  MagicFormulaFitResult result;
+  std::vector<const RigSample*> lateral, longitudinal;
+  int combined = 0;
+  double t_min = std::numeric_limits<double>::infinity(), t_max = -t_min;
+  std::vector<double> loads, speeds;
+  for (const RigSample& s : samples) {
+    if (IsLateral(s)) lateral.push_back(&s);
+    if (IsLongitudinal(s)) longitudinal.push_back(&s);
+    if (!IsLateral(s) && !IsLongitudinal(s)) ++combined;
+    t_min = std::min(t_min, s.tread_temp);
+    t_max = std::max(t_max, s.tread_temp);
+    loads.push_back(s.fz);
+    speeds.push_back(s.speed);
+  }
+  if (lateral.empty() && longitudinal.empty()) {
+    throw InputError(
+        "Magic Formula fit: the data hold no pure-slip curve (rows with slip_ratio 0 for Fy, or "
+        "slip_angle 0 with fx measured for Fx)");
+  }
+  if (t_max - t_min > 3.0) {
+    result.warnings.push_back(fmt::format(
+        "tread temperatures span {:.1f} K; the Magic Formula has no temperature, so they are "
+        "fitted as one tyre (fit `--model unitire` for temperature effects)",
+        t_max - t_min));
+  }
+  if (combined > 0) {
+    result.warnings.push_back(
+        fmt::format("{} combined-slip samples are not used (pure-slip fit)", combined));
+  }
+
+  MagicFormulaParams<double> p;
+  if (options.base) {
+    p = *options.base;
+  } else {
+    p = tyre::MagicFormulaDefaults();
+    p.FNOMIN = Median(loads);
+    p.LONGVL = std::max(Median(speeds), 1.0);
+    p.FZMIN = 0.0;
+    p.FZMAX = 3.0 * *std::max_element(loads.begin(), loads.end());
+  }
+  const double fz_max = *std::max_element(loads.begin(), loads.end());
+  if (fz_max > p.FZMAX) {
+    result.warnings.push_back(fmt::format(
+        "loads up to {:.0f} N exceed the base file's FZMAX {:.0f} N; FZMAX raised to cover them",
+        fz_max, p.FZMAX));
+    p.FZMAX = 1.2 * fz_max;
+  }
+
+  const auto fit_channel = [&](const std::vector<const RigSample*>& chosen, Channel channel) {
+    if (chosen.empty()) {
+      result.warnings.push_back(fmt::format(
+          "no pure {} samples: the {} coefficients are kept from the base",
+          channel == Channel::kLateral ? "side-slip" : "longitudinal-slip (with fx)",
+          channel == Channel::kLateral ? "lateral" : "longitudinal"));
+      return;
+    }
+    const std::vector<CurveEstimate> curves = EstimateCurves(chosen, channel);
+    if (channel == Channel::kLateral) {
+      GuessLateral(curves, p);
+    } else {
+      GuessLongitudinal(curves, p);
+    }
+    bool camber = false, negative = false, positive = false;
+    for (const RigSample* s : chosen) {
+      camber = camber || std::abs(s->camber) > 1e-4;
+      negative = negative || Slip(*s, channel) < 0.0;
+      positive = positive || Slip(*s, channel) > 0.0;
+    }
+    const double sign = curves.empty() || curves.front().slope < 0.0 ? -1.0 : 1.0;
+    const std::vector<Free> free =
+        FreeSet(channel, GroupLoads(chosen).mean.size(), camber, negative && positive, sign);
+    for (const Free& f : free) result.fitted_coefficients.emplace_back(CoefName(f.coef));
+    const ChannelFit fit = FitChannel(chosen, channel, free, options.max_iterations, p);
+    result.converged = result.converged && fit.converged;
+    result.iterations += fit.iterations;
+  };
+  result.converged = true;
+  // The initial guess is the base with both channels' data estimates (recorded before fitting).
+  {
+    MagicFormulaParams<double> guess = p;
+    GuessLateral(EstimateCurves(lateral, Channel::kLateral), guess);
+    GuessLongitudinal(EstimateCurves(longitudinal, Channel::kLongitudinal), guess);
+    result.initial_guess = guess;
+  }
+  fit_channel(lateral, Channel::kLateral);
+  fit_channel(longitudinal, Channel::kLongitudinal);
+  result.params = p;
+  result.lateral_samples = static_cast<int>(lateral.size());
+  result.longitudinal_samples = static_cast<int>(longitudinal.size());
+  for (auto [chosen, channel] : {std::pair{&lateral, Channel::kLateral},
+                                 std::pair{&longitudinal, Channel::kLongitudinal}}) {
+    if (chosen->empty()) continue;
+    const auto rows = Metrics(p, *chosen, channel);
+    result.metrics.insert(result.metrics.end(), rows.begin(), rows.end());
+  }
+  return result;
+}
+
+std::vector<RigSample> SynthesizeMagicFormulaRigData(const tyre::MagicFormulaParams<double>& truth,
+                                                     std::span<const double> loads,
+                                                     std::span<const double> cambers,
+                                                     std::span<const double> slip_angles,
+                                                     std::span<const double> slip_ratios,
+                                                     double speed, double tread_temp,
+                                                     double noise_fraction, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::vector<RigSample> out;
+  const auto curve = [&](double fz, double camber, bool lateral) {
+    std::vector<RigSample> rows;
+    double fy_peak = 0.0, mz_peak = 0.0, fx_peak = 0.0;
+    for (double x : lateral ? slip_angles : slip_ratios) {
+      RigSample s;
+      s.fz = fz;
+      s.camber = camber;
+      s.speed = speed;
+      s.tread_temp = tread_temp;
+      (lateral ? s.slip_angle : s.slip_ratio) = x;
+      const tyre::TyreForces<double> f =
+          tyre::CalcMagicFormula(truth, OperatingPoint<double>(s), {});
+      s.fy = f.fy;
+      s.mz = f.mz;
+      s.fx = f.fx;
+      fy_peak = std::max(fy_peak, std::abs(f.fy));
+      mz_peak = std::max(mz_peak, std::abs(f.mz));
+      fx_peak = std::max(fx_peak, std::abs(f.fx));
+      rows.push_back(s);
+    }
+    for (RigSample& s : rows) {
+      s.fy += noise_fraction * fy_peak * normal(rng);
+      s.mz += noise_fraction * mz_peak * normal(rng);
+      *s.fx += noise_fraction * fx_peak * normal(rng);
+      out.push_back(s);
+    }
+  };
+  for (double fz : loads) {
+    for (double camber : cambers) {
+      curve(fz, camber, /*lateral=*/true);
+      curve(fz, camber, /*lateral=*/false);
+    }
+  }
+  return out;
+}
+
+}  // namespace hotlap::ident

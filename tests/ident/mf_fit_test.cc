@@ -1,0 +1,192 @@
+#include "hotlap/ident/mf_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "hotlap/common/error.h"
+#include "hotlap/common/units.h"
+#include "hotlap/tyre/magic_formula.h"
+#include "hotlap/tyre/tir_file.h"
+#include "test_util.h"
+
+namespace hotlap::ident {
+namespace {
+
+using tyre::MagicFormulaParams;
+
+MagicFormulaParams<double> Truth() {
+  return tyre::LoadMagicFormula(
+      test::SourcePath("tests/data/tir/mfeval/MagicFormula61_Parameters.tir"));
+}
+
+std::vector<double> Range(double from, double to, double step) {
+  std::vector<double> v;
+  for (double x = from; x <= to + 1e-9; x += step) v.push_back(x);
+  return v;
+}
+
+std::vector<double> Degrees(std::vector<double> v) {
+  for (double& x : v) x = DegToRad(x);
+  return v;
+}
+
+tyre::TyreOperatingPoint<double> Point(double fz, double kappa, double alpha, double camber) {
+  tyre::TyreOperatingPoint<double> op;
+  op.fz = fz;
+  op.slip_ratio = kappa;
+  op.slip_angle = alpha;
+  op.camber = camber;
+  op.speed = 10.0;
+  return op;
+}
+
+// Largest |fitted - truth| over pure-slip curves at a load and camber that were not in the data,
+// relative to the truth's peak |F| on that curve.
+double WorstPredictionError(const MagicFormulaParams<double>& fitted,
+                            const MagicFormulaParams<double>& truth, double fz, double camber,
+                            bool lateral) {
+  double worst = 0.0, peak = 0.0;
+  for (double x : lateral ? Range(-14.5, 14.5, 0.5) : Range(-0.29, 0.29, 0.01)) {
+    const double kappa = lateral ? 0.0 : x;
+    const double alpha = lateral ? DegToRad(x) : 0.0;
+    const auto f = tyre::CalcMagicFormula(fitted, Point(fz, kappa, alpha, camber), {});
+    const auto g = tyre::CalcMagicFormula(truth, Point(fz, kappa, alpha, camber), {});
+    worst = std::max(worst, std::abs(lateral ? f.fy - g.fy : f.fx - g.fx));
+    peak = std::max(peak, std::abs(lateral ? g.fy : g.fx));
+  }
+  return worst / peak;
+}
+
+// Rig data from a known MF 6.1 tyre (mfeval's example file) with 1% noise at three loads: the fit
+// starts from generic coefficients, reproduces the data to the noise level, and predicts a load
+// between the measured ones within 2% of the peak force.
+TEST(MagicFormulaFitTest, RecoversPureSlipCurvesFromNoisyRigData) {
+  const MagicFormulaParams<double> truth = Truth();
+  const double fz0 = truth.FNOMIN;
+  const std::vector<double> loads = {0.5 * fz0, fz0, 1.5 * fz0};
+  const std::vector<double> cambers = {0.0};
+  const auto samples =
+      SynthesizeMagicFormulaRigData(truth, loads, cambers, Degrees(Range(-15, 15, 1)),
+                                    Range(-0.3, 0.3, 0.02), 10.0, CelsiusToKelvin(40), 0.01, 7);
+  const MagicFormulaFitResult fit = FitMagicFormula(samples, {});
+  EXPECT_TRUE(fit.converged);
+  EXPECT_EQ(fit.lateral_samples, 3 * 31 + 3);  // the longitudinal curves' kappa = 0 points too
+  EXPECT_EQ(fit.longitudinal_samples, 3 * 31 + 3);
+  ASSERT_EQ(fit.metrics.size(), 6u);
+  for (const MagicFormulaFitMetrics& m : fit.metrics) {
+    // Noise of 1% of the peak: the residual RMS is about that, never much more.
+    EXPECT_LT(m.rms_rel_peak, 0.013) << m.channel << " at " << m.fz_N << " N";
+    EXPECT_GT(m.rms_rel_peak, 0.006) << m.channel << " at " << m.fz_N << " N (overfitted?)";
+  }
+  // The start was generic, not the answer: its curves are far from the truth.
+  EXPECT_GT(WorstPredictionError(fit.initial_guess, truth, fz0, 0.0, true), 0.05);
+  for (double fz : {0.75 * fz0, 1.25 * fz0}) {
+    EXPECT_LT(WorstPredictionError(fit.params, truth, fz, 0.0, true), 0.02) << fz;
+    EXPECT_LT(WorstPredictionError(fit.params, truth, fz, 0.0, false), 0.02) << fz;
+  }
+  // Load-dependent terms are free with three loads.
+  for (const char* name : {"PDY2", "PKY2", "PKY4", "PDX2", "PKX2", "PKX3"}) {
+    EXPECT_NE(std::find(fit.fitted_coefficients.begin(), fit.fitted_coefficients.end(), name),
+              fit.fitted_coefficients.end())
+        << name;
+  }
+}
+
+// With camber in the data, the camber terms are fitted and a camber between the measured ones is
+// predicted.
+TEST(MagicFormulaFitTest, FitsCamberWhenTheDataHaveIt) {
+  const MagicFormulaParams<double> truth = Truth();
+  const double fz0 = truth.FNOMIN;
+  const std::vector<double> loads = {0.6 * fz0, fz0, 1.4 * fz0};
+  const std::vector<double> cambers = Degrees({-4.0, 0.0, 4.0});
+  const auto samples =
+      SynthesizeMagicFormulaRigData(truth, loads, cambers, Degrees(Range(-15, 15, 1)),
+                                    Range(-0.3, 0.3, 0.03), 10.0, CelsiusToKelvin(40), 0.005, 11);
+  const MagicFormulaFitResult fit = FitMagicFormula(samples, {});
+  for (const char* name : {"PDY3", "PKY6", "PVY3", "PDX3"}) {
+    EXPECT_NE(std::find(fit.fitted_coefficients.begin(), fit.fitted_coefficients.end(), name),
+              fit.fitted_coefficients.end())
+        << name;
+  }
+  EXPECT_LT(WorstPredictionError(fit.params, truth, fz0, DegToRad(2.0), true), 0.03);
+  EXPECT_LT(WorstPredictionError(fit.params, truth, 1.2 * fz0, DegToRad(-2.0), true), 0.03);
+}
+
+// One load: only what one load can identify is freed; the curve is still reproduced.
+TEST(MagicFormulaFitTest, OneLoadFreesOnlyLoadFreeCoefficients) {
+  const MagicFormulaParams<double> truth = Truth();
+  const std::vector<double> loads = {truth.FNOMIN};
+  const std::vector<double> cambers = {0.0};
+  const auto samples =
+      SynthesizeMagicFormulaRigData(truth, loads, cambers, Degrees(Range(-12, 12, 0.5)),
+                                    Range(-0.2, 0.2, 0.01), 10.0, CelsiusToKelvin(40), 0.0, 1);
+  const MagicFormulaFitResult fit = FitMagicFormula(samples, {});
+  for (const char* name : {"PDY2", "PKY2", "PKY4", "PDX2", "PEY2"}) {
+    EXPECT_EQ(std::find(fit.fitted_coefficients.begin(), fit.fitted_coefficients.end(), name),
+              fit.fitted_coefficients.end())
+        << name;
+  }
+  for (const MagicFormulaFitMetrics& m : fit.metrics) EXPECT_LT(m.rms_rel_peak, 0.01) << m.channel;
+}
+
+// The fitted coefficients survive the .tir writer and reader exactly.
+TEST(MagicFormulaFitTest, FittedFileReadsBackToTheSameForces) {
+  const MagicFormulaParams<double> truth = Truth();
+  const std::vector<double> loads = {0.5 * truth.FNOMIN, truth.FNOMIN, 1.5 * truth.FNOMIN};
+  const std::vector<double> cambers = {0.0};
+  const auto samples =
+      SynthesizeMagicFormulaRigData(truth, loads, cambers, Degrees(Range(-15, 15, 1.5)),
+                                    Range(-0.3, 0.3, 0.03), 10.0, CelsiusToKelvin(40), 0.01, 3);
+  const MagicFormulaFitResult fit = FitMagicFormula(samples, {});
+  test::TempDir dir;
+  const auto path = dir.path() / "fitted.tir";
+  tyre::WriteTirFile(path, fit.params, "fitted in a test");
+  const MagicFormulaParams<double> back = tyre::LoadMagicFormula(path);
+  const auto op = Point(truth.FNOMIN, -0.05, DegToRad(4.0), 0.0);
+  EXPECT_EQ(tyre::CalcMagicFormula(back, op, {}).fy, tyre::CalcMagicFormula(fit.params, op, {}).fy);
+  EXPECT_EQ(tyre::CalcMagicFormula(back, op, {}).fx, tyre::CalcMagicFormula(fit.params, op, {}).fx);
+  EXPECT_NE(test::ReadTextFile(path).find("! fitted in a test"), std::string::npos);
+}
+
+TEST(MagicFormulaFitTest, WarnsAboutTemperaturesAndCombinedSamples) {
+  const MagicFormulaParams<double> truth = Truth();
+  const std::vector<double> loads = {truth.FNOMIN};
+  const std::vector<double> cambers = {0.0};
+  auto samples = SynthesizeMagicFormulaRigData(truth, loads, cambers, Degrees(Range(-10, 10, 1)),
+                                               Range(-0.2, 0.2, 0.02), 10.0, 300.0, 0.0, 1);
+  samples[3].tread_temp = 320.0;
+  RigSample combined = samples[5];
+  combined.slip_ratio = 0.05;
+  combined.slip_angle = 0.05;
+  samples.push_back(combined);
+  const MagicFormulaFitResult fit = FitMagicFormula(samples, {});
+  ASSERT_EQ(fit.warnings.size(), 2u);
+  EXPECT_NE(fit.warnings[0].find("temperatures span 20.0 K"), std::string::npos);
+  EXPECT_NE(fit.warnings[1].find("1 combined-slip samples"), std::string::npos);
+}
+
+TEST(MagicFormulaFitTest, RejectsUnusableInput) {
+  std::vector<RigSample> combined_only(5);
+  for (RigSample& s : combined_only) {
+    s.fz = 4000.0;
+    s.slip_ratio = 0.1;
+    s.slip_angle = 0.05;
+    s.speed = 10.0;
+    s.tread_temp = 300.0;
+  }
+  EXPECT_THROW(FitMagicFormula(combined_only, {}), InputError);
+  std::vector<RigSample> bad(1);
+  bad[0].fz = 4000.0;
+  bad[0].fy = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(FitMagicFormula(bad, {}), InputError);
+  bad[0].fy = 0.0;
+  bad[0].fz = -1.0;
+  EXPECT_THROW(FitMagicFormula(bad, {}), InputError);
+}
+
+}  // namespace
+}  // namespace hotlap::ident
