@@ -17,9 +17,9 @@
 #include "hotlap/ident/mf_fit.h"
 #include "hotlap/ident/rig_data.h"
 #include "hotlap/ident/unitire_fit.h"
+#include "hotlap/tyre/tir_file.h"
 #include "hotlap/tyre/tyre_force_model.h"
 #include "hotlap/tyre/tyre_force_params_io.h"
-#include "hotlap/tyre/tir_file.h"
 #include "hotlap/tyre/tyre_params_io.h"
 #include "output.h"
 
@@ -348,14 +348,15 @@ int RunFitMagicFormula(const FitArgs& a) {
   const std::vector<ident::RigSample> samples = ident::ReadRigCsv(a.data);
   ident::MagicFormulaFitOptions options;
   if (!a.base.empty()) options.base = tyre::LoadMagicFormula(a.base);
-  fmt::print("hotlap tyre fit: Magic Formula pure-slip coefficients to {} ({} samples){}\n",
-             a.data, samples.size(), a.base.empty() ? "" : ", starting from " + a.base);
+  fmt::print("hotlap tyre fit: Magic Formula pure-slip coefficients to {} ({} samples){}\n", a.data,
+             samples.size(), a.base.empty() ? "" : ", starting from " + a.base);
   std::fflush(stdout);
   const ident::MagicFormulaFitResult fit = ident::FitMagicFormula(samples, options);
   for (const std::string& w : fit.warnings) fmt::print("warning: {}\n", w);
-  fmt::print("{} after {} iterations; {} free coefficients ({} side-slip, {} longitudinal samples)\n",
-             fit.converged ? "converged" : "NOT converged", fit.iterations,
-             fit.fitted_coefficients.size(), fit.lateral_samples, fit.longitudinal_samples);
+  fmt::print(
+      "{} after {} iterations; {} free coefficients ({} side-slip, {} longitudinal samples)\n",
+      fit.converged ? "converged" : "NOT converged", fit.iterations, fit.fitted_coefficients.size(),
+      fit.lateral_samples, fit.longitudinal_samples);
 
   const auto& table = tyre::MagicFormulaParamTable();
   const auto value_of = [&](const tyre::MagicFormulaParams<double>& p, const std::string& name) {

@@ -21,10 +21,11 @@ namespace {
 using tyre::MagicFormulaParams;
 
 // The coefficients this fit can free, by `.tir` name.
-#define HOTLAP_MF_FITTABLE(X)                                                                   \
-  X(PCY1) X(PDY1) X(PDY2) X(PDY3) X(PEY1) X(PEY2) X(PEY3) X(PKY1) X(PKY2) X(PKY4) X(PKY6) X(PKY7)        \
-      X(PHY1) X(PHY2) X(PVY1) X(PVY2) X(PVY3) X(PVY4) X(PCX1) X(PDX1) X(PDX2) X(PDX3) X(PEX1) \
-          X(PEX2) X(PEX3) X(PEX4) X(PKX1) X(PKX2) X(PKX3) X(PHX1) X(PHX2) X(PVX1) X(PVX2)
+#define HOTLAP_MF_FITTABLE(X)                                                                     \
+  X(PCY1)                                                                                         \
+  X(PDY1) X(PDY2) X(PDY3) X(PEY1) X(PEY2) X(PEY3) X(PKY1) X(PKY2) X(PKY4) X(PKY6) X(PKY7) X(PHY1) \
+      X(PHY2) X(PVY1) X(PVY2) X(PVY3) X(PVY4) X(PCX1) X(PDX1) X(PDX2) X(PDX3) X(PEX1) X(PEX2)     \
+          X(PEX3) X(PEX4) X(PKX1) X(PKX2) X(PKX3) X(PHX1) X(PHX2) X(PVX1) X(PVX2)
 
 enum class Coef {
 #define HOTLAP_ENUM(name) name,
@@ -226,8 +227,8 @@ void GuessLateral(const std::vector<CurveEstimate>& curves, MagicFormulaParams<d
   p.PEY1 = 0.0;
   p.PEY2 = 0.0;
   p.PEY3 = 0.0;
-  for (double* shift : {&p.PHY1, &p.PHY2, &p.PVY1, &p.PVY2, &p.PDY3, &p.PKY6, &p.PKY7, &p.PVY3,
-                        &p.PVY4}) {
+  for (double* shift :
+       {&p.PHY1, &p.PHY2, &p.PVY1, &p.PVY2, &p.PDY3, &p.PKY6, &p.PKY7, &p.PVY3, &p.PVY4}) {
     *shift = 0.0;
   }
 }
@@ -250,8 +251,8 @@ void GuessLongitudinal(const std::vector<CurveEstimate>& curves, MagicFormulaPar
   p.PKX2 = curves.size() >= 2 ? std::clamp(k1, -9.0, 9.0) : p.PKX2;
   p.PKX3 = 0.0;
   p.PCX1 = 1.65;
-  for (double* c : {&p.PEX1, &p.PEX2, &p.PEX3, &p.PEX4, &p.PHX1, &p.PHX2, &p.PVX1, &p.PVX2,
-                    &p.PDX3}) {
+  for (double* c :
+       {&p.PEX1, &p.PEX2, &p.PEX3, &p.PEX4, &p.PHX1, &p.PHX2, &p.PVX1, &p.PVX2, &p.PDX3}) {
     *c = 0.0;
   }
 }
@@ -263,7 +264,7 @@ std::vector<Free> FreeSet(Channel channel, size_t loads, bool camber, bool both_
   if (channel == Channel::kLateral) {
     const double lo = stiffness_sign < 0.0 ? -300.0 : 0.5;
     const double hi = stiffness_sign < 0.0 ? -0.5 : 300.0;
-    f = {{Coef::PCY1, 1.0, 2.5}, {Coef::PDY1, 0.05, 5.0},  {Coef::PEY1, -20.0, 1.0},
+    f = {{Coef::PCY1, 1.0, 2.5}, {Coef::PDY1, 0.05, 5.0}, {Coef::PEY1, -20.0, 1.0},
          {Coef::PKY1, lo, hi},   {Coef::PHY1, -0.1, 0.1}, {Coef::PVY1, -0.5, 0.5}};
     if (loads >= 2) {
       f.insert(f.end(), {{Coef::PDY2, -1.0, 1.0},
@@ -275,12 +276,12 @@ std::vector<Free> FreeSet(Channel channel, size_t loads, bool camber, bool both_
     if (loads >= 3) f.push_back({Coef::PKY4, 1.0, 5.0});
     if (both_signs) f.push_back({Coef::PEY3, -1.0, 1.0});
     if (camber) {
-      f.insert(f.end(), {{Coef::PDY3, -50.0, 50.0}, {Coef::PKY6, -10.0, 10.0},
-                         {Coef::PVY3, -5.0, 5.0}});
+      f.insert(f.end(),
+               {{Coef::PDY3, -50.0, 50.0}, {Coef::PKY6, -10.0, 10.0}, {Coef::PVY3, -5.0, 5.0}});
       if (loads >= 2) f.insert(f.end(), {{Coef::PKY7, -10.0, 10.0}, {Coef::PVY4, -5.0, 5.0}});
     }
   } else {
-    f = {{Coef::PCX1, 1.0, 2.5},  {Coef::PDX1, 0.05, 5.0}, {Coef::PEX1, -20.0, 1.0},
+    f = {{Coef::PCX1, 1.0, 2.5},   {Coef::PDX1, 0.05, 5.0}, {Coef::PEX1, -20.0, 1.0},
          {Coef::PKX1, 0.5, 300.0}, {Coef::PHX1, -0.1, 0.1}, {Coef::PVX1, -0.5, 0.5}};
     if (loads >= 2) {
       f.insert(f.end(), {{Coef::PDX2, -1.0, 1.0},
@@ -383,7 +384,8 @@ void CheckSamples(std::span<const RigSample> samples) {
                         std::isfinite(s.tread_temp) && std::isfinite(s.fy) && std::isfinite(s.mz) &&
                         (!s.fx || std::isfinite(*s.fx));
     if (!finite) throw InputError(fmt::format("rig sample {}: a value is not a finite number", i));
-    if (!(s.fz > 0.0)) throw InputError(fmt::format("rig sample {}: fz {:g} N must be > 0", i, s.fz));
+    if (!(s.fz > 0.0))
+      throw InputError(fmt::format("rig sample {}: fz {:g} N must be > 0", i, s.fz));
   }
 }
 
@@ -468,10 +470,10 @@ MagicFormulaFitResult FitMagicFormula(std::span<const RigSample> samples,
 
   const auto fit_channel = [&](const std::vector<const RigSample*>& chosen, Channel channel) {
     if (chosen.empty()) {
-      result.warnings.push_back(fmt::format(
-          "no pure {} samples: the {} coefficients are kept from the base",
-          channel == Channel::kLateral ? "side-slip" : "longitudinal-slip (with fx)",
-          channel == Channel::kLateral ? "lateral" : "longitudinal"));
+      result.warnings.push_back(
+          fmt::format("no pure {} samples: the {} coefficients are kept from the base",
+                      channel == Channel::kLateral ? "side-slip" : "longitudinal-slip (with fx)",
+                      channel == Channel::kLateral ? "lateral" : "longitudinal"));
       return;
     }
     const std::vector<CurveEstimate> curves = EstimateCurves(chosen, channel);
@@ -507,8 +509,8 @@ MagicFormulaFitResult FitMagicFormula(std::span<const RigSample> samples,
   result.params = p;
   result.lateral_samples = static_cast<int>(lateral.size());
   result.longitudinal_samples = static_cast<int>(longitudinal.size());
-  for (auto [chosen, channel] : {std::pair{&lateral, Channel::kLateral},
-                                 std::pair{&longitudinal, Channel::kLongitudinal}}) {
+  for (auto [chosen, channel] :
+       {std::pair{&lateral, Channel::kLateral}, std::pair{&longitudinal, Channel::kLongitudinal}}) {
     if (chosen->empty()) continue;
     const auto rows = Metrics(p, *chosen, channel);
     result.metrics.insert(result.metrics.end(), rows.begin(), rows.end());
