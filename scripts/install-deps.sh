@@ -1,7 +1,18 @@
 #!/usr/bin/env bash
 # Installs every build and test dependency of hotlap from Debian's packages (bookworm).
 # Idempotent: safe to run any number of times. Needs root (or sudo) and the Debian archive.
+#
+#   bash scripts/install-deps.sh          # what building and running hotlap needs
+#   bash scripts/install-deps.sh --test   # also what the test suite needs (scripts/test.sh)
 set -euo pipefail
+
+with_tests=0
+for arg in "$@"; do
+  case "$arg" in
+    --test) with_tests=1 ;;
+    *) echo "install-deps: unknown option '$arg' (the only option is --test)" >&2; exit 2 ;;
+  esac
+done
 
 packages=(
   build-essential cmake ninja-build pkg-config git
@@ -11,9 +22,15 @@ packages=(
   libcli11-dev           # command-line parsing
   libfmt-dev             # formatted terminal output
   nlohmann-json3-dev     # --json summaries
+  libjs-chart.js         # Chart.js, embedded in the binary at build time so HTML reports work offline
   libgtest-dev libgmock-dev  # unit tests
   libbenchmark-dev       # benchmarks in bench/
 )
+if [ "$with_tests" -eq 1 ]; then
+  packages+=(
+    chromium             # headless browser: the tests check that HTML reports render without errors
+  )
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -14,6 +17,7 @@
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/telemetry.h"
 #include "hotlap/common/units.h"
+#include "hotlap/report/html_report.h"
 #include "hotlap/sim/replay.h"
 #include "hotlap/sim/replay_io.h"
 #include "output.h"
@@ -27,6 +31,7 @@ struct ReplayArgs {
   std::string out;
   std::string car = "gen7";
   std::string json;
+  std::string report;
   bool heat_flows = false;
   double max_step_s = 0.02;
   std::optional<double> tread_C, carcass_C, disc_C, calliper_C, ambient_C, track_C;
@@ -44,9 +49,64 @@ nlohmann::json StatsJson(const sim::HistoryStats& s, bool kelvin) {
           {"final", RoundSignificant(s.final - shift)}};
 }
 
+/// `--report`: the summary table and every history against time, one self-contained HTML file
+/// (docs/reports.md).
+void WriteReplayReport(const ReplayArgs& a, const vehicle::Car& car,
+                       const std::vector<std::pair<std::string, std::string>>& log_metadata,
+                       const sim::ReplayResult& result,
+                       const std::vector<std::vector<std::string>>& summary_rows) {
+  report::HtmlReport page("hotlap replay: " +
+                          std::filesystem::path(a.telemetry).filename().string());
+  page.AddMetadata("telemetry", a.telemetry);
+  page.AddMetadata("car", car.name + " (" + car.path.string() + ")");
+  page.AddMetadata("samples", std::to_string(result.time.size()));
+  page.AddMetadata("duration", fmt::format("{:.2f} s", result.time.back() - result.time.front()));
+  for (const auto& [key, value] : log_metadata) page.AddMetadata("log " + key, value);
+  page.AddMetadata("channels", a.out);
+
+  page.AddHeading("Summary");
+  page.AddTable({.title = "Per corner: peak / time-weighted mean / final",
+                 .header = {"corner", "tread \u00b0C", "carcass \u00b0C", "disc \u00b0C",
+                            "calliper \u00b0C", "wear mm", "min grip", "brake energy kJ"},
+                 .rows = summary_rows});
+
+  // One chart per quantity, the four corners in their fixed colours, all on one linked time axis.
+  const auto chart = [&](const char* title, const char* label, const char* unit,
+                         std::vector<double> sim::CornerHistory::*channel, double scale,
+                         double shift) {
+    report::LineChart c{.title = title,
+                        .x_axis = {.label = "time", .unit = "s"},
+                        .y_axis = {.label = label, .unit = unit},
+                        .x_link = "time"};
+    for (Corner corner : kAllCorners) {
+      std::vector<double> y = result.corners[CornerIndex(corner)].*channel;
+      for (double& v : y) v = v * scale + shift;
+      c.series.push_back({.label = std::string(CornerName(corner)),
+                          .x = result.time,
+                          .y = std::move(y),
+                          .corner = corner});
+    }
+    page.AddLineChart(c);
+  };
+  page.AddHeading("Tyres");
+  chart("Tread temperature", "tread", "\u00b0C", &sim::CornerHistory::tread_temp, 1.0,
+        -kZeroCelsius);
+  chart("Carcass temperature", "carcass", "\u00b0C", &sim::CornerHistory::carcass_temp, 1.0,
+        -kZeroCelsius);
+  chart("Wear", "wear", "mm", &sim::CornerHistory::wear, 1.0, 0.0);
+  chart("Grip factor", "grip factor", "", &sim::CornerHistory::grip_factor, 1.0, 0.0);
+  page.AddHeading("Brakes");
+  chart("Disc temperature", "disc", "\u00b0C", &sim::CornerHistory::disc_temp, 1.0, -kZeroCelsius);
+  chart("Calliper temperature", "calliper", "\u00b0C", &sim::CornerHistory::calliper_temp, 1.0,
+        -kZeroCelsius);
+  chart("Braking power", "braking power", "kW", &sim::CornerHistory::brake_power, 1e-3, 0.0);
+  page.Write(a.report);
+}
+
 int RunReplay(const ReplayArgs& a) {
   CheckOutputFolder(a.out, "--out");
   if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
+  if (!a.report.empty()) CheckOutputFolder(a.report, "--report");
   const auto started = std::chrono::steady_clock::now();
 
   const vehicle::Car car = vehicle::LoadCar(ResolveCarFile(a.car));
@@ -81,6 +141,7 @@ int RunReplay(const ReplayArgs& a) {
   fmt::print("{:<6} {:>23} {:>23} {:>23} {:>23} {:>8} {:>6}\n", "corner", "tread degC pk/mean/end",
              "carcass degC", "disc degC", "calliper degC", "wear mm", "grip");
   nlohmann::json corners;
+  std::vector<std::vector<std::string>> summary_rows;  // the printed table, for --report
   for (Corner c : kAllCorners) {
     const sim::CornerHistory& h = result.corners[CornerIndex(c)];
     const auto tread = sim::CalcHistoryStats(result.time, h.tread_temp);
@@ -100,6 +161,10 @@ int RunReplay(const ReplayArgs& a) {
     fmt::print("{:<6} {:>23} {:>23} {:>23} {:>23} {:>8.4f} {:>6.3f}\n", CornerName(c),
                triple(tread), triple(carcass), triple(disc), triple(calliper), h.wear.back(),
                min_grip);
+    summary_rows.push_back({std::string(CornerName(c)), triple(tread), triple(carcass),
+                            triple(disc), triple(calliper), fmt::format("{:.4f}", h.wear.back()),
+                            fmt::format("{:.3f}", min_grip),
+                            fmt::format("{:.1f}", brake_energy / 1e3)});
     corners[std::string(CornerName(c))] = {
         {"tread_temp_C", StatsJson(tread, true)},
         {"carcass_temp_C", StatsJson(carcass, true)},
@@ -124,6 +189,10 @@ int RunReplay(const ReplayArgs& a) {
     WriteJsonFile(a.json, summary);
     fmt::print("wrote {}\n", a.json);
   }
+  if (!a.report.empty()) {
+    WriteReplayReport(a, car, log.metadata(), result, summary_rows);
+    fmt::print("wrote {}\n", a.report);
+  }
   return 0;
 }
 
@@ -140,6 +209,8 @@ CommandRunner RegisterReplayCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_flag("--heat-flows", args->heat_flows, "Also write q1..q7 of every tyre, W");
   sub->add_option("--json", args->json, "Write the summary as JSON (docs/json-output.md)");
+  sub->add_option("--report", args->report,
+                  "Write an HTML report: summary and interactive charts (docs/reports.md)");
   sub->add_option("--max-step-s", args->max_step_s, "Longest RK4 sub-step, s")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);

@@ -61,14 +61,16 @@ class ReplayCommandTest : public ::testing::Test {
   // Runs with bad input and checks: exit code 2, a single "hotlap: error:" line mentioning
   // every `needles`, and no output file.
   void ExpectCleanFailure(const std::string& args, const std::vector<std::string>& needles) {
-    const fs::path out = dir_ / "out.csv", json = dir_ / "out.json";
-    const RunResult r = Run(args + " --out " + out.string() + " --json " + json.string());
+    const fs::path out = dir_ / "out.csv", json = dir_ / "out.json", report = dir_ / "out.html";
+    const RunResult r = Run(args + " --out " + out.string() + " --json " + json.string() +
+                            " --report " + report.string());
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_EQ(r.err.rfind("hotlap: error: ", 0), 0u) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     for (const std::string& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out));
     EXPECT_FALSE(fs::exists(json));
+    EXPECT_FALSE(fs::exists(report));
     for (const auto& entry : fs::directory_iterator(dir_)) {  // no temporary left behind either
       EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
     }
