@@ -1,5 +1,8 @@
 #include "hotlap/vehicle/car.h"
 
+#include <fmt/format.h>
+
+#include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
 #include "hotlap/common/yaml_reader.h"
 
@@ -34,8 +37,33 @@ Car LoadCar(const std::filesystem::path& path) {
     car.initial.calliper_temp = CelsiusToKelvin(init.Number("calliper_temp_C", temp));
     init.Finish();
   }
+  constexpr std::array<std::string_view, 5> kVehicleSections = {"chassis", "aero", "powertrain",
+                                                                "brake_system", "tyre_forces"};
+  int present = 0;
+  for (std::string_view section : kVehicleSections) present += y.Has(section) ? 1 : 0;
+  if (present == static_cast<int>(kVehicleSections.size())) {
+    car.vehicle = ReadVehicleParams(y);
+  } else if (present > 0) {
+    for (std::string_view section : kVehicleSections) {
+      if (!y.Has(section)) {
+        y.Fail(section,
+               "is missing; a car with any of chassis, aero, powertrain, brake_system "
+               "and tyre_forces needs all five (docs/vehicle.md)");
+      }
+    }
+  }
   y.Finish();
   return car;
+}
+
+const VehicleParams& RequireVehicle(const Car& car, std::string_view purpose) {
+  if (!car.vehicle) {
+    throw InputError(fmt::format(
+        "{}: the car has no chassis, aero, powertrain, brake_system and tyre_forces sections, "
+        "which {} needs (docs/vehicle.md); it can only replay logs",
+        car.path.string(), purpose));
+  }
+  return *car.vehicle;
 }
 
 }  // namespace hotlap::vehicle

@@ -1,15 +1,20 @@
 #pragma once
 /// @file
-/// A car as its files describe it: per-corner tyres and brakes, and default starting
-/// temperatures (the vehicle model adds chassis, aero and powertrain).
+/// A car as its files describe it: per-corner tyres and brakes, default starting temperatures,
+/// and (optionally) the chassis, aero, powertrain, brake balance and tyre force models that the
+/// lap simulation and optimal control need (vehicle_params.h). A car with only the thermal parts
+/// can be replayed over a log but not driven round a track.
 
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "hotlap/brake/brake_params_io.h"
 #include "hotlap/common/corner.h"
 #include "hotlap/tyre/tyre_params_io.h"
+#include "hotlap/vehicle/vehicle_params.h"
 
 namespace hotlap::vehicle {
 
@@ -27,12 +32,18 @@ struct Car {
   std::array<tyre::TyreFile, 4> tyres;     ///< indexed by CornerIndex
   std::array<brake::BrakeFile, 4> brakes;  ///< indexed by CornerIndex
   InitialTemperatures initial;
+  std::optional<VehicleParams> vehicle;  ///< absent for a thermal-only car file
 
   const tyre::TyreFile& tyre(Corner c) const { return tyres[CornerIndex(c)]; }
   const brake::BrakeFile& brake(Corner c) const { return brakes[CornerIndex(c)]; }
 };
 
-/// Loads a car.yaml and every file it refers to (paths relative to the car file).
+/// Loads a car.yaml and every file it refers to (paths relative to the car file). The vehicle
+/// sections (chassis, aero, powertrain, brake_system, tyre_forces) are all present or all absent.
 Car LoadCar(const std::filesystem::path& path);
+
+/// The car's vehicle parameters; InputError naming the car file and what `purpose` needs if the
+/// file has none.
+const VehicleParams& RequireVehicle(const Car& car, std::string_view purpose);
 
 }  // namespace hotlap::vehicle

@@ -1,0 +1,233 @@
+#include "hotlap/sim/qss_lap.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "hotlap/common/error.h"
+#include "hotlap/sim/qss_profile.h"
+#include "hotlap/vehicle/slip_inversion.h"
+
+namespace hotlap::sim {
+
+namespace {
+
+using vehicle::VehicleParams;
+
+void CheckRoad(std::span<const RoadPoint> road) {
+  if (road.size() < 16) {
+    throw InputError(
+        fmt::format("QSS lap: the road has {} points; at least 16 are needed", road.size()));
+  }
+  const double ds = road[1].distance - road[0].distance;
+  if (!(ds > 0.0)) throw InputError("QSS lap: road distances must increase");
+  for (size_t i = 0; i < road.size(); ++i) {
+    const RoadPoint& p = road[i];
+    if (!std::isfinite(p.distance) || !std::isfinite(p.curvature) || !std::isfinite(p.bank) ||
+        !std::isfinite(p.grade)) {
+      throw InputError(fmt::format("QSS lap: road point {} is not finite", i));
+    }
+    if (i > 0 && std::abs(p.distance - road[i - 1].distance - ds) > 1e-6 * ds + 1e-9) {
+      throw InputError(fmt::format(
+          "QSS lap: road points must be evenly spaced; point {} is {:g} m after the previous, "
+          "expected {:g} m",
+          i, p.distance - road[i - 1].distance, ds));
+    }
+  }
+}
+
+// Per-corner grip factors of the compound at the given states.
+std::array<double, 4> GripOf(const vehicle::Car& car, const ReplayInitialState& state) {
+  std::array<double, 4> g{};
+  for (Corner c : kAllCorners) {
+    const int i = CornerIndex(c);
+    g[i] = car.tyre(c).compound->GripFactor(state.tyres[i].tread_temp, state.tyres[i].wear);
+  }
+  return g;
+}
+
+struct Prepared {
+  const vehicle::Car* car;
+  const VehicleParams* params;
+  QssVehicle qss;
+  std::vector<vehicle::InvertibleTyre> tyres;
+
+  Prepared(const vehicle::Car& c, const VehicleParams& p) : car(&c), params(&p), qss(p) {
+    for (Corner corner : kAllCorners) tyres.emplace_back(p.corner(corner));
+  }
+};
+
+// Channels of one lap from its speed profile: forces, loads, slips (step 3 of qss_lap.h).
+QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, const SpeedProfile& profile,
+                const std::array<std::vector<double>, 4>& grip,
+                const std::array<std::vector<double>, 4>& tread_temp) {
+  const VehicleParams& p = *prep.params;
+  const size_t n = road.size();
+  const double ds = road[1].distance - road[0].distance;
+  const double m = p.chassis.mass;
+  QssLap lap;
+  lap.distance.resize(n + 1);
+  lap.time.resize(n + 1);
+  lap.speed.resize(n + 1);
+  lap.accel_long.resize(n + 1);
+  lap.accel_lat.resize(n + 1);
+  lap.steer.resize(n + 1);
+  lap.limit.resize(n + 1);
+  for (auto& ch : lap.corners) {
+    for (auto* v : {&ch.speed, &ch.fx, &ch.fy, &ch.fz, &ch.slip_angle, &ch.slip_ratio}) {
+      v->resize(n + 1);
+    }
+  }
+  for (auto& t : lap.tread_temp_used) t.resize(n + 1);
+
+  std::array<vehicle::WheelSlips, 2> front_guess{};
+  vehicle::SpoolAxleSolution rear_guess;
+  double time = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    const RoadPoint& point = road[i];
+    const double v = profile.speed[i];
+    const double v_prev = profile.speed[(i + n - 1) % n], v_next = profile.speed[(i + 1) % n];
+    const double accel = (v_next * v_next - v_prev * v_prev) / (4.0 * ds);
+    const std::array<double, 4> g = {grip[0][i], grip[1][i], grip[2][i], grip[3][i]};
+    const double sum_fx = m * accel + CalcResistance(prep.qss, point, v);
+    const ForceDemand demand = CalcForceDemand(prep.qss, point, v, sum_fx, g);
+    const double kappa_g = point.curvature * std::cos(point.bank);
+    const double yaw_rate = v * kappa_g;
+
+    std::array<vehicle::TyreConditions, 4> cond;
+    for (Corner c : kAllCorners) {
+      const int k = CornerIndex(c);
+      const double y = p.CornerPosition(c)[1];
+      cond[k] = {std::max(demand.fz[k], 1.0), std::max(v - yaw_rate * y, 0.5), tread_temp[k][i],
+                 g[k]};
+    }
+    // Front wheels roll or brake independently.
+    std::array<vehicle::WheelSlips, 4> slips;
+    bool reached = true;
+    for (Corner c : {Corner::kFrontLeft, Corner::kFrontRight}) {
+      const int k = CornerIndex(c);
+      const vehicle::FreeWheelSolution s = vehicle::SolveFreeWheelSlips(
+          prep.tyres[k], cond[k], demand.fx[k], demand.fy[k], front_guess[k]);
+      slips[k] = s.wheel;
+      front_guess[k] = s.wheel;
+      reached = reached && s.reached;
+      lap.max_force_deficit = std::max({lap.max_force_deficit, std::abs(s.wheel.fx - demand.fx[k]),
+                                        std::abs(s.wheel.fy - demand.fy[k])});
+    }
+    // Rear wheels turn together on the spool.
+    {
+      const int l = CornerIndex(Corner::kRearLeft), r = CornerIndex(Corner::kRearRight);
+      const double fx_total = demand.fx[l] + demand.fx[r];
+      const vehicle::SpoolAxleSolution s =
+          vehicle::SolveSpoolAxleSlips(prep.tyres[l], prep.tyres[r], cond[l], cond[r], demand.fy[l],
+                                       demand.fy[r], fx_total, rear_guess);
+      slips[l] = s.wheels[0];
+      slips[r] = s.wheels[1];
+      rear_guess = s;
+      reached = reached && s.reached;
+      lap.max_force_deficit =
+          std::max({lap.max_force_deficit, std::abs(s.wheels[0].fy - demand.fy[l]),
+                    std::abs(s.wheels[1].fy - demand.fy[r]),
+                    std::abs(s.wheels[0].fx + s.wheels[1].fx - fx_total)});
+    }
+    if (!reached) ++lap.slip_points_not_reached;
+
+    lap.distance[i] = point.distance - road[0].distance;
+    lap.time[i] = time;
+    lap.speed[i] = v;
+    lap.accel_long[i] = accel;
+    lap.accel_lat[i] = v * v * kappa_g;
+    lap.limit[i] = profile.limit[i];
+    // Steady-state kinematics: delta = L kappa + alpha_rear - alpha_front (ISO slip angles).
+    const double alpha_front = 0.5 * (slips[0].slip_angle + slips[1].slip_angle);
+    const double alpha_rear = 0.5 * (slips[2].slip_angle + slips[3].slip_angle);
+    lap.steer[i] = p.chassis.wheelbase * kappa_g + alpha_rear - alpha_front;
+    for (Corner c : kAllCorners) {
+      const int k = CornerIndex(c);
+      CornerChannels& ch = lap.corners[k];
+      ch.speed[i] = cond[k].vx;
+      ch.fx[i] = slips[k].fx;
+      ch.fy[i] = slips[k].fy;
+      ch.fz[i] = demand.fz[k];
+      ch.slip_angle[i] = slips[k].slip_angle;
+      ch.slip_ratio[i] = slips[k].slip_ratio;
+      lap.tread_temp_used[k][i] = tread_temp[k][i];
+    }
+    time += 2.0 * ds / (v + v_next);
+  }
+  // Close the lap at the start line with the first sample's channels.
+  lap.distance[n] = n * ds;
+  lap.time[n] = time;
+  lap.lap_time = time;
+  lap.speed[n] = lap.speed[0];
+  lap.accel_long[n] = lap.accel_long[0];
+  lap.accel_lat[n] = lap.accel_lat[0];
+  lap.steer[n] = lap.steer[0];
+  lap.limit[n] = lap.limit[0];
+  for (int k = 0; k < 4; ++k) {
+    CornerChannels& ch = lap.corners[k];
+    for (auto* v : {&ch.speed, &ch.fx, &ch.fy, &ch.fz, &ch.slip_angle, &ch.slip_ratio}) {
+      (*v)[n] = (*v)[0];
+    }
+    lap.tread_temp_used[k][n] = lap.tread_temp_used[k][0];
+  }
+  return lap;
+}
+
+ReplayInitialState EndState(const ReplayResult& r) {
+  ReplayInitialState s;
+  for (int k = 0; k < 4; ++k) {
+    const CornerHistory& h = r.corners[k];
+    s.tyres[k] = {h.tread_temp.back(), h.carcass_temp.back(), h.wear.back()};
+    s.brakes[k] = {h.disc_temp.back(), h.calliper_temp.back()};
+  }
+  return s;
+}
+
+}  // namespace
+
+QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
+                    const QssOptions& options) {
+  const VehicleParams& params = vehicle::RequireVehicle(car, "the QSS lap");
+  CheckRoad(road);
+  if (options.laps < 1) throw InputError("QSS lap: laps must be >= 1");
+  const size_t n = road.size();
+  const Prepared prep(car, params);
+
+  ReplayInitialState state = options.initial;
+  std::array<std::vector<double>, 4> grip, tread;
+  {
+    const std::array<double, 4> g0 = GripOf(car, state);
+    for (int k = 0; k < 4; ++k) {
+      grip[k].assign(n, g0[k]);
+      tread[k].assign(n, state.tyres[k].tread_temp);
+    }
+  }
+  QssResult result;
+  for (int lap_index = 0; lap_index < options.laps; ++lap_index) {
+    const int passes = lap_index == 0 && options.couple_first_lap ? 2 : 1;
+    QssLap lap;
+    for (int pass = 0; pass < passes; ++pass) {
+      const SpeedProfile profile = CalcSpeedProfile(prep.qss, road, grip);
+      lap = BuildLap(prep, road, profile, grip, tread);
+      ReplayInputs inputs;
+      inputs.time = lap.time;
+      inputs.corners = lap.corners;
+      inputs.ambient_temp.assign(n + 1, options.ambient_temp);
+      inputs.track_temp.assign(n + 1, options.track_temp);
+      lap.thermal = RunReplay(car, inputs, state, options.replay);
+      // The next pass (or lap) drives on the grip this one left at each point.
+      for (int k = 0; k < 4; ++k) {
+        const CornerHistory& h = lap.thermal.corners[k];
+        std::copy(h.grip_factor.begin(), h.grip_factor.begin() + n, grip[k].begin());
+        std::copy(h.tread_temp.begin(), h.tread_temp.begin() + n, tread[k].begin());
+      }
+    }
+    state = EndState(lap.thermal);
+    result.laps.push_back(std::move(lap));
+  }
+  return result;
+}
+
+}  // namespace hotlap::sim

@@ -1,0 +1,93 @@
+#pragma once
+/// @file
+/// The quasi-steady-state (QSS) lap: the fastest speed profile the car's tyre, power and brake
+/// limits allow round a banked track, the per-corner forces and slips that profile needs, and the
+/// tyre and brake thermal models integrated along it, lap after lap.
+///
+/// How it works (docs/lap-simulation.md):
+/// 1. At every point of the centre line (spacing ds), the cornering limit: the highest speed at
+///    which the car, holding its speed, keeps every tyre inside its friction ellipse. The lateral
+///    force the tyres must make is m V^2 kappa_g - m g sin(theta) cos(phi) (spec section 10);
+///    front and rear axles share it by yaw-moment balance (b/L and a/L), the wheels of an axle in
+///    proportion to their capacities; the loads follow from vehicle::CalcNormalLoads. Each tyre's
+///    ellipse has the pure-slip peaks of its force model at its load (vehicle::TyreCapacity) times
+///    its grip factor g(T_tread) h(wear).
+/// 2. Forward pass (traction and power: the rear axle drives, P_wheel >= Fx V) and backward pass
+///    (braking with the brake balance), each limited by the same ellipses, from the slowest
+///    corner round the closed lap.
+/// 3. At every point, the per-corner forces of that profile and the slips that make them
+///    (vehicle/slip_inversion.h: free front wheels, rear wheels on a spool).
+/// 4. The thermal, wear and brake models replayed along the lap (sim/replay.h).
+/// Thermal coupling: a lap's grip factors come from the previous lap's temperatures and wear at
+/// the same point; the first lap is run twice, first at the starting temperatures.
+///
+/// Simplifications (stated, not hidden): the car follows the centre line with no body slip in
+/// the limit search; yaw moments of the longitudinal forces and of the spool are left out of the
+/// axle split; rolling resistance uses each tyre's coefficient at its nominal load; steady-state
+/// tyres (no relaxation).
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "hotlap/sim/replay.h"
+#include "hotlap/vehicle/car.h"
+
+namespace hotlap::sim {
+
+/// The road at one point of the centre line (uniform spacing, closed: the point after the last is
+/// the first).
+struct RoadPoint {
+  double distance = 0.0;   ///< from the start line, m
+  double curvature = 0.0;  ///< horizontal curvature kappa_h, 1/m (> 0 turning left)
+  double bank = 0.0;       ///< theta, rad (> 0: right edge up)
+  double grade = 0.0;      ///< phi, rad (> 0: uphill)
+};
+
+/// What limits the speed at a point.
+enum class SpeedLimit {
+  kCornering,  ///< tyres saturated at steady speed
+  kTraction,   ///< accelerating out: rear tyres saturated
+  kPower,      ///< accelerating: engine power
+  kBraking,    ///< braking into the next corner
+};
+
+struct QssOptions {
+  int laps = 1;
+  double ambient_temp = 0.0;  ///< K
+  double track_temp = 0.0;    ///< K
+  ReplayInitialState initial;
+  ReplayOptions replay;
+  /// Recompute the first lap with the grip factors of its own first pass (thermal coupling).
+  bool couple_first_lap = true;
+};
+
+/// One lap's profile and the per-corner channels the thermal models ran on; N + 1 samples (the
+/// last closes the lap at the start line).
+struct QssLap {
+  std::vector<double> distance;    ///< m, from this lap's start
+  std::vector<double> time;        ///< s, from this lap's start
+  std::vector<double> speed;       ///< m/s
+  std::vector<double> accel_long;  ///< m/s^2
+  std::vector<double> accel_lat;   ///< V^2 kappa_g, m/s^2
+  std::vector<double> steer;       ///< derived road-wheel steer angle, rad
+  std::vector<SpeedLimit> limit;   ///< what set the speed
+  std::array<CornerChannels, 4> corners;
+  std::array<std::vector<double>, 4> tread_temp_used;  ///< K, the grip factors' temperatures
+  double lap_time = 0.0;                               ///< s
+  int slip_points_not_reached = 0;  ///< samples where a tyre could not make its target forces
+  double max_force_deficit = 0.0;   ///< N, the largest such shortfall
+  ReplayResult thermal;             ///< temperatures, wear, brake power along the lap
+};
+
+struct QssResult {
+  std::vector<QssLap> laps;
+};
+
+/// Runs the QSS lap(s). `road` must have at least 16 points at uniform spacing. InputError if the
+/// car has no vehicle sections or the road is malformed; NumericalError if no speed is feasible
+/// somewhere (e.g. a corner tighter than the tyres can take at any speed).
+QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
+                    const QssOptions& options);
+
+}  // namespace hotlap::sim

@@ -1,0 +1,226 @@
+#include "hotlap/sim/qss_profile.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "hotlap/common/error.h"
+#include "hotlap/common/units.h"
+#include "hotlap/vehicle/vehicle_model.h"
+
+namespace hotlap::sim {
+
+namespace {
+
+using vehicle::VehicleParams;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kCapacitySpeed = 50.0;  // m/s at which the tyre peaks are tabulated
+
+vehicle::RoadGeometry<double> Road(const RoadPoint& point) {
+  return {point.bank, point.grade, point.curvature * std::sin(point.bank)};
+}
+
+double PathCurvature(const RoadPoint& point) { return point.curvature * std::cos(point.bank); }
+
+}  // namespace
+
+QssVehicle::QssVehicle(const VehicleParams& p) : params(&p) {
+  const double max_load = 1.2 * p.Weight() + 20000.0;
+  for (Corner c : kAllCorners) {
+    const vehicle::CornerSetup& setup = p.corner(c);
+    capacity.emplace_back(setup, max_load, 48, kCapacitySpeed);
+    // Rolling resistance coefficient at a quarter of the weight, free rolling.
+    tyre::TyreOperatingPoint<double> op;
+    op.fz = 0.25 * p.Weight();
+    op.camber = setup.camber;
+    op.speed = kCapacitySpeed;
+    op.pressure = setup.pressure;
+    const double my = tyre::CalcTyreForces(setup.forces, op).my;
+    rolling_coefficient[CornerIndex(c)] = std::max(0.0, -my / (setup.rolling_radius * op.fz));
+  }
+}
+
+ForceDemand CalcForceDemand(const QssVehicle& car, const RoadPoint& point, double speed,
+                            double sum_fx, const std::array<double, 4>& grip) {
+  const VehicleParams& p = *car.params;
+  const double m = p.chassis.mass;
+  const double kappa_g = PathCurvature(point);
+  ForceDemand d;
+  d.sum_fy =
+      m * speed * speed * kappa_g - m * kGravity * std::sin(point.bank) * std::cos(point.grade);
+  const vehicle::ChassisMotion<double> motion{speed, 0.0, speed * kappa_g, 0.0};
+  d.fz = vehicle::CalcNormalLoads(p, motion, Road(point), sum_fx, d.sum_fy);
+
+  std::array<vehicle::TyrePeaks, 4> peaks;
+  for (Corner c : kAllCorners) {
+    const int i = CornerIndex(c);
+    peaks[i] = car.capacity[i].At(d.fz[i]);
+    for (double* v : {&peaks[i].drive, &peaks[i].brake, &peaks[i].left, &peaks[i].right}) {
+      *v *= grip[i];
+    }
+  }
+  const auto lateral_capacity = [&](int i) {
+    return d.sum_fy >= 0.0 ? peaks[i].left : peaks[i].right;
+  };
+  // Lateral: axles by yaw-moment balance, wheels by capacity.
+  const double L = p.chassis.wheelbase;
+  const std::array<std::pair<Corner, Corner>, 2> axles = {
+      std::pair{Corner::kFrontLeft, Corner::kFrontRight},
+      std::pair{Corner::kRearLeft, Corner::kRearRight}};
+  for (const auto& [left, right] : axles) {
+    const bool front = IsFront(left);
+    const double axle_fy = d.sum_fy * (front ? p.chassis.b() : p.chassis.a()) / L;
+    const int il = CornerIndex(left), ir = CornerIndex(right);
+    const double cl = lateral_capacity(il), cr = lateral_capacity(ir);
+    const double share = cl + cr > 0.0 ? cl / (cl + cr) : 0.5;
+    d.fy[il] = axle_fy * share;
+    d.fy[ir] = axle_fy * (1.0 - share);
+    // Longitudinal.
+    if (sum_fx >= 0.0) {
+      if (!front) {
+        const double dl = peaks[il].drive, dr = peaks[ir].drive;
+        const double s = dl + dr > 0.0 ? dl / (dl + dr) : 0.5;
+        d.fx[il] = sum_fx * s;
+        d.fx[ir] = sum_fx * (1.0 - s);
+      }
+    } else {
+      const double axle_fx = sum_fx * (front ? p.brakes.front_share : 1.0 - p.brakes.front_share);
+      d.fx[il] = d.fx[ir] = 0.5 * axle_fx;
+    }
+  }
+  d.max_utilization = 0.0;
+  for (Corner c : kAllCorners) {
+    const int i = CornerIndex(c);
+    double u = kInf;
+    if (d.fz[i] > 0.0) {
+      const double cx = d.fx[i] >= 0.0 ? peaks[i].drive : peaks[i].brake;
+      const double cy = d.fy[i] >= 0.0 ? peaks[i].left : peaks[i].right;
+      const double ux = d.fx[i] == 0.0 ? 0.0 : (cx > 0.0 ? d.fx[i] / cx : kInf);
+      const double uy = d.fy[i] == 0.0 ? 0.0 : (cy > 0.0 ? d.fy[i] / cy : kInf);
+      u = ux * ux + uy * uy;
+    }
+    d.utilization[i] = u;
+    d.max_utilization = std::max(d.max_utilization, u);
+  }
+  return d;
+}
+
+double CalcResistance(const QssVehicle& car, const RoadPoint& point, double speed) {
+  const VehicleParams& p = *car.params;
+  const vehicle::AeroLoads<double> aero = vehicle::CalcAeroLoads(p.aero, speed);
+  const double normal = p.chassis.mass * (kGravity * std::cos(point.bank) * std::cos(point.grade) +
+                                          speed * speed * point.curvature * std::sin(point.bank)) +
+                        aero.downforce_front + aero.downforce_rear;
+  double crr = 0.0;
+  for (double c : car.rolling_coefficient) crr += 0.25 * c;
+  return aero.drag + crr * normal + p.chassis.mass * kGravity * std::sin(point.grade);
+}
+
+double CalcCorneringLimit(const QssVehicle& car, const RoadPoint& point,
+                          const std::array<double, 4>& grip) {
+  const double power = car.params->powertrain.WheelPower();
+  const auto feasible = [&](double v) {
+    const double fx = CalcResistance(car, point, v);
+    if (fx * v > power) return false;
+    return CalcForceDemand(car, point, v, fx, grip).Feasible();
+  };
+  double lo = 0.5, hi = 150.0;
+  if (!feasible(lo)) return 0.0;
+  if (feasible(hi)) return hi;
+  while (hi - lo > 1e-3) {
+    const double mid = 0.5 * (lo + hi);
+    (feasible(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+double CalcMaxDriveForce(const QssVehicle& car, const RoadPoint& point, double speed,
+                         const std::array<double, 4>& grip, SpeedLimit* limit) {
+  const double power_force = car.params->powertrain.WheelPower() / std::max(speed, 1.0);
+  const auto feasible = [&](double fx) {
+    return CalcForceDemand(car, point, speed, fx, grip).Feasible();
+  };
+  *limit = SpeedLimit::kPower;
+  if (feasible(power_force)) return power_force;
+  *limit = SpeedLimit::kTraction;
+  if (!feasible(0.0)) return 0.0;
+  double lo = 0.0, hi = power_force;
+  while (hi - lo > 0.5) {
+    const double mid = 0.5 * (lo + hi);
+    (feasible(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+double CalcMaxBrakeForce(const QssVehicle& car, const RoadPoint& point, double speed,
+                         const std::array<double, 4>& grip) {
+  const auto feasible = [&](double brake) {
+    return CalcForceDemand(car, point, speed, -brake, grip).Feasible();
+  };
+  if (!feasible(0.0)) return 0.0;
+  double lo = 0.0, hi = 4.0 * car.params->Weight();
+  if (feasible(hi)) return hi;
+  while (hi - lo > 0.5) {
+    const double mid = 0.5 * (lo + hi);
+    (feasible(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> road,
+                              const std::array<std::vector<double>, 4>& grip) {
+  const size_t n = road.size();
+  const double ds = road[1].distance - road[0].distance;
+  const double m = car.params->chassis.mass;
+  const auto grip_at = [&](size_t i) {
+    return std::array<double, 4>{grip[0][i], grip[1][i], grip[2][i], grip[3][i]};
+  };
+  SpeedProfile out;
+  out.cornering_limit.resize(n);
+  out.limit.assign(n, SpeedLimit::kCornering);
+  for (size_t i = 0; i < n; ++i) {
+    out.cornering_limit[i] = CalcCorneringLimit(car, road[i], grip_at(i));
+    if (!(out.cornering_limit[i] > 0.0)) {
+      throw NumericalError(fmt::format(
+          "QSS lap: no speed is feasible at {:.1f} m (curvature {:.5f} 1/m, bank {:.1f} deg): "
+          "the tyres cannot hold the car there",
+          road[i].distance, road[i].curvature, RadToDeg(road[i].bank)));
+    }
+  }
+  // Start both passes at the slowest corner, where the speed is its cornering limit.
+  const size_t start =
+      static_cast<size_t>(std::min_element(out.cornering_limit.begin(), out.cornering_limit.end()) -
+                          out.cornering_limit.begin());
+  out.speed = out.cornering_limit;
+  // Forward: accelerate as hard as traction and power allow.
+  for (size_t k = 1; k <= n; ++k) {
+    const size_t prev = (start + k - 1) % n, i = (start + k) % n;
+    SpeedLimit why = SpeedLimit::kTraction;
+    const double v = out.speed[prev];
+    const double drive = CalcMaxDriveForce(car, road[prev], v, grip_at(prev), &why);
+    const double a = (drive - CalcResistance(car, road[prev], v)) / m;
+    const double reachable = std::sqrt(std::max(v * v + 2.0 * a * ds, 0.25));
+    if (reachable < out.speed[i]) {
+      out.speed[i] = reachable;
+      out.limit[i] = why;
+    }
+  }
+  // Backward: brake as late as the tyres allow.
+  for (size_t k = 1; k <= n; ++k) {
+    const size_t next = (start + n - k + 1) % n, i = (start + n - k) % n;
+    const double v = out.speed[next];
+    const double brake = CalcMaxBrakeForce(car, road[next], v, grip_at(next));
+    const double d = (brake + CalcResistance(car, road[next], v)) / m;
+    const double reachable = std::sqrt(std::max(v * v + 2.0 * d * ds, 0.25));
+    if (reachable < out.speed[i]) {
+      out.speed[i] = reachable;
+      out.limit[i] = SpeedLimit::kBraking;
+    }
+  }
+  return out;
+}
+
+}  // namespace hotlap::sim

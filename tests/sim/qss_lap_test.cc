@@ -1,0 +1,201 @@
+#include "hotlap/sim/qss_lap.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "hotlap/common/error.h"
+#include "hotlap/common/units.h"
+#include "hotlap/sim/qss_profile.h"
+#include "test_util.h"
+
+namespace hotlap::sim {
+namespace {
+
+const vehicle::Car& Gen7() {
+  static const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
+  return car;
+}
+
+QssOptions Options(int laps = 1) {
+  const vehicle::Car& car = Gen7();
+  QssOptions o;
+  o.laps = laps;
+  o.ambient_temp = CelsiusToKelvin(25.0);
+  o.track_temp = CelsiusToKelvin(40.0);
+  for (int k = 0; k < 4; ++k) {
+    o.initial.tyres[k] = {car.initial.tread_temp, car.initial.carcass_temp, 0.0};
+    o.initial.brakes[k] = {car.initial.disc_temp, car.initial.calliper_temp};
+  }
+  return o;
+}
+
+// A closed circle of radius `radius`, banked `bank_deg`, about 1 m spacing.
+std::vector<RoadPoint> Circle(double radius, double bank_deg) {
+  const int n = static_cast<int>(std::round(2.0 * kPi * radius));
+  const double ds = 2.0 * kPi * radius / n;
+  std::vector<RoadPoint> road(n);
+  for (int i = 0; i < n; ++i) road[i] = {i * ds, 1.0 / radius, DegToRad(bank_deg), 0.0};
+  return road;
+}
+
+// A simple oval: straights of `straight` m joined by two 180-degree arcs of radius `radius` with
+// linear-curvature transitions of `transition` m each side, banked 24 deg in the turns and 3 deg
+// on the straights (the banking ramps with the curvature).
+std::vector<RoadPoint> Oval(double straight, double radius, double transition) {
+  const double arc = (kPi - transition / radius) * radius;
+  const std::vector<double> lengths = {straight, transition, arc, transition,
+                                       straight, transition, arc, transition};
+  double total = 0.0;
+  for (double l : lengths) total += l;
+  const int n = static_cast<int>(std::round(total));
+  const double ds = total / n;
+  std::vector<RoadPoint> road(n);
+  for (int i = 0; i < n; ++i) {
+    double x = i * ds;
+    size_t seg = 0;
+    while (seg + 1 < lengths.size() && x >= lengths[seg]) x -= lengths[seg++];
+    double share = 0.0;  // of the turn's curvature
+    if (seg % 4 == 1) share = x / transition;
+    if (seg % 4 == 2) share = 1.0;
+    if (seg % 4 == 3) share = 1.0 - x / transition;
+    road[i] = {i * ds, share / radius, DegToRad(3.0 + 21.0 * share), 0.0};
+  }
+  return road;
+}
+
+double SumAt(const std::array<CornerChannels, 4>& c, std::vector<double> CornerChannels::*ch,
+             size_t i) {
+  double s = 0.0;
+  for (const CornerChannels& x : c) s += (x.*ch)[i];
+  return s;
+}
+
+// Flat circle: constant speed at the cornering limit; the tyres' lateral forces balance
+// m V^2 kappa (acceptance), the loads sum to m g + downforce, the lap time is 2 pi R / V.
+TEST(QssLapTest, FlatCircleBalancesCentripetalForce) {
+  const vehicle::Car& car = Gen7();
+  const auto road = Circle(150.0, 0.0);
+  QssOptions o = Options();
+  o.couple_first_lap = false;
+  const QssResult r = RunQssLap(car, road, o);
+  const QssLap& lap = r.laps.at(0);
+  const double m = car.vehicle->chassis.mass;
+  const double v = lap.speed[0];
+  EXPECT_EQ(lap.slip_points_not_reached, 0);
+  for (size_t i = 0; i < road.size(); i += 37) {
+    EXPECT_NEAR(lap.speed[i], v, 1e-9);
+    EXPECT_EQ(lap.limit[i], SpeedLimit::kCornering);
+    EXPECT_NEAR(SumAt(lap.corners, &CornerChannels::fy, i), m * v * v / 150.0, 5.0);
+    const double down =
+        0.5 * car.vehicle->aero.air_density * car.vehicle->aero.downforce_area * v * v;
+    EXPECT_NEAR(SumAt(lap.corners, &CornerChannels::fz, i), m * kGravity + down, 1e-6 * m);
+  }
+  EXPECT_NEAR(lap.lap_time, road.size() * (road[1].distance - road[0].distance) / v, 1e-9);
+  // At the limit: some tyre is at its ellipse (utilisation 1 within the bisection), and 1 m/s
+  // faster is infeasible.
+  const QssVehicle q(*car.vehicle);
+  std::array<double, 4> grip;
+  for (int k = 0; k < 4; ++k) {
+    grip[k] = car.tyre(kAllCorners[k]).compound->GripFactor(o.initial.tyres[k].tread_temp, 0.0);
+  }
+  const double drag = CalcResistance(q, road[0], v);
+  EXPECT_NEAR(CalcForceDemand(q, road[0], v, drag, grip).max_utilization, 1.0, 1e-3);
+  EXPECT_FALSE(
+      CalcForceDemand(q, road[0], v + 1.0, CalcResistance(q, road[0], v + 1.0), grip).Feasible());
+}
+
+// Banked circle: the tyres make exactly what banking does not (spec section 10), and banking
+// lets the car go faster than on the flat.
+TEST(QssLapTest, BankedCircleTyresMakeWhatBankingDoesNot) {
+  const vehicle::Car& car = Gen7();
+  QssOptions o = Options();
+  o.couple_first_lap = false;
+  const double bank = DegToRad(24.0), radius = 170.0;
+  const QssLap banked = RunQssLap(car, Circle(radius, 24.0), o).laps.at(0);
+  const QssLap flat = RunQssLap(car, Circle(radius, 0.0), o).laps.at(0);
+  const double m = car.vehicle->chassis.mass;
+  const double v = banked.speed[0];
+  const double needed = m * (v * v * std::cos(bank) / radius - kGravity * std::sin(bank));
+  EXPECT_NEAR(SumAt(banked.corners, &CornerChannels::fy, 10), needed, 5.0);
+  EXPECT_GT(v, flat.speed[0] + 5.0);
+}
+
+// An oval: braking zones before each turn, traction or power limited on the way out, the right
+// side loaded, a closed lap whose times add up.
+TEST(QssLapTest, OvalHasBrakingZonesAtTurnEntries) {
+  const vehicle::Car& car = Gen7();
+  const auto road = Oval(400.0, 170.0, 150.0);
+  const QssLap lap = RunQssLap(car, road, Options()).laps.at(0);
+  const size_t n = road.size();
+  // Entry of turn 1 at 400 m, of turn 3 half a lap later.
+  const double half = 0.5 * road.size() * (road[1].distance - road[0].distance);
+  for (double entry : {400.0, 400.0 + half}) {
+    bool braking_before = false;
+    for (size_t i = 0; i < n; ++i) {
+      const double d = road[i].distance;
+      if (d > entry - 300.0 && d < entry + 100.0 && lap.limit[i] == SpeedLimit::kBraking) {
+        braking_before = true;
+      }
+    }
+    EXPECT_TRUE(braking_before) << entry;
+  }
+  const auto [vmin, vmax] = std::minmax_element(lap.speed.begin(), lap.speed.end());
+  EXPECT_GT(*vmax - *vmin, 3.0);
+  // Right side carries more load in the turns.
+  const size_t apex = static_cast<size_t>(
+      std::round((400.0 + 150.0 + 100.0) / (road[1].distance - road[0].distance)));
+  EXPECT_GT(lap.corners[1].fz[apex], 1.5 * lap.corners[0].fz[apex]);
+  EXPECT_GT(lap.corners[3].fz[apex], 1.3 * lap.corners[2].fz[apex]);
+  // Time is the integral of ds / V.
+  double t = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    t +=
+        (road[1].distance - road[0].distance) * 0.5 * (1.0 / lap.speed[i] + 1.0 / lap.speed[i + 1]);
+  }
+  EXPECT_NEAR(lap.lap_time, t, 1e-3 * t);
+  EXPECT_LE(lap.slip_points_not_reached, static_cast<int>(n / 100));
+  // Braking heats the front discs above where they started.
+  const auto& disc = lap.thermal.corners[0].disc_temp;
+  EXPECT_GT(*std::max_element(disc.begin(), disc.end()), Options().initial.brakes[0].disc_temp);
+}
+
+// A stint carries the thermal state from lap to lap and wear accumulates.
+TEST(QssLapTest, StintCarriesTheThermalStateOver) {
+  const vehicle::Car& car = Gen7();
+  const auto road = Oval(400.0, 170.0, 150.0);
+  const QssResult r = RunQssLap(car, road, Options(3));
+  ASSERT_EQ(r.laps.size(), 3u);
+  for (int lap = 1; lap < 3; ++lap) {
+    for (int k = 0; k < 4; ++k) {
+      const CornerHistory& before = r.laps[lap - 1].thermal.corners[k];
+      const CornerHistory& after = r.laps[lap].thermal.corners[k];
+      EXPECT_DOUBLE_EQ(after.tread_temp.front(), before.tread_temp.back());
+      EXPECT_DOUBLE_EQ(after.disc_temp.front(), before.disc_temp.back());
+      EXPECT_DOUBLE_EQ(after.wear.front(), before.wear.back());
+      EXPECT_GT(after.wear.back(), before.wear.back());
+    }
+  }
+}
+
+TEST(QssLapTest, BadInputIsRejected) {
+  const vehicle::Car& car = Gen7();
+  std::vector<RoadPoint> few(10);
+  for (int i = 0; i < 10; ++i) few[i].distance = i;
+  EXPECT_THROW(RunQssLap(car, few, Options()), InputError);
+  auto uneven = Circle(100.0, 0.0);
+  uneven[5].distance += 0.3;
+  EXPECT_THROW(RunQssLap(car, uneven, Options()), InputError);
+  auto bad = Circle(100.0, 0.0);
+  bad[7].curvature = std::nan("");
+  EXPECT_THROW(RunQssLap(car, bad, Options()), InputError);
+  EXPECT_THROW(RunQssLap(car, Circle(100.0, 0.0), Options(0)), InputError);
+  auto thermal_only = car;
+  thermal_only.vehicle.reset();
+  EXPECT_THROW(RunQssLap(thermal_only, Circle(100.0, 0.0), Options()), InputError);
+}
+
+}  // namespace
+}  // namespace hotlap::sim
