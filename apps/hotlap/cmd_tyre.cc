@@ -253,7 +253,9 @@ struct FitArgs {
 };
 
 nlohmann::json MetricsJson(const ident::UniTireTempMetrics& m) {
-  nlohmann::json j = {{"temp_C", RoundSignificant(KelvinToCelsius(m.temp), 6)},
+  // Round to 1e-9 degC first so that 0 degC is written as 0, not -1.7e-13.
+  const double temp_C = std::round(KelvinToCelsius(m.temp) * 1e9) / 1e9;
+  nlohmann::json j = {{"temp_C", RoundSignificant(temp_C + 0.0, 6)},
                       {"samples", m.samples},
                       {"fy_rms_N", RoundSignificant(m.fy_rms_N)},
                       {"fy_peak_N", RoundSignificant(m.fy_peak_N)},
@@ -304,14 +306,20 @@ int RunFitUniTire(const FitArgs& a) {
       fmt::format(
           "UniTire parameters fitted by hotlap {} tyre fit to {}\nfit temperatures: {} degC",
           HOTLAP_VERSION, a.data, fmt::join(a.fit_temps_C, ", ")),
-      fmt::format("fitted to {}", std::filesystem::path(a.data).filename().string()));
+      "", [&](std::string_view name) {
+        const std::string data = std::filesystem::path(a.data).filename().string();
+        const bool fitted = std::find(fit.fitted_fields.begin(), fit.fitted_fields.end(), name) !=
+                            fit.fitted_fields.end();
+        return fitted ? fmt::format("fitted to {}", data)
+                      : fmt::format("held (not fitted): initial guess from {}", data);
+      });
 
   nlohmann::json fitted = nlohmann::json::array();
   nlohmann::json predicted = nlohmann::json::array();
   fmt::print("{:>8} {:>8} {:>8} {:>11} {:>11} {:>11} {:>11}\n", "temp C", "role", "samples",
              "Fy rms N", "Fy peak N", "rms/peak", "Mz rms N m");
   for (const ident::UniTireTempMetrics& m : fit.metrics) {
-    const double temp_C = KelvinToCelsius(m.temp);
+    const double temp_C = std::round(KelvinToCelsius(m.temp) * 1e9) / 1e9 + 0.0;
     const bool is_predict =
         std::any_of(a.predict_temps_C.begin(), a.predict_temps_C.end(),
                     [&](double t) { return std::abs(t - temp_C) <= a.temp_tolerance_K; });

@@ -125,8 +125,11 @@ TEST_F(TyreCommandTest, FitPredictsHeldOutTemperatures) {
   }
   EXPECT_NEAR(j["predict"][0]["temp_C"].get<double>(), 18.0, 0.5);
   EXPECT_NEAR(j["predict"][1]["temp_C"].get<double>(), 53.0, 0.5);
-  // The written file loads as a UniTire model.
+  // The written file loads as a UniTire model, and says which values were fitted and which held.
   EXPECT_EQ(tyre::LoadTyreForceModel(out).kind(), "unitire");
+  const std::string text = test::ReadTextFile(out);
+  EXPECT_TRUE(test::Contains(text, "nominal_load_N: 4000  # held (not fitted)"));
+  EXPECT_TRUE(test::Contains(text, "  # fitted to rig.csv\ncornering_stiffness_load_quad"));
 }
 
 // Magic Formula fit from rig data of a known .tir with 1% noise: writes a .tir that loads and

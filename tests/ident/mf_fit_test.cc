@@ -152,6 +152,34 @@ TEST(MagicFormulaFitTest, FittedFileReadsBackToTheSameForces) {
   EXPECT_NE(test::ReadTextFile(path).find("! fitted in a test"), std::string::npos);
 }
 
+// With a base file, what the fit does not free is kept exactly as the base has it (camber terms
+// for zero-camber data, PKY4 with one load, the aligning moment), and the curves still fit.
+TEST(MagicFormulaFitTest, BaseCoefficientsTheFitDoesNotFreeAreKept) {
+  const MagicFormulaParams<double> truth = Truth();
+  const std::vector<double> loads = {truth.FNOMIN};
+  const std::vector<double> cambers = {0.0};
+  const auto samples =
+      SynthesizeMagicFormulaRigData(truth, loads, cambers, Degrees(Range(-12, 12, 1)),
+                                    Range(-0.2, 0.2, 0.02), 10.0, CelsiusToKelvin(40), 0.005, 2);
+  MagicFormulaParams<double> base = tyre::LoadMagicFormula(test::Gen7Dir() / "tyres/left.tir");
+  base.FNOMIN = truth.FNOMIN;
+  MagicFormulaFitOptions options;
+  options.base = base;
+  const MagicFormulaFitResult fit = FitMagicFormula(samples, options);
+  for (const char* name : {"PKY6", "PVY3", "PKY4", "PKY2", "PEY2", "PDX3"}) {
+    EXPECT_EQ(std::find(fit.fitted_coefficients.begin(), fit.fitted_coefficients.end(), name),
+              fit.fitted_coefficients.end())
+        << name;
+  }
+  EXPECT_EQ(fit.params.PKY6, base.PKY6);
+  EXPECT_EQ(fit.params.PVY3, base.PVY3);
+  EXPECT_EQ(fit.params.PKY4, base.PKY4);
+  EXPECT_EQ(fit.params.PKY2, base.PKY2);
+  EXPECT_EQ(fit.params.QDZ1, base.QDZ1);
+  EXPECT_EQ(fit.params.UNLOADED_RADIUS, base.UNLOADED_RADIUS);
+  for (const MagicFormulaFitMetrics& m : fit.metrics) EXPECT_LT(m.rms_rel_peak, 0.01) << m.channel;
+}
+
 TEST(MagicFormulaFitTest, WarnsAboutTemperaturesAndCombinedSamples) {
   const MagicFormulaParams<double> truth = Truth();
   const std::vector<double> loads = {truth.FNOMIN};

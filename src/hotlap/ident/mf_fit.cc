@@ -193,7 +193,14 @@ double Median(std::vector<double> v) {
 
 // Starting lateral coefficients from the curves: friction line in dfz, cornering stiffness law
 // K = PKY1 Fz0 sin(2 atan(Fz / (PKY2 Fz0))), i.e. Fz/K linear in Fz^2.
-void GuessLateral(const std::vector<CurveEstimate>& curves, MagicFormulaParams<double>& p) {
+// Where the non-estimated coefficients start.
+enum class Start {
+  kGeneric,   // shape 1.3 / 1.65, curvatures, shifts and camber terms 0, PKY4 = 2
+  kFromBase,  // as the base file has them: only friction and stiffness come from the data
+};
+
+void GuessLateral(const std::vector<CurveEstimate>& curves, Start start,
+                  MagicFormulaParams<double>& p) {
   if (curves.empty()) return;
   const double fz0 = p.FNOMIN * p.LFZO;
   std::vector<double> dfz, mu, fz2, fz_over_k;
@@ -207,22 +214,24 @@ void GuessLateral(const std::vector<CurveEstimate>& curves, MagicFormulaParams<d
   p.PDY1 = std::clamp(mu0, 0.2, 3.5);
   p.PDY2 = curves.size() >= 2 ? std::clamp(mu1 / 1.0, -0.9, 0.9) : p.PDY2;
   const double sign = curves.front().slope < 0.0 ? -1.0 : 1.0;  // ISO-W: negative
-  p.PKY4 = 2.0;
+  if (start == Start::kGeneric) p.PKY4 = 2.0;
   const auto [a, b] = LineFit(fz2, fz_over_k);
-  if (curves.size() >= 2 && a > 0.0 && b > 0.0) {
+  if (start == Start::kGeneric && curves.size() >= 2 && a > 0.0 && b > 0.0) {
     const double pky1 = 1.0 / (2.0 * fz0 * std::sqrt(a * b));
     p.PKY1 = sign * std::clamp(pky1, 1.0, 250.0);
     p.PKY2 = std::clamp(2.0 * pky1 * a, 0.1, 9.0);
   } else {
-    // One load (or a stiffness still rising linearly): keep PKY2, scale PKY1 to the slope.
+    // One load, a stiffness still rising linearly, or a base's load law: keep PKY2 and PKY4,
+    // scale PKY1 to the slopes.
     double k = 0.0, shape = 0.0;
     for (const CurveEstimate& c : curves) {
       const double x = c.fz / (std::max(p.PKY2, 0.1) * fz0);
       k += std::abs(c.slope);
-      shape += fz0 * std::sin(2.0 * std::atan(x));
+      shape += fz0 * std::sin(p.PKY4 * std::atan(x));
     }
-    p.PKY1 = sign * std::clamp(k / shape, 1.0, 250.0);
+    if (shape > 0.0) p.PKY1 = sign * std::clamp(k / shape, 1.0, 250.0);
   }
+  if (start == Start::kFromBase) return;
   p.PCY1 = 1.3;
   p.PEY1 = 0.0;
   p.PEY2 = 0.0;
@@ -234,7 +243,8 @@ void GuessLateral(const std::vector<CurveEstimate>& curves, MagicFormulaParams<d
 }
 
 // Starting longitudinal coefficients: friction line in dfz, K/Fz = PKX1 + PKX2 dfz.
-void GuessLongitudinal(const std::vector<CurveEstimate>& curves, MagicFormulaParams<double>& p) {
+void GuessLongitudinal(const std::vector<CurveEstimate>& curves, Start start,
+                       MagicFormulaParams<double>& p) {
   if (curves.empty()) return;
   const double fz0 = p.FNOMIN * p.LFZO;
   std::vector<double> dfz, mu, k;
@@ -249,6 +259,7 @@ void GuessLongitudinal(const std::vector<CurveEstimate>& curves, MagicFormulaPar
   p.PDX2 = curves.size() >= 2 ? std::clamp(mu1, -0.9, 0.9) : p.PDX2;
   p.PKX1 = std::clamp(k0, 1.0, 250.0);
   p.PKX2 = curves.size() >= 2 ? std::clamp(k1, -9.0, 9.0) : p.PKX2;
+  if (start == Start::kFromBase) return;
   p.PKX3 = 0.0;
   p.PCX1 = 1.65;
   for (double* c :
@@ -338,7 +349,12 @@ ChannelFit FitChannel(const std::vector<const RigSample*>& samples, Channel chan
   ChannelFit out;
   double best_cost = std::numeric_limits<double>::infinity();
   std::vector<double> best;
+  // The starting curvature as given (the base's, or 0 for a generic start), then others.
+  std::vector<double> starts = {Field(params, curvature)};
   for (double e : {0.0, -1.0, 0.5, -3.0}) {
+    if (std::find(starts.begin(), starts.end(), e) == starts.end()) starts.push_back(e);
+  }
+  for (double e : starts) {
     std::vector<double> x = x0;
     for (int i = 0; i < n; ++i) {
       if (free[i].coef == curvature) x[i] = e;
@@ -451,6 +467,7 @@ MagicFormulaFitResult FitMagicFormula(std::span<const RigSample> samples,
   }
 
   MagicFormulaParams<double> p;
+  const Start start = options.base ? Start::kFromBase : Start::kGeneric;
   if (options.base) {
     p = *options.base;
   } else {
@@ -478,9 +495,9 @@ MagicFormulaFitResult FitMagicFormula(std::span<const RigSample> samples,
     }
     const std::vector<CurveEstimate> curves = EstimateCurves(chosen, channel);
     if (channel == Channel::kLateral) {
-      GuessLateral(curves, p);
+      GuessLateral(curves, start, p);
     } else {
-      GuessLongitudinal(curves, p);
+      GuessLongitudinal(curves, start, p);
     }
     bool camber = false, negative = false, positive = false;
     for (const RigSample* s : chosen) {
@@ -500,8 +517,8 @@ MagicFormulaFitResult FitMagicFormula(std::span<const RigSample> samples,
   // The initial guess is the base with both channels' data estimates (recorded before fitting).
   {
     MagicFormulaParams<double> guess = p;
-    GuessLateral(EstimateCurves(lateral, Channel::kLateral), guess);
-    GuessLongitudinal(EstimateCurves(longitudinal, Channel::kLongitudinal), guess);
+    GuessLateral(EstimateCurves(lateral, Channel::kLateral), start, guess);
+    GuessLongitudinal(EstimateCurves(longitudinal, Channel::kLongitudinal), start, guess);
     result.initial_guess = guess;
   }
   fit_channel(lateral, Channel::kLateral);

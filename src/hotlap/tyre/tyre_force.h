@@ -9,8 +9,11 @@
 /// - `slip_ratio` kappa = (r_e omega - V_x) / |V_x|: positive drives, negative brakes.
 /// - `slip_angle` alpha = atan(V_y / |V_x|) of the contact point: a positive slip angle (the
 ///   wheel moving to its left) gives a negative (rightward) Fy.
-/// - `camber` is the inclination angle about x: positive when the top of the wheel leans to the
-///   left (y). On a car, negative camber is -gamma on the left side and +gamma on the right.
+/// - `camber` is the inclination angle, a right-handed rotation about x: positive when the top of
+///   the wheel leans to the right (-y); the camber thrust then pushes to the right (Fy < 0 for the
+///   usual PKY6 < 0; mfeval's oracle: gamma = +3 deg at alpha = 0 gives Fy = -429 N). On a car,
+///   tops leaning inboard ("negative camber") is gamma > 0 on the left wheels and gamma < 0 on the
+///   right; an oval set-up leaning every top into the left turns has gamma < 0 on all four.
 /// - Fz > 0 is the load pressing the tyre onto the road; forces are those of the road on the
 ///   tyre; Mx, My, Mz are about x, y, z at the contact point (My < 0 resists forward rolling).
 

@@ -43,7 +43,7 @@ using TyreForceParams = std::variant<MagicFormulaModel<T>, BrushParams<T>, UniTi
 /// A tyre force model as loaded from one file.
 template <Scalar T>
 struct TyreForceModel {
-  std::string name;            ///< the file's name (`name:` or the .tir FILE_TYPE/file name)
+  std::string name;            ///< the file's name (YAML `name:`; a .tir's file name without extension)
   std::filesystem::path path;  ///< where it was loaded from
   TyreForceParams<T> params;
 

@@ -1,5 +1,7 @@
 #include "hotlap/tyre/tyre_force_params_io.h"
 
+#include <functional>
+
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -39,35 +41,36 @@ struct UniTireKey {
   const char* key;
   double UniTireParams<double>::*field;
   Range range;
+  const char* name;  // the field's name in kUniTireFieldNames
 };
 
 const std::vector<UniTireKey>& UniTireKeys() {
   using P = UniTireParams<double>;
   static const std::vector<UniTireKey> keys = {
-      {"nominal_load_N", &P::nominal_load, Range::Positive("N")},
+      {"nominal_load_N", &P::nominal_load, Range::Positive("N"), "nominal_load"},
       {"cornering_stiffness_per_load_1_per_rad", &P::cornering_stiffness_per_load,
-       Range::Positive("1/rad")},
+       Range::Positive("1/rad"), "cornering_stiffness_per_load"},
       {"cornering_stiffness_load_quad", &P::cornering_stiffness_load_quad,
-       Range::Closed(-10.0, 10.0, "")},
+       Range::Closed(-10.0, 10.0, ""), "cornering_stiffness_load_quad"},
       {"cornering_stiffness_load_lin", &P::cornering_stiffness_load_lin,
-       Range::Closed(-10.0, 10.0, "")},
-      {"cornering_stiffness_camber", &P::cornering_stiffness_camber, Range::Closed(0.0, 100.0, "")},
-      {"slip_stiffness_per_load", &P::slip_stiffness_per_load, Range::Positive("")},
-      {"slip_stiffness_load_quad", &P::slip_stiffness_load_quad, Range::Closed(-10.0, 10.0, "")},
-      {"slip_stiffness_load_lin", &P::slip_stiffness_load_lin, Range::Closed(-10.0, 10.0, "")},
-      {"friction_x", &P::friction_x, Range::OpenClosed(0.0, 5.0, "")},
-      {"friction_y", &P::friction_y, Range::OpenClosed(0.0, 5.0, "")},
-      {"friction_load_decay", &P::friction_load_decay, Range::Closed(-5.0, 5.0, "")},
-      {"friction_sliding_ratio", &P::friction_sliding_ratio, Range::OpenClosed(0.0, 1.0, "")},
-      {"friction_peak_speed_m_per_s", &P::friction_peak_speed, Range::Positive("m/s")},
-      {"friction_speed_shape", &P::friction_speed_shape, Range::Closed(0.0, 100.0, "")},
-      {"curvature_x", &P::curvature_x, Range::Closed(-10.0, 10.0, "")},
-      {"curvature_y", &P::curvature_y, Range::Closed(-10.0, 10.0, "")},
-      {"trail_m", &P::trail, Range::Closed(0.0, 1.0, "m")},
-      {"trail_load_exponent", &P::trail_load_exponent, Range::Closed(0.0, 3.0, "")},
-      {"trail_offset_m", &P::trail_offset, Range::Closed(-1.0, 1.0, "m")},
-      {"trail_decay_lin", &P::trail_decay_lin, Range::Closed(0.0, 100.0, "")},
-      {"trail_decay_quad", &P::trail_decay_quad, Range::Closed(0.0, 100.0, "")},
+       Range::Closed(-10.0, 10.0, ""), "cornering_stiffness_load_lin"},
+      {"cornering_stiffness_camber", &P::cornering_stiffness_camber, Range::Closed(0.0, 100.0, ""), "cornering_stiffness_camber"},
+      {"slip_stiffness_per_load", &P::slip_stiffness_per_load, Range::Positive(""), "slip_stiffness_per_load"},
+      {"slip_stiffness_load_quad", &P::slip_stiffness_load_quad, Range::Closed(-10.0, 10.0, ""), "slip_stiffness_load_quad"},
+      {"slip_stiffness_load_lin", &P::slip_stiffness_load_lin, Range::Closed(-10.0, 10.0, ""), "slip_stiffness_load_lin"},
+      {"friction_x", &P::friction_x, Range::OpenClosed(0.0, 5.0, ""), "friction_x"},
+      {"friction_y", &P::friction_y, Range::OpenClosed(0.0, 5.0, ""), "friction_y"},
+      {"friction_load_decay", &P::friction_load_decay, Range::Closed(-5.0, 5.0, ""), "friction_load_decay"},
+      {"friction_sliding_ratio", &P::friction_sliding_ratio, Range::OpenClosed(0.0, 1.0, ""), "friction_sliding_ratio"},
+      {"friction_peak_speed_m_per_s", &P::friction_peak_speed, Range::Positive("m/s"), "friction_peak_speed"},
+      {"friction_speed_shape", &P::friction_speed_shape, Range::Closed(0.0, 100.0, ""), "friction_speed_shape"},
+      {"curvature_x", &P::curvature_x, Range::Closed(-10.0, 10.0, ""), "curvature_x"},
+      {"curvature_y", &P::curvature_y, Range::Closed(-10.0, 10.0, ""), "curvature_y"},
+      {"trail_m", &P::trail, Range::Closed(0.0, 1.0, "m"), "trail"},
+      {"trail_load_exponent", &P::trail_load_exponent, Range::Closed(0.0, 3.0, ""), "trail_load_exponent"},
+      {"trail_offset_m", &P::trail_offset, Range::Closed(-1.0, 1.0, "m"), "trail_offset"},
+      {"trail_decay_lin", &P::trail_decay_lin, Range::Closed(0.0, 100.0, ""), "trail_decay_lin"},
+      {"trail_decay_quad", &P::trail_decay_quad, Range::Closed(0.0, 100.0, ""), "trail_decay_quad"},
   };
   return keys;
 }
@@ -140,7 +143,11 @@ UniTireParamsFile LoadUniTireParams(const std::filesystem::path& path) {
 }
 
 void WriteUniTireParams(const std::filesystem::path& path, const UniTireParamsFile& file,
-                        std::string_view header_comment, std::string_view value_source) {
+                        std::string_view header_comment, std::string_view value_source,
+                        const std::function<std::string(std::string_view)>& source_of) {
+  const auto source = [&](std::string_view name) {
+    return source_of ? source_of(name) : std::string(value_source);
+  };
   const UniTireParams<double>& p = file.params;
   auto check = [&](std::string_view key, double value, const Range& range) {
     if (!range.Contains(value)) {
@@ -160,7 +167,7 @@ void WriteUniTireParams(const std::filesystem::path& path, const UniTireParamsFi
   text << "model: unitire\n";
   for (const UniTireKey& k : UniTireKeys()) {
     check(k.key, p.*k.field, k.range);
-    text << fmt::format("{}: {}  # {}\n", k.key, p.*k.field, value_source);
+    text << fmt::format("{}: {}  # {}\n", k.key, p.*k.field, source(k.name));
   }
   for (const UniTireFactorKey& k : kUniTireFactorKeys) {
     const TemperatureFactor<double>& f = p.*k.field;
@@ -169,9 +176,11 @@ void WriteUniTireParams(const std::filesystem::path& path, const UniTireParamsFi
     check(fmt::format("{}.decay_per_K", k.key), f.decay, kDecay);
     check(fmt::format("{}.reference_temp_C", k.key), temp_c, kTempC);
     text << k.key << ":  # f(T) = scale exp(-decay (T - T_ref))\n";
-    text << fmt::format("  scale: {}  # {}\n", f.scale, value_source);
-    text << fmt::format("  decay_per_K: {}  # {}\n", f.decay, value_source);
-    text << fmt::format("  reference_temp_C: {}  # {}\n", temp_c, value_source);
+    const std::string stem(k.key);
+    text << fmt::format("  scale: {}  # {}\n", f.scale, source(stem + ".scale"));
+    text << fmt::format("  decay_per_K: {}  # {}\n", f.decay, source(stem + ".decay"));
+    text << fmt::format("  reference_temp_C: {}  # {}\n", temp_c,
+                        source(stem + ".reference_temp"));
   }
   const std::string content = text.str();
   WriteFileAtomically(path, [&](std::ostream& out) { out << content; });
