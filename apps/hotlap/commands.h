@@ -16,5 +16,6 @@ CommandRunner RegisterReplayCommand(CLI::App& app);
 
 /// `hotlap tyre eval|fit`: tyre force models at a point or over a sweep, and fitted to rig data.
 CommandRunner RegisterTyreCommand(CLI::App& app);
+CommandRunner RegisterTrackCommand(CLI::App& app);  ///< `hotlap track info` (cmd_track.cc)
 
 }  // namespace hotlap::app

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   };
   add(&hotlap::app::RegisterReplayCommand);
   add(&hotlap::app::RegisterTyreCommand);
+  add(&hotlap::app::RegisterTrackCommand);
 
   try {
     app.parse(argc, argv);

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -50,6 +51,33 @@ fs::path ResolveCarFile(std::string_view name_or_path) {
   throw InputError(
       "no car '" + std::string(name_or_path) +
       "': not a car.yaml file, and not a built-in car (built-in: " + QuotedList(names) + ")");
+}
+
+fs::path ResolveTrackFile(std::string_view name_or_path) {
+  std::error_code ec;
+  const fs::path given(name_or_path);
+  if (fs::is_regular_file(given, ec)) return given;
+  const fs::path tracks = DataDir() / "tracks";
+  const std::vector<std::string> extensions = {".yaml", ".yml", ".csv", ".xml"};
+  if (given.is_relative() && !given.has_parent_path() && !name_or_path.empty()) {
+    for (const std::string& ext : extensions) {
+      const fs::path builtin = tracks / (std::string(name_or_path) + ext);
+      if (fs::is_regular_file(builtin, ec)) return builtin;
+    }
+  }
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(tracks, ec)) {
+    const std::string ext = entry.path().extension().string();
+    if (entry.is_regular_file(ec) &&
+        std::find(extensions.begin(), extensions.end(), ext) != extensions.end()) {
+      names.push_back(entry.path().stem().string());
+    }
+  }
+  std::sort(names.begin(), names.end());
+  throw InputError("no track '" + std::string(name_or_path) +
+                   "': not a track file (.yaml, .yml, .csv or .xml), and not a built-in track "
+                   "(built-in: " +
+                   QuotedList(names) + ")");
 }
 
 }  // namespace hotlap

@@ -15,4 +15,10 @@ std::filesystem::path DataDir();
 /// car.yaml (or to a folder holding one). InputError listing the built-in cars if neither exists.
 std::filesystem::path ResolveCarFile(std::string_view name_or_path);
 
+/// A track given as a built-in name ("darlington" -> DataDir()/tracks/darlington.yaml; a built-in
+/// is any DataDir()/tracks/NAME.yaml, NAME.yml, NAME.csv or NAME.xml) or a path to an existing
+/// file (the track loader checks its extension). InputError listing the built-in tracks if
+/// neither exists.
+std::filesystem::path ResolveTrackFile(std::string_view name_or_path);
+
 }  // namespace hotlap
