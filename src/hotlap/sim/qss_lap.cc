@@ -75,7 +75,8 @@ QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, const Spe
   lap.steer.resize(n + 1);
   lap.limit.resize(n + 1);
   for (auto& ch : lap.corners) {
-    for (auto* v : {&ch.speed, &ch.fx, &ch.fy, &ch.fz, &ch.slip_angle, &ch.slip_ratio}) {
+    for (auto* v :
+         {&ch.speed, &ch.fx, &ch.fy, &ch.fz, &ch.slip_angle, &ch.slip_ratio, &ch.brake_fx}) {
       v->resize(n + 1);
     }
   }
@@ -152,6 +153,14 @@ QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, const Spe
       ch.fz[i] = demand.fz[k];
       ch.slip_angle[i] = slips[k].slip_angle;
       ch.slip_ratio[i] = slips[k].slip_ratio;
+      // Brakes: each front wheel has its own; the rear wheels share one axle torque on the spool,
+      // so each rear disc takes half the axle's braking (the tyres' split is the spool's).
+      if (IsFront(c)) {
+        ch.brake_fx[i] = std::min(demand.fx[k], 0.0);
+      } else {
+        const int l = CornerIndex(Corner::kRearLeft), r = CornerIndex(Corner::kRearRight);
+        ch.brake_fx[i] = std::min(0.5 * (demand.fx[l] + demand.fx[r]), 0.0);
+      }
       lap.tread_temp_used[k][i] = tread_temp[k][i];
     }
     time += 2.0 * ds / (v + v_next);
@@ -167,7 +176,8 @@ QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, const Spe
   lap.limit[n] = lap.limit[0];
   for (int k = 0; k < 4; ++k) {
     CornerChannels& ch = lap.corners[k];
-    for (auto* v : {&ch.speed, &ch.fx, &ch.fy, &ch.fz, &ch.slip_angle, &ch.slip_ratio}) {
+    for (auto* v :
+         {&ch.speed, &ch.fx, &ch.fy, &ch.fz, &ch.slip_angle, &ch.slip_ratio, &ch.brake_fx}) {
       (*v)[n] = (*v)[0];
     }
     lap.tread_temp_used[k][n] = lap.tread_temp_used[k][0];

@@ -105,13 +105,19 @@ ReplayResult RunReplay(const vehicle::Car& car, const ReplayInputs& in,
             for (int i = 0; i < 7; ++i) h.heat_flows[i][k] = flows[i];
           }
         });
-    IntegrateBrake<double>(brake_file.params, samples, initial.brakes[CornerIndex(c)],
+    CornerSamples brake_samples = samples;
+    if (!ch.brake_fx.empty()) {
+      CheckLength(ch.brake_fx, n, "brake_fx_" + std::string(CornerName(c)));
+      brake_samples.fx = ch.brake_fx;
+    }
+    IntegrateBrake<double>(brake_file.params, brake_samples, initial.brakes[CornerIndex(c)],
                            options.max_step_s, [&](size_t k, const brake::BrakeState<double>& x) {
                              CheckTemperature(x.disc_temp, "disc", c, in.time[k]);
                              CheckTemperature(x.calliper_temp, "calliper", c, in.time[k]);
                              h.disc_temp[k] = x.disc_temp;
                              h.calliper_temp[k] = x.calliper_temp;
-                             h.brake_power[k] = brake::CalcBrakePower(ch.speed[k], ch.fx[k]);
+                             h.brake_power[k] =
+                                 brake::CalcBrakePower(ch.speed[k], brake_samples.fx[k]);
                            });
   }
   return result;

@@ -22,6 +22,10 @@ struct CornerChannels {
   std::vector<double> fx, fy, fz;  ///< N
   std::vector<double> slip_angle;  ///< rad
   std::vector<double> slip_ratio;  ///< 1
+  /// Braking force of this corner's brake, N, signed as fx (< 0 braking), when it differs from
+  /// the tyre's fx: e.g. two wheels on a locked axle share one brake torque while their tyres'
+  /// forces differ. Empty: the brake sees fx, as in a log.
+  std::vector<double> brake_fx;
 };
 
 /// Everything a replay needs from a log, gaps already filled, SI (K for temperatures).
