@@ -16,6 +16,9 @@ CommandRunner RegisterReplayCommand(CLI::App& app);
 
 /// `hotlap tyre eval|fit`: tyre force models at a point or over a sweep, and fitted to rig data.
 CommandRunner RegisterTyreCommand(CLI::App& app);
-CommandRunner RegisterTrackCommand(CLI::App& app);  ///< `hotlap track info` (cmd_track.cc)
+CommandRunner RegisterTrackCommand(CLI::App& app);
+
+/// `hotlap lap`: the car round a track by the quasi-steady-state method, thermal models included.
+CommandRunner RegisterLapCommand(CLI::App& app);  ///< `hotlap track info` (cmd_track.cc)
 
 }  // namespace hotlap::app

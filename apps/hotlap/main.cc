@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   add(&hotlap::app::RegisterReplayCommand);
   add(&hotlap::app::RegisterTyreCommand);
   add(&hotlap::app::RegisterTrackCommand);
+  add(&hotlap::app::RegisterLapCommand);
 
   try {
     app.parse(argc, argv);

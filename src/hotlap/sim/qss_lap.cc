@@ -185,6 +185,44 @@ QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, const Spe
   return lap;
 }
 
+// The lap resampled at about `step` m (at least as coarse as the road, at least 16 points),
+// curvature, bank and grade interpolated linearly round the closed lap.
+std::vector<RoadPoint> Coarsen(std::span<const RoadPoint> road, double step) {
+  const size_t n = road.size();
+  const double ds = road[1].distance - road[0].distance, length = n * ds;
+  const size_t m =
+      std::max<size_t>(16, std::min(n, static_cast<size_t>(std::round(length / step))));
+  std::vector<RoadPoint> out(m);
+  for (size_t j = 0; j < m; ++j) {
+    const double s = length * static_cast<double>(j) / static_cast<double>(m);
+    const double x = s / ds;
+    const size_t i = std::min(static_cast<size_t>(x), n - 1);
+    const double w = x - static_cast<double>(i);
+    const RoadPoint& a = road[i];
+    const RoadPoint& b = road[(i + 1) % n];
+    out[j] = {road[0].distance + s, a.curvature + w * (b.curvature - a.curvature),
+              a.bank + w * (b.bank - a.bank), a.grade + w * (b.grade - a.grade)};
+  }
+  return out;
+}
+
+// Values at the points of `from` interpolated linearly (periodic) onto the points of `to`; both
+// roads cover the same closed lap from the same start.
+std::vector<double> InterpolatePeriodic(std::span<const RoadPoint> from,
+                                        const std::vector<double>& values,
+                                        std::span<const RoadPoint> to) {
+  const size_t m = from.size();
+  const double step = from[1].distance - from[0].distance;
+  std::vector<double> out(to.size());
+  for (size_t i = 0; i < to.size(); ++i) {
+    const double x = (to[i].distance - to[0].distance) / step;
+    const size_t j = std::min(static_cast<size_t>(x), m - 1);
+    const double w = x - static_cast<double>(j);
+    out[i] = values[j] + w * (values[(j + 1) % m] - values[j]);
+  }
+  return out;
+}
+
 ReplayInitialState EndState(const ReplayResult& r) {
   ReplayInitialState s;
   for (int k = 0; k < 4; ++k) {
@@ -214,26 +252,51 @@ QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
       tread[k].assign(n, state.tyres[k].tread_temp);
     }
   }
+  // One pass: speed profile, forces and slips, thermal replay from `from`.
+  const auto run_pass =
+      [&](std::span<const RoadPoint> r, const std::array<std::vector<double>, 4>& g,
+          const std::array<std::vector<double>, 4>& t, const ReplayInitialState& from) {
+        const SpeedProfile profile = CalcSpeedProfile(prep.qss, r, g);
+        QssLap lap = BuildLap(prep, r, profile, g, t);
+        ReplayInputs inputs;
+        inputs.time = lap.time;
+        inputs.corners = lap.corners;
+        inputs.ambient_temp.assign(r.size() + 1, options.ambient_temp);
+        inputs.track_temp.assign(r.size() + 1, options.track_temp);
+        lap.thermal = RunReplay(car, inputs, from, options.replay);
+        return lap;
+      };
+  // The grip and tread temperature a lap left at each point drive the next pass.
+  const auto take_thermal = [&](const QssLap& lap, std::array<std::vector<double>, 4>& g,
+                                std::array<std::vector<double>, 4>& t) {
+    for (int k = 0; k < 4; ++k) {
+      const CornerHistory& h = lap.thermal.corners[k];
+      g[k].assign(h.grip_factor.begin(), h.grip_factor.end() - 1);
+      t[k].assign(h.tread_temp.begin(), h.tread_temp.end() - 1);
+    }
+  };
+
   QssResult result;
   for (int lap_index = 0; lap_index < options.laps; ++lap_index) {
-    const int passes = lap_index == 0 && options.couple_first_lap ? 2 : 1;
-    QssLap lap;
-    for (int pass = 0; pass < passes; ++pass) {
-      const SpeedProfile profile = CalcSpeedProfile(prep.qss, road, grip);
-      lap = BuildLap(prep, road, profile, grip, tread);
-      ReplayInputs inputs;
-      inputs.time = lap.time;
-      inputs.corners = lap.corners;
-      inputs.ambient_temp.assign(n + 1, options.ambient_temp);
-      inputs.track_temp.assign(n + 1, options.track_temp);
-      lap.thermal = RunReplay(car, inputs, state, options.replay);
-      // The next pass (or lap) drives on the grip this one left at each point.
+    if (lap_index == 0 && options.couple_first_lap) {
+      // Thermal coupling of the first lap: a first pass on a road of about 4 m spacing (the
+      // temperatures it gives vary over tens of metres) from the starting temperatures, its grip
+      // and tread temperatures interpolated onto the full road for the real pass.
+      const std::vector<RoadPoint> coarse = Coarsen(road, 4.0);
+      std::array<std::vector<double>, 4> g, t;
       for (int k = 0; k < 4; ++k) {
-        const CornerHistory& h = lap.thermal.corners[k];
-        std::copy(h.grip_factor.begin(), h.grip_factor.begin() + n, grip[k].begin());
-        std::copy(h.tread_temp.begin(), h.tread_temp.begin() + n, tread[k].begin());
+        g[k].assign(coarse.size(), grip[k][0]);
+        t[k].assign(coarse.size(), tread[k][0]);
+      }
+      const QssLap first = run_pass(coarse, g, t, state);
+      take_thermal(first, g, t);
+      for (int k = 0; k < 4; ++k) {
+        grip[k] = InterpolatePeriodic(coarse, g[k], road);
+        tread[k] = InterpolatePeriodic(coarse, t[k], road);
       }
     }
+    QssLap lap = run_pass(road, grip, tread, state);
+    take_thermal(lap, grip, tread);
     state = EndState(lap.thermal);
     result.laps.push_back(std::move(lap));
   }

@@ -119,55 +119,81 @@ double CalcResistance(const QssVehicle& car, const RoadPoint& point, double spee
   return aero.drag + crr * normal + p.chassis.mass * kGravity * std::sin(point.grade);
 }
 
+namespace {
+
+// The largest x in [lo, hi] with excess(x) <= 0, for an excess that grows with x, to within
+// `tolerance`: false position with the Illinois modification (a few evaluations where the
+// excess is smooth), each step kept inside the bracket and at least a tenth of it from its ends,
+// so that kinks cost no more than bisection. Requires excess(lo) <= 0 < excess(hi).
+template <class Excess>
+double LargestFeasible(double lo, double f_lo, double hi, double f_hi, double tolerance,
+                       Excess excess) {
+  int side = 0;
+  while (hi - lo > tolerance) {
+    double x = lo - f_lo * (hi - lo) / (f_hi - f_lo);
+    const double margin = 0.1 * (hi - lo);
+    if (!(x > lo + margin)) x = lo + margin;
+    if (!(x < hi - margin)) x = hi - margin;
+    const double f = excess(x);
+    if (f <= 0.0) {
+      lo = x;
+      f_lo = f;
+      if (side == -1) f_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = x;
+      f_hi = f;
+      if (side == 1) f_lo *= 0.5;
+      side = 1;
+    }
+  }
+  return lo;
+}
+
+}  // namespace
+
 double CalcCorneringLimit(const QssVehicle& car, const RoadPoint& point,
                           const std::array<double, 4>& grip) {
   const double power = car.params->powertrain.WheelPower();
-  const auto feasible = [&](double v) {
+  // Excess over the limits: tyre utilisation beyond 1, or power beyond the wheel power.
+  const auto excess = [&](double v) {
     const double fx = CalcResistance(car, point, v);
-    if (fx * v > power) return false;
-    return CalcForceDemand(car, point, v, fx, grip).Feasible();
+    const double u = CalcForceDemand(car, point, v, fx, grip).max_utilization;
+    return std::max(u - 1.0, (fx * v - power) / power);
   };
-  double lo = 0.5, hi = 150.0;
-  if (!feasible(lo)) return 0.0;
-  if (feasible(hi)) return hi;
-  while (hi - lo > 1e-3) {
-    const double mid = 0.5 * (lo + hi);
-    (feasible(mid) ? lo : hi) = mid;
-  }
-  return lo;
+  const double lo = 0.5, hi = 150.0;
+  const double f_lo = excess(lo), f_hi = excess(hi);
+  if (!(f_lo <= 0.0)) return 0.0;
+  if (f_hi <= 0.0) return hi;
+  return LargestFeasible(lo, f_lo, hi, f_hi, 1e-3, excess);
 }
 
 double CalcMaxDriveForce(const QssVehicle& car, const RoadPoint& point, double speed,
                          const std::array<double, 4>& grip, SpeedLimit* limit) {
   const double power_force = car.params->powertrain.WheelPower() / std::max(speed, 1.0);
-  const auto feasible = [&](double fx) {
-    return CalcForceDemand(car, point, speed, fx, grip).Feasible();
+  const auto excess = [&](double fx) {
+    return CalcForceDemand(car, point, speed, fx, grip).max_utilization - 1.0;
   };
   *limit = SpeedLimit::kPower;
-  if (feasible(power_force)) return power_force;
+  const double f_hi = excess(power_force);
+  if (f_hi <= 0.0) return power_force;
   *limit = SpeedLimit::kTraction;
-  if (!feasible(0.0)) return 0.0;
-  double lo = 0.0, hi = power_force;
-  while (hi - lo > 0.5) {
-    const double mid = 0.5 * (lo + hi);
-    (feasible(mid) ? lo : hi) = mid;
-  }
-  return lo;
+  const double f_lo = excess(0.0);
+  if (!(f_lo <= 0.0)) return 0.0;
+  return LargestFeasible(0.0, f_lo, power_force, f_hi, 0.5, excess);
 }
 
 double CalcMaxBrakeForce(const QssVehicle& car, const RoadPoint& point, double speed,
                          const std::array<double, 4>& grip) {
-  const auto feasible = [&](double brake) {
-    return CalcForceDemand(car, point, speed, -brake, grip).Feasible();
+  const auto excess = [&](double brake) {
+    return CalcForceDemand(car, point, speed, -brake, grip).max_utilization - 1.0;
   };
-  if (!feasible(0.0)) return 0.0;
-  double lo = 0.0, hi = 4.0 * car.params->Weight();
-  if (feasible(hi)) return hi;
-  while (hi - lo > 0.5) {
-    const double mid = 0.5 * (lo + hi);
-    (feasible(mid) ? lo : hi) = mid;
-  }
-  return lo;
+  const double f_lo = excess(0.0);
+  if (!(f_lo <= 0.0)) return 0.0;
+  const double hi = 4.0 * car.params->Weight();
+  const double f_hi = excess(hi);
+  if (f_hi <= 0.0) return hi;
+  return LargestFeasible(0.0, f_lo, hi, f_hi, 0.5, excess);
 }
 
 SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> road,

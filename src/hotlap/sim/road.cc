@@ -11,9 +11,10 @@ namespace hotlap::sim {
 std::vector<RoadPoint> SampleRoad(const track::Track& track, double step_m) {
   const double length = track.length_m();
   if (!(step_m > 0.0) || !(step_m <= length / 16.0)) {
-    throw InputError(fmt::format("road step {:g} m must be > 0 and at most a sixteenth of the "
-                                 "{:.1f} m lap",
-                                 step_m, length));
+    throw InputError(
+        fmt::format("road step {:g} m must be > 0 and at most a sixteenth of the "
+                    "{:.1f} m lap",
+                    step_m, length));
   }
   const int n = static_cast<int>(std::round(length / step_m));
   std::vector<RoadPoint> road(n);

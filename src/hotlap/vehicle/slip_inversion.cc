@@ -32,15 +32,17 @@ TyreEval Evaluate(const InvertibleTyre& tyre, const TyreConditions& c, double ka
   return {g * f.fx.a, g * f.fy.a, g * f.fx.v[0], g * f.fx.v[1], g * f.fy.v[0], g * f.fy.v[1]};
 }
 
-// Levenberg-Marquardt on n unknowns with bounds (clamped steps). `residual(x, J)` returns r and
-// fills J. Returns the number of iterations; x holds the best point.
-template <int N, class Residual>
+// Levenberg-Marquardt on n unknowns with bounds (clamped steps). `residual(x, J, extra)` returns
+// r, fills J and whatever the caller keeps per evaluation in `extra`. Returns the number of
+// iterations; x and extra hold the best point's.
+template <int N, class Extra, class Residual>
 int SolveBounded(Eigen::Matrix<double, N, 1>& x, const Eigen::Matrix<double, N, 1>& lower,
-                 const Eigen::Matrix<double, N, 1>& upper, double tolerance, Residual residual) {
+                 const Eigen::Matrix<double, N, 1>& upper, double tolerance, Extra& extra,
+                 Residual residual) {
   using Vec = Eigen::Matrix<double, N, 1>;
   using Mat = Eigen::Matrix<double, N, N>;
   Mat jac;
-  Vec r = residual(x, jac);
+  Vec r = residual(x, jac, extra);
   double cost = r.squaredNorm();
   double lambda = 1e-4;
   int it = 0;
@@ -54,12 +56,14 @@ int SolveBounded(Eigen::Matrix<double, N, 1>& x, const Eigen::Matrix<double, N, 
       const Vec step = a.ldlt().solve(-g);
       const Vec trial = (x + step).cwiseMax(lower).cwiseMin(upper);
       Mat trial_jac;
-      const Vec trial_r = residual(trial, trial_jac);
+      Extra trial_extra;
+      const Vec trial_r = residual(trial, trial_jac, trial_extra);
       const double trial_cost = trial_r.squaredNorm();
       if (std::isfinite(trial_cost) && trial_cost < cost) {
         x = trial;
         r = trial_r;
         jac = trial_jac;
+        extra = trial_extra;
         cost = trial_cost;
         lambda = std::max(lambda / 5.0, 1e-9);
         improved = true;
@@ -94,8 +98,8 @@ FreeWheelSolution SolveFreeWheelSlips(const InvertibleTyre& tyre, const TyreCond
                                       double fx_target, double fy_target, const WheelSlips& guess) {
   using Vec = Eigen::Vector2d;
   const double tolerance = std::max(1.0, 1e-4 * c.fz);
-  const auto residual = [&](const Vec& v, Eigen::Matrix2d& jac) {
-    const TyreEval e = Evaluate(tyre, c, v[0], v[1]);
+  const auto residual = [&](const Vec& v, Eigen::Matrix2d& jac, TyreEval& e) {
+    e = Evaluate(tyre, c, v[0], v[1]);
     jac << e.dfx_dk, e.dfx_da, e.dfy_dk, e.dfy_da;
     return Vec(e.fx - fx_target, e.fy - fy_target);
   };
@@ -103,9 +107,9 @@ FreeWheelSolution SolveFreeWheelSlips(const InvertibleTyre& tyre, const TyreCond
     Vec x(std::clamp(kappa, -kMaxSlipRatio, kMaxSlipRatio),
           std::clamp(alpha, -kMaxSlipAngle, kMaxSlipAngle));
     FreeWheelSolution out;
+    TyreEval e{};
     out.iterations = SolveBounded<2>(x, Vec(-kMaxSlipRatio, -kMaxSlipAngle),
-                                     Vec(kMaxSlipRatio, kMaxSlipAngle), tolerance, residual);
-    const TyreEval e = Evaluate(tyre, c, x[0], x[1]);
+                                     Vec(kMaxSlipRatio, kMaxSlipAngle), tolerance, e, residual);
     out.wheel = {x[0], x[1], e.fx, e.fy};
     out.reached =
         std::abs(e.fx - fx_target) <= tolerance && std::abs(e.fy - fy_target) <= tolerance;
@@ -142,10 +146,12 @@ SpoolAxleSolution SolveSpoolAxleSlips(const InvertibleTyre& left, const Invertib
     const double omega = omega_of(s);
     return std::array<double, 2>{omega * rl / cl.vx - 1.0, omega * rr / cr.vx - 1.0};
   };
-  const auto residual = [&](const Vec& v, Eigen::Matrix3d& jac) {
+  const auto residual = [&](const Vec& v, Eigen::Matrix3d& jac, std::array<TyreEval, 2>& ab) {
     const auto k = kappas(v[0]);
-    const TyreEval a = Evaluate(left, cl, std::clamp(k[0], -0.99, 2.0), v[1]);
-    const TyreEval b = Evaluate(right, cr, std::clamp(k[1], -0.99, 2.0), v[2]);
+    ab[0] = Evaluate(left, cl, std::clamp(k[0], -0.99, 2.0), v[1]);
+    ab[1] = Evaluate(right, cr, std::clamp(k[1], -0.99, 2.0), v[2]);
+    const TyreEval& a = ab[0];
+    const TyreEval& b = ab[1];
     // d kappa_i / d s = (v_mean / r_mean) R_i / vx_i.
     const double dkl = v_mean / r_mean * rl / cl.vx, dkr = v_mean / r_mean * rr / cr.vx;
     jac << a.dfy_dk * dkl, a.dfy_da, 0.0,  //
@@ -157,12 +163,13 @@ SpoolAxleSolution SolveSpoolAxleSlips(const InvertibleTyre& left, const Invertib
     x = x.cwiseMax(Vec(-kMaxSlipRatio, -kMaxSlipAngle, -kMaxSlipAngle))
             .cwiseMin(Vec(kMaxSlipRatio, kMaxSlipAngle, kMaxSlipAngle));
     SpoolAxleSolution out;
+    std::array<TyreEval, 2> ab{};
     out.iterations =
         SolveBounded<3>(x, Vec(-kMaxSlipRatio, -kMaxSlipAngle, -kMaxSlipAngle),
-                        Vec(kMaxSlipRatio, kMaxSlipAngle, kMaxSlipAngle), tolerance, residual);
+                        Vec(kMaxSlipRatio, kMaxSlipAngle, kMaxSlipAngle), tolerance, ab, residual);
     const auto k = kappas(x[0]);
-    const TyreEval a = Evaluate(left, cl, k[0], x[1]);
-    const TyreEval b = Evaluate(right, cr, k[1], x[2]);
+    const TyreEval& a = ab[0];
+    const TyreEval& b = ab[1];
     out.wheel_speed = omega_of(x[0]);
     out.wheels[0] = {k[0], x[1], a.fx, a.fy};
     out.wheels[1] = {k[1], x[2], b.fx, b.fy};

@@ -1,0 +1,325 @@
+// `hotlap lap`: the car round a track by the quasi-steady-state method, with the tyre and brake
+// thermal and wear models along the way, lap after lap.
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "hotlap/common/csv.h"
+#include "hotlap/common/data_path.h"
+#include "hotlap/common/error.h"
+#include "hotlap/common/units.h"
+#include "hotlap/report/html_report.h"
+#include "hotlap/sim/lap_output.h"
+#include "hotlap/sim/qss_lap.h"
+#include "hotlap/sim/road.h"
+#include "hotlap/track/track_io.h"
+#include "output.h"
+
+namespace hotlap::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct LapArgs {
+  std::string method = "qss";
+  std::string track = "darlington";
+  std::string car = "gen7";
+  int laps = 1;
+  std::string out;
+  std::string json;
+  double step_m = 1.0;
+  double ambient_C = 25.0;
+  double track_C = 40.0;
+  std::optional<double> tread_C, carcass_C, disc_C, calliper_C;
+};
+
+double Celsius(double kelvin) { return KelvinToCelsius(kelvin); }
+
+// The report: summary tables, every channel against stint distance, and the track map coloured by
+// speed (docs/lap-simulation.md).
+void WriteLapReport(const fs::path& path, const LapArgs& a, const vehicle::Car& car,
+                    const track::Track& track, const sim::QssResult& result,
+                    const sim::ColumnSet& columns,
+                    const std::vector<std::vector<std::string>>& lap_rows,
+                    const std::vector<std::vector<std::string>>& corner_rows,
+                    const std::vector<sim::BrakingZone>& zones) {
+  report::HtmlReport page(fmt::format("hotlap lap: {} on {}", car.name, track.name()));
+  page.AddMetadata("method", "quasi-steady-state (docs/lap-simulation.md)");
+  page.AddMetadata("car", car.path.string());
+  page.AddMetadata("track", fmt::format("{} ({:.1f} m)", track.name(), track.length_m()));
+  page.AddMetadata("laps", std::to_string(a.laps));
+  page.AddMetadata("air / track", fmt::format("{:g} / {:g} \u00b0C", a.ambient_C, a.track_C));
+  page.AddMetadata("version", HOTLAP_VERSION);
+  page.AddHeading("Summary");
+  page.AddTable(
+      {.title = "Laps", .header = {"lap", "time s", "top m/s", "min m/s"}, .rows = lap_rows});
+  page.AddTable({.title = "Per corner over the stint: peak temperatures and wear",
+                 .header = {"corner", "tread \u00b0C", "carcass \u00b0C", "disc \u00b0C",
+                            "calliper \u00b0C", "wear mm/lap"},
+                 .rows = corner_rows});
+  std::vector<std::vector<std::string>> zone_rows;
+  for (const sim::BrakingZone& z : zones) {
+    zone_rows.push_back({std::to_string(z.lap), fmt::format("{:.0f}", z.start_m),
+                         fmt::format("{:.0f}", z.end_m), fmt::format("{:.1f}", z.entry_speed),
+                         fmt::format("{:.1f}", z.exit_speed), fmt::format("{:.2f}", z.peak_decel)});
+  }
+  page.AddTable(
+      {.title = "Braking zones",
+       .header = {"lap", "from m", "to m", "entry m/s", "exit m/s", "peak decel m/s\u00b2"},
+       .rows = zone_rows});
+
+  const auto col = [&](const std::string& name) -> const std::vector<double>& {
+    const auto it = std::find(columns.names.begin(), columns.names.end(), name);
+    return columns.values[static_cast<size_t>(it - columns.names.begin())];
+  };
+  const std::vector<double>& distance = col("distance_m");
+  page.AddHeading("Track");
+  page.AddMapChart({.title = "Track map coloured by speed",
+                    .x_axis = {.label = "x", .unit = "m"},
+                    .y_axis = {.label = "y", .unit = "m"},
+                    .value_axis = {.label = "speed", .unit = "m/s"},
+                    .x = col("x_m"),
+                    .y = col("y_m"),
+                    .value = col("speed_mps")});
+  page.AddHeading("Car");
+  page.AddLineChart({.title = "Speed",
+                     .x_axis = {.label = "distance", .unit = "m"},
+                     .y_axis = {.label = "speed", .unit = "m/s"},
+                     .series = {{.label = "speed", .x = distance, .y = col("speed_mps")}},
+                     .x_link = "distance",
+                     .width = report::ChartWidth::kFullRow});
+  page.AddLineChart(
+      {.title = "Accelerations",
+       .x_axis = {.label = "distance", .unit = "m"},
+       .y_axis = {.label = "acceleration", .unit = "m/s\u00b2"},
+       .series = {{.label = "longitudinal", .x = distance, .y = col("accel_long_mps2")},
+                  {.label = "lateral (in the road plane)",
+                   .x = distance,
+                   .y = col("accel_lat_mps2")}},
+       .x_link = "distance"});
+  const auto corners_chart = [&](const char* title, const char* label, const char* unit,
+                                 const char* pattern) {
+    report::LineChart c{.title = title,
+                        .x_axis = {.label = "distance", .unit = "m"},
+                        .y_axis = {.label = label, .unit = unit},
+                        .x_link = "distance"};
+    for (Corner corner : kAllCorners) {
+      c.series.push_back({.label = std::string(CornerName(corner)),
+                          .x = distance,
+                          .y = col(fmt::format(fmt::runtime(pattern), CornerName(corner))),
+                          .corner = corner});
+    }
+    page.AddLineChart(c);
+  };
+  corners_chart("Normal loads", "Fz", "N", "fz_{}_N");
+  page.AddHeading("Tyres");
+  corners_chart("Tread temperature", "tread", "\u00b0C", "tread_temp_{}_C");
+  corners_chart("Carcass temperature", "carcass", "\u00b0C", "carcass_temp_{}_C");
+  corners_chart("Wear", "wear", "mm", "wear_{}_mm");
+  corners_chart("Grip factor g(T) h(wear)", "grip factor", "", "grip_factor_{}");
+  corners_chart("Slip angle", "slip angle", "deg", "slip_angle_{}_deg");
+  corners_chart("Slip ratio", "slip ratio", "", "slip_ratio_{}");
+  page.AddHeading("Brakes");
+  corners_chart("Disc temperature", "disc", "\u00b0C", "disc_temp_{}_C");
+  corners_chart("Calliper temperature", "calliper", "\u00b0C", "calliper_temp_{}_C");
+  corners_chart("Braking power", "braking power", "W", "brake_power_{}_W");
+  page.Write(path);
+}
+
+int RunLap(const LapArgs& a) {
+  if (a.method != "qss") {
+    throw InputError(fmt::format(
+        "--method {}: `hotlap lap` runs the quasi-steady-state method (qss); for the optimal lap "
+        "use `hotlap optimise`",
+        a.method));
+  }
+  if (a.laps < 1 || a.laps > 1000) {
+    throw InputError(fmt::format("--laps {} must be in [1, 1000]", a.laps));
+  }
+  const auto started = std::chrono::steady_clock::now();
+  // Everything that can fail on input is read before the output folder is touched.
+  const vehicle::Car car = vehicle::LoadCar(ResolveCarFile(a.car));
+  vehicle::RequireVehicle(car, "`hotlap lap`");
+  const track::Track track = track::LoadTrack(a.track);
+  const std::vector<sim::RoadPoint> road = sim::SampleRoad(track, a.step_m);
+  if (fs::exists(a.out) && !fs::is_directory(a.out)) {
+    throw InputError(fmt::format("--out {}: exists and is not a folder", a.out));
+  }
+  if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
+
+  sim::QssOptions options;
+  options.laps = a.laps;
+  options.ambient_temp = CelsiusToKelvin(a.ambient_C);
+  options.track_temp = CelsiusToKelvin(a.track_C);
+  const auto pick = [](const std::optional<double>& c, double kelvin) {
+    return c ? CelsiusToKelvin(*c) : kelvin;
+  };
+  for (int k = 0; k < 4; ++k) {
+    options.initial.tyres[k] = {pick(a.tread_C, car.initial.tread_temp),
+                                pick(a.carcass_C, car.initial.carcass_temp), 0.0};
+    options.initial.brakes[k] = {pick(a.disc_C, car.initial.disc_temp),
+                                 pick(a.calliper_C, car.initial.calliper_temp)};
+  }
+  fmt::print("hotlap lap: car '{}' on {} ({:.1f} m, {} points), {} lap{}, quasi-steady-state\n",
+             car.name, track.name(), track.length_m(), road.size(), a.laps, a.laps > 1 ? "s" : "");
+  std::fflush(stdout);
+  const sim::QssResult result = sim::RunQssLap(car, road, options);
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+
+  // Figures.
+  std::vector<sim::LapFigures> figures;
+  std::vector<sim::BrakingZone> zones;
+  for (size_t l = 0; l < result.laps.size(); ++l) {
+    figures.push_back(sim::CalcLapFigures(result.laps[l]));
+    const auto z = sim::FindBrakingZones(result.laps[l], static_cast<int>(l) + 1);
+    zones.insert(zones.end(), z.begin(), z.end());
+  }
+  const sim::LapFigures& last = figures.back();
+  int not_reached = 0;
+  double deficit = 0.0;
+  for (const sim::QssLap& lap : result.laps) {
+    not_reached += lap.slip_points_not_reached;
+    deficit = std::max(deficit, lap.max_force_deficit);
+  }
+
+  // Terminal summary.
+  fmt::print("{:>4} {:>9} {:>9} {:>9}\n", "lap", "time s", "top m/s", "min m/s");
+  std::vector<std::vector<std::string>> lap_rows;
+  for (size_t l = 0; l < figures.size(); ++l) {
+    const sim::LapFigures& f = figures[l];
+    fmt::print("{:>4} {:>9.3f} {:>9.2f} {:>9.2f}\n", l + 1, f.lap_time_s, f.top_speed, f.min_speed);
+    lap_rows.push_back({std::to_string(l + 1), fmt::format("{:.3f}", f.lap_time_s),
+                        fmt::format("{:.2f}", f.top_speed), fmt::format("{:.2f}", f.min_speed)});
+  }
+  fmt::print("braking zones{}:\n", a.laps > 1 ? " (last lap)" : "");
+  for (const sim::BrakingZone& z : zones) {
+    if (z.lap != a.laps) continue;
+    fmt::print("  {:6.0f} m to {:6.0f} m: {:.1f} -> {:.1f} m/s, peak {:.2f} m/s^2, {:.2f} s\n",
+               z.start_m, z.end_m, z.entry_speed, z.exit_speed, z.peak_decel, z.duration_s);
+  }
+  fmt::print("{:<6} {:>10} {:>11} {:>9} {:>12} {:>12}\n", "corner", "tread pk C", "carcass pk C",
+             "disc pk C", "calliper pk C", "wear mm/lap");
+  std::vector<std::vector<std::string>> corner_rows;
+  nlohmann::json corners;
+  for (Corner c : kAllCorners) {
+    const int k = CornerIndex(c);
+    double tread = 0, carcass = 0, disc = 0, calliper = 0, wear = 0;
+    for (const sim::LapFigures& f : figures) {
+      tread = std::max(tread, f.peak_tread_temp[k]);
+      carcass = std::max(carcass, f.peak_carcass_temp[k]);
+      disc = std::max(disc, f.peak_disc_temp[k]);
+      calliper = std::max(calliper, f.peak_calliper_temp[k]);
+      wear += f.wear[k];
+    }
+    wear /= static_cast<double>(figures.size());
+    fmt::print("{:<6} {:>10.1f} {:>11.1f} {:>9.1f} {:>12.1f} {:>12.5f}\n", CornerName(c),
+               Celsius(tread), Celsius(carcass), Celsius(disc), Celsius(calliper), wear);
+    corner_rows.push_back({std::string(CornerName(c)), fmt::format("{:.1f}", Celsius(tread)),
+                           fmt::format("{:.1f}", Celsius(carcass)),
+                           fmt::format("{:.1f}", Celsius(disc)),
+                           fmt::format("{:.1f}", Celsius(calliper)), fmt::format("{:.5f}", wear)});
+    corners[std::string(CornerName(c))] = {
+        {"peak_tread_temp_C", RoundSignificant(Celsius(tread))},
+        {"peak_carcass_temp_C", RoundSignificant(Celsius(carcass))},
+        {"peak_disc_temp_C", RoundSignificant(Celsius(disc))},
+        {"peak_calliper_temp_C", RoundSignificant(Celsius(calliper))},
+        {"wear_per_lap_mm", RoundSignificant(wear)},
+        {"wear_total_mm", RoundSignificant(result.laps.back().thermal.corners[k].wear.back())},
+    };
+  }
+  if (not_reached > 0) {
+    fmt::print(
+        "note: at {} samples a tyre could not make the force the speed profile gave it (largest "
+        "shortfall {:.0f} N): the combined-slip envelope is inside the friction ellipse there\n",
+        not_reached, deficit);
+  }
+
+  // Outputs: the folder, then each file atomically.
+  fs::create_directories(a.out);
+  const fs::path csv = fs::path(a.out) / "lap.csv", html = fs::path(a.out) / "lap.html";
+  const sim::ColumnSet columns =
+      sim::LapResultColumns(result, track, options.ambient_temp, options.track_temp);
+  WriteCsv(csv,
+           {{"source", fmt::format("hotlap {} lap --method qss", HOTLAP_VERSION)},
+            {"track", track.name()},
+            {"car", car.path.string()},
+            {"laps", std::to_string(a.laps)}},
+           columns.names, columns.values);
+  WriteLapReport(html, a, car, track, result, columns, lap_rows, corner_rows, zones);
+  fmt::print("wrote {} and {} in {:.2f} s\n", csv.string(), html.string(), elapsed);
+
+  if (!a.json.empty()) {
+    nlohmann::json laps = nlohmann::json::array();
+    for (const sim::LapFigures& f : figures) {
+      laps.push_back({{"lap_time_s", RoundSignificant(f.lap_time_s)},
+                      {"top_speed_mps", RoundSignificant(f.top_speed)},
+                      {"min_speed_mps", RoundSignificant(f.min_speed)}});
+    }
+    nlohmann::json braking = nlohmann::json::array();
+    for (const sim::BrakingZone& z : zones) {
+      braking.push_back({{"lap", z.lap},
+                         {"start_m", RoundSignificant(z.start_m)},
+                         {"end_m", RoundSignificant(z.end_m)},
+                         {"entry_speed_mps", RoundSignificant(z.entry_speed)},
+                         {"exit_speed_mps", RoundSignificant(z.exit_speed)},
+                         {"peak_decel_mps2", RoundSignificant(z.peak_decel)}});
+    }
+    WriteJsonFile(a.json, {{"command", "lap"},
+                           {"method", "qss"},
+                           {"track", track.name()},
+                           {"track_length_m", RoundSignificant(track.length_m())},
+                           {"car", car.name},
+                           {"laps", laps},
+                           {"lap_time_s", RoundSignificant(last.lap_time_s)},
+                           {"top_speed_mps", RoundSignificant(last.top_speed)},
+                           {"min_speed_mps", RoundSignificant(last.min_speed)},
+                           {"braking_zones", braking},
+                           {"corners", corners},
+                           {"slip_points_not_reached", not_reached},
+                           {"out_csv", csv.string()},
+                           {"out_report", html.string()}});
+    fmt::print("wrote {}\n", a.json);
+  }
+  return 0;
+}
+
+}  // namespace
+
+CommandRunner RegisterLapCommand(CLI::App& app) {
+  auto args = std::make_shared<LapArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "lap", "Drive the car round a track (quasi-steady state) with the thermal models");
+  sub->add_option("--method", args->method, "qss (quasi-steady state)")->capture_default_str();
+  sub->add_option("--track", args->track, "Built-in track name or a .yaml/.csv/.xml file")
+      ->capture_default_str();
+  sub->add_option("--car", args->car, "Built-in car name or path to a car.yaml")
+      ->capture_default_str();
+  sub->add_option("--laps", args->laps, "Laps in the stint (thermal state carried over)")
+      ->capture_default_str();
+  sub->add_option("--out", args->out, "Output folder: lap.csv and lap.html")->required();
+  sub->add_option("--json", args->json, "Write the summary as JSON (docs/json-output.md)");
+  sub->add_option("--step-m", args->step_m, "Distance between road points, m")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sub->add_option("--ambient-temp-C", args->ambient_C, "Air temperature")->capture_default_str();
+  sub->add_option("--track-temp-C", args->track_C, "Track surface temperature")
+      ->capture_default_str();
+  sub->add_option("--tread-temp-C", args->tread_C, "Starting tread temperature (else the car's)");
+  sub->add_option("--carcass-temp-C", args->carcass_C, "Starting carcass temperature");
+  sub->add_option("--disc-temp-C", args->disc_C, "Starting disc temperature");
+  sub->add_option("--calliper-temp-C", args->calliper_C, "Starting calliper temperature");
+  return [args] { return RunLap(*args); };
+}
+
+}  // namespace hotlap::app

@@ -1,0 +1,177 @@
+// End-to-end tests of `hotlap lap`: the Darlington acceptance figures, the documented JSON keys and
+// CSV columns, a channels file that replays to the same temperatures, a report that renders in
+// headless Chromium, and bad input failing cleanly without output.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "hotlap/common/csv.h"
+#include "report/chromium.h"
+#include "test_util.h"
+
+namespace hotlap {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunResult {
+  int exit_code;
+  std::string out;
+  std::string err;
+};
+
+class LapCommandTest : public ::testing::Test {
+ protected:
+  RunResult Run(const std::string& args) {
+    const fs::path out = dir() / "stdout.txt", err = dir() / "stderr.txt";
+    const std::string command =
+        std::string(HOTLAP_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
+    const int status = std::system(command.c_str());
+    return {WEXITSTATUS(status), test::ReadTextFile(out), test::ReadTextFile(err)};
+  }
+  nlohmann::json Json(const fs::path& p) { return nlohmann::json::parse(test::ReadTextFile(p)); }
+  const fs::path& dir() const { return dir_.path(); }
+
+ private:
+  test::TempDir dir_;
+};
+
+const std::vector<double>& Column(const CsvTable& t, const std::string& name) {
+  const int i = t.ColumnIndex(name);
+  if (i < 0) throw std::runtime_error("no column " + name);
+  return t.values[static_cast<size_t>(i)];
+}
+
+// The acceptance on the built-in Darlington and Gen-7 car: lap time 28.5-31.5 s, top
+// speed 78-84 m/s, braking zones at the turn 1 and turn 3 entries (the entry clothoids start at
+// 187 m and 1297 m, docs/tracks.md).
+TEST_F(LapCommandTest, DarlingtonQssLapMeetsTheAcceptance) {
+  const fs::path out = dir() / "lap", json = dir() / "lap.json";
+  const RunResult r = Run("lap --method qss --track darlington --car gen7 --out " + out.string() +
+                          " --json " + json.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  const nlohmann::json j = Json(json);
+  for (const char* key : {"command", "method", "track", "car", "laps", "lap_time_s",
+                          "top_speed_mps", "min_speed_mps", "braking_zones", "corners"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  const double lap_time = j["lap_time_s"].get<double>();
+  EXPECT_GT(lap_time, 28.5);
+  EXPECT_LT(lap_time, 31.5);
+  EXPECT_GT(j["top_speed_mps"].get<double>(), 78.0);
+  EXPECT_LT(j["top_speed_mps"].get<double>(), 84.0);
+  EXPECT_LT(j["min_speed_mps"].get<double>(), j["top_speed_mps"].get<double>() - 3.0);
+  // The two hardest braking zones start in the entry clothoids of turns 1 and 3.
+  std::vector<nlohmann::json> zones(j["braking_zones"].begin(), j["braking_zones"].end());
+  std::sort(zones.begin(), zones.end(), [](const nlohmann::json& a, const nlohmann::json& b) {
+    return a["peak_decel_mps2"].get<double>() > b["peak_decel_mps2"].get<double>();
+  });
+  ASSERT_GE(zones.size(), 2u);
+  std::vector<double> starts = {zones[0]["start_m"].get<double>(),
+                                zones[1]["start_m"].get<double>()};
+  std::sort(starts.begin(), starts.end());
+  EXPECT_GT(starts[0], 187.0 - 150.0);
+  EXPECT_LT(starts[0], 187.0 + 150.0);
+  EXPECT_GT(starts[1], 1297.0 - 150.0);
+  EXPECT_LT(starts[1], 1297.0 + 220.0);
+  for (const char* c : {"fl", "fr", "rl", "rr"}) {
+    for (const char* key : {"peak_tread_temp_C", "peak_carcass_temp_C", "peak_disc_temp_C",
+                            "peak_calliper_temp_C", "wear_per_lap_mm", "wear_total_mm"}) {
+      EXPECT_TRUE(j["corners"][c].contains(key)) << c << " " << key;
+    }
+  }
+  // The right (outside) front tread runs hotter than the left front.
+  EXPECT_GT(j["corners"]["fr"]["peak_tread_temp_C"].get<double>(),
+            j["corners"]["fl"]["peak_tread_temp_C"].get<double>());
+
+  // The channels: the shared format, indexed by distance and time; the lap time matches.
+  const CsvTable t = ReadCsv(out / "lap.csv");
+  const std::vector<double>& distance = Column(t, "distance_m");
+  const std::vector<double>& time = Column(t, "time_s");
+  EXPECT_NEAR(distance.back(), 2198.0, 1e-6);
+  EXPECT_NEAR(time.back(), lap_time, 1e-6);
+  for (const char* name : {"speed_mps", "fx_fr_N", "fy_fr_N", "fz_fr_N", "slip_angle_fr_deg",
+                           "slip_ratio_rr", "speed_rr_mps", "tread_temp_fr_C", "wear_rr_mm",
+                           "disc_temp_fl_C", "brake_power_fl_W", "x_m", "y_m", "lap"}) {
+    EXPECT_GE(t.ColumnIndex(name), 0) << name;
+  }
+  // The report draws every chart without a script error.
+  const auto status = test::RenderInChromium(out / "lap.html", dir());
+  EXPECT_TRUE(test::RenderedCleanly(status, 12));
+}
+
+// The channels file is a log: replaying it runs the same thermal models over the same inputs, so
+// it gives back the temperatures the lap wrote (to the replay's integration accuracy).
+TEST_F(LapCommandTest, ChannelsReplayToTheSameTemperatures) {
+  const fs::path out = dir() / "lap";
+  ASSERT_EQ(Run("lap --out " + out.string() + " --step-m 2").exit_code, 0);
+  const fs::path replayed = dir() / "replayed.csv";
+  const RunResult r =
+      Run("replay --telemetry " + (out / "lap.csv").string() + " --out " + replayed.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const CsvTable lap = ReadCsv(out / "lap.csv"), rep = ReadCsv(replayed);
+  for (const char* name : {"tread_temp_fr_C", "carcass_temp_rr_C", "wear_rr_mm"}) {
+    const auto& a = Column(lap, name);
+    const auto& b = Column(rep, name);
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t i = 0; i < a.size(); i += 50) EXPECT_NEAR(a[i], b[i], 0.05) << name << " " << i;
+  }
+}
+
+// A stint: one row per lap in the JSON, wear accumulating, laps column counting up.
+TEST_F(LapCommandTest, StintOfThreeLaps) {
+  const fs::path out = dir() / "stint", json = dir() / "stint.json";
+  const RunResult r =
+      Run("lap --laps 3 --step-m 2 --out " + out.string() + " --json " + json.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = Json(json);
+  ASSERT_EQ(j["laps"].size(), 3u);
+  EXPECT_GT(j["corners"]["rr"]["wear_total_mm"].get<double>(),
+            2.5 * j["corners"]["rr"]["wear_per_lap_mm"].get<double>());
+  const CsvTable t = ReadCsv(out / "lap.csv");
+  EXPECT_EQ(Column(t, "lap").back(), 3.0);
+  EXPECT_NEAR(Column(t, "distance_m").back(), 3 * 2198.0, 1e-6);
+}
+
+TEST_F(LapCommandTest, BadInputFailsCleanlyWithoutOutput) {
+  const fs::path out = dir() / "bad", json = dir() / "bad.json";
+  const fs::path thermal_only = dir() / "car.yaml";
+  {
+    std::string text = test::ReadTextFile(test::Gen7Dir() / "car.yaml");
+    text = text.substr(0, text.find("\nchassis:"));
+    for (const char* part : {"tyres/", "brakes/"}) {
+      std::string::size_type at = 0;
+      while ((at = text.find(part, at)) != std::string::npos) {
+        text.insert(at, (test::Gen7Dir().string() + "/"));
+        at += test::Gen7Dir().string().size() + 1 + std::string(part).size();
+      }
+    }
+    test::WriteTextFile(thermal_only, text);
+  }
+  struct Case {
+    std::string args;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {"lap --track nowhere", "nowhere"}, {"lap --car " + thermal_only.string(), "chassis"},
+      {"lap --laps 0", "--laps"},         {"lap --method ocp", "hotlap optimise"},
+      {"lap --step-m 500", "step"},
+  };
+  for (const Case& c : cases) {
+    const RunResult r = Run(c.args + " --out " + out.string() + " --json " + json.string());
+    EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;
+    EXPECT_TRUE(test::Contains(r.err, c.message)) << c.args << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out)) << c.args;
+    EXPECT_FALSE(fs::exists(json)) << c.args;
+  }
+}
+
+}  // namespace
+}  // namespace hotlap
