@@ -18,6 +18,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev          # linear algebra: small fixed-size systems, Cholesky convection matrices
   libceres-dev           # least squares and Jet automatic differentiation (fitting, model AD)
+  coinor-libipopt-dev    # Ipopt: the optimal-control lap's sparse nonlinear programme
   libyaml-cpp-dev        # parameter files
   libcli11-dev           # command-line parsing
   libfmt-dev             # formatted terminal output

@@ -17,6 +17,8 @@
 
 #include <ceres/jet.h>
 
+#include "hotlap/common/second_order.h"
+
 namespace hotlap {
 
 template <typename T>
@@ -24,9 +26,15 @@ struct IsJet : std::false_type {};
 template <typename T, int N>
 struct IsJet<ceres::Jet<T, N>> : std::true_type {};
 
-/// A scalar a model can be evaluated on: double (simulation) or a ceres::Jet (fitting).
 template <typename T>
-concept Scalar = std::same_as<T, double> || IsJet<T>::value;
+struct IsSecondOrder : std::false_type {};
+template <int N>
+struct IsSecondOrder<SecondOrder<N>> : std::true_type {};
+
+/// A scalar a model can be evaluated on: double (simulation), a ceres::Jet (fitting) or a
+/// SecondOrder (exact Hessians for optimal control).
+template <typename T>
+concept Scalar = std::same_as<T, double> || IsJet<T>::value || IsSecondOrder<T>::value;
 
 /// The plain value of a scalar, for branching and table look-up.
 inline double ValueOf(double x) { return x; }

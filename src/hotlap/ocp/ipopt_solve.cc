@@ -1,0 +1,200 @@
+#include "hotlap/ocp/ipopt_solve.h"
+
+#include <chrono>
+#include <cmath>
+
+#include <IpIpoptApplication.hpp>
+#include <IpIpoptCalculatedQuantities.hpp>
+#include <IpTNLP.hpp>
+
+namespace hotlap::ocp {
+
+namespace {
+
+using Ipopt::Index;
+using Ipopt::Number;
+
+class Adaptor : public Ipopt::TNLP {
+ public:
+  Adaptor(const ElementNlp& nlp, const IpoptOptions& options, SolveResult& result)
+      : nlp_(nlp), options_(options), result_(result) {}
+
+  bool get_nlp_info(Index& n, Index& m, Index& nnz_jac_g, Index& nnz_h_lag,
+                    IndexStyleEnum& index_style) override {
+    n = nlp_.variables();
+    m = nlp_.constraints();
+    nnz_jac_g = static_cast<Index>(nlp_.JacobianPattern().rows.size());
+    nnz_h_lag = static_cast<Index>(nlp_.HessianPattern().rows.size());
+    index_style = C_STYLE;
+    return true;
+  }
+
+  bool get_bounds_info(Index n, Number* x_l, Number* x_u, Index m, Number* g_l,
+                       Number* g_u) override {
+    nlp_.ScaledBounds(x_l, x_u, g_l, g_u);
+    // Ipopt reads +-1e19 as no bound.
+    for (Index i = 0; i < n; ++i) {
+      if (std::isinf(x_l[i])) x_l[i] = -1e19;
+      if (std::isinf(x_u[i])) x_u[i] = 1e19;
+    }
+    for (Index r = 0; r < m; ++r) {
+      if (std::isinf(g_l[r])) g_l[r] = -1e19;
+      if (std::isinf(g_u[r])) g_u[r] = 1e19;
+    }
+    return true;
+  }
+
+  bool get_starting_point(Index n, bool init_x, Number* x, bool init_z, Number*, Number*, Index,
+                          bool init_lambda, Number*) override {
+    if (init_z || init_lambda) return false;
+    if (init_x) nlp_.ScaledStart(x);
+    return true;
+  }
+
+  bool eval_f(Index, const Number* x, bool, Number& obj_value) override {
+    obj_value = nlp_.ScaledObjective(x);
+    return std::isfinite(obj_value);
+  }
+
+  bool eval_grad_f(Index n, const Number* x, bool, Number* grad_f) override {
+    nlp_.ScaledObjectiveGradient(x, grad_f);
+    return Finite(grad_f, n);
+  }
+
+  bool eval_g(Index, const Number* x, bool, Index m, Number* g) override {
+    nlp_.ScaledConstraints(x, g);
+    return Finite(g, m);
+  }
+
+  bool eval_jac_g(Index, const Number* x, bool, Index, Index nele_jac, Index* iRow, Index* jCol,
+                  Number* values) override {
+    if (values == nullptr) {
+      const Sparsity& p = nlp_.JacobianPattern();
+      for (Index k = 0; k < nele_jac; ++k) {
+        iRow[k] = p.rows[k];
+        jCol[k] = p.cols[k];
+      }
+      return true;
+    }
+    nlp_.ScaledJacobian(x, values);
+    return Finite(values, nele_jac);
+  }
+
+  bool eval_h(Index, const Number* x, bool, Number obj_factor, Index, const Number* lambda, bool,
+              Index nele_hess, Index* iRow, Index* jCol, Number* values) override {
+    if (values == nullptr) {
+      const Sparsity& p = nlp_.HessianPattern();
+      for (Index k = 0; k < nele_hess; ++k) {
+        iRow[k] = p.rows[k];
+        jCol[k] = p.cols[k];
+      }
+      return true;
+    }
+    nlp_.ScaledHessian(x, obj_factor, lambda, values);
+    return Finite(values, nele_hess);
+  }
+
+  bool intermediate_callback(Ipopt::AlgorithmMode, Index iter, Number obj_value, Number inf_pr,
+                             Number inf_du, Number, Number, Number, Number, Number, Index,
+                             const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
+    result_.iterations = iter;
+    if (options_.on_iteration) return options_.on_iteration(iter, obj_value, inf_pr, inf_du);
+    return true;
+  }
+
+  void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number*,
+                         const Number*, Index, const Number*, const Number*, Number obj_value,
+                         const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities* q) override {
+    result_.x = nlp_.Unscale(x);
+    result_.objective = obj_value;
+    if (q != nullptr) {
+      result_.primal_infeasibility = q->curr_constraint_violation();
+      result_.dual_infeasibility = q->curr_dual_infeasibility(Ipopt::NORM_MAX);
+    }
+    (void)n;
+    switch (status) {
+      case Ipopt::SUCCESS:
+        result_.status = SolveStatus::kConverged;
+        result_.message = "converged to the requested tolerance";
+        break;
+      case Ipopt::STOP_AT_ACCEPTABLE_POINT:
+        result_.status = SolveStatus::kAcceptable;
+        result_.message = "converged to Ipopt's acceptable (looser) tolerance only";
+        break;
+      case Ipopt::LOCAL_INFEASIBILITY:
+        result_.status = SolveStatus::kInfeasible;
+        result_.message =
+            "the constraints cannot all be met (locally infeasible): a limit may be too tight";
+        break;
+      case Ipopt::MAXITER_EXCEEDED:
+        result_.status = SolveStatus::kIterationLimit;
+        result_.message = "stopped at the iteration limit before converging";
+        break;
+      case Ipopt::CPUTIME_EXCEEDED:
+        result_.status = SolveStatus::kTimeLimit;
+        result_.message = "stopped at the time limit before converging";
+        break;
+      case Ipopt::RESTORATION_FAILURE:
+        result_.status = SolveStatus::kRestorationFailed;
+        result_.message =
+            "restoration failed: Ipopt lost feasibility and could not regain it (try a better "
+            "initial guess or a finer mesh)";
+        break;
+      case Ipopt::USER_REQUESTED_STOP:
+        result_.status = SolveStatus::kStopped;
+        result_.message = "stopped on request";
+        break;
+      case Ipopt::ERROR_IN_STEP_COMPUTATION:
+      case Ipopt::INVALID_NUMBER_DETECTED:
+      case Ipopt::TOO_FEW_DEGREES_OF_FREEDOM:
+        result_.status = SolveStatus::kNumericalTrouble;
+        result_.message = "numerical trouble in Ipopt's step (a non-finite or singular system)";
+        break;
+      default:
+        result_.status = SolveStatus::kOther;
+        result_.message = "Ipopt ended without converging (status " +
+                          std::to_string(static_cast<int>(status)) + ")";
+        break;
+    }
+  }
+
+ private:
+  static bool Finite(const Number* v, Index n) {
+    for (Index i = 0; i < n; ++i) {
+      if (!std::isfinite(v[i])) return false;
+    }
+    return true;
+  }
+
+  const ElementNlp& nlp_;
+  const IpoptOptions& options_;
+  SolveResult& result_;
+};
+
+}  // namespace
+
+SolveResult SolveWithIpopt(const ElementNlp& nlp, const IpoptOptions& options) {
+  SolveResult result;
+  const auto started = std::chrono::steady_clock::now();
+  Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
+  app->Options()->SetNumericValue("tol", options.tolerance);
+  app->Options()->SetNumericValue("constr_viol_tol", options.constraint_tolerance);
+  app->Options()->SetIntegerValue("max_iter", options.max_iterations);
+  app->Options()->SetNumericValue("max_cpu_time", options.max_cpu_seconds);
+  app->Options()->SetIntegerValue("print_level", options.print_level);
+  app->Options()->SetStringValue("hessian_approximation", "exact");
+  app->Options()->SetStringValue("mu_strategy", "adaptive");
+  app->Options()->SetStringValue("sb", "yes");  // no banner
+  if (app->Initialize() != Ipopt::Solve_Succeeded) {
+    result.status = SolveStatus::kOther;
+    result.message = "Ipopt could not be initialised";
+    return result;
+  }
+  Ipopt::SmartPtr<Ipopt::TNLP> tnlp = new Adaptor(nlp, options, result);
+  app->OptimizeTNLP(tnlp);
+  result.solve_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return result;
+}
+
+}  // namespace hotlap::ocp

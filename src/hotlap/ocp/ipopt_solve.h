@@ -1,0 +1,57 @@
+#pragma once
+/// @file
+/// Solving an ElementNlp with Ipopt (Debian's coinor-libipopt-dev, MUMPS linear solver), exact
+/// first and second derivatives, and a result that says in plain words how it ended.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "hotlap/ocp/element_nlp.h"
+
+namespace hotlap::ocp {
+
+struct IpoptOptions {
+  double tolerance = 1e-7;             ///< Ipopt `tol` (scaled NLP error)
+  double constraint_tolerance = 1e-7;  ///< Ipopt `constr_viol_tol`
+  int max_iterations = 1000;
+  double max_cpu_seconds = 600.0;
+  int print_level = 0;  ///< Ipopt's own output, 0 = none
+  /// Called at every iteration with (iteration, objective, primal infeasibility, dual
+  /// infeasibility); return false to stop.
+  std::function<bool(int, double, double, double)> on_iteration;
+};
+
+/// How the solve ended.
+enum class SolveStatus {
+  kConverged,   ///< to the tolerance
+  kAcceptable,  ///< to Ipopt's acceptable level only
+  kInfeasible,  ///< the constraints cannot all hold (e.g. a limit too tight)
+  kIterationLimit,
+  kTimeLimit,
+  kRestorationFailed,  ///< Ipopt lost feasibility and could not regain it
+  kStopped,            ///< on_iteration returned false
+  kNumericalTrouble,   ///< the step computation failed (e.g. non-finite values)
+  kOther,
+};
+
+struct SolveResult {
+  SolveStatus status = SolveStatus::kOther;
+  std::string message;    ///< the status in plain words
+  std::vector<double> x;  ///< the last (best) point, physical units
+  double objective = 0.0;
+  int iterations = 0;
+  double primal_infeasibility = 0.0;  ///< max |constraint violation| at x, scaled
+  double dual_infeasibility = 0.0;
+  double solve_seconds = 0.0;
+
+  bool ok() const {
+    return status == SolveStatus::kConverged || status == SolveStatus::kAcceptable;
+  }
+};
+
+/// Solves from nlp's initial point. `nlp` must be finalized. Never throws for a failed solve:
+/// the status says what happened and x holds Ipopt's last iterate.
+SolveResult SolveWithIpopt(const ElementNlp& nlp, const IpoptOptions& options);
+
+}  // namespace hotlap::ocp

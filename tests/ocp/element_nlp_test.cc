@@ -1,0 +1,132 @@
+#include "hotlap/ocp/element_nlp.h"
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace hotlap::ocp {
+namespace {
+
+// f(a, b, c) = (a sin(b) + c^2 a, exp(a b) / (1 + c^2)).
+struct Wiggle {
+  template <class T>
+  void operator()(const T* in, T* out) const {
+    using std::exp;
+    using std::sin;
+    out[0] = in[0] * sin(in[1]) + in[2] * in[2] * in[0];
+    out[1] = exp(in[0] * in[1]) / (1.0 + in[2] * in[2]);
+  }
+};
+
+TEST(ElementTest, DerivativesMatchCentralDifferences) {
+  const auto e = MakeElement<3, 2>(Wiggle{});
+  const double x[3] = {0.7, -0.4, 1.3};
+  double out[2], jac[6];
+  e->Jacobian(x, out, jac);
+  const double h = 1e-6;
+  for (int i = 0; i < 3; ++i) {
+    double xp[3] = {x[0], x[1], x[2]}, xm[3] = {x[0], x[1], x[2]};
+    xp[i] += h;
+    xm[i] -= h;
+    double op[2], om[2];
+    e->Values(xp, op);
+    e->Values(xm, om);
+    for (int o = 0; o < 2; ++o) EXPECT_NEAR(jac[o * 3 + i], (op[o] - om[o]) / (2 * h), 1e-8);
+  }
+  // Weighted Hessian against differences of the Jacobian.
+  const double w[2] = {0.3, -1.7};
+  double hess[9];
+  e->Hessian(x, w, hess);
+  for (int i = 0; i < 3; ++i) {
+    double xp[3] = {x[0], x[1], x[2]}, xm[3] = {x[0], x[1], x[2]};
+    xp[i] += h;
+    xm[i] -= h;
+    double jp[6], jm[6], o[2];
+    e->Jacobian(xp, o, jp);
+    e->Jacobian(xm, o, jm);
+    for (int j = 0; j < 3; ++j) {
+      const double fd = (w[0] * (jp[j] - jm[j]) + w[1] * (jp[3 + j] - jm[3 + j])) / (2 * h);
+      EXPECT_NEAR(hess[i * 3 + j], fd, 1e-6) << i << "," << j;
+      EXPECT_DOUBLE_EQ(hess[i * 3 + j], hess[j * 3 + i]);
+    }
+  }
+}
+
+// A programme whose element reads one variable twice and writes two rows and the objective, with
+// scales: its scaled Jacobian and Hessian match finite differences of the scaled functions.
+TEST(ElementNlpTest, ScaledDerivativesMatchFiniteDifferences) {
+  ElementNlp nlp;
+  const int a = nlp.AddVariable(0.7, -10, 10, 2.0);
+  const int b = nlp.AddVariable(-0.4, -10, 10, 0.5);
+  const int c = nlp.AddVariable(1.3, -10, 10, 3.0);
+  const int r0 = nlp.AddConstraint(0, 0, 10.0);
+  const int r1 = nlp.AddConstraint(-1, 1, 0.1);
+  nlp.AddLinear(r0, c, 2.0);
+  nlp.AddLinear(r1, a, -1.0);
+  nlp.AddObjectiveLinear(b, 0.5);
+  const std::shared_ptr<const Element> e = MakeElement<3, 2>(Wiggle{});
+  nlp.AddElement(e, {a, b, a}, {{{r0, 1.5}, {Target::kObjective, 2.0}}, {{r1, -0.5}}});
+  nlp.AddElement(e, {c, b, c}, {{{r1, 1.0}}, {{Target::kObjective, 1.0}}});
+  nlp.SetObjectiveScale(4.0);
+  nlp.Finalize();
+  const int n = nlp.variables(), m = nlp.constraints();
+  std::vector<double> y(n);
+  nlp.ScaledStart(y.data());
+  const double h = 1e-6;
+  // Gradient.
+  std::vector<double> grad(n);
+  nlp.ScaledObjectiveGradient(y.data(), grad.data());
+  // Jacobian (dense from the pattern).
+  std::vector<double> jv(nlp.JacobianPattern().rows.size());
+  nlp.ScaledJacobian(y.data(), jv.data());
+  std::vector<double> jac(m * n, 0.0);
+  for (size_t k = 0; k < jv.size(); ++k) {
+    jac[nlp.JacobianPattern().rows[k] * n + nlp.JacobianPattern().cols[k]] += jv[k];
+  }
+  for (int i = 0; i < n; ++i) {
+    std::vector<double> yp = y, ym = y;
+    yp[i] += h;
+    ym[i] -= h;
+    EXPECT_NEAR(grad[i],
+                (nlp.ScaledObjective(yp.data()) - nlp.ScaledObjective(ym.data())) / (2 * h), 1e-7);
+    std::vector<double> gp(m), gm(m);
+    nlp.ScaledConstraints(yp.data(), gp.data());
+    nlp.ScaledConstraints(ym.data(), gm.data());
+    for (int r = 0; r < m; ++r) EXPECT_NEAR(jac[r * n + i], (gp[r] - gm[r]) / (2 * h), 1e-7);
+  }
+  // Hessian of sigma f + lambda' g against differences of the gradient of that Lagrangian.
+  const double sigma = 0.8;
+  const std::vector<double> lambda = {1.3, -0.6};
+  const auto lagrangian_gradient = [&](const std::vector<double>& yy) {
+    std::vector<double> g(n), jvals(jv.size());
+    nlp.ScaledObjectiveGradient(yy.data(), g.data());
+    nlp.ScaledJacobian(yy.data(), jvals.data());
+    for (int i = 0; i < n; ++i) g[i] *= sigma;
+    for (size_t k = 0; k < jvals.size(); ++k) {
+      g[nlp.JacobianPattern().cols[k]] += lambda[nlp.JacobianPattern().rows[k]] * jvals[k];
+    }
+    return g;
+  };
+  std::vector<double> hv(nlp.HessianPattern().rows.size());
+  nlp.ScaledHessian(y.data(), sigma, lambda.data(), hv.data());
+  std::vector<double> hess(n * n, 0.0);
+  for (size_t k = 0; k < hv.size(); ++k) {
+    const int r = nlp.HessianPattern().rows[k], col = nlp.HessianPattern().cols[k];
+    EXPECT_GE(r, col);
+    hess[r * n + col] += hv[k];
+    if (r != col) hess[col * n + r] += hv[k];
+  }
+  for (int i = 0; i < n; ++i) {
+    std::vector<double> yp = y, ym = y;
+    yp[i] += h;
+    ym[i] -= h;
+    const auto gp = lagrangian_gradient(yp), gm = lagrangian_gradient(ym);
+    for (int j = 0; j < n; ++j) {
+      EXPECT_NEAR(hess[j * n + i], (gp[j] - gm[j]) / (2 * h), 1e-6) << i << "," << j;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace hotlap::ocp

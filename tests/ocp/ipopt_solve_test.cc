@@ -1,0 +1,143 @@
+// The transcription and the solver on problems with known optima: the minimum time of a double
+// integrator (bang-bang, T = 2), minimum control energy (u = 6 - 12 t, J = 12) with the
+// trapezoidal rule's second-order convergence, and an infeasible problem reported as such.
+
+#include "hotlap/ocp/ipopt_solve.h"
+
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace hotlap::ocp {
+namespace {
+
+// h/2 (a + b) with h = T / N: the trapezoid of a rate over one interval of a free final time.
+struct FreeTimeTrapezoid {
+  double intervals;
+  template <class T>
+  void operator()(const T* in, T* out) const {
+    out[0] = 0.5 * in[0] / intervals * (in[1] + in[2]);
+  }
+};
+
+// Minimum time to move a double integrator x'' = u, |u| <= 1, from rest at 0 to rest at 1:
+// accelerate for 1 s and brake for 1 s, T = 2.
+TEST(IpoptSolveTest, DoubleIntegratorMinimumTimeIsBangBang) {
+  const int n = 40;
+  ElementNlp nlp;
+  const int t = nlp.AddVariable(3.0, 0.1, 10.0, 1.0);
+  std::vector<int> x(n + 1), v(n + 1), u(n + 1);
+  for (int k = 0; k <= n; ++k) {
+    const double s = static_cast<double>(k) / n;
+    x[k] = nlp.AddVariable(s, k == 0 ? 0.0 : (k == n ? 1.0 : -1e19),
+                           k == 0 ? 0.0 : (k == n ? 1.0 : 1e19), 1.0);
+    v[k] = nlp.AddVariable(0.5, k == 0 || k == n ? 0.0 : -1e19, k == 0 || k == n ? 0.0 : 1e19, 1.0);
+    u[k] = nlp.AddVariable(0.0, -1.0, 1.0, 1.0);
+  }
+  const std::shared_ptr<const Element> trap = MakeElement<3, 1>(FreeTimeTrapezoid{double(n)});
+  for (int k = 0; k < n; ++k) {
+    const int rx = nlp.AddConstraint(0, 0, 1.0), rv = nlp.AddConstraint(0, 0, 1.0);
+    nlp.AddLinear(rx, x[k + 1], 1.0);
+    nlp.AddLinear(rx, x[k], -1.0);
+    nlp.AddElement(trap, {t, v[k], v[k + 1]}, {{{rx, -1.0}}});
+    nlp.AddLinear(rv, v[k + 1], 1.0);
+    nlp.AddLinear(rv, v[k], -1.0);
+    nlp.AddElement(trap, {t, u[k], u[k + 1]}, {{{rv, -1.0}}});
+  }
+  nlp.AddObjectiveLinear(t, 1.0);
+  nlp.Finalize();
+  const SolveResult r = SolveWithIpopt(nlp, {});
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_NEAR(r.x[t], 2.0, 2.0 / n);
+  // Full throttle in the first half, full brake in the second (away from the switch).
+  for (int k = 2; k < n / 2 - 2; ++k) EXPECT_NEAR(r.x[u[k]], 1.0, 1e-4) << k;
+  for (int k = n / 2 + 3; k <= n - 2; ++k) EXPECT_NEAR(r.x[u[k]], -1.0, 1e-4) << k;
+}
+
+struct HalfSquareTrapezoid {
+  double h;
+  template <class T>
+  void operator()(const T* in, T* out) const {
+    out[0] = 0.5 * h * (in[0] * in[0] + in[1] * in[1]);
+  }
+};
+
+struct FixedTrapezoid {
+  double h;
+  template <class T>
+  void operator()(const T* in, T* out) const {
+    out[0] = 0.5 * h * (in[0] + in[1]);
+  }
+};
+
+// min int u^2 dt over [0, 1], x'' = u, rest to rest from 0 to 1: u = 6 - 12 t, J = 12. The
+// trapezoidal transcription's error falls as h^2.
+double MinimumEnergy(int n, double* u_mid_error) {
+  ElementNlp nlp;
+  const double h = 1.0 / n;
+  std::vector<int> x(n + 1), v(n + 1), u(n + 1);
+  for (int k = 0; k <= n; ++k) {
+    const bool end = k == 0 || k == n;
+    x[k] = nlp.AddVariable(0.0, end ? (k == 0 ? 0.0 : 1.0) : -1e19,
+                           end ? (k == 0 ? 0.0 : 1.0) : 1e19, 1.0);
+    v[k] = nlp.AddVariable(0.0, end ? 0.0 : -1e19, end ? 0.0 : 1e19, 1.0);
+    u[k] = nlp.AddVariable(0.0, -1e19, 1e19, 10.0);
+  }
+  const std::shared_ptr<const Element> trap = MakeElement<2, 1>(FixedTrapezoid{h});
+  const std::shared_ptr<const Element> cost = MakeElement<2, 1>(HalfSquareTrapezoid{h});
+  for (int k = 0; k < n; ++k) {
+    const int rx = nlp.AddConstraint(0, 0, 1.0), rv = nlp.AddConstraint(0, 0, 1.0);
+    nlp.AddLinear(rx, x[k + 1], 1.0);
+    nlp.AddLinear(rx, x[k], -1.0);
+    nlp.AddElement(trap, {v[k], v[k + 1]}, {{{rx, -1.0}}});
+    nlp.AddLinear(rv, v[k + 1], 1.0);
+    nlp.AddLinear(rv, v[k], -1.0);
+    nlp.AddElement(trap, {u[k], u[k + 1]}, {{{rv, -1.0}}});
+    nlp.AddElement(cost, {u[k], u[k + 1]}, {{{Target::kObjective, 1.0}}});
+  }
+  nlp.Finalize();
+  IpoptOptions options;
+  options.tolerance = 1e-10;
+  const SolveResult r = SolveWithIpopt(nlp, options);
+  EXPECT_TRUE(r.ok()) << r.message;
+  *u_mid_error = std::abs(r.x[u[n / 2]] - 0.0);
+  return r.objective;
+}
+
+TEST(IpoptSolveTest, MinimumEnergyConvergesAtSecondOrder) {
+  double e1 = 0, e2 = 0;
+  const double j20 = MinimumEnergy(20, &e1);
+  const double j40 = MinimumEnergy(40, &e2);
+  EXPECT_NEAR(j20, 12.0, 0.15);
+  EXPECT_NEAR(j40, 12.0, 0.04);
+  const double ratio = std::abs(j20 - 12.0) / std::abs(j40 - 12.0);
+  EXPECT_GT(ratio, 3.5);  // 4 for second order
+  EXPECT_LT(ratio, 4.5);
+  EXPECT_LT(e2, 1e-6);  // u(1/2) = 0 by symmetry
+}
+
+// x in [0, 1] with x >= 2 imposed as a row: reported as infeasible, not as a crash.
+struct Identity {
+  template <class T>
+  void operator()(const T* in, T* out) const {
+    out[0] = in[0] * in[0];
+  }
+};
+
+TEST(IpoptSolveTest, InfeasibleProblemSaysSo) {
+  ElementNlp nlp;
+  const int x = nlp.AddVariable(0.5, 0.0, 1.0, 1.0);
+  const int r = nlp.AddConstraint(2.0, 1e19, 1.0);
+  nlp.AddElement(MakeElement<1, 1>(Identity{}), {x}, {{{r, 1.0}}});
+  nlp.AddObjectiveLinear(x, 1.0);
+  nlp.Finalize();
+  const SolveResult res = SolveWithIpopt(nlp, {});
+  EXPECT_FALSE(res.ok());
+  EXPECT_EQ(res.status, SolveStatus::kInfeasible) << res.message;
+  EXPECT_NE(res.message.find("cannot all be met"), std::string::npos);
+  EXPECT_EQ(res.x.size(), 1u);
+}
+
+}  // namespace
+}  // namespace hotlap::ocp
