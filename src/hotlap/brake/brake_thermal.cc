@@ -127,5 +127,7 @@ BrakeState<T> CalcBrakeDerivatives(const BrakeThermalParams<T>& p, const BrakeSt
                                                  const BrakeState<T>&, const BrakeInputTerms<T>&, \
                                                  BrakeHeatFlows<T>*);
 HOTLAP_FOR_EACH_SCALAR(HOTLAP_INSTANTIATE_BRAKE_THERMAL)
+// The optimal-control lap's brake elements have 5 inputs.
+HOTLAP_INSTANTIATE_BRAKE_THERMAL(::hotlap::SecondOrder<5>)
 
 }  // namespace hotlap::brake

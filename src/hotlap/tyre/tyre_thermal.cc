@@ -273,5 +273,8 @@ TyreState<T> CalcTyreDerivatives(const TyreThermalParams<T>& p, const TyreCompou
                                                const TyreState<T>&, const TyreInputTerms<T>&,      \
                                                TyreHeatFlows<T>*);
 HOTLAP_FOR_EACH_SCALAR(HOTLAP_INSTANTIATE_TYRE_THERMAL)
+// The optimal-control lap's thermal elements have 10 inputs.
+HOTLAP_INSTANTIATE_TYRE_THERMAL(::hotlap::SecondOrder<10>)
+HOTLAP_INSTANTIATE_TYRE_THERMAL(::hotlap::Jet10)
 
 }  // namespace hotlap::tyre

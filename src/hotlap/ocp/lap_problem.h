@@ -1,0 +1,72 @@
+#pragma once
+/// @file
+/// The minimum-lap-time optimal-control problem of the NASCAR paper (000 section 4): the vehicle
+/// model of vehicle/vehicle_model.h driven round a track with its four tyres' tread and carcass
+/// temperatures and wear, and its four brakes' disc and calliper temperatures, as states; tyre
+/// forces scaled by g(T_tread) h(wear); track limits, the engine's power limit and, optionally, a
+/// limit on the front disc temperatures.
+///
+/// Transcription (docs/optimal-control.md): distance s along the centre line is the independent
+/// variable, N intervals of equal length, trapezoidal collocation. The programme is lifted: every
+/// node carries, besides the states and controls, the quantities the equations share (tyre
+/// forces, slip angles, wheel speeds, normal loads, total forces, dt/ds), each defined by an
+/// equality constraint, so every equation is a small element differentiated exactly by
+/// forward-mode AD (ocp/element.h). Ipopt solves it with exact first and second derivatives.
+///
+/// Node variables: states u, v, r (body speeds, yaw rate), n (lateral offset, left +), xi
+/// (heading error), and per corner T_tread, T_carcass, wear, T_disc, T_calliper; controls steer,
+/// drive power P (at the rear contact patches, 0..P_wheel) and brake force B (>= 0, split by the
+/// brake balance: front wheels beta B / 2 each, the rear axle (1 - beta) B); algebraic slip
+/// ratios (front wheels, the rear axle's spool and each rear wheel), slip angles, wheel speeds,
+/// normal loads, tyre forces, the body-axis totals X, Y, Mz, and w = dt/ds.
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "hotlap/ocp/ipopt_solve.h"
+#include "hotlap/sim/qss_lap.h"
+#include "hotlap/track/track.h"
+#include "hotlap/vehicle/car.h"
+
+namespace hotlap::ocp {
+
+struct LapProblemOptions {
+  double step_m = 2.0;                      ///< mesh spacing along the centre line
+  std::optional<double> front_disc_limit;   ///< K; front discs at most this at every node
+  bool periodic_thermal = false;            ///< thermal states end where they start (else start fixed)
+  double ambient_temp = 0.0;                ///< K
+  double track_temp = 0.0;                  ///< K
+  sim::ReplayInitialState initial;          ///< thermal states at the start line
+  double car_half_width = 1.0;              ///< m kept between the centre of the car and an edge
+  /// Weight of the control-smoothness penalty sum (d control / ds)^2 ds (scaled controls).
+  double smoothing = 1e-4;
+};
+
+/// One corner's channels along the solution, SI (K).
+struct CornerTrace {
+  std::vector<double> fz, fx, fy, slip_angle, slip_ratio, speed;
+  std::vector<double> tread_temp, carcass_temp, wear, disc_temp, calliper_temp, brake_power;
+};
+
+/// The optimal lap at the mesh nodes (N + 1: the last closes the lap).
+struct LapSolution {
+  SolveResult solve;
+  std::vector<double> distance;  ///< m
+  std::vector<double> time;      ///< s (trapezoid of w)
+  std::vector<double> u, v, r, n, xi;
+  std::vector<double> steer, drive_power, brake_force;
+  std::array<CornerTrace, 4> corners;
+  double lap_time = 0.0;  ///< s
+  int variables = 0;
+  int constraints = 0;
+};
+
+/// Builds and solves the lap. `guess` (a QSS lap of the same car and track, e.g. from
+/// sim::RunQssLap) gives the starting point. InputError if the car has no vehicle sections;
+/// failures of the solve are reported in the result's `solve` (never thrown).
+LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& track,
+                                const LapProblemOptions& options, const sim::QssLap& guess,
+                                const IpoptOptions& ipopt);
+
+}  // namespace hotlap::ocp
