@@ -21,6 +21,7 @@
 #include "hotlap/sim/lap_output.h"
 #include "hotlap/sim/qss_lap.h"
 #include "hotlap/sim/road.h"
+#include "hotlap/track/racing_line.h"
 #include "hotlap/track/track_io.h"
 #include "output.h"
 
@@ -32,6 +33,8 @@ namespace fs = std::filesystem;
 
 struct LapArgs {
   std::string method = "qss";
+  std::string line = "min-curvature";
+  double line_margin_m = 1.5;
   std::string track = "darlington";
   std::string car = "gen7";
   int laps = 1;
@@ -55,6 +58,7 @@ void WriteLapReport(const fs::path& path, const LapArgs& a, const vehicle::Car& 
                     const std::vector<sim::BrakingZone>& zones) {
   report::HtmlReport page(fmt::format("hotlap lap: {} on {}", car.name, track.name()));
   page.AddMetadata("method", "quasi-steady-state (docs/lap-simulation.md)");
+  page.AddMetadata("line", a.line);
   page.AddMetadata("car", car.path.string());
   page.AddMetadata("track", fmt::format("{} ({:.1f} m)", track.name(), track.length_m()));
   page.AddMetadata("laps", std::to_string(a.laps));
@@ -151,7 +155,14 @@ int RunLap(const LapArgs& a) {
   const vehicle::Car car = vehicle::LoadCar(ResolveCarFile(a.car));
   vehicle::RequireVehicle(car, "`hotlap lap`");
   const track::Track track = track::LoadTrack(a.track);
-  const std::vector<sim::RoadPoint> road = sim::SampleRoad(track, a.step_m);
+  const std::vector<sim::RoadPoint> road =
+      a.line == "centre"
+          ? sim::SampleRoad(track, a.step_m)
+          : sim::SampleRoadAlongLine(
+                track,
+                track::MinimumCurvatureLine(
+                    track, {.step_m = std::max(a.step_m, 2.0), .margin_m = a.line_margin_m}),
+                a.step_m);
   if (fs::exists(a.out) && !fs::is_directory(a.out)) {
     throw InputError(fmt::format("--out {}: exists and is not a folder", a.out));
   }
@@ -159,6 +170,7 @@ int RunLap(const LapArgs& a) {
 
   sim::QssOptions options;
   options.laps = a.laps;
+  options.track_length = track.length_m();
   options.ambient_temp = CelsiusToKelvin(a.ambient_C);
   options.track_temp = CelsiusToKelvin(a.track_C);
   const auto pick = [](const std::optional<double>& c, double kelvin) {
@@ -170,8 +182,12 @@ int RunLap(const LapArgs& a) {
     options.initial.brakes[k] = {pick(a.disc_C, car.initial.disc_temp),
                                  pick(a.calliper_C, car.initial.calliper_temp)};
   }
-  fmt::print("hotlap lap: car '{}' on {} ({:.1f} m, {} points), {} lap{}, quasi-steady-state\n",
-             car.name, track.name(), track.length_m(), road.size(), a.laps, a.laps > 1 ? "s" : "");
+  fmt::print(
+      "hotlap lap: car '{}' on {} ({:.1f} m; {} line, {:.1f} m, {} points), {} lap{}, "
+      "quasi-steady-state\n",
+      car.name, track.name(), track.length_m(), a.line,
+      road.size() * (road[1].distance - road[0].distance), road.size(), a.laps,
+      a.laps > 1 ? "s" : "");
   std::fflush(stdout);
   const sim::QssResult result = sim::RunQssLap(car, road, options);
   const double elapsed =
@@ -309,6 +325,14 @@ CommandRunner RegisterLapCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--out", args->out, "Output folder: lap.csv and lap.html")->required();
   sub->add_option("--json", args->json, "Write the summary as JSON (docs/json-output.md)");
+  sub->add_option("--line", args->line,
+                  "The path driven: min-curvature (the minimum-curvature racing line) or centre")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"min-curvature", "centre"}));
+  sub->add_option("--line-margin-m", args->line_margin_m,
+                  "Space the racing line keeps from each edge, m")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   sub->add_option("--step-m", args->step_m, "Distance between road points, m")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);

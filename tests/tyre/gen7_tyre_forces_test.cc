@@ -62,11 +62,11 @@ TEST(Gen7TyreForcesTest, PlausibleRacingRadialOverOvalLoads) {
     for (double fz : {1500.0, 3000.0, 5000.0, 7000.0, 9000.0}) {
       const auto [fy_peak, alpha_peak] = Peak(p, fz, true);
       const auto [fx_peak, kappa_peak] = Peak(p, fz, false);
-      // Friction 1.0..1.4, falling with load; peaks at racing-tyre slips.
-      EXPECT_GT(fy_peak / fz, 1.0) << side << " " << fz;
-      EXPECT_LT(fy_peak / fz, 1.4) << side << " " << fz;
-      EXPECT_GT(fx_peak / fz, 1.0) << side << " " << fz;
-      EXPECT_LT(fx_peak / fz, 1.45) << side << " " << fz;
+      // Friction 0.9..1.3, falling with load; peaks at racing-tyre slips.
+      EXPECT_GT(fy_peak / fz, 0.9) << side << " " << fz;
+      EXPECT_LT(fy_peak / fz, 1.3) << side << " " << fz;
+      EXPECT_GT(fx_peak / fz, 0.9) << side << " " << fz;
+      EXPECT_LT(fx_peak / fz, 1.35) << side << " " << fz;
       EXPECT_GT(RadToDeg(alpha_peak), 3.0) << side << " " << fz;
       EXPECT_LT(RadToDeg(alpha_peak), 10.0) << side << " " << fz;
       EXPECT_GT(kappa_peak, 0.05) << side << " " << fz;

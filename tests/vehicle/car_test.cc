@@ -24,7 +24,9 @@ TEST(CarTest, ShippedCarLoadsEveryCorner) {
     EXPECT_EQ(car.tyre(c).path.filename(), std::string(CornerName(c)) + ".yaml");
     ASSERT_NE(car.tyre(c).compound, nullptr);
     EXPECT_EQ(car.tyre(c).compound->name, "gen7-speedway-compound");
-    EXPECT_EQ(car.brake(c).name, IsFront(c) ? "gen7-front-brake" : "gen7-rear-brake");
+    EXPECT_EQ(car.brake(c).name, c == Corner::kFrontLeft ? "gen7-front-left-brake"
+                                 : IsFront(c)            ? "gen7-front-brake"
+                                                         : "gen7-rear-brake");
     EXPECT_EQ(car.brake(c).params.disc_mass, IsFront(c) ? 8.8 : 4.9);  // 000 Table 5
     EXPECT_EQ(&car.tyre(c), &car.tyres[CornerIndex(c)]);
   }

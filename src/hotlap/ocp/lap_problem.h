@@ -27,20 +27,25 @@
 #include "hotlap/ocp/ipopt_solve.h"
 #include "hotlap/sim/qss_lap.h"
 #include "hotlap/track/track.h"
+#include "hotlap/tyre/tyre_thermal.h"
 #include "hotlap/vehicle/car.h"
 
 namespace hotlap::ocp {
 
 struct LapProblemOptions {
-  double step_m = 2.0;                      ///< mesh spacing along the centre line
-  std::optional<double> front_disc_limit;   ///< K; front discs at most this at every node
-  bool periodic_thermal = false;            ///< thermal states end where they start (else start fixed)
-  double ambient_temp = 0.0;                ///< K
-  double track_temp = 0.0;                  ///< K
-  sim::ReplayInitialState initial;          ///< thermal states at the start line
-  double car_half_width = 1.0;              ///< m kept between the centre of the car and an edge
-  /// Weight of the control-smoothness penalty sum (d control / ds)^2 ds (scaled controls).
+  double step_m = 2.0;                     ///< mesh spacing along the centre line
+  std::optional<double> front_disc_limit;  ///< K; front discs at most this at every node
+  bool periodic_thermal = false;    ///< thermal states end where they start (else start fixed)
+  double ambient_temp = 0.0;        ///< K
+  double track_temp = 0.0;          ///< K
+  sim::ReplayInitialState initial;  ///< thermal states at the start line
+  double car_half_width = 1.0;      ///< m kept between the centre of the car and an edge
+  /// Weight of the control-smoothness penalty: weight * sum over intervals of the squared change
+  /// of each scaled control.
   double smoothing = 1e-4;
+  /// The tyre thermal model's |x| made smooth for the optimiser (tyre_thermal.h); the solution is
+  /// replayed through the exact model to report the difference.
+  tyre::TyreThermalSmoothing thermal_smoothing{10.0, 1e-3};
 };
 
 /// One corner's channels along the solution, SI (K).

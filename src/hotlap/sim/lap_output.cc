@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "hotlap/common/units.h"
+#include "hotlap/track/track_point.h"
 
 namespace hotlap::sim {
 
@@ -48,8 +49,8 @@ std::vector<BrakingZone> FindBrakingZones(const QssLap& lap, int lap_number, dou
     }
     BrakingZone z;
     z.lap = lap_number;
-    z.start_m = lap.distance[i];
-    z.end_m = lap.distance[j];
+    z.start_m = lap.centre_distance[i] - lap.centre_distance[0];
+    z.end_m = lap.centre_distance[j] - lap.centre_distance[0];
     z.entry_speed = lap.speed[i];
     z.exit_speed = lap.speed[j];
     z.duration_s = lap.time[j] - lap.time[i];
@@ -87,7 +88,8 @@ ColumnSet LapResultColumns(const QssResult& result, const track::Track& track, d
     out.values.emplace_back();
     return out.names.size() - 1;
   };
-  const size_t distance = column("distance_m"), time = column("time_s"), lap_col = column("lap"),
+  const size_t distance = column("distance_m"), path_col = column("path_distance_m"),
+               offset_col = column("offset_m"), time = column("time_s"), lap_col = column("lap"),
                speed = column("speed_mps"), accel_long = column("accel_long_mps2"),
                accel_lat = column("accel_lat_mps2"), steer = column("steer_deg"), x = column("x_m"),
                y = column("y_m"), ambient = column("ambient_temp_C"),
@@ -114,21 +116,24 @@ ColumnSet LapResultColumns(const QssResult& result, const track::Track& track, d
     k.power = column(fmt::format("brake_power_{}_W", n));
   }
   const auto push = [&](size_t col, double v) { out.values[col].push_back(v); };
-  double distance0 = 0.0, time0 = 0.0;
+  double distance0 = 0.0, path0 = 0.0, time0 = 0.0;
   for (size_t l = 0; l < result.laps.size(); ++l) {
     const QssLap& lap = result.laps[l];
     const size_t n = lap.speed.size() - (l + 1 < result.laps.size() ? 1 : 0);
     for (size_t i = 0; i < n; ++i) {
-      push(distance, distance0 + lap.distance[i]);
+      push(distance, distance0 + lap.centre_distance[i] - lap.centre_distance[0]);
+      push(path_col, path0 + lap.distance[i]);
+      push(offset_col, lap.offset[i]);
       push(time, time0 + lap.time[i]);
       push(lap_col, static_cast<double>(l + 1));
       push(speed, lap.speed[i]);
       push(accel_long, lap.accel_long[i]);
       push(accel_lat, lap.accel_lat[i]);
       push(steer, RadToDeg(lap.steer[i]));
-      const track::TrackPoint p = track.At(lap.distance[i]);
-      push(x, p.x_m);
-      push(y, p.y_m);
+      const Eigen::Vector3d pos =
+          track::PointAtOffset(track.At(lap.centre_distance[i]), lap.offset[i]);
+      push(x, pos[0]);
+      push(y, pos[1]);
       push(ambient, KelvinToCelsius(ambient_temp));
       push(track_t, KelvinToCelsius(track_temp));
       for (Corner c : kAllCorners) {
@@ -150,7 +155,8 @@ ColumnSet LapResultColumns(const QssResult& result, const track::Track& track, d
         push(cc[k].power, h.brake_power[i]);
       }
     }
-    distance0 += lap.distance.back();
+    distance0 += lap.centre_distance.back() - lap.centre_distance.front();
+    path0 += lap.distance.back();
     time0 += lap.time.back();
   }
   return out;

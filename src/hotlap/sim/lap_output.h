@@ -42,8 +42,9 @@ struct LapFigures {
 
 LapFigures CalcLapFigures(const QssLap& lap);
 
-/// The whole stint as CSV columns (docs/lap-simulation.md): distance_m and time_s from the stint's
-/// start, lap, speed_mps, accelerations, steer, centre-line x_m and y_m, ambient and track
+/// The whole stint as CSV columns (docs/lap-simulation.md): distance_m (along the centre line),
+/// path_distance_m (along the driven line) and time_s from the stint's start, offset_m (the line's
+/// lateral offset), lap, speed_mps, accelerations, steer, the car's x_m and y_m, ambient and track
 /// temperatures, then per corner the inputs of the thermal models under their telemetry names
 /// (speed_<c>_mps, fx_<c>_N, fy_<c>_N, fz_<c>_N, slip_angle_<c>_deg, slip_ratio_<c>) and the
 /// replay's outputs (tread_temp_<c>_C ... brake_power_<c>_W), so the file can be replayed or

@@ -59,8 +59,8 @@ struct Prepared {
 };
 
 // Channels of one lap from its speed profile: forces, loads, slips (step 3 of qss_lap.h).
-QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, const SpeedProfile& profile,
-                const std::array<std::vector<double>, 4>& grip,
+QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, double track_length,
+                const SpeedProfile& profile, const std::array<std::vector<double>, 4>& grip,
                 const std::array<std::vector<double>, 4>& tread_temp) {
   const VehicleParams& p = *prep.params;
   const size_t n = road.size();
@@ -68,6 +68,8 @@ QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, const Spe
   const double m = p.chassis.mass;
   QssLap lap;
   lap.distance.resize(n + 1);
+  lap.centre_distance.resize(n + 1);
+  lap.offset.resize(n + 1);
   lap.time.resize(n + 1);
   lap.speed.resize(n + 1);
   lap.accel_long.resize(n + 1);
@@ -135,6 +137,8 @@ QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, const Spe
     if (!reached) ++lap.slip_points_not_reached;
 
     lap.distance[i] = point.distance - road[0].distance;
+    lap.centre_distance[i] = point.centre_distance;
+    lap.offset[i] = point.offset;
     lap.time[i] = time;
     lap.speed[i] = v;
     lap.accel_long[i] = accel;
@@ -167,6 +171,8 @@ QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, const Spe
   }
   // Close the lap at the start line with the first sample's channels.
   lap.distance[n] = n * ds;
+  lap.centre_distance[n] = lap.centre_distance[0] + track_length;
+  lap.offset[n] = lap.offset[0];
   lap.time[n] = time;
   lap.lap_time = time;
   lap.speed[n] = lap.speed[0];
@@ -200,8 +206,12 @@ std::vector<RoadPoint> Coarsen(std::span<const RoadPoint> road, double step) {
     const double w = x - static_cast<double>(i);
     const RoadPoint& a = road[i];
     const RoadPoint& b = road[(i + 1) % n];
-    out[j] = {road[0].distance + s, a.curvature + w * (b.curvature - a.curvature),
-              a.bank + w * (b.bank - a.bank), a.grade + w * (b.grade - a.grade)};
+    out[j] = {road[0].distance + s,
+              a.curvature + w * (b.curvature - a.curvature),
+              a.bank + w * (b.bank - a.bank),
+              a.grade + w * (b.grade - a.grade),
+              a.centre_distance + w * (b.centre_distance - a.centre_distance),
+              a.offset + w * (b.offset - a.offset)};
   }
   return out;
 }
@@ -242,6 +252,9 @@ QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
   if (options.laps < 1) throw InputError("QSS lap: laps must be >= 1");
   const size_t n = road.size();
   const Prepared prep(car, params);
+  // The centre line's length closes centre_distance; a centre-line road is its own.
+  const double track_length =
+      options.track_length > 0.0 ? options.track_length : n * (road[1].distance - road[0].distance);
 
   ReplayInitialState state = options.initial;
   std::array<std::vector<double>, 4> grip, tread;
@@ -257,7 +270,7 @@ QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
       [&](std::span<const RoadPoint> r, const std::array<std::vector<double>, 4>& g,
           const std::array<std::vector<double>, 4>& t, const ReplayInitialState& from) {
         const SpeedProfile profile = CalcSpeedProfile(prep.qss, r, g);
-        QssLap lap = BuildLap(prep, r, profile, g, t);
+        QssLap lap = BuildLap(prep, r, track_length, profile, g, t);
         ReplayInputs inputs;
         inputs.time = lap.time;
         inputs.corners = lap.corners;

@@ -35,13 +35,15 @@
 
 namespace hotlap::sim {
 
-/// The road at one point of the centre line (uniform spacing, closed: the point after the last is
-/// the first).
+/// The road at one point of the path the car drives (the centre line or a racing line; uniform
+/// spacing along it, closed: the point after the last is the first).
 struct RoadPoint {
-  double distance = 0.0;   ///< from the start line, m
-  double curvature = 0.0;  ///< horizontal curvature kappa_h, 1/m (> 0 turning left)
+  double distance = 0.0;   ///< along the path from the start line, m
+  double curvature = 0.0;  ///< horizontal curvature kappa_h of the path, 1/m (> 0 turning left)
   double bank = 0.0;       ///< theta, rad (> 0: right edge up)
   double grade = 0.0;      ///< phi, rad (> 0: uphill)
+  double centre_distance = 0.0;  ///< centre-line distance of the same cross-section, m
+  double offset = 0.0;           ///< the path's lateral offset from the centre line, m (left +)
 };
 
 /// What limits the speed at a point.
@@ -60,18 +62,22 @@ struct QssOptions {
   ReplayOptions replay;
   /// Recompute the first lap with the grip factors of its own first pass (thermal coupling).
   bool couple_first_lap = true;
+  /// Centre-line length of the lap, m (closes centre_distance); 0: the road's own length.
+  double track_length = 0.0;
 };
 
 /// One lap's profile and the per-corner channels the thermal models ran on; N + 1 samples (the
 /// last closes the lap at the start line).
 struct QssLap {
-  std::vector<double> distance;    ///< m, from this lap's start
-  std::vector<double> time;        ///< s, from this lap's start
-  std::vector<double> speed;       ///< m/s
-  std::vector<double> accel_long;  ///< m/s^2
-  std::vector<double> accel_lat;   ///< V^2 kappa_g, m/s^2
-  std::vector<double> steer;       ///< derived road-wheel steer angle, rad
-  std::vector<SpeedLimit> limit;   ///< what set the speed
+  std::vector<double> distance;         ///< m along the driven path, from this lap's start
+  std::vector<double> centre_distance;  ///< m along the centre line (the cross-section)
+  std::vector<double> offset;           ///< m, the path's lateral offset (left +)
+  std::vector<double> time;             ///< s, from this lap's start
+  std::vector<double> speed;            ///< m/s
+  std::vector<double> accel_long;       ///< m/s^2
+  std::vector<double> accel_lat;        ///< V^2 kappa_g, m/s^2
+  std::vector<double> steer;            ///< derived road-wheel steer angle, rad
+  std::vector<SpeedLimit> limit;        ///< what set the speed
   std::array<CornerChannels, 4> corners;
   std::array<std::vector<double>, 4> tread_temp_used;  ///< K, the grip factors' temperatures
   double lap_time = 0.0;                               ///< s

@@ -229,7 +229,7 @@ SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> 
     const double drive = CalcMaxDriveForce(car, road[prev], v, grip_at(prev), &why);
     const double a = (drive - CalcResistance(car, road[prev], v)) / m;
     const double reachable = std::sqrt(std::max(v * v + 2.0 * a * ds, 0.25));
-    if (reachable < out.speed[i]) {
+    if (reachable < out.speed[i] - 1e-6) {  // a limit search tolerance is not a limit
       out.speed[i] = reachable;
       out.limit[i] = why;
     }
@@ -241,7 +241,7 @@ SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> 
     const double brake = CalcMaxBrakeForce(car, road[next], v, grip_at(next));
     const double d = (brake + CalcResistance(car, road[next], v)) / m;
     const double reachable = std::sqrt(std::max(v * v + 2.0 * d * ds, 0.25));
-    if (reachable < out.speed[i]) {
+    if (reachable < out.speed[i] - 1e-6) {  // a limit search tolerance is not a limit
       out.speed[i] = reachable;
       out.limit[i] = SpeedLimit::kBraking;
     }

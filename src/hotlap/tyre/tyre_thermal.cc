@@ -115,6 +115,15 @@ TyreConstants<T> CalcTyreConstants(const TyreThermalParams<T>& p) {
 
 namespace {
 
+// |x|, or its smooth stand-in sqrt(x^2 + eps^2) - eps when eps > 0 (TyreThermalSmoothing).
+template <Scalar T>
+T Magnitude(const T& x, double eps) {
+  using std::abs;
+  using std::sqrt;
+  if (eps <= 0.0) return abs(x);
+  return sqrt(x * x + eps * eps) - eps;
+}
+
 // Every input term except the wear factor, which needs the compound.
 // With `near` given (terms of a nearby input), its powers seed this input's (PowPositiveNear).
 template <Scalar T>
@@ -138,13 +147,17 @@ TyreInputTerms<T> CalcHeatInputTerms(const TyreThermalParams<T>& p, const TyreCo
   const T contact_length = p.contact_length_coeff * t.load_pow;         // c_l (000:14)
   t.convection_area = t.tread_area - p.contact_width * contact_length;  // A_conv (000:12)
   // Share of the patch that does not slide, (000:19), unclamped as in the paper.
-  const T non_sliding = abs(in.slip_angle) / p.reference_slip_angle *
+  const TyreThermalSmoothing& eps = p.smoothing;
+  const T non_sliding = Magnitude(in.slip_angle, eps.angle_rad) / p.reference_slip_angle *
                             (p.non_sliding_fraction_high - p.non_sliding_fraction_low) +
                         p.non_sliding_fraction_low;
   t.adhesion_area = p.contact_width * non_sliding * contact_length;  // A_cp (000:18)
-  t.q1 = p.p1 * speed * (abs(in.fx * in.slip_ratio) + abs(in.fy * tan(in.slip_angle)));  // (000:9)
+  t.q1 = p.p1 * speed *
+         (Magnitude(T(in.fx * in.slip_ratio), eps.force_N) +
+          Magnitude(T(in.fy * tan(in.slip_angle)), eps.force_N));  // (000:9)
   t.q2 = speed * k.carcass_heating *
-         (p.p2 * abs(in.fx) + p.p3 * abs(in.fy) + p.p4 * abs(in.fz));  // (000:10)
+         (p.p2 * Magnitude(in.fx, eps.force_N) + p.p3 * Magnitude(in.fy, eps.force_N) +
+          p.p4 * abs(in.fz));  // (000:10)
   t.length = k.length;
   if (ValueOf(speed) == 0.0) {
     t.speed_length_pow = T(0.0);

@@ -20,6 +20,15 @@
 
 namespace hotlap::tyre {
 
+/// Smooth stand-ins for the model's |x| where an optimiser needs second derivatives: |x| becomes
+/// sqrt(x^2 + eps^2) - eps (exact at 0, within eps of |x| everywhere). Zero (the default, and what
+/// every file loads) is the exact model; only the optimal-control lap sets them, and it reports the
+/// difference by replaying its solution through the exact model.
+struct TyreThermalSmoothing {
+  double force_N = 0.0;    ///< eps for |Fx kappa|, |Fy tan(alpha)|, |Fx| and |Fy|, N
+  double angle_rad = 0.0;  ///< eps for |alpha| in the non-sliding share (000:19), rad
+};
+
 /// Parameters of one tyre; SI units (angles in rad).
 template <Scalar T>
 struct TyreThermalParams {
@@ -35,20 +44,21 @@ struct TyreThermalParams {
   T contact_length_coeff{};     ///< p_cp1
   T contact_length_exponent{};  ///< p_cp2
   // Constants (000 Table 3).
-  T tread_mass{};                 ///< m_t, kg
-  T carcass_mass{};               ///< m_c, kg
-  T tread_heat_capacity{};        ///< c_t, J/(kg K)
-  T carcass_heat_capacity{};      ///< c_c, J/(kg K)
-  T track_conductance{};          ///< h_tt, W/(m^2 K) (000:17)
-  T contact_width{};              ///< c_w, m
-  T reference_slip_angle{};       ///< alpha_c, rad (000:19)
-  T non_sliding_fraction_low{};   ///< c_s1 (000:19)
-  T non_sliding_fraction_high{};  ///< c_s2 (000:19)
-  T unloaded_radius{};            ///< r0, m (000:22)
-  T rim_radius{};                 ///< r_rim, m (000:22)
-  T diameter{};                   ///< D, m, as printed (see the file comment)
-  T width{};                      ///< W, m
-  T emissivity{};                 ///< eps of rubber, 1
+  T tread_mass{};                  ///< m_t, kg
+  T carcass_mass{};                ///< m_c, kg
+  T tread_heat_capacity{};         ///< c_t, J/(kg K)
+  T carcass_heat_capacity{};       ///< c_c, J/(kg K)
+  T track_conductance{};           ///< h_tt, W/(m^2 K) (000:17)
+  T contact_width{};               ///< c_w, m
+  T reference_slip_angle{};        ///< alpha_c, rad (000:19)
+  T non_sliding_fraction_low{};    ///< c_s1 (000:19)
+  T non_sliding_fraction_high{};   ///< c_s2 (000:19)
+  T unloaded_radius{};             ///< r0, m (000:22)
+  T rim_radius{};                  ///< r_rim, m (000:22)
+  T diameter{};                    ///< D, m, as printed (see the file comment)
+  T width{};                       ///< W, m
+  T emissivity{};                  ///< eps of rubber, 1
+  TyreThermalSmoothing smoothing;  ///< exact model unless an optimiser sets it
 
   template <class Self>
   static auto FieldsOf(Self& s) {
@@ -64,6 +74,7 @@ struct TyreThermalParams {
   TyreThermalParams<U> Cast() const {
     TyreThermalParams<U> out;
     CastFields(*this, out);
+    out.smoothing = smoothing;
     return out;
   }
 };

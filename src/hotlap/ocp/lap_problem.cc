@@ -1,0 +1,423 @@
+#include "hotlap/ocp/lap_problem.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "hotlap/common/error.h"
+#include "hotlap/common/units.h"
+#include "hotlap/ocp/element_nlp.h"
+#include "hotlap/ocp/lap_elements.h"
+#include "hotlap/ocp/tyre_force_element.h"
+
+namespace hotlap::ocp {
+
+namespace {
+
+using internal::NodeRoad;
+using vehicle::VehicleParams;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Variable indices of one node.
+struct NodeVars {
+  int u, v, r, n, xi;
+  std::array<int, 4> tread, carcass, wear, disc, calliper;
+  int steer, power, brake;
+  std::array<int, 4> kappa, alpha, vx, fz, fx, fy;
+  int kappa_axle;
+  int sum_fx, sum_fy, yaw_moment, w;
+
+  // The states, in defect order.
+  std::vector<int> States() const {
+    std::vector<int> s = {u, v, r, n, xi};
+    for (int c = 0; c < 4; ++c) {
+      s.insert(s.end(), {tread[c], carcass[c], wear[c], disc[c], calliper[c]});
+    }
+    return s;
+  }
+};
+
+// A node's value of a channel sampled on the QSS lap, by linear interpolation in distance.
+double Sample(const std::vector<double>& distance, const std::vector<double>& values, double s) {
+  const auto it = std::upper_bound(distance.begin(), distance.end(), s);
+  if (it == distance.begin()) return values.front();
+  if (it == distance.end()) return values.back();
+  const size_t j = static_cast<size_t>(it - distance.begin());
+  const double w = (s - distance[j - 1]) / (distance[j] - distance[j - 1]);
+  return values[j - 1] + w * (values[j] - values[j - 1]);
+}
+
+struct Builder {
+  const vehicle::Car& car;
+  const VehicleParams& p;
+  const track::Track& track;
+  const LapProblemOptions& options;
+  const sim::QssLap& guess;
+  ElementNlp nlp;
+  std::vector<NodeVars> nodes;
+  std::vector<NodeRoad> roads;
+  int intervals = 0;
+  double ds = 0.0;
+  // Parameters (with the smooth |x| of tyre::TyreThermalSmoothing) cast once for the thermal
+  // elements' scalars.
+  std::array<tyre::TyreThermalParams<double>, 4> tyre_d;
+  std::array<tyre::TyreThermalParams<SecondOrder<10>>, 4> tyre_so;
+  std::array<tyre::TyreThermalParams<Jet10>, 4> tyre_jet;
+  std::array<brake::BrakeThermalParams<SecondOrder<5>>, 4> brake_so;
+  std::array<brake::BrakeThermalParams<Jet5>, 4> brake_jet;
+  std::array<double, 4> rolling{};
+
+  Builder(const vehicle::Car& c, const VehicleParams& vp, const track::Track& t,
+          const LapProblemOptions& o, const sim::QssLap& g)
+      : car(c), p(vp), track(t), options(o), guess(g) {
+    for (int k = 0; k < 4; ++k) {
+      tyre_d[k] = car.tyres[k].params;
+      tyre_d[k].smoothing = options.thermal_smoothing;
+      tyre_so[k] = tyre_d[k].Cast<SecondOrder<10>>();
+      tyre_jet[k] = tyre_d[k].Cast<Jet10>();
+      brake_so[k] = car.brakes[k].params.Cast<SecondOrder<5>>();
+      brake_jet[k] = car.brakes[k].params.Cast<Jet5>();
+      // Rolling resistance as the QSS takes it: -My / (R Fz) at a quarter of the weight.
+      const vehicle::CornerSetup& setup = p.corners[k];
+      tyre::TyreOperatingPoint<double> op;
+      op.fz = 0.25 * p.Weight();
+      op.camber = setup.camber;
+      op.speed = 50.0;
+      op.pressure = setup.pressure;
+      rolling[k] = std::max(
+          0.0, -tyre::CalcTyreForces(setup.forces, op).my / (setup.rolling_radius * op.fz));
+    }
+  }
+
+  void AddNodes() {
+    intervals = std::max(16, static_cast<int>(std::round(track.length_m() / options.step_m)));
+    ds = track.length_m() / intervals;
+    const double m = p.chassis.mass;
+    const double wheel_power = p.powertrain.WheelPower();
+    for (int k = 0; k <= intervals; ++k) {
+      const double s = std::min(k * ds, track.length_m());
+      const track::TrackPoint tp = track.At(k == intervals ? 0.0 : s);
+      roads.push_back({tp.curvature_per_m, tp.bank_rad, tp.grade_rad});
+      // The guess is indexed by centre-line distance (its path may be a racing line).
+      const double g_s = std::min(s, guess.centre_distance.back());
+      const auto at = [&](const std::vector<double>& v) {
+        return Sample(guess.centre_distance, v, g_s);
+      };
+      const double speed = std::max(at(guess.speed), 10.0);
+      NodeVars nv;
+      // Mechanical states.
+      nv.u = nlp.AddVariable(speed, 5.0, 150.0, 50.0);
+      nv.v = nlp.AddVariable(0.0, -20.0, 20.0, 1.0);
+      nv.r = nlp.AddVariable(speed * roads.back().kappa_g(), -3.0, 3.0, 0.3);
+      const double n_max = tp.width_left_m - options.car_half_width;
+      const double n_min = -(tp.width_right_m - options.car_half_width);
+      if (!(n_max > n_min)) {
+        throw InputError(
+            fmt::format("optimal lap: the track at {:.0f} m is narrower than the car ({:.2f} m)", s,
+                        2.0 * options.car_half_width));
+      }
+      nv.n = nlp.AddVariable(std::clamp(at(guess.offset), n_min, n_max), n_min, n_max, 5.0);
+      // Heading error of the guess's line: atan(dn/ds) (the offset's slope).
+      const double dn = (Sample(guess.centre_distance, guess.offset,
+                                std::min(g_s + 1.0, guess.centre_distance.back())) -
+                         Sample(guess.centre_distance, guess.offset, std::max(g_s - 1.0, 0.0))) /
+                        2.0;
+      nv.xi = nlp.AddVariable(std::atan(dn), -1.0, 1.0, 0.05);
+      // Thermal states: the start's fixed (unless periodic), the rest from the QSS replay.
+      for (int c = 0; c < 4; ++c) {
+        const sim::CornerHistory& h = guess.thermal.corners[c];
+        const bool fix = k == 0 && !options.periodic_thermal;
+        const auto state = [&](const std::vector<double>& hist, double start, double lo, double hi,
+                               double scale) {
+          const double value = k == 0 ? start : Sample(guess.centre_distance, hist, g_s);
+          return nlp.AddVariable(value, fix ? start : lo, fix ? start : hi, scale);
+        };
+        nv.tread[c] = state(h.tread_temp, options.initial.tyres[c].tread_temp, 200.0, 800.0, 100.0);
+        nv.carcass[c] =
+            state(h.carcass_temp, options.initial.tyres[c].carcass_temp, 200.0, 800.0, 100.0);
+        nv.wear[c] = state(h.wear, options.initial.tyres[c].wear, 0.0, 50.0, 0.01);
+        double disc_hi = 2000.0;
+        if (options.front_disc_limit && IsFront(kAllCorners[c]))
+          disc_hi = *options.front_disc_limit;
+        nv.disc[c] = state(h.disc_temp, options.initial.brakes[c].disc_temp, 200.0, disc_hi, 100.0);
+        if (fix && options.initial.brakes[c].disc_temp > disc_hi) {
+          throw InputError(fmt::format(
+              "optimal lap: the {} disc starts at {:.0f} degC, above the {:.0f} degC limit",
+              CornerName(kAllCorners[c]), KelvinToCelsius(options.initial.brakes[c].disc_temp),
+              KelvinToCelsius(disc_hi)));
+        }
+        if (!fix) nlp.set_initial(nv.disc[c], std::min(nlp.initial(nv.disc[c]), disc_hi - 1.0));
+        nv.calliper[c] =
+            state(h.calliper_temp, options.initial.brakes[c].calliper_temp, 200.0, 2000.0, 100.0);
+      }
+      // Controls from the QSS lap's forces.
+      double total_fx = 0.0;
+      for (int c = 0; c < 4; ++c) total_fx += at(guess.corners[c].fx);
+      nv.steer = nlp.AddVariable(at(guess.steer), -0.5, 0.5, 0.05);
+      nv.power =
+          nlp.AddVariable(std::clamp(total_fx * speed, 0.0, wheel_power), 0.0, wheel_power, 2e5);
+      nv.brake = nlp.AddVariable(std::max(-total_fx, 0.0), 0.0, 4.0 * m * kGravity, 1e4);
+      // Algebraic variables.
+      const double r_mean = 0.5 * (p.corner(Corner::kRearLeft).rolling_radius +
+                                   p.corner(Corner::kRearRight).rolling_radius);
+      for (int c = 0; c < 4; ++c) {
+        const sim::CornerChannels& ch = guess.corners[c];
+        nv.kappa[c] = nlp.AddVariable(at(ch.slip_ratio), -0.6, 0.6, 0.05);
+        nv.alpha[c] = nlp.AddVariable(at(ch.slip_angle), -0.5, 0.5, 0.05);
+        nv.vx[c] = nlp.AddVariable(at(ch.speed), 1.0, 160.0, 50.0);
+        nv.fz[c] = nlp.AddVariable(at(ch.fz), 0.0, 40000.0, 5000.0);
+        nv.fx[c] = nlp.AddVariable(at(ch.fx), -40000.0, 40000.0, 5000.0);
+        nv.fy[c] = nlp.AddVariable(at(ch.fy), -40000.0, 40000.0, 5000.0);
+      }
+      {
+        const sim::CornerChannels& rl = guess.corners[CornerIndex(Corner::kRearLeft)];
+        const double axle = (1.0 + at(rl.slip_ratio)) * at(rl.speed) /
+                                p.corner(Corner::kRearLeft).rolling_radius * r_mean / speed -
+                            1.0;
+        nv.kappa_axle = nlp.AddVariable(axle, -0.6, 0.6, 0.05);
+      }
+      double fy_total = 0.0;
+      for (int c = 0; c < 4; ++c) fy_total += at(guess.corners[c].fy);
+      nv.sum_fx = nlp.AddVariable(total_fx, -kInf, kInf, 1e4);
+      nv.sum_fy = nlp.AddVariable(fy_total, -kInf, kInf, 1e4);
+      nv.yaw_moment = nlp.AddVariable(0.0, -kInf, kInf, 1e4);
+      nv.w = nlp.AddVariable(1.0 / speed, 1.0 / 150.0, 1.0 / 3.0, 0.015);
+      nodes.push_back(nv);
+    }
+  }
+
+  // The algebraic equations of node k.
+  void AddNodeEquations(int k) {
+    const NodeVars& nv = nodes[k];
+    const NodeRoad& road = roads[k];
+    const double beta = p.brakes.front_share;
+    const double r_mean = 0.5 * (p.corner(Corner::kRearLeft).rolling_radius +
+                                 p.corner(Corner::kRearRight).rolling_radius);
+    for (Corner c : kAllCorners) {
+      const int i = CornerIndex(c);
+      // Slip angle and wheel speed.
+      const int ra = nlp.AddConstraint(0, 0, 0.05), rv = nlp.AddConstraint(0, 0, 10.0);
+      nlp.AddElement(MakeElement<6, 2>(internal::KinematicsFn{&p, c}),
+                     {nv.u, nv.v, nv.r, nv.steer, nv.alpha[i], nv.vx[i]},
+                     {{{ra, 1.0}}, {{rv, 1.0}}});
+      // Tyre forces.
+      const int rfx = nlp.AddConstraint(0, 0, 5000.0), rfy = nlp.AddConstraint(0, 0, 5000.0);
+      nlp.AddElement(
+          tyre_elements[i],
+          {nv.fz[i], nv.kappa[i], nv.alpha[i], nv.tread[i], nv.wear[i], nv.fx[i], nv.fy[i]},
+          {{{rfx, 1.0}}, {{rfy, 1.0}}});
+      if (IsFront(c)) {
+        // Each front wheel brakes with beta B / 2 and is not driven.
+        const int rb = nlp.AddConstraint(0, 0, 5000.0);
+        nlp.AddLinear(rb, nv.fx[i], 1.0);
+        nlp.AddLinear(rb, nv.brake, 0.5 * beta);
+      } else {
+        // Rear wheels on the spool.
+        const int rs = nlp.AddConstraint(0, 0, 1.0);
+        nlp.AddElement(MakeElement<4, 1>(internal::SpoolFn{p.corners[i].rolling_radius / r_mean}),
+                       {nv.kappa[i], nv.vx[i], nv.kappa_axle, nv.u}, {{{rs, 1.0}}});
+      }
+    }
+    {
+      const int rd = nlp.AddConstraint(0, 0, 1e5);
+      const int l = CornerIndex(Corner::kRearLeft), r = CornerIndex(Corner::kRearRight);
+      nlp.AddElement(MakeElement<6, 1>(internal::RearDriveFn{1.0 - beta}),
+                     {nv.fx[l], nv.fx[r], nv.brake, nv.u, nv.kappa_axle, nv.power}, {{{rd, 1.0}}});
+    }
+    // Totals.
+    {
+      const int rx = nlp.AddConstraint(0, 0, 1e4), ry = nlp.AddConstraint(0, 0, 1e4),
+                rm = nlp.AddConstraint(0, 0, 1e4);
+      nlp.AddLinear(rx, nv.sum_fx, 1.0);
+      nlp.AddLinear(ry, nv.sum_fy, 1.0);
+      nlp.AddLinear(rm, nv.yaw_moment, 1.0);
+      std::vector<int> in = {nv.steer};
+      for (int i = 0; i < 4; ++i) in.push_back(nv.fx[i]);
+      for (int i = 0; i < 4; ++i) in.push_back(nv.fy[i]);
+      nlp.AddElement(MakeElement<9, 3>(internal::TotalsFn{&p}), in,
+                     {{{rx, -1.0}}, {{ry, -1.0}}, {{rm, -1.0}}});
+    }
+    // Normal loads.
+    {
+      std::vector<std::vector<Target>> targets;
+      for (int i = 0; i < 4; ++i) {
+        const int rz = nlp.AddConstraint(0, 0, 5000.0);
+        nlp.AddLinear(rz, nv.fz[i], 1.0);
+        targets.push_back({{rz, -1.0}});
+      }
+      nlp.AddElement(MakeElement<5, 4>(internal::LoadsFn{&p, road}),
+                     {nv.u, nv.v, nv.n, nv.sum_fx, nv.sum_fy}, targets);
+    }
+    // dt/ds.
+    {
+      const int rt = nlp.AddConstraint(0, 0, 1.0);
+      nlp.AddElement(MakeElement<5, 1>(internal::TimeFn{road.kappa_g()}),
+                     {nv.w, nv.u, nv.v, nv.n, nv.xi}, {{{rt, 1.0}}});
+    }
+  }
+
+  // Rows of the state derivatives f_j(node k) feed: the defects of intervals k-1 and k with
+  // coefficient -ds/2.
+  std::vector<Target> DefectTargets(int k, int state) const {
+    std::vector<Target> t;
+    if (k > 0) t.push_back({defect_rows[k - 1][state], -0.5 * ds});
+    if (k < intervals) t.push_back({defect_rows[k][state], -0.5 * ds});
+    return t;
+  }
+
+  void AddDynamics() {
+    const int n_states = static_cast<int>(nodes[0].States().size());
+    // Defect rows x_{k+1} - x_k - ds/2 (f_k + f_{k+1}) = c, c from the road's -kappa_g terms.
+    defect_rows.assign(intervals, std::vector<int>(n_states));
+    for (int k = 0; k < intervals; ++k) {
+      const std::vector<int> a = nodes[k].States(), b = nodes[k + 1].States();
+      for (int j = 0; j < n_states; ++j) {
+        // dxi/ds = w r - kappa_g: the constant moves to the right-hand side.
+        double rhs = 0.0;
+        if (j == 4) rhs = -0.5 * ds * (roads[k].kappa_g() + roads[k + 1].kappa_g());
+        const double scale = nlp.scale(a[j]);
+        const int row = nlp.AddConstraint(rhs, rhs, scale);
+        nlp.AddLinear(row, b[j], 1.0);
+        nlp.AddLinear(row, a[j], -1.0);
+        defect_rows[k][j] = row;
+      }
+    }
+    const double inv_iz = 1.0 / p.chassis.yaw_inertia;
+    for (int k = 0; k <= intervals; ++k) {
+      const NodeVars& nv = nodes[k];
+      const NodeRoad& road = roads[k];
+      nlp.AddElement(
+          MakeElement<10, 1>(internal::LongitudinalFn{&p, road, rolling}),
+          {nv.w, nv.sum_fx, nv.u, nv.v, nv.r, nv.xi, nv.fz[0], nv.fz[1], nv.fz[2], nv.fz[3]},
+          {DefectTargets(k, 0)});
+      nlp.AddElement(MakeElement<5, 1>(internal::LateralFn{&p, road}),
+                     {nv.w, nv.sum_fy, nv.u, nv.r, nv.xi}, {DefectTargets(k, 1)});
+      nlp.AddElement(MakeElement<2, 1>(internal::YawFn{inv_iz}), {nv.w, nv.yaw_moment},
+                     {DefectTargets(k, 2)});
+      nlp.AddElement(MakeElement<4, 1>(internal::OffsetFn{}), {nv.w, nv.u, nv.v, nv.xi},
+                     {DefectTargets(k, 3)});
+      nlp.AddElement(MakeElement<2, 1>(internal::HeadingFn{}), {nv.w, nv.r}, {DefectTargets(k, 4)});
+      for (int c = 0; c < 4; ++c) {
+        const int base = 5 + 5 * c;
+        nlp.AddElement(
+            thermal_elements[c],
+            {nv.w, nv.tread[c], nv.carcass[c], nv.wear[c], nv.vx[c], nv.fx[c], nv.fy[c], nv.fz[c],
+             nv.alpha[c], nv.kappa[c]},
+            {DefectTargets(k, base), DefectTargets(k, base + 1), DefectTargets(k, base + 2)});
+        nlp.AddElement(brake_elements[c], {nv.w, nv.disc[c], nv.calliper[c], nv.vx[c], nv.brake},
+                       {DefectTargets(k, base + 3), DefectTargets(k, base + 4)});
+      }
+    }
+  }
+
+  void AddPeriodicityAndObjective() {
+    // The lap closes: mechanical states (and thermal ones on request) end where they start.
+    std::vector<int> periodic = {0, 1, 2, 3, 4};
+    if (options.periodic_thermal) {
+      for (int j = 5; j < 25; ++j) periodic.push_back(j);
+    }
+    const std::vector<int> a = nodes.front().States(), b = nodes.back().States();
+    for (int j : periodic) {
+      const int row = nlp.AddConstraint(0, 0, nlp.scale(a[j]));
+      nlp.AddLinear(row, b[j], 1.0);
+      nlp.AddLinear(row, a[j], -1.0);
+    }
+    // Lap time: the trapezoid of dt/ds.
+    for (int k = 0; k <= intervals; ++k) {
+      nlp.AddObjectiveLinear(nodes[k].w, (k == 0 || k == intervals ? 0.5 : 1.0) * ds);
+    }
+    // Smooth controls: weight * sum ((c_{k+1} - c_k) / scale)^2 per control.
+    if (options.smoothing > 0.0) {
+      for (int k = 0; k < intervals; ++k) {
+        for (const auto& [a_var, b_var] : {std::pair{nodes[k].steer, nodes[k + 1].steer},
+                                           std::pair{nodes[k].power, nodes[k + 1].power},
+                                           std::pair{nodes[k].brake, nodes[k + 1].brake}}) {
+          const double s = nlp.scale(a_var);
+          nlp.AddElement(MakeElement<2, 1>(internal::RateFn{options.smoothing / (s * s)}),
+                         {a_var, b_var}, {{{Target::kObjective, 1.0}}});
+        }
+      }
+    }
+    nlp.SetObjectiveScale(1.0);
+  }
+
+  void Build() {
+    AddNodes();
+    for (int c = 0; c < 4; ++c) {
+      const Corner corner = kAllCorners[c];
+      const vehicle::CornerSetup& setup = p.corner(corner);
+      tyre_elements[c] =
+          std::make_shared<TyreForceElement>(setup, *car.tyre(corner).compound, 50.0);
+      thermal_elements[c] = MakeElement<10, 3>(internal::TyreThermalFn{
+          &tyre_d[c], &tyre_so[c], &tyre_jet[c], car.tyres[c].compound.get(), options.ambient_temp,
+          options.track_temp});
+      const double share =
+          IsFront(corner) ? 0.5 * p.brakes.front_share : 0.5 * (1.0 - p.brakes.front_share);
+      brake_elements[c] = MakeElement<5, 2>(internal::BrakeFn{
+          &car.brakes[c].params, &brake_so[c], &brake_jet[c], share, options.ambient_temp});
+    }
+    for (int k = 0; k <= intervals; ++k) AddNodeEquations(k);
+    AddDynamics();
+    AddPeriodicityAndObjective();
+    nlp.Finalize();
+  }
+
+  std::array<std::shared_ptr<const Element>, 4> tyre_elements, thermal_elements, brake_elements;
+  std::vector<std::vector<int>> defect_rows;
+};
+
+}  // namespace
+
+LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& track,
+                                const LapProblemOptions& options, const sim::QssLap& guess,
+                                const IpoptOptions& ipopt) {
+  const VehicleParams& p = vehicle::RequireVehicle(car, "the optimal lap");
+  if (!(options.step_m > 0.0)) throw InputError("optimal lap: the mesh step must be > 0 m");
+  Builder b(car, p, track, options, guess);
+  b.Build();
+  LapSolution out;
+  out.variables = b.nlp.variables();
+  out.constraints = b.nlp.constraints();
+  out.solve = SolveWithIpopt(b.nlp, ipopt);
+  const std::vector<double>& x = out.solve.x.empty() ? std::vector<double>() : out.solve.x;
+  if (x.empty()) return out;
+  double time = 0.0;
+  for (int k = 0; k <= b.intervals; ++k) {
+    const NodeVars& nv = b.nodes[k];
+    if (k > 0) time += 0.5 * b.ds * (x[b.nodes[k - 1].w] + x[nv.w]);
+    out.distance.push_back(k * b.ds);
+    out.time.push_back(time);
+    out.u.push_back(x[nv.u]);
+    out.v.push_back(x[nv.v]);
+    out.r.push_back(x[nv.r]);
+    out.n.push_back(x[nv.n]);
+    out.xi.push_back(x[nv.xi]);
+    out.steer.push_back(x[nv.steer]);
+    out.drive_power.push_back(x[nv.power]);
+    out.brake_force.push_back(x[nv.brake]);
+    for (int c = 0; c < 4; ++c) {
+      CornerTrace& t = out.corners[c];
+      t.fz.push_back(x[nv.fz[c]]);
+      t.fx.push_back(x[nv.fx[c]]);
+      t.fy.push_back(x[nv.fy[c]]);
+      t.slip_angle.push_back(x[nv.alpha[c]]);
+      t.slip_ratio.push_back(x[nv.kappa[c]]);
+      t.speed.push_back(x[nv.vx[c]]);
+      t.tread_temp.push_back(x[nv.tread[c]]);
+      t.carcass_temp.push_back(x[nv.carcass[c]]);
+      t.wear.push_back(x[nv.wear[c]]);
+      t.disc_temp.push_back(x[nv.disc[c]]);
+      t.calliper_temp.push_back(x[nv.calliper[c]]);
+      const double share =
+          IsFront(kAllCorners[c]) ? 0.5 * p.brakes.front_share : 0.5 * (1.0 - p.brakes.front_share);
+      t.brake_power.push_back(x[nv.vx[c]] * share * x[nv.brake]);
+    }
+  }
+  out.lap_time = time;
+  return out;
+}
+
+}  // namespace hotlap::ocp

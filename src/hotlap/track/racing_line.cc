@@ -1,0 +1,180 @@
+#include "hotlap/track/racing_line.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <ceres/ceres.h>
+#include <fmt/format.h>
+
+#include "hotlap/common/error.h"
+#include "hotlap/common/units.h"
+#include "hotlap/track/track_point.h"
+
+namespace hotlap::track {
+
+namespace {
+
+// Horizontal position and the horizontal part of the lateral unit at a cross-section.
+struct Section {
+  Eigen::Vector2d centre;
+  Eigen::Vector2d lateral;  // horizontal projection of the ribbon's lateral unit (left)
+  double n_min, n_max;
+};
+
+// r = P_{k+1} - 2 P_k + P_{k-1}, P_j = C_j + n_j a_j: linear in the three offsets.
+class SecondDifference final : public ceres::SizedCostFunction<2, 1, 1, 1> {
+ public:
+  SecondDifference(const Section& prev, const Section& here, const Section& next)
+      : base_(next.centre - 2.0 * here.centre + prev.centre),
+        a_prev_(prev.lateral),
+        a_here_(-2.0 * here.lateral),
+        a_next_(next.lateral) {}
+
+  bool Evaluate(double const* const* x, double* r, double** jac) const override {
+    const Eigen::Vector2d v = base_ + x[0][0] * a_prev_ + x[1][0] * a_here_ + x[2][0] * a_next_;
+    r[0] = v[0];
+    r[1] = v[1];
+    if (jac != nullptr) {
+      const Eigen::Vector2d* a[3] = {&a_prev_, &a_here_, &a_next_};
+      for (int i = 0; i < 3; ++i) {
+        if (jac[i] != nullptr) {
+          jac[i][0] = (*a[i])[0];
+          jac[i][1] = (*a[i])[1];
+        }
+      }
+    }
+    return true;
+  }
+
+ private:
+  Eigen::Vector2d base_, a_prev_, a_here_, a_next_;
+};
+
+Eigen::Vector3d PositionAt(const Track& track, double s, double n) {
+  return PointAtOffset(track.At(s), n);
+}
+
+}  // namespace
+
+double RacingLine::OffsetAt(double s, double length_m) const {
+  const size_t n = s_m.size();
+  const double step = length_m / static_cast<double>(n);
+  double x = std::fmod(s, length_m);
+  if (x < 0.0) x += length_m;
+  const double f = x / step;
+  const size_t i = std::min(static_cast<size_t>(f), n - 1);
+  const double w = f - static_cast<double>(i);
+  return offset_m[i] + w * (offset_m[(i + 1) % n] - offset_m[i]);
+}
+
+RacingLine CentreLine(const Track& track, double step_m) {
+  const int n = std::max(16, static_cast<int>(std::round(track.length_m() / step_m)));
+  RacingLine line;
+  for (int k = 0; k < n; ++k) {
+    line.s_m.push_back(track.length_m() * k / n);
+    line.offset_m.push_back(0.0);
+  }
+  return line;
+}
+
+RacingLine MinimumCurvatureLine(const Track& track, const MinimumCurvatureOptions& options) {
+  RacingLine line = CentreLine(track, options.step_m);
+  const size_t n = line.s_m.size();
+  std::vector<Section> sections(n);
+  for (size_t k = 0; k < n; ++k) {
+    const TrackPoint p = track.At(line.s_m[k]);
+    const Eigen::Vector3d lateral = LateralUnit(p);
+    sections[k] = {{p.x_m, p.y_m},
+                   {lateral[0], lateral[1]},
+                   -(p.width_right_m - options.margin_m),
+                   p.width_left_m - options.margin_m};
+    if (!(sections[k].n_max > sections[k].n_min)) {
+      throw InputError(fmt::format(
+          "racing line: the track at {:.0f} m is {:.2f} m wide, narrower than twice the {:.2f} m "
+          "margin",
+          line.s_m[k], p.width_left_m + p.width_right_m, options.margin_m));
+    }
+  }
+  ceres::Problem problem;
+  for (size_t k = 0; k < n; ++k) {
+    const size_t prev = (k + n - 1) % n, next = (k + 1) % n;
+    problem.AddResidualBlock(new SecondDifference(sections[prev], sections[k], sections[next]),
+                             nullptr, &line.offset_m[prev], &line.offset_m[k],
+                             &line.offset_m[next]);
+  }
+  for (size_t k = 0; k < n; ++k) {
+    problem.SetParameterLowerBound(&line.offset_m[k], 0, sections[k].n_min);
+    problem.SetParameterUpperBound(&line.offset_m[k], 0, sections[k].n_max);
+  }
+  ceres::Solver::Options solver;
+  solver.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+  solver.max_num_iterations = 200;
+  solver.function_tolerance = 1e-14;
+  solver.gradient_tolerance = 1e-16;
+  solver.parameter_tolerance = 1e-12;
+  solver.logging_type = ceres::SILENT;
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver, &problem, &summary);
+  if (!summary.IsSolutionUsable()) {
+    throw NumericalError("racing line: the minimum-curvature solve failed: " +
+                         summary.BriefReport());
+  }
+  return line;
+}
+
+std::vector<LinePoint> SampleLine(const Track& track, const RacingLine& line, double step_m) {
+  const double length = track.length_m();
+  // Path length between the line's own points (fine enough: 2 m points on >100 m radii).
+  const size_t m = line.s_m.size();
+  std::vector<double> cumulative(m + 1, 0.0);
+  Eigen::Vector3d prev = PositionAt(track, line.s_m[0], line.offset_m[0]);
+  for (size_t k = 1; k <= m; ++k) {
+    const double s = k < m ? line.s_m[k] : length;
+    const Eigen::Vector3d p = PositionAt(track, s, line.offset_m[k % m]);
+    cumulative[k] = cumulative[k - 1] + (p - prev).norm();
+    prev = p;
+  }
+  const double path_length = cumulative[m];
+  const int count = std::max(16, static_cast<int>(std::round(path_length / step_m)));
+  const double step = path_length / count;
+  std::vector<LinePoint> out(count);
+  for (int i = 0; i < count; ++i) {
+    const double path = step * i;
+    const auto it = std::upper_bound(cumulative.begin(), cumulative.end(), path);
+    const size_t j = std::min(static_cast<size_t>(it - cumulative.begin()), m) - 1;
+    const double w = (path - cumulative[j]) / (cumulative[j + 1] - cumulative[j]);
+    const double s0 = line.s_m[j], s1 = j + 1 < m ? line.s_m[j + 1] : length;
+    const double s = s0 + w * (s1 - s0);
+    const double n = line.offset_m[j] + w * (line.offset_m[(j + 1) % m] - line.offset_m[j]);
+    const TrackPoint p = track.At(s);
+    const Eigen::Vector3d pos = PointAtOffset(p, n);
+    out[i] = {path, p.s_m, n, pos[0], pos[1], 0.0, p.bank_rad, p.grade_rad, 0.0};
+  }
+  // Heading from the chord to the next point, made continuous; curvature from its change,
+  // central and then averaged over three points.
+  for (int i = 0; i < count; ++i) {
+    const LinePoint& a = out[i];
+    const LinePoint& b = out[(i + 1) % count];
+    out[i].heading_rad = std::atan2(b.y_m - a.y_m, b.x_m - a.x_m);
+    if (i > 0) {
+      double d = out[i].heading_rad - out[i - 1].heading_rad;
+      d -= 2.0 * kPi * std::round(d / (2.0 * kPi));
+      out[i].heading_rad = out[i - 1].heading_rad + d;
+    }
+  }
+  const double turns = 2.0 * kPi * track.winding();
+  std::vector<double> raw(count);
+  for (int i = 0; i < count; ++i) {
+    // Chord headings belong to the mid-points; their difference to the point between them.
+    const double h_next = out[i].heading_rad;
+    const double h_prev = i > 0 ? out[i - 1].heading_rad : out[count - 1].heading_rad - turns;
+    raw[i] = (h_next - h_prev) / step;
+  }
+  for (int i = 0; i < count; ++i) {
+    out[i].curvature_per_m =
+        (raw[(i + count - 1) % count] + 2.0 * raw[i] + raw[(i + 1) % count]) / 4.0;
+  }
+  return out;
+}
+
+}  // namespace hotlap::track

@@ -1,0 +1,57 @@
+#pragma once
+/// @file
+/// A racing line: the car's lateral offset from the centre line along the lap, and the
+/// minimum-curvature line, the classic first answer to "where does the car drive" (Heilmeier et
+/// al., "Minimum curvature trajectory planning and control for an autonomous race car", VSD 2020,
+/// in its simplest form): the closed path inside the track limits whose squared second
+/// differences, sum |P_{k+1} - 2 P_k + P_{k-1}|^2, are least. On an oval it runs out wide on the
+/// straights, clips the inside mid-turn and so turns with a larger radius than the centre line.
+///
+/// How to use: `const RacingLine line = MinimumCurvatureLine(track, {.step_m = 2.0});` then
+/// SampleLine(track, line, 1.0) for points at equal spacing along the path.
+
+#include <vector>
+
+#include "hotlap/track/track.h"
+
+namespace hotlap::track {
+
+/// Lateral offsets n (m, positive left, in the ribbon plane) at centre-line distances s (m,
+/// equally spaced from 0, the lap closing after the last).
+struct RacingLine {
+  std::vector<double> s_m;
+  std::vector<double> offset_m;
+
+  /// The offset at centre-line distance s (wrapped), linear between the points.
+  double OffsetAt(double s, double length_m) const;
+};
+
+/// The centre line itself (zero offset) at `step_m` spacing.
+RacingLine CentreLine(const Track& track, double step_m);
+
+struct MinimumCurvatureOptions {
+  double step_m = 2.0;    ///< spacing of the line's points along the centre line
+  double margin_m = 1.5;  ///< kept between the line and each edge (half the car's width and more)
+};
+
+/// The minimum-curvature line (see the file comment), solved as a bounded linear least-squares
+/// problem in the offsets (Ceres). InputError if the track is narrower than twice the margin.
+RacingLine MinimumCurvatureLine(const Track& track, const MinimumCurvatureOptions& options);
+
+/// A point of a racing line.
+struct LinePoint {
+  double path_m = 0.0;           ///< distance along the line from the start line
+  double s_m = 0.0;              ///< centre-line distance of the same cross-section
+  double offset_m = 0.0;         ///< lateral offset, positive left
+  double x_m = 0.0, y_m = 0.0;   ///< position, world frame
+  double curvature_per_m = 0.0;  ///< horizontal curvature of the line, positive turning left
+  double bank_rad = 0.0;         ///< the ribbon's bank there
+  double grade_rad = 0.0;        ///< the centre line's grade there
+  double heading_rad = 0.0;      ///< direction of the line, continuous
+};
+
+/// Points at round(path length / step_m) equal intervals along the line (the lap closing after
+/// the last), curvature from the line's heading (smoothed over about 3 step lengths).
+std::vector<LinePoint> SampleLine(const Track& track, const RacingLine& line, double step_m);
+
+}  // namespace hotlap::track
