@@ -17,12 +17,14 @@
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
+#include "hotlap/ocp/min_curvature_line.h"
 #include "hotlap/report/html_report.h"
 #include "hotlap/sim/lap_output.h"
 #include "hotlap/sim/qss_lap.h"
 #include "hotlap/sim/road.h"
 #include "hotlap/track/racing_line.h"
 #include "hotlap/track/track_io.h"
+#include "optimal_runs.h"
 #include "output.h"
 
 namespace hotlap::app {
@@ -44,6 +46,8 @@ struct LapArgs {
   double ambient_C = 25.0;
   double track_C = 40.0;
   std::optional<double> tread_C, carcass_C, disc_C, calliper_C;
+  std::optional<double> compare_disc_limit_C;  // --method ocp
+  std::optional<double> ocp_step_m;            // --method ocp
 };
 
 double Celsius(double kelvin) { return KelvinToCelsius(kelvin); }
@@ -141,11 +145,20 @@ void WriteLapReport(const fs::path& path, const LapArgs& a, const vehicle::Car& 
 }
 
 int RunLap(const LapArgs& a) {
-  if (a.method != "qss") {
-    throw InputError(fmt::format(
-        "--method {}: `hotlap lap` runs the quasi-steady-state method (qss); for the optimal lap "
-        "use `hotlap optimise`",
-        a.method));
+  if (a.method == "ocp") {
+    OptimalArgs o;
+    o.track = a.track;
+    o.car = a.car;
+    o.out = a.out;
+    o.json = a.json;
+    o.compare_disc_limit_C = a.compare_disc_limit_C;
+    o.ambient_C = a.ambient_C;
+    o.track_C = a.track_C;
+    if (a.ocp_step_m) o.step_m = *a.ocp_step_m;
+    return RunOptimal(o);
+  }
+  if (a.compare_disc_limit_C) {
+    throw InputError("--compare-disc-limit-C is for --method ocp");
   }
   if (a.laps < 1 || a.laps > 1000) {
     throw InputError(fmt::format("--laps {} must be in [1, 1000]", a.laps));
@@ -156,13 +169,12 @@ int RunLap(const LapArgs& a) {
   vehicle::RequireVehicle(car, "`hotlap lap`");
   const track::Track track = track::LoadTrack(a.track);
   const std::vector<sim::RoadPoint> road =
-      a.line == "centre"
-          ? sim::SampleRoad(track, a.step_m)
-          : sim::SampleRoadAlongLine(
-                track,
-                track::MinimumCurvatureLine(
-                    track, {.step_m = std::max(a.step_m, 2.0), .margin_m = a.line_margin_m}),
-                a.step_m);
+      a.line == "centre" ? sim::SampleRoad(track, a.step_m)
+                         : sim::SampleRoadAlongLine(
+                               track,
+                               ocp::MinimumCurvatureLine(track, {.step_m = std::max(a.step_m, 2.0),
+                                                                 .margin_m = a.line_margin_m}),
+                               a.step_m);
   if (fs::exists(a.out) && !fs::is_directory(a.out)) {
     throw InputError(fmt::format("--out {}: exists and is not a folder", a.out));
   }
@@ -316,7 +328,13 @@ CommandRunner RegisterLapCommand(CLI::App& app) {
   auto args = std::make_shared<LapArgs>();
   CLI::App* sub = app.add_subcommand(
       "lap", "Drive the car round a track (quasi-steady state) with the thermal models");
-  sub->add_option("--method", args->method, "qss (quasi-steady state)")->capture_default_str();
+  sub->add_option("--method", args->method,
+                  "qss (quasi-steady state) or ocp (optimal control, as `hotlap optimise`)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"qss", "ocp"}));
+  sub->add_option("--compare-disc-limit-C", args->compare_disc_limit_C,
+                  "ocp: solve without and with this front-disc limit (degC) and compare");
+  sub->add_option("--ocp-step-m", args->ocp_step_m, "ocp: mesh spacing, m (default 4)");
   sub->add_option("--track", args->track, "Built-in track name or a .yaml/.csv/.xml file")
       ->capture_default_str();
   sub->add_option("--car", args->car, "Built-in car name or path to a car.yaml")

@@ -18,7 +18,11 @@ CommandRunner RegisterReplayCommand(CLI::App& app);
 CommandRunner RegisterTyreCommand(CLI::App& app);
 CommandRunner RegisterTrackCommand(CLI::App& app);
 
-/// `hotlap lap`: the car round a track by the quasi-steady-state method, thermal models included.
-CommandRunner RegisterLapCommand(CLI::App& app);  ///< `hotlap track info` (cmd_track.cc)
+/// `hotlap lap`: the car round a track by the quasi-steady-state method, thermal models included,
+/// or (`--method ocp`) the optimal lap with an optional disc-limit comparison.
+CommandRunner RegisterLapCommand(CLI::App& app);
+
+/// `hotlap optimise`: the minimum-lap-time optimal control with thermal states.
+CommandRunner RegisterOptimiseCommand(CLI::App& app);  ///< `hotlap track info` (cmd_track.cc)
 
 }  // namespace hotlap::app

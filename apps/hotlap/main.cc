@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   add(&hotlap::app::RegisterTyreCommand);
   add(&hotlap::app::RegisterTrackCommand);
   add(&hotlap::app::RegisterLapCommand);
+  add(&hotlap::app::RegisterOptimiseCommand);
 
   try {
     app.parse(argc, argv);

@@ -166,7 +166,9 @@ struct Builder {
       for (int c = 0; c < 4; ++c) {
         const sim::CornerChannels& ch = guess.corners[c];
         nv.kappa[c] = nlp.AddVariable(at(ch.slip_ratio), -0.6, 0.6, 0.05);
-        nv.alpha[c] = nlp.AddVariable(at(ch.slip_angle), -0.5, 0.5, 0.05);
+        nv.alpha[c] = nlp.AddVariable(
+            std::clamp(at(ch.slip_angle), -options.max_slip_angle, options.max_slip_angle),
+            -options.max_slip_angle, options.max_slip_angle, 0.05);
         nv.vx[c] = nlp.AddVariable(at(ch.speed), 1.0, 160.0, 50.0);
         nv.fz[c] = nlp.AddVariable(at(ch.fz), 0.0, 40000.0, 5000.0);
         nv.fx[c] = nlp.AddVariable(at(ch.fx), -40000.0, 40000.0, 5000.0);
@@ -324,6 +326,21 @@ struct Builder {
       const int row = nlp.AddConstraint(0, 0, nlp.scale(a[j]));
       nlp.AddLinear(row, b[j], 1.0);
       nlp.AddLinear(row, a[j], -1.0);
+    }
+    // The driver's steering rate: |steer_{k+1} - steer_k| <= rate * dt, dt = ds (w_k + w_k+1) / 2.
+    if (options.max_steer_rate > 0.0) {
+      for (int k = 0; k < intervals; ++k) {
+        const double c = 0.5 * ds * options.max_steer_rate;
+        const int up = nlp.AddConstraint(-kInf, 0.0, 0.01),
+                  down = nlp.AddConstraint(0.0, kInf, 0.01);
+        for (const int row : {up, down}) {
+          const double sign = row == up ? -1.0 : 1.0;
+          nlp.AddLinear(row, nodes[k + 1].steer, 1.0);
+          nlp.AddLinear(row, nodes[k].steer, -1.0);
+          nlp.AddLinear(row, nodes[k].w, sign * c);
+          nlp.AddLinear(row, nodes[k + 1].w, sign * c);
+        }
+      }
     }
     // Lap time: the trapezoid of dt/ds.
     for (int k = 0; k <= intervals; ++k) {

@@ -40,6 +40,11 @@ struct LapProblemOptions {
   double track_temp = 0.0;          ///< K
   sim::ReplayInitialState initial;  ///< thermal states at the start line
   double car_half_width = 1.0;      ///< m kept between the centre of the car and an edge
+  /// The driver's steering: road-wheel steer rate at most this, rad/s (0: no limit). Without it the
+  /// optimiser finds "flicks" at huge slip angles that heat a cold tyre by sliding it.
+  double max_steer_rate = 0.5;
+  /// Slip angles are kept within this, rad: the tyres' useful range (their peaks are near 0.1).
+  double max_slip_angle = 0.25;
   /// Weight of the control-smoothness penalty: weight * sum over intervals of the squared change
   /// of each scaled control.
   double smoothing = 1e-4;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <ceres/ceres.h>
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
@@ -13,42 +12,6 @@
 namespace hotlap::track {
 
 namespace {
-
-// Horizontal position and the horizontal part of the lateral unit at a cross-section.
-struct Section {
-  Eigen::Vector2d centre;
-  Eigen::Vector2d lateral;  // horizontal projection of the ribbon's lateral unit (left)
-  double n_min, n_max;
-};
-
-// r = P_{k+1} - 2 P_k + P_{k-1}, P_j = C_j + n_j a_j: linear in the three offsets.
-class SecondDifference final : public ceres::SizedCostFunction<2, 1, 1, 1> {
- public:
-  SecondDifference(const Section& prev, const Section& here, const Section& next)
-      : base_(next.centre - 2.0 * here.centre + prev.centre),
-        a_prev_(prev.lateral),
-        a_here_(-2.0 * here.lateral),
-        a_next_(next.lateral) {}
-
-  bool Evaluate(double const* const* x, double* r, double** jac) const override {
-    const Eigen::Vector2d v = base_ + x[0][0] * a_prev_ + x[1][0] * a_here_ + x[2][0] * a_next_;
-    r[0] = v[0];
-    r[1] = v[1];
-    if (jac != nullptr) {
-      const Eigen::Vector2d* a[3] = {&a_prev_, &a_here_, &a_next_};
-      for (int i = 0; i < 3; ++i) {
-        if (jac[i] != nullptr) {
-          jac[i][0] = (*a[i])[0];
-          jac[i][1] = (*a[i])[1];
-        }
-      }
-    }
-    return true;
-  }
-
- private:
-  Eigen::Vector2d base_, a_prev_, a_here_, a_next_;
-};
 
 Eigen::Vector3d PositionAt(const Track& track, double s, double n) {
   return PointAtOffset(track.At(s), n);
@@ -73,51 +36,6 @@ RacingLine CentreLine(const Track& track, double step_m) {
   for (int k = 0; k < n; ++k) {
     line.s_m.push_back(track.length_m() * k / n);
     line.offset_m.push_back(0.0);
-  }
-  return line;
-}
-
-RacingLine MinimumCurvatureLine(const Track& track, const MinimumCurvatureOptions& options) {
-  RacingLine line = CentreLine(track, options.step_m);
-  const size_t n = line.s_m.size();
-  std::vector<Section> sections(n);
-  for (size_t k = 0; k < n; ++k) {
-    const TrackPoint p = track.At(line.s_m[k]);
-    const Eigen::Vector3d lateral = LateralUnit(p);
-    sections[k] = {{p.x_m, p.y_m},
-                   {lateral[0], lateral[1]},
-                   -(p.width_right_m - options.margin_m),
-                   p.width_left_m - options.margin_m};
-    if (!(sections[k].n_max > sections[k].n_min)) {
-      throw InputError(fmt::format(
-          "racing line: the track at {:.0f} m is {:.2f} m wide, narrower than twice the {:.2f} m "
-          "margin",
-          line.s_m[k], p.width_left_m + p.width_right_m, options.margin_m));
-    }
-  }
-  ceres::Problem problem;
-  for (size_t k = 0; k < n; ++k) {
-    const size_t prev = (k + n - 1) % n, next = (k + 1) % n;
-    problem.AddResidualBlock(new SecondDifference(sections[prev], sections[k], sections[next]),
-                             nullptr, &line.offset_m[prev], &line.offset_m[k],
-                             &line.offset_m[next]);
-  }
-  for (size_t k = 0; k < n; ++k) {
-    problem.SetParameterLowerBound(&line.offset_m[k], 0, sections[k].n_min);
-    problem.SetParameterUpperBound(&line.offset_m[k], 0, sections[k].n_max);
-  }
-  ceres::Solver::Options solver;
-  solver.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
-  solver.max_num_iterations = 200;
-  solver.function_tolerance = 1e-14;
-  solver.gradient_tolerance = 1e-16;
-  solver.parameter_tolerance = 1e-12;
-  solver.logging_type = ceres::SILENT;
-  ceres::Solver::Summary summary;
-  ceres::Solve(solver, &problem, &summary);
-  if (!summary.IsSolutionUsable()) {
-    throw NumericalError("racing line: the minimum-curvature solve failed: " +
-                         summary.BriefReport());
   }
   return line;
 }

@@ -1,14 +1,9 @@
 #pragma once
 /// @file
-/// A racing line: the car's lateral offset from the centre line along the lap, and the
-/// minimum-curvature line, the classic first answer to "where does the car drive" (Heilmeier et
-/// al., "Minimum curvature trajectory planning and control for an autonomous race car", VSD 2020,
-/// in its simplest form): the closed path inside the track limits whose squared second
-/// differences, sum |P_{k+1} - 2 P_k + P_{k-1}|^2, are least. On an oval it runs out wide on the
-/// straights, clips the inside mid-turn and so turns with a larger radius than the centre line.
+/// A racing line: the car's lateral offset from the centre line along the lap, and points along
+/// it. The minimum-curvature line itself is an optimisation (ocp/min_curvature_line.h).
 ///
-/// How to use: `const RacingLine line = MinimumCurvatureLine(track, {.step_m = 2.0});` then
-/// SampleLine(track, line, 1.0) for points at equal spacing along the path.
+/// How to use: SampleLine(track, line, 1.0) for points at equal spacing along the path.
 
 #include <vector>
 
@@ -28,15 +23,6 @@ struct RacingLine {
 
 /// The centre line itself (zero offset) at `step_m` spacing.
 RacingLine CentreLine(const Track& track, double step_m);
-
-struct MinimumCurvatureOptions {
-  double step_m = 2.0;    ///< spacing of the line's points along the centre line
-  double margin_m = 1.5;  ///< kept between the line and each edge (half the car's width and more)
-};
-
-/// The minimum-curvature line (see the file comment), solved as a bounded linear least-squares
-/// problem in the offsets (Ceres). InputError if the track is narrower than twice the margin.
-RacingLine MinimumCurvatureLine(const Track& track, const MinimumCurvatureOptions& options);
 
 /// A point of a racing line.
 struct LinePoint {

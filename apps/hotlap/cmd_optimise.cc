@@ -1,0 +1,21 @@
+// `hotlap optimise`: the minimum-lap-time optimal control with tyre and brake thermal states and,
+// optionally, a front-disc temperature limit (docs/optimal-control.md).
+
+#include <memory>
+
+#include "commands.h"
+#include "optimal_runs.h"
+
+namespace hotlap::app {
+
+CommandRunner RegisterOptimiseCommand(CLI::App& app) {
+  auto args = std::make_shared<OptimalArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "optimise", "Minimum-lap-time optimal control with tyre and brake temperatures as states");
+  AddOptimalOptions(sub, *args);
+  sub->add_option("--disc-limit-C", args->disc_limit_C,
+                  "Front disc temperatures at most this, degC (none by default)");
+  return [args] { return RunOptimal(*args); };
+}
+
+}  // namespace hotlap::app

@@ -1,0 +1,35 @@
+#pragma once
+// The optimal lap as `hotlap optimise` and `hotlap lap --method ocp` run it: options, one solve or
+// the paper's comparison without and with a front-disc limit, outputs and summaries.
+
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace hotlap::app {
+
+struct OptimalArgs {
+  std::string track = "darlington";
+  std::string car = "gen7";
+  std::string out;
+  std::string json;
+  double step_m = 4.0;
+  std::optional<double> disc_limit_C;          ///< one solve with this front-disc limit
+  std::optional<double> compare_disc_limit_C;  ///< two solves: without, and with this limit
+  std::string thermal_start = "warm";
+  double ambient_C = 25.0;
+  double track_C = 40.0;
+  int max_iterations = 1000;
+  bool mesh_check = false;
+  bool ipopt_output = false;
+};
+
+/// Adds the options shared by both commands to `sub`.
+void AddOptimalOptions(CLI::App* sub, OptimalArgs& args);
+
+/// Runs the solve(s), prints the summary, writes the outputs. Returns the exit code: 0, or 3 when
+/// a solve did not converge (its last point is still written).
+int RunOptimal(const OptimalArgs& args);
+
+}  // namespace hotlap::app

@@ -1,0 +1,174 @@
+#include "hotlap/ocp/optimal_lap.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "hotlap/common/error.h"
+#include "hotlap/ocp/min_curvature_line.h"
+#include "hotlap/sim/qss_lap.h"
+#include "hotlap/sim/road.h"
+#include "hotlap/track/racing_line.h"
+#include "hotlap/track/track_summary.h"
+
+namespace hotlap::ocp {
+
+namespace {
+
+sim::ReplayInitialState CarStart(const vehicle::Car& car) {
+  sim::ReplayInitialState s;
+  for (int k = 0; k < 4; ++k) {
+    s.tyres[k] = {car.initial.tread_temp, car.initial.carcass_temp, 0.0};
+    s.brakes[k] = {car.initial.disc_temp, car.initial.calliper_temp};
+  }
+  return s;
+}
+
+}  // namespace
+
+OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
+                            const OptimalLapOptions& options) {
+  vehicle::RequireVehicle(car, "the optimal lap");
+  OptimalLapRun run;
+  // The warm-up: two QSS laps on the minimum-curvature line from the car's starting state; the
+  // second is the flying lap that seeds the solve.
+  const track::RacingLine line =
+      MinimumCurvatureLine(track, {.step_m = 2.0, .margin_m = options.line_margin_m});
+  const std::vector<sim::RoadPoint> road = sim::SampleRoadAlongLine(track, line, 1.0);
+  sim::QssOptions qss;
+  qss.laps = 2;
+  qss.ambient_temp = options.ambient_temp;
+  qss.track_temp = options.track_temp;
+  qss.initial = CarStart(car);
+  qss.track_length = track.length_m();
+  const sim::QssResult warm = sim::RunQssLap(car, road, qss);
+  run.qss_lap_time = warm.laps[1].lap_time;
+
+  LapProblemOptions lap;
+  lap.step_m = options.step_m;
+  lap.front_disc_limit = options.front_disc_limit;
+  lap.ambient_temp = options.ambient_temp;
+  lap.track_temp = options.track_temp;
+  lap.car_half_width = options.car_half_width_m;
+  switch (options.thermal_start) {
+    case ThermalStart::kCar:
+      run.start = CarStart(car);
+      break;
+    case ThermalStart::kWarm:
+    case ThermalStart::kPeriodic: {
+      for (int k = 0; k < 4; ++k) {
+        const sim::CornerHistory& h = warm.laps[0].thermal.corners[k];
+        run.start.tyres[k] = {h.tread_temp.back(), h.carcass_temp.back(), 0.0};
+        run.start.brakes[k] = {h.disc_temp.back(), h.calliper_temp.back()};
+      }
+      break;
+    }
+  }
+  lap.periodic_thermal = options.thermal_start == ThermalStart::kPeriodic;
+  lap.initial = run.start;
+  run.solution = SolveMinimumTimeLap(car, track, lap, warm.laps[1], options.ipopt);
+
+  // The exact models over the solution's channels.
+  const LapSolution& s = run.solution;
+  if (s.time.size() >= 2) {
+    sim::ReplayInputs in;
+    in.time = s.time;
+    const vehicle::VehicleParams& p = *car.vehicle;
+    for (int c = 0; c < 4; ++c) {
+      sim::CornerChannels& ch = in.corners[c];
+      const CornerTrace& t = s.corners[c];
+      ch.speed = t.speed;
+      ch.fx = t.fx;
+      ch.fy = t.fy;
+      ch.fz = t.fz;
+      ch.slip_angle = t.slip_angle;
+      ch.slip_ratio = t.slip_ratio;
+      const double share =
+          IsFront(kAllCorners[c]) ? 0.5 * p.brakes.front_share : 0.5 * (1.0 - p.brakes.front_share);
+      for (double b : s.brake_force) ch.brake_fx.push_back(-share * b);
+    }
+    in.ambient_temp.assign(s.time.size(), options.ambient_temp);
+    in.track_temp.assign(s.time.size(), options.track_temp);
+    sim::ReplayInitialState from = run.start;
+    if (lap.periodic_thermal) {
+      for (int c = 0; c < 4; ++c) {
+        from.tyres[c] = {s.corners[c].tread_temp[0], s.corners[c].carcass_temp[0], 0.0};
+        from.brakes[c] = {s.corners[c].disc_temp[0], s.corners[c].calliper_temp[0]};
+      }
+    }
+    run.exact = sim::RunReplay(car, in, from, {});
+    for (int c = 0; c < 4; ++c) {
+      for (size_t k = 0; k < s.time.size(); ++k) {
+        run.max_tread_difference_K =
+            std::max(run.max_tread_difference_K,
+                     std::abs(run.exact.corners[c].tread_temp[k] - s.corners[c].tread_temp[k]));
+        run.max_disc_difference_K =
+            std::max(run.max_disc_difference_K,
+                     std::abs(run.exact.corners[c].disc_temp[k] - s.corners[c].disc_temp[k]));
+      }
+    }
+  }
+  return run;
+}
+
+std::vector<TurnApproach> FindTurnApproaches(const LapSolution& solution, const track::Track& track,
+                                             double wheel_power) {
+  const track::TrackSummary summary = track::Summarize(track);
+  std::vector<TurnApproach> out;
+  const size_t n = solution.distance.size();
+  if (n < 3) return out;
+  const bool oval = summary.turns.size() == 2;
+  for (size_t t = 0; t < summary.turns.size(); ++t) {
+    const track::TrackTurn& turn = summary.turns[t];
+    TurnApproach a;
+    a.turn = oval ? (t == 0 ? "turns 1-2" : "turns 3-4") : fmt::format("turn {}", t + 1);
+    a.entry_m = turn.entry_m;
+    // The slowest node between the turn's entry and exit.
+    const auto in_turn = [&](double s) {
+      return turn.exit_m >= turn.entry_m ? (s >= turn.entry_m && s <= turn.exit_m)
+                                         : (s >= turn.entry_m || s <= turn.exit_m);
+    };
+    size_t slowest = n;
+    for (size_t k = 0; k + 1 < n; ++k) {
+      if (in_turn(solution.distance[k]) && (slowest == n || solution.u[k] < solution.u[slowest])) {
+        slowest = k;
+      }
+    }
+    if (slowest == n) continue;
+    a.min_speed_mps = solution.u[slowest];
+    a.min_speed_at_m = solution.distance[slowest];
+    // Walk back from the slowest point (at most 600 m) to the latest stretch off full power and
+    // the latest braking: the lift point is where that stretch starts, the brake point where
+    // that braking starts.
+    const size_t m = n - 1;  // the last node repeats the first
+    const auto prev = [m](size_t k) { return (k + m - 1) % m; };
+    const double spacing = solution.distance[1] - solution.distance[0];
+    const size_t reach = std::min(m / 2, static_cast<size_t>(600.0 / spacing));
+    const auto off_power = [&](size_t k) { return solution.drive_power[k] < 0.95 * wheel_power; };
+    const auto braking = [&](size_t k) { return solution.brake_force[k] > 100.0; };
+    const auto start_of = [&](size_t k, const auto& in_run) {
+      size_t j = k;
+      for (size_t i = 0; i < reach && in_run(prev(j)); ++i) j = prev(j);
+      return j;
+    };
+    size_t k = slowest % m;
+    for (size_t i = 0; i < reach; ++i, k = prev(k)) {
+      if (off_power(k)) {
+        a.lift_m = solution.distance[start_of(k, off_power)];
+        break;
+      }
+    }
+    k = slowest % m;
+    for (size_t i = 0; i < reach; ++i, k = prev(k)) {
+      if (braking(k)) {
+        a.brake_m = solution.distance[start_of(k, braking)];
+        break;
+      }
+    }
+    out.push_back(a);
+  }
+  return out;
+}
+
+}  // namespace hotlap::ocp

@@ -1,0 +1,66 @@
+#pragma once
+/// @file
+/// The optimal lap as users run it: a quasi-steady-state warm-up on the minimum-curvature line
+/// (the initial guess, and the thermal state the lap starts from), the minimum-time solve
+/// (lap_problem.h), and a replay of the solution's channels through the exact thermal models
+/// (the optimiser uses a smooth |x|; the replay says how much that changed the temperatures).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hotlap/ocp/lap_problem.h"
+#include "hotlap/sim/replay.h"
+
+namespace hotlap::ocp {
+
+/// Where the thermal states start.
+enum class ThermalStart {
+  kWarm,      ///< where a QSS out-lap from the car's initial_state leaves them (default)
+  kCar,       ///< the car file's initial_state (tyres and brakes as from the pits)
+  kPeriodic,  ///< temperatures end the lap where they start (wear still starts at zero)
+};
+
+struct OptimalLapOptions {
+  double step_m = 4.0;                     ///< mesh spacing along the centre line
+  std::optional<double> front_disc_limit;  ///< K
+  ThermalStart thermal_start = ThermalStart::kWarm;
+  double ambient_temp = 0.0;      ///< K
+  double track_temp = 0.0;        ///< K
+  double line_margin_m = 1.5;     ///< the QSS guess's racing line keeps this from the edges
+  double car_half_width_m = 1.0;  ///< the optimal line keeps the car's centre this far in
+  IpoptOptions ipopt;
+};
+
+struct OptimalLapRun {
+  LapSolution solution;
+  double qss_lap_time = 0.0;      ///< the QSS flying lap (the guess), s
+  sim::ReplayInitialState start;  ///< the thermal state at the start line
+  /// The solution's channels replayed through the exact thermal models, at the mesh nodes.
+  sim::ReplayResult exact;
+  double max_tread_difference_K = 0.0;  ///< |exact - optimiser| over corners and nodes
+  double max_disc_difference_K = 0.0;
+};
+
+/// Runs the warm-up, the solve and the exact replay. InputError for bad input (no vehicle
+/// sections, a disc limit below the starting disc temperature); the solve's failures are reported
+/// in solution.solve, never thrown.
+OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
+                            const OptimalLapOptions& options);
+
+/// A lift or brake point into a turn.
+struct TurnApproach {
+  std::string turn;               ///< "turn 1", ...
+  double entry_m = 0.0;           ///< the turn's entry (centre-line distance)
+  std::optional<double> lift_m;   ///< where drive power last falls below 95% of its peak before
+                                  ///< the turn's slowest point
+  std::optional<double> brake_m;  ///< where braking last starts before the slowest point
+  double min_speed_mps = 0.0;     ///< slowest point of the turn
+  double min_speed_at_m = 0.0;
+};
+
+/// Lift and brake points of the solution into each turn of the track (track_summary.h turns).
+std::vector<TurnApproach> FindTurnApproaches(const LapSolution& solution, const track::Track& track,
+                                             double wheel_power);
+
+}  // namespace hotlap::ocp

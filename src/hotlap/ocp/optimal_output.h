@@ -1,0 +1,38 @@
+#pragma once
+/// @file
+/// What the optimal lap reports: its channels as CSV columns in the shared format, its figures,
+/// and a report that overlays one or more runs (e.g. without and with the disc limit).
+
+#include <string>
+#include <vector>
+
+#include "hotlap/ocp/optimal_lap.h"
+#include "hotlap/report/html_report.h"
+#include "hotlap/sim/replay_io.h"
+
+namespace hotlap::ocp {
+
+/// Columns (docs/optimal-control.md): distance_m (centre line), time_s, speed_mps, lateral
+/// speed, yaw rate, offset_m, heading error, steer_deg, drive_power_W, brake_force_N, x_m, y_m,
+/// then per corner the tyre channels (speed, fx, fy, fz, slip angle, slip ratio), the optimiser's
+/// temperatures and wear, brake power, and the exact replay's tread and disc temperatures
+/// (`tread_temp_<c>_exact_C`, `disc_temp_<c>_exact_C`).
+sim::ColumnSet OptimalLapColumns(const OptimalLapRun& run, const track::Track& track);
+
+/// Headline figures of a run.
+struct OptimalLapFigures {
+  double lap_time_s = 0.0;
+  double top_speed_mps = 0.0;
+  double min_speed_mps = 0.0;
+  double max_front_disc_temp_C = 0.0;
+  std::array<double, 4> peak_disc_temp_C{}, peak_tread_temp_C{}, wear_mm{};
+};
+OptimalLapFigures CalcOptimalLapFigures(const OptimalLapRun& run);
+
+/// Adds the map and the channel charts of `runs` (labelled `labels`, drawn solid then dashed) to
+/// `page`: speed, drive power and braking force, offset, steer, front and rear tread and disc
+/// temperatures, wear, against centre-line distance.
+void AddOptimalLapCharts(report::HtmlReport& page, const std::vector<const OptimalLapRun*>& runs,
+                         const std::vector<std::string>& labels, const track::Track& track);
+
+}  // namespace hotlap::ocp
