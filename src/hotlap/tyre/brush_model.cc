@@ -200,6 +200,5 @@ TyreForces<T> CalcBrushForces(const BrushParams<T>& params, const TyreOperatingP
                                             BrushDetails<T>*);
 
 HOTLAP_FOR_EACH_SCALAR(HOTLAP_INSTANTIATE_BRUSH_MODEL)
-HOTLAP_INSTANTIATE_BRUSH_MODEL(::hotlap::SecondOrder<3>)  // TEMP-LEAD
 
 }  // namespace hotlap::tyre

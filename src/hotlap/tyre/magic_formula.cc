@@ -448,7 +448,6 @@ MagicFormulaParams<double> LoadMagicFormula(const std::filesystem::path& path) {
                                              const TyreOperatingPoint<T>&,      \
                                              const MagicFormulaOptions&);
 HOTLAP_FOR_EACH_SCALAR(HOTLAP_INSTANTIATE)
-HOTLAP_INSTANTIATE(::hotlap::SecondOrder<3>)  // TEMP-LEAD
 #undef HOTLAP_INSTANTIATE
 
 }  // namespace hotlap::tyre

@@ -30,6 +30,5 @@ T CalcBristleStiffness(const RubberParams<T>& rubber, const T& temp) {
   template T CalcBristleStiffness<T>(const RubberParams<T>&, const T&);
 
 HOTLAP_FOR_EACH_SCALAR(HOTLAP_INSTANTIATE_RUBBER)
-HOTLAP_INSTANTIATE_RUBBER(::hotlap::SecondOrder<3>)  // TEMP-LEAD
 
 }  // namespace hotlap::tyre

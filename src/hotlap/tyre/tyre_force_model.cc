@@ -109,6 +109,5 @@ TyreForces<T> CalcTyreForces(const TyreForceModel<T>& model, const TyreOperating
   template struct TyreForceModel<T>;           \
   template TyreForces<T> CalcTyreForces<T>(const TyreForceModel<T>&, const TyreOperatingPoint<T>&);
 HOTLAP_FOR_EACH_SCALAR(HOTLAP_INSTANTIATE_TYRE_FORCE_MODEL)
-HOTLAP_INSTANTIATE_TYRE_FORCE_MODEL(::hotlap::SecondOrder<3>)  // TEMP-LEAD
 
 }  // namespace hotlap::tyre

@@ -175,6 +175,5 @@ TyreForces<T> CalcUniTireForces(const UniTireParams<T>& p, const TyreOperatingPo
                                               const TyreOperatingPoint<T>&, UniTireDetails<T>*);
 
 HOTLAP_FOR_EACH_SCALAR(HOTLAP_INSTANTIATE_UNITIRE)
-HOTLAP_INSTANTIATE_UNITIRE(::hotlap::SecondOrder<3>)  // TEMP-LEAD
 
 }  // namespace hotlap::tyre

@@ -1,0 +1,95 @@
+// Optimal-control speed.
+//
+// BM_DarlingtonOptimalLap/{0,1}: the two Darlington solves of `hotlap lap --method ocp
+// --compare-disc-limit-C 500` (without and with the 500 degC front-disc limit), 4 m mesh, each
+// from its QSS warm-up; counters: lap time, Ipopt iterations, solve seconds (Ipopt's own clock).
+//
+// BM_ChassisElementsHessian/{per_element,dense_node_60}: why the programme is lifted
+// (docs/optimal-control.md): one node's chassis elements with second-order forward AD over their
+// own few inputs, and the same functions differentiated in a 60-variable space, the size of a
+// whole lap-problem node, which is what a dense per-node Hessian would cost.
+//
+// Run: ./build/ocp_bench --benchmark_filter=Chassis   (seconds)
+//      ./build/ocp_bench --benchmark_filter=Darlington --benchmark_min_time=0   (minutes)
+
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <type_traits>
+#include <vector>
+
+#include "hotlap/common/data_path.h"
+#include "hotlap/common/units.h"
+#include "hotlap/ocp/lap_elements.h"
+#include "hotlap/ocp/optimal_lap.h"
+#include "hotlap/track/track_io.h"
+
+namespace {
+
+using namespace hotlap;
+
+const vehicle::Car& Car() {
+  static const vehicle::Car car = vehicle::LoadCar(ResolveCarFile("gen7"));
+  return car;
+}
+
+void BM_DarlingtonOptimalLap(benchmark::State& state) {
+  const track::Track track = track::LoadTrack("darlington");
+  ocp::OptimalLapOptions o;
+  o.ambient_temp = CelsiusToKelvin(25.0);
+  o.track_temp = CelsiusToKelvin(40.0);
+  if (state.range(0) == 1) o.front_disc_limit = CelsiusToKelvin(500.0);
+  ocp::OptimalLapRun run;
+  for (auto _ : state) run = ocp::RunOptimalLap(Car(), track, o);
+  state.counters["lap_time_s"] = run.solution.lap_time;
+  state.counters["iterations"] = run.solution.solve.iterations;
+  state.counters["ipopt_solve_s"] = run.solution.solve.solve_seconds;
+  state.counters["converged"] = run.solution.solve.ok() ? 1 : 0;
+  state.counters["variables"] = run.solution.variables;
+}
+BENCHMARK(BM_DarlingtonOptimalLap)->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kSecond);
+
+// The chassis elements of one node (four corners' kinematics, loads, totals, the longitudinal and
+// lateral dynamics), each differentiated over its own inputs (kPerElement = true) or over a
+// node-sized 60-variable space as a dense per-node Hessian would (false).
+template <bool kPerElement>
+void BM_ChassisElementsHessian(benchmark::State& state) {
+  const vehicle::VehicleParams& p = *Car().vehicle;
+  const ocp::internal::NodeRoad road{1.0 / 183.0, DegToRad(25.0), 0.0};
+  using S = std::conditional_t<kPerElement, SecondOrder<10>, SecondOrder<60>>;
+  const auto seed = [](const std::vector<double>& x) {
+    std::vector<S> v;
+    for (size_t i = 0; i < x.size(); ++i) v.push_back(S::Variable(x[i], static_cast<int>(i)));
+    return v;
+  };
+  for (auto _ : state) {
+    for (Corner c : kAllCorners) {
+      const auto in = seed({75.0, 0.4, 0.41, 0.03, -0.02, 76.0});
+      std::array<S, 2> out;
+      ocp::internal::KinematicsFn{&p, c}(in.data(), out.data());
+      benchmark::DoNotOptimize(out);
+    }
+    {
+      const auto in = seed({0.03, -100.0, -120.0, 2000.0, 2500.0, 6000.0, 9000.0, 5000.0, 8000.0});
+      std::array<S, 3> out;
+      ocp::internal::TotalsFn{&p}(in.data(), out.data());
+      benchmark::DoNotOptimize(out);
+    }
+    {
+      const auto in = seed({75.0, 0.4, 3.0, 4000.0, 30000.0});
+      std::array<S, 4> out;
+      ocp::internal::LoadsFn{&p, road}(in.data(), out.data());
+      benchmark::DoNotOptimize(out);
+    }
+    {
+      const auto in = seed({0.0134, 4000.0, 75.0, 0.4, 0.41, 0.01, 5000.0, 11000.0, 6000.0, 1e4});
+      std::array<S, 1> out;
+      ocp::internal::LongitudinalFn{&p, road, {0.01, 0.01, 0.01, 0.01}}(in.data(), out.data());
+      benchmark::DoNotOptimize(out);
+    }
+  }
+}
+BENCHMARK(BM_ChassisElementsHessian<true>)->Name("BM_ChassisElementsHessian/per_element");
+BENCHMARK(BM_ChassisElementsHessian<false>)->Name("BM_ChassisElementsHessian/dense_node_60");
+
+}  // namespace

@@ -1,0 +1,117 @@
+// Exact first and second derivatives of every element of the lap problem against central
+// differences, at a realistic operating point of the Gen-7-like car at Darlington.
+
+#include "hotlap/ocp/lap_elements.h"
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "hotlap/common/units.h"
+#include "hotlap/ocp/element.h"
+#include "hotlap/ocp/tyre_force_element.h"
+#include "hotlap/vehicle/car.h"
+#include "test_util.h"
+
+namespace hotlap::ocp {
+namespace {
+
+using internal::NodeRoad;
+
+const vehicle::Car& Gen7() {
+  static const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
+  return car;
+}
+
+// Jacobian and Hessian (with weights 1, -0.7, 0.4, ...) of `e` at x against differences.
+void CheckElement(const Element& e, std::vector<double> x, const std::vector<double>& step,
+                  const std::string& what) {
+  const int n = e.inputs(), m = e.outputs();
+  ASSERT_EQ(static_cast<int>(x.size()), n) << what;
+  std::vector<double> out(m), jac(n * m), w(m), hess(n * n);
+  for (int o = 0; o < m; ++o) w[o] = o == 0 ? 1.0 : (o % 2 ? -0.7 : 0.4);
+  e.Jacobian(x.data(), out.data(), jac.data());
+  e.Hessian(x.data(), w.data(), hess.data());
+  std::vector<double> values(m);
+  e.Values(x.data(), values.data());
+  for (int o = 0; o < m; ++o) EXPECT_NEAR(values[o], out[o], 1e-9 * (1 + std::abs(out[o]))) << what;
+  for (int i = 0; i < n; ++i) {
+    std::vector<double> xp = x, xm = x;
+    xp[i] += step[i];
+    xm[i] -= step[i];
+    std::vector<double> op(m), om(m), jp(n * m), jm(n * m), dummy(m);
+    e.Values(xp.data(), op.data());
+    e.Values(xm.data(), om.data());
+    e.Jacobian(xp.data(), dummy.data(), jp.data());
+    e.Jacobian(xm.data(), dummy.data(), jm.data());
+    for (int o = 0; o < m; ++o) {
+      const double fd = (op[o] - om[o]) / (2 * step[i]);
+      EXPECT_NEAR(jac[o * n + i], fd, 1e-5 * (1 + std::abs(fd))) << what << " d out" << o << "/d in" << i;
+    }
+    for (int j = 0; j < n; ++j) {
+      double fd = 0.0;
+      for (int o = 0; o < m; ++o) fd += w[o] * (jp[o * n + j] - jm[o * n + j]) / (2 * step[i]);
+      EXPECT_NEAR(hess[i * n + j], fd, 1e-4 * (1 + std::abs(fd))) << what << " H" << i << j;
+    }
+  }
+}
+
+const NodeRoad kTurn{1.0 / 183.0, DegToRad(25.0), 0.0};
+
+TEST(LapElementsTest, ChassisElements) {
+  const vehicle::VehicleParams& p = *Gen7().vehicle;
+  CheckElement(*MakeElement<6, 2>(internal::KinematicsFn{&p, Corner::kFrontRight}),
+               {75.0, 0.4, 0.41, 0.03, -0.02, 76.0}, {1e-3, 1e-4, 1e-5, 1e-6, 1e-6, 1e-3},
+               "kinematics fr");
+  CheckElement(*MakeElement<6, 2>(internal::KinematicsFn{&p, Corner::kRearLeft}),
+               {75.0, 0.4, 0.41, 0.03, -0.02, 74.0}, {1e-3, 1e-4, 1e-5, 1e-6, 1e-6, 1e-3},
+               "kinematics rl");
+  CheckElement(*MakeElement<4, 1>(internal::SpoolFn{1.007}), {0.02, 74.0, 0.015, 75.0},
+               {1e-6, 1e-3, 1e-6, 1e-3}, "spool");
+  CheckElement(*MakeElement<6, 1>(internal::RearDriveFn{0.4}),
+               {2000.0, 3000.0, 500.0, 75.0, 0.02, 4e5}, {1.0, 1.0, 1.0, 1e-3, 1e-6, 10.0},
+               "rear drive");
+  CheckElement(*MakeElement<9, 3>(internal::TotalsFn{&p}),
+               {0.03, -100.0, -120.0, 2000.0, 2500.0, 6000.0, 9000.0, 5000.0, 8000.0},
+               {1e-6, 1, 1, 1, 1, 1, 1, 1, 1}, "totals");
+  CheckElement(*MakeElement<5, 4>(internal::LoadsFn{&p, kTurn}), {75.0, 0.4, 3.0, 4000.0, 30000.0},
+               {1e-3, 1e-4, 1e-3, 1.0, 1.0}, "loads");
+  CheckElement(*MakeElement<5, 1>(internal::TimeFn{kTurn.kappa_g()}),
+               {0.0134, 75.0, 0.4, 3.0, 0.01}, {1e-7, 1e-3, 1e-4, 1e-3, 1e-6}, "time");
+  CheckElement(*MakeElement<10, 1>(internal::LongitudinalFn{&p, kTurn, {0.01, 0.01, 0.01, 0.01}}),
+               {0.0134, 4000.0, 75.0, 0.4, 0.41, 0.01, 5000.0, 11000.0, 6000.0, 10000.0},
+               {1e-7, 1, 1e-3, 1e-4, 1e-5, 1e-6, 1, 1, 1, 1}, "longitudinal");
+  CheckElement(*MakeElement<5, 1>(internal::LateralFn{&p, kTurn}), {0.0134, 30000.0, 75.0, 0.41, 0.01},
+               {1e-7, 1, 1e-3, 1e-5, 1e-6}, "lateral");
+  CheckElement(*MakeElement<4, 1>(internal::OffsetFn{}), {0.0134, 75.0, 0.4, 0.01},
+               {1e-7, 1e-3, 1e-4, 1e-6}, "offset");
+}
+
+TEST(LapElementsTest, ThermalAndTyreForceElements) {
+  const vehicle::Car& car = Gen7();
+  const int fr = CornerIndex(Corner::kFrontRight);
+  tyre::TyreThermalParams<double> params = car.tyres[fr].params;
+  params.smoothing = {10.0, 1e-3};
+  const auto so = params.Cast<SecondOrder<10>>();
+  const auto jet = params.Cast<Jet10>();
+  CheckElement(*MakeElement<10, 3>(internal::TyreThermalFn{&params, &so, &jet,
+                                                           car.tyres[fr].compound.get(), 298.15,
+                                                           313.15}),
+               {0.0134, 370.0, 340.0, 0.01, 76.0, -500.0, 9000.0, 11000.0, -0.05, -0.01},
+               {1e-7, 1e-3, 1e-3, 1e-6, 1e-3, 1e-2, 1e-2, 1e-2, 1e-6, 1e-6}, "tyre thermal");
+  const brake::BrakeThermalParams<double>& bp = car.brakes[fr].params;
+  const auto bso = bp.Cast<SecondOrder<5>>();
+  const auto bjet = bp.Cast<Jet5>();
+  CheckElement(*MakeElement<5, 2>(internal::BrakeFn{&bp, &bso, &bjet, 0.3, 298.15}),
+               {0.0134, 700.0, 400.0, 76.0, 8000.0}, {1e-7, 1e-3, 1e-3, 1e-3, 1e-1}, "brake");
+  const TyreForceElement tyre(car.vehicle->corner(Corner::kFrontRight),
+                              *car.tyres[fr].compound, 50.0);
+  CheckElement(tyre, {11000.0, -0.02, -0.05, 370.0, 0.01, -1000.0, 10000.0},
+               {1e-1, 1e-7, 1e-7, 1e-3, 1e-6, 1.0, 1.0}, "tyre forces");
+}
+
+}  // namespace
+}  // namespace hotlap::ocp
