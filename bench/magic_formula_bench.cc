@@ -1,7 +1,12 @@
 // Magic Formula speed: combined-slip evaluations (Fx, Fy, Mx, My, Mz) per second on one core, in
-// double and with derivatives with respect to kappa and alpha (ceres::Jet<double, 2>). Each
-// iteration evaluates one of 256 operating points spread over loads, slips and cambers, so that
-// nothing is folded away. Reports items_per_second (evaluations per second).
+// double and with derivatives with respect to kappa and alpha (ceres::Jet<double, 2>), one point
+// per call (CalcMagicFormula) and several (CalcMagicFormulaBatch, one point per SIMD lane). Each
+// single-point iteration evaluates one of 256 operating points spread over loads, slips and
+// cambers, so that nothing is folded away; each batch iteration evaluates the first N of them.
+// Reports items_per_second (evaluations per second); the label names the instruction set of
+// libmvec's lanes (magic_formula_math.h). One point is latency-bound (some seven dependent
+// transcendental steps per evaluation), so a loaded machine (other processes on the sibling
+// hyperthread) slows it markedly: compare runs taken at the same load.
 //
 // Run: ./build/magic_formula_bench --benchmark_min_time=1
 
@@ -9,19 +14,21 @@
 
 #include <filesystem>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "hotlap/common/scalar.h"
 #include "hotlap/tyre/magic_formula.h"
+#include "hotlap/tyre/magic_formula_math.h"
+#include "hotlap/tyre/tyre_force_model.h"
 
 namespace {
 
 using namespace hotlap;
 using namespace hotlap::tyre;
 
-MagicFormulaParams<double> Load(const std::string& name) {
-  return LoadMagicFormula(std::filesystem::path(HOTLAP_SOURCE_DIR) / "tests/data/tir/mfeval" /
-                          name);
+std::filesystem::path TirPath(const std::string& name) {
+  return std::filesystem::path(HOTLAP_SOURCE_DIR) / "tests/data/tir/mfeval" / name;
 }
 
 // 256 combined-slip points: load 0.5..1.5 FNOMIN, kappa -0.2..0.2, alpha -10..10 deg, camber
@@ -45,9 +52,23 @@ std::vector<TyreOperatingPoint<T>> Points(double fnomin) {
   return points;
 }
 
+// Runs the benchmark with the lanes on `isa` (the widest this machine has if it lacks `isa`).
+class ScopedIsa {
+ public:
+  explicit ScopedIsa(internal::MathIsa isa) { internal::SetMathIsa(isa); }
+  ~ScopedIsa() { internal::SetMathIsa(initial_); }
+  ScopedIsa(const ScopedIsa&) = delete;
+  ScopedIsa& operator=(const ScopedIsa&) = delete;
+
+ private:
+  const internal::MathIsa initial_ = internal::ActiveMathIsa();
+};
+
 template <class T>
-void RunCombined(benchmark::State& state, const std::string& file, int use_mode) {
-  const MagicFormulaParams<double> params = Load(file);
+void RunCombined(benchmark::State& state, const std::string& file, int use_mode,
+                 internal::MathIsa isa = internal::MathIsa::kAvx2) {
+  const ScopedIsa scoped(isa);
+  const MagicFormulaParams<double> params = LoadMagicFormula(TirPath(file));
   const MagicFormulaParams<T> p = params.Cast<T>();
   const auto points = Points<T>(params.FNOMIN);
   const MagicFormulaOptions options = MagicFormulaOptions::FromUseMode(use_mode);
@@ -57,6 +78,7 @@ void RunCombined(benchmark::State& state, const std::string& file, int use_mode)
     benchmark::DoNotOptimize(f);
   }
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
+  state.SetLabel(internal::MathIsaName(internal::ActiveMathIsa()));
 }
 
 void BM_MagicFormula61Combined(benchmark::State& state) {
@@ -73,6 +95,82 @@ void BM_MagicFormula52Combined(benchmark::State& state) {
   RunCombined<double>(state, "MagicFormula52_Parameters.tir", 111);
 }
 BENCHMARK(BM_MagicFormula52Combined);
+
+// The baseline instruction set's two lanes (SSE2 on x86-64): what a machine without AVX2 gets.
+void BM_MagicFormula61CombinedGeneric(benchmark::State& state) {
+  RunCombined<double>(state, "MagicFormula61_Parameters.tir", 111, internal::MathIsa::kGeneric);
+}
+BENCHMARK(BM_MagicFormula61CombinedGeneric);
+
+// Through the tyre force model's variant (CalcTyreForces), as the vehicle uses it.
+void BM_MagicFormula61ViaTyreForceModel(benchmark::State& state) {
+  const TyreForceModel<double> model = LoadTyreForceModel(TirPath("MagicFormula61_Parameters.tir"));
+  const auto points =
+      Points<double>(LoadMagicFormula(TirPath("MagicFormula61_Parameters.tir")).FNOMIN);
+  size_t i = 0;
+  for (auto _ : state) {
+    const TyreForces<double> f = CalcTyreForces(model, points[i++ & 255]);
+    benchmark::DoNotOptimize(f);
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
+  state.SetLabel(internal::MathIsaName(internal::ActiveMathIsa()));
+}
+BENCHMARK(BM_MagicFormula61ViaTyreForceModel);
+
+// The first state.range(0) points per call through CalcMagicFormulaBatch.
+void RunBatch(benchmark::State& state, const std::string& file, int use_mode,
+              internal::MathIsa isa = internal::MathIsa::kAvx2) {
+  const ScopedIsa scoped(isa);
+  const MagicFormulaParams<double> params = LoadMagicFormula(TirPath(file));
+  const auto all = Points<double>(params.FNOMIN);
+  const std::vector<TyreOperatingPoint<double>> points(all.begin(), all.begin() + state.range(0));
+  std::vector<TyreForces<double>> out(points.size());
+  const MagicFormulaOptions options = MagicFormulaOptions::FromUseMode(use_mode);
+  for (auto _ : state) {
+    CalcMagicFormulaBatch(params, points, options, out);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * points.size()));
+  state.SetLabel(internal::MathIsaName(internal::ActiveMathIsa()));
+}
+
+void BM_MagicFormula61CombinedBatch(benchmark::State& state) {
+  RunBatch(state, "MagicFormula61_Parameters.tir", 111);
+}
+BENCHMARK(BM_MagicFormula61CombinedBatch)->Arg(4)->Arg(16)->Arg(256);
+
+void BM_MagicFormula61CombinedTangentBatch(benchmark::State& state) {
+  RunBatch(state, "MagicFormula61_Parameters.tir", 121);
+}
+BENCHMARK(BM_MagicFormula61CombinedTangentBatch)->Arg(256);
+
+void BM_MagicFormula52CombinedBatch(benchmark::State& state) {
+  RunBatch(state, "MagicFormula52_Parameters.tir", 111);
+}
+BENCHMARK(BM_MagicFormula52CombinedBatch)->Arg(256);
+
+// Two SSE2 lanes: what a machine without AVX2 gets.
+void BM_MagicFormula61CombinedBatchGeneric(benchmark::State& state) {
+  RunBatch(state, "MagicFormula61_Parameters.tir", 111, internal::MathIsa::kGeneric);
+}
+BENCHMARK(BM_MagicFormula61CombinedBatchGeneric)->Arg(256);
+
+// Through the tyre force model's variant (CalcTyreForcesBatch), as `hotlap tyre eval --sweep`.
+void BM_MagicFormula61BatchViaTyreForceModel(benchmark::State& state) {
+  const TyreForceModel<double> model = LoadTyreForceModel(TirPath("MagicFormula61_Parameters.tir"));
+  const auto points =
+      Points<double>(LoadMagicFormula(TirPath("MagicFormula61_Parameters.tir")).FNOMIN);
+  std::vector<TyreForces<double>> out(points.size());
+  for (auto _ : state) {
+    CalcTyreForcesBatch(model, points, out);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * points.size()));
+  state.SetLabel(internal::MathIsaName(internal::ActiveMathIsa()));
+}
+BENCHMARK(BM_MagicFormula61BatchViaTyreForceModel);
 
 // Value and d/dkappa, d/dalpha of all five outputs.
 void BM_MagicFormula61CombinedJet2(benchmark::State& state) {

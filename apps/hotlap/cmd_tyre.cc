@@ -121,12 +121,17 @@ nlohmann::json ForcesJson(const tyre::TyreForces<double>& f) {
           {"my_Nm", RoundSignificant(f.my)}};
 }
 
-void CheckFinite(const tyre::TyreForces<double>& f, const std::vector<double>& values) {
+bool IsFinite(const tyre::TyreForces<double>& f) {
   for (double x : {f.fx, f.fy, f.mz, f.mx, f.my}) {
-    if (!std::isfinite(x)) {
-      throw NumericalError(fmt::format("the tyre model gave a non-finite force at inputs {}",
-                                       fmt::join(values, ", ")));
-    }
+    if (!std::isfinite(x)) return false;
+  }
+  return true;
+}
+
+void CheckFinite(const tyre::TyreForces<double>& f, const std::vector<double>& values) {
+  if (!IsFinite(f)) {
+    throw NumericalError(fmt::format("the tyre model gave a non-finite force at inputs {}",
+                                     fmt::join(values, ", ")));
   }
 }
 
@@ -194,28 +199,54 @@ int RunEval(const EvalArgs& a) {
     for (const char* n : {"fx_N", "fy_N", "mz_Nm", "mx_Nm", "my_Nm"}) names.push_back(n);
     std::vector<std::vector<double>> columns(names.size());
     double peak_fx = 0, peak_fy = 0, peak_mz = 0;
-    std::vector<size_t> index(sweeps.size(), 0);
     std::vector<double> values = a.values;
-    for (size_t n = 0; n < total; ++n) {
-      // The last sweep varies fastest.
-      size_t rest = n;
-      for (size_t j = sweeps.size(); j-- > 0;) {
-        values[sweeps[j].variable] = sweeps[j].values[rest % sweeps[j].values.size()];
-        rest /= sweeps[j].values.size();
+    const size_t k = values.size();
+    // The grid goes through the batch API in blocks (a Magic Formula evaluates several points
+    // per call, with the same results as one by one).
+    constexpr size_t kBlock = 1024;
+    std::vector<tyre::TyreOperatingPoint<double>> ops;
+    std::vector<tyre::TyreForces<double>> forces;
+    bool load_error = false;
+    for (size_t first = 0; first < total && !load_error; first += kBlock) {
+      ops.clear();
+      for (size_t n = first; n < std::min(total, first + kBlock); ++n) {
+        // The last sweep varies fastest.
+        size_t rest = n;
+        for (size_t j = sweeps.size(); j-- > 0;) {
+          values[sweeps[j].variable] = sweeps[j].values[rest % sweeps[j].values.size()];
+          rest /= sweeps[j].values.size();
+        }
+        // (Reported after the points before it, as when evaluating one by one.)
+        if (!(values[0] > 0.0)) {
+          load_error = true;
+          break;
+        }
+        for (size_t i = 0; i < k; ++i) columns[i].push_back(values[i]);
+        ops.push_back(PointFrom(values));
       }
-      if (!(values[0] > 0.0)) throw InputError("the sweep reaches a load <= 0 N");
-      const tyre::TyreForces<double> f = evaluate(values);
-      for (size_t i = 0; i < values.size(); ++i) columns[i].push_back(values[i]);
-      const size_t k = values.size();
-      columns[k].push_back(f.fx);
-      columns[k + 1].push_back(f.fy);
-      columns[k + 2].push_back(f.mz);
-      columns[k + 3].push_back(f.mx);
-      columns[k + 4].push_back(f.my);
-      peak_fx = std::max(peak_fx, std::abs(f.fx));
-      peak_fy = std::max(peak_fy, std::abs(f.fy));
-      peak_mz = std::max(peak_mz, std::abs(f.mz));
+      forces.resize(ops.size());
+      tyre::CalcTyreForcesBatch(model, ops, forces);
+      for (size_t j = 0; j < ops.size(); ++j) {
+        tyre::TyreForces<double> f = forces[j];
+        if (compound) {
+          f = tyre::ApplyGripFactor(f, compound->GripFactor(ops[j].tread_temp, a.wear_mm));
+        }
+        if (!IsFinite(f)) {
+          std::vector<double> point(k);
+          for (size_t i = 0; i < k; ++i) point[i] = columns[i][first + j];
+          CheckFinite(f, point);
+        }
+        columns[k].push_back(f.fx);
+        columns[k + 1].push_back(f.fy);
+        columns[k + 2].push_back(f.mz);
+        columns[k + 3].push_back(f.mx);
+        columns[k + 4].push_back(f.my);
+        peak_fx = std::max(peak_fx, std::abs(f.fx));
+        peak_fy = std::max(peak_fy, std::abs(f.fy));
+        peak_mz = std::max(peak_mz, std::abs(f.mz));
+      }
     }
+    if (load_error) throw InputError("the sweep reaches a load <= 0 N");
     WriteCsv(a.out,
              {{"source", fmt::format("hotlap {} tyre eval", HOTLAP_VERSION)},
               {"model", std::string(model.kind())},

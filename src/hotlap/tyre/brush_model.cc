@@ -200,5 +200,7 @@ TyreForces<T> CalcBrushForces(const BrushParams<T>& params, const TyreOperatingP
                                             BrushDetails<T>*);
 
 HOTLAP_FOR_EACH_SCALAR(HOTLAP_INSTANTIATE_BRUSH_MODEL)
+// The optimal-control tyre element's scalar: tyre forces over (Fz, kappa, alpha).
+HOTLAP_INSTANTIATE_BRUSH_MODEL(::hotlap::SecondOrder<3>)
 
 }  // namespace hotlap::tyre

@@ -29,9 +29,19 @@
 /// none of this) and the slip form (x1x: alpha and gamma as given, as TNO MF-Tyre; x2x: the book's
 /// alpha* = tan(alpha) sgn(Vx) and gamma* = sin(gamma)).
 ///
-/// Derivatives: every function is templated on the scalar (double or ceres::Jet). Branches
-/// (limits, signs, low speed) are chosen on values only, so derivatives are exact everywhere except
-/// on the switching surfaces, and zero with respect to an input while it is clamped.
+/// Speed and accuracy: the arctangents, sines and cosines (some 25 and 14 per evaluation) go
+/// through SIMD lanes in a few batches, and every transcendental function of the double model is
+/// glibc's vector maths library libmvec's (four AVX2 lanes where the CPU has AVX2, else two SSE2
+/// lanes; magic_formula_simd.h). libmvec is accurate to a few ulp, so results can differ from a
+/// plain libm evaluation in the last bits (4e-14 of an output's size at most,
+/// tests/tyre/magic_formula_reference_test.cc) and between instruction sets. One point is bound
+/// by its chain of seven dependent function batches; CalcMagicFormulaBatch evaluates several
+/// points at once, one per SIMD lane, with the same bits as CalcMagicFormula on the same machine.
+///
+/// Derivatives: every function is templated on the scalar (double, ceres::Jet, SecondOrder).
+/// Branches (limits, signs, low speed) are chosen on values only, so derivatives are exact
+/// everywhere except on the switching surfaces, and zero with respect to an input while it is
+/// clamped.
 ///
 /// Pitfalls: Mz follows mfeval's corrections for TNO (Dt with QDZ3 gamma not |gamma|, Bt with
 /// QBZ4, s with FNOMIN, t times LFZO, alpha_eq from tangents, Mz' from Fy0 at zero camber), so it
@@ -39,6 +49,7 @@
 /// (Fz^3/FZMIN^2 and Fz^2/FZMIN); the trail and residual torque use FZMIN itself.
 
 #include <filesystem>
+#include <span>
 
 #include "hotlap/common/scalar.h"
 #include "hotlap/tyre/magic_formula_params.h"
@@ -74,6 +85,14 @@ struct MagicFormulaOptions {
 template <Scalar T>
 TyreForces<T> CalcMagicFormula(const MagicFormulaParams<T>& params, const TyreOperatingPoint<T>& op,
                                const MagicFormulaOptions& options);
+
+/// CalcMagicFormula(params, points[i], options) into out[i] for every i, for doubles: several
+/// points at once (one per SIMD lane, their chains of functions overlapping), with the same
+/// results bit for bit, about twice as fast per point (docs/benchmarks.md). std::invalid_argument
+/// unless `out` has the size of `points`.
+void CalcMagicFormulaBatch(const MagicFormulaParams<double>& params,
+                           std::span<const TyreOperatingPoint<double>> points,
+                           const MagicFormulaOptions& options, std::span<TyreForces<double>> out);
 
 /// The coefficients of a `.tir` file, SI units (ReadTirFile(path).params). InputError as
 /// ReadTirFile.

@@ -30,5 +30,7 @@ T CalcBristleStiffness(const RubberParams<T>& rubber, const T& temp) {
   template T CalcBristleStiffness<T>(const RubberParams<T>&, const T&);
 
 HOTLAP_FOR_EACH_SCALAR(HOTLAP_INSTANTIATE_RUBBER)
+// The optimal-control tyre element's scalar: tyre forces over (Fz, kappa, alpha).
+HOTLAP_INSTANTIATE_RUBBER(::hotlap::SecondOrder<3>)
 
 }  // namespace hotlap::tyre

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstddef>
+#include <stdexcept>
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
@@ -105,9 +107,25 @@ TyreForces<T> CalcTyreForces(const TyreForceModel<T>& model, const TyreOperating
       model.params);
 }
 
+void CalcTyreForcesBatch(const TyreForceModel<double>& model,
+                         std::span<const TyreOperatingPoint<double>> points,
+                         std::span<TyreForces<double>> out) {
+  if (const auto* mf = std::get_if<MagicFormulaModel<double>>(&model.params)) {
+    CalcMagicFormulaBatch(mf->params, points, mf->options, out);
+    return;
+  }
+  if (out.size() != points.size()) {
+    throw std::invalid_argument(fmt::format(
+        "CalcTyreForcesBatch: {} points but room for {} results", points.size(), out.size()));
+  }
+  for (std::size_t i = 0; i < points.size(); ++i) out[i] = CalcTyreForces(model, points[i]);
+}
+
 #define HOTLAP_INSTANTIATE_TYRE_FORCE_MODEL(T) \
   template struct TyreForceModel<T>;           \
   template TyreForces<T> CalcTyreForces<T>(const TyreForceModel<T>&, const TyreOperatingPoint<T>&);
 HOTLAP_FOR_EACH_SCALAR(HOTLAP_INSTANTIATE_TYRE_FORCE_MODEL)
+// The optimal-control tyre element's scalar: tyre forces over (Fz, kappa, alpha).
+HOTLAP_INSTANTIATE_TYRE_FORCE_MODEL(::hotlap::SecondOrder<3>)
 
 }  // namespace hotlap::tyre

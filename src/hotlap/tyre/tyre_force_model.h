@@ -16,6 +16,7 @@
 /// with `Cast<Jet>()` to differentiate with respect to its parameters).
 
 #include <filesystem>
+#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -43,7 +44,7 @@ using TyreForceParams = std::variant<MagicFormulaModel<T>, BrushParams<T>, UniTi
 /// A tyre force model as loaded from one file.
 template <Scalar T>
 struct TyreForceModel {
-  std::string name;            ///< the file's name (YAML `name:`; a .tir's file name without extension)
+  std::string name;  ///< the file's name (YAML `name:`; a .tir's file name without extension)
   std::filesystem::path path;  ///< where it was loaded from
   TyreForceParams<T> params;
 
@@ -79,6 +80,13 @@ TyreForceModel<double> LoadTyreForceModel(const std::filesystem::path& path,
 /// Steady-state forces and moments of whichever model at `op`.
 template <Scalar T>
 TyreForces<T> CalcTyreForces(const TyreForceModel<T>& model, const TyreOperatingPoint<T>& op);
+
+/// CalcTyreForces(model, points[i]) into out[i] for every i, for doubles: a Magic Formula
+/// evaluates several points at once (CalcMagicFormulaBatch, the same results bit for bit), the
+/// other models one by one. std::invalid_argument unless `out` has the size of `points`.
+void CalcTyreForcesBatch(const TyreForceModel<double>& model,
+                         std::span<const TyreOperatingPoint<double>> points,
+                         std::span<TyreForces<double>> out);
 
 /// The correction of spec section 4 (000:35-36 as corrected): Fx, Fy and Mz multiplied by
 /// `grip_factor` = g(T_t) h(wear). Mz is scaled with Fy because it is Fy times the pneumatic trail;

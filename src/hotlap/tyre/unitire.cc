@@ -175,5 +175,7 @@ TyreForces<T> CalcUniTireForces(const UniTireParams<T>& p, const TyreOperatingPo
                                               const TyreOperatingPoint<T>&, UniTireDetails<T>*);
 
 HOTLAP_FOR_EACH_SCALAR(HOTLAP_INSTANTIATE_UNITIRE)
+// The optimal-control tyre element's scalar: tyre forces over (Fz, kappa, alpha).
+HOTLAP_INSTANTIATE_UNITIRE(::hotlap::SecondOrder<3>)
 
 }  // namespace hotlap::tyre

@@ -1,0 +1,33 @@
+#pragma once
+/// @file
+/// The HTML report of `hotlap abs` (docs/abs.md, docs/reports.md): the run's histories and, with
+/// --scenarios, the comparisons.
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "hotlap/sim/abs_config.h"
+#include "hotlap/sim/abs_metrics.h"
+#include "hotlap/sim/abs_run.h"
+#include "hotlap/sim/abs_scenarios.h"
+
+namespace hotlap::app {
+
+/// What the report shows.
+struct AbsReportInputs {
+  const sim::AbsConfig* config = nullptr;
+  const sim::AbsEvent* event = nullptr;
+  const sim::AbsRunResult* run = nullptr;
+  const sim::AbsMetrics* metrics = nullptr;
+  std::vector<std::pair<std::string, std::string>> summary;        ///< figure, value rows
+  const std::vector<sim::AbsComparisonRun>* comparison = nullptr;  ///< null without --scenarios
+  const sim::AbsStopSeries* series = nullptr;                      ///< null without --scenarios
+  std::string csv;  ///< the channels file written beside it
+};
+
+/// Writes the report to `path` atomically.
+void WriteAbsReport(const AbsReportInputs& in, const std::filesystem::path& path);
+
+}  // namespace hotlap::app
