@@ -21,4 +21,11 @@ CommandRunner RegisterTrackCommand(CLI::App& app);
 /// `hotlap lap`: the car round a track by the quasi-steady-state method, thermal models included.
 CommandRunner RegisterLapCommand(CLI::App& app);  ///< `hotlap track info` (cmd_track.cc)
 
+/// `hotlap fit tyre|contact-length|brake`: parameters fitted to a log, with uncertainty.
+CommandRunner RegisterFitCommand(CLI::App& app);
+
+/// `hotlap synth`: a synthetic measured log from the lap simulation (docs/fitting.md).
+CommandRunner RegisterSynthCommand(CLI::App& app);
+CommandRunner RegisterAbsCommand(CLI::App& app);  ///< `hotlap abs`: ABS braking (cmd_abs.cc)
+
 }  // namespace hotlap::app
