@@ -16,6 +16,8 @@ CommandRunner RegisterReplayCommand(CLI::App& app);
 
 /// `hotlap tyre eval|fit`: tyre force models at a point or over a sweep, and fitted to rig data.
 CommandRunner RegisterTyreCommand(CLI::App& app);
+
+/// `hotlap track info`: length, closure, radii, banking and turns of a track (cmd_track.cc).
 CommandRunner RegisterTrackCommand(CLI::App& app);
 
 /// `hotlap lap`: the car round a track by the quasi-steady-state method, thermal models included,
@@ -23,6 +25,15 @@ CommandRunner RegisterTrackCommand(CLI::App& app);
 CommandRunner RegisterLapCommand(CLI::App& app);
 
 /// `hotlap optimise`: the minimum-lap-time optimal control with thermal states.
-CommandRunner RegisterOptimiseCommand(CLI::App& app);  ///< `hotlap track info` (cmd_track.cc)
+CommandRunner RegisterOptimiseCommand(CLI::App& app);
+
+/// `hotlap fit tyre|contact-length|brake`: parameters fitted to a log, with uncertainty.
+CommandRunner RegisterFitCommand(CLI::App& app);
+
+/// `hotlap synth`: a synthetic measured log from the lap simulation (docs/fitting.md).
+CommandRunner RegisterSynthCommand(CLI::App& app);
+
+/// `hotlap abs`: ABS braking of one wheel, with scenarios (cmd_abs.cc).
+CommandRunner RegisterAbsCommand(CLI::App& app);
 
 }  // namespace hotlap::app

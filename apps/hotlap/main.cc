@@ -27,6 +27,9 @@ int main(int argc, char** argv) {
   add(&hotlap::app::RegisterTrackCommand);
   add(&hotlap::app::RegisterLapCommand);
   add(&hotlap::app::RegisterOptimiseCommand);
+  add(&hotlap::app::RegisterFitCommand);
+  add(&hotlap::app::RegisterSynthCommand);
+  add(&hotlap::app::RegisterAbsCommand);
 
   try {
     app.parse(argc, argv);

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 
 #include <IpIpoptApplication.hpp>
 #include <IpIpoptCalculatedQuantities.hpp>
@@ -185,6 +186,20 @@ SolveResult SolveWithIpopt(const ElementNlp& nlp, const IpoptOptions& options) {
   app->Options()->SetStringValue("hessian_approximation", "exact");
   app->Options()->SetStringValue("mu_strategy", "adaptive");
   app->Options()->SetStringValue("sb", "yes");  // no banner
+  for (const auto& [name, value] : options.extra) {
+    char* end = nullptr;
+    const long as_int = std::strtol(value.c_str(), &end, 10);
+    if (end != value.c_str() && *end == '\0') {
+      app->Options()->SetIntegerValue(name, static_cast<int>(as_int));
+      continue;
+    }
+    const double as_number = std::strtod(value.c_str(), &end);
+    if (end != value.c_str() && *end == '\0') {
+      app->Options()->SetNumericValue(name, as_number);
+    } else {
+      app->Options()->SetStringValue(name, value);
+    }
+  }
   if (app->Initialize() != Ipopt::Solve_Succeeded) {
     result.status = SolveStatus::kOther;
     result.message = "Ipopt could not be initialised";

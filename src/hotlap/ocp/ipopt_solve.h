@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hotlap/ocp/element_nlp.h"
@@ -17,6 +18,9 @@ struct IpoptOptions {
   int max_iterations = 1000;
   double max_cpu_seconds = 600.0;
   int print_level = 0;  ///< Ipopt's own output, 0 = none
+  /// Further Ipopt options by name (e.g. {"mumps_pivot_order", "5"}); integers and numbers are
+  /// recognised from the text.
+  std::vector<std::pair<std::string, std::string>> extra;
   /// Called at every iteration with (iteration, objective, primal infeasibility, dual
   /// infeasibility); return false to stop.
   std::function<bool(int, double, double, double)> on_iteration;

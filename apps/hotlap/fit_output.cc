@@ -1,0 +1,328 @@
+#include "fit_output.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "hotlap/common/csv.h"
+#include "hotlap/common/error.h"
+#include "hotlap/report/html_report.h"
+#include "output.h"
+
+namespace hotlap::app {
+
+namespace {
+
+using ident::FitParameter;
+using ident::FitResult;
+using ident::ParameterEstimate;
+using ident::ParameterRole;
+
+nlohmann::json Num(double v) {
+  if (!std::isfinite(v)) return nullptr;
+  return RoundSignificant(v);
+}
+
+std::string Short(double v) {
+  if (!std::isfinite(v)) return v > 0 ? "inf" : (v < 0 ? "-inf" : "n/a");
+  return fmt::format("{:.4g}", v);
+}
+
+std::string Interval(const FitParameter& p, const ParameterEstimate& e) {
+  return fmt::format("[{}, {}]", Short(e.ci_low + p.display_offset),
+                     Short(e.ci_high + p.display_offset));
+}
+
+std::string Verdict(const ParameterEstimate& e) {
+  if (e.undetermined) return "undetermined";
+  if (e.at_bound) return "at bound";
+  return e.well_determined ? "yes" : "no";
+}
+
+nlohmann::json ParameterJson(const FitParameter& p, const ParameterEstimate& e,
+                             const std::map<std::string, double>& truth) {
+  nlohmann::json j = {
+      {"value", Num(e.value + p.display_offset)},
+      {"std_error", Num(e.std_error)},
+      {"ci95", {Num(e.ci_low + p.display_offset), Num(e.ci_high + p.display_offset)}},
+      {"well_determined", e.well_determined},
+      {"undetermined", e.undetermined},
+      {"at_bound", e.at_bound},
+      {"start", Num(e.start + p.display_offset)},
+      {"unit", p.unit},
+  };
+  if (auto it = truth.find(p.key); it != truth.end()) {
+    j["truth"] = Num(it->second);
+    const double t = it->second - p.display_offset;
+    j["in_ci95"] = t >= e.ci_low && t <= e.ci_high;
+  }
+  return j;
+}
+
+nlohmann::json FitJson(const ReportedFit& r) {
+  const FitResult& f = r.fit;
+  nlohmann::json nuisance = nlohmann::json::object(), names = nlohmann::json::array();
+  for (size_t i = 0; i < f.parameters.size(); ++i) {
+    names.push_back(f.parameters[i].key);
+    if (f.parameters[i].role == ParameterRole::kNuisance) {
+      nuisance[f.parameters[i].key] = ParameterJson(f.parameters[i], f.estimates[i], {});
+    }
+  }
+  nlohmann::json matrix = nlohmann::json::array();
+  for (Eigen::Index i = 0; i < f.correlation.rows(); ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (Eigen::Index k = 0; k < f.correlation.cols(); ++k) {
+      row.push_back(std::isfinite(f.correlation(i, k))
+                        ? nlohmann::json(std::round(f.correlation(i, k) * 1e4) / 1e4)
+                        : nlohmann::json(nullptr));
+    }
+    matrix.push_back(row);
+  }
+  nlohmann::json channels = nlohmann::json::object();
+  for (const ident::ChannelStats& c : f.channels) {
+    channels[c.name] = {{"samples", c.samples},
+                        {"rms", Num(c.rms)},
+                        {"noise", Num(c.sigma)},
+                        {"outliers", c.outliers},
+                        {"autocorrelation", Num(c.autocorrelation)},
+                        {"apparent_lag_s", Num(c.apparent_lag)}};
+  }
+  nlohmann::json held = nlohmann::json::object();
+  for (const auto& [k, v] : r.held) held[k] = Num(v);
+  return {{"nuisance", nuisance},
+          {"held", held},
+          {"correlation", {{"parameters", names}, {"matrix", matrix}}},
+          {"channels", channels},
+          {"converged", f.converged},
+          {"iterations", f.iterations},
+          {"starts_scored", f.starts_scored},
+          {"starts_solved", f.starts_solved},
+          {"warnings", f.AllWarnings()}};
+}
+
+// Every warning of a corner, data first.
+std::vector<std::string> CornerWarnings(const CornerOutcome& c) {
+  std::vector<std::string> all = c.warnings;
+  for (const ReportedFit& r : c.fits) {
+    for (const std::string& w : r.fit.AllWarnings()) all.push_back(r.title + ": " + w);
+  }
+  return all;
+}
+
+// The model parameters of a corner, in order over its fits.
+std::vector<std::pair<const FitParameter*, const ParameterEstimate*>> ModelParameters(
+    const CornerOutcome& c) {
+  std::vector<std::pair<const FitParameter*, const ParameterEstimate*>> out;
+  for (const ReportedFit& r : c.fits) {
+    for (size_t i = 0; i < r.fit.parameters.size(); ++i) {
+      if (r.fit.parameters[i].role == ParameterRole::kModel) {
+        out.emplace_back(&r.fit.parameters[i], &r.fit.estimates[i]);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json FitRunJson(const FitRun& run) {
+  nlohmann::json corners = nlohmann::json::object();
+  nlohmann::json all_warnings = nlohmann::json::array();
+  for (const CornerOutcome& c : run.corners) {
+    const std::string name(CornerName(c.corner));
+    nlohmann::json j = {{"fitted", c.fitted}};
+    for (const auto& [key, value] : c.rms) j[key] = Num(value);
+    nlohmann::json params = nlohmann::json::object(), fits = nlohmann::json::object();
+    for (const ReportedFit& r : c.fits) {
+      for (size_t i = 0; i < r.fit.parameters.size(); ++i) {
+        if (r.fit.parameters[i].role == ParameterRole::kModel) {
+          params[r.fit.parameters[i].key] =
+              ParameterJson(r.fit.parameters[i], r.fit.estimates[i], c.truth);
+        }
+      }
+      for (const auto& [k, v] : r.held) {
+        params[k] = {{"value", Num(v)},       {"std_error", nullptr},
+                     {"ci95", nullptr},       {"well_determined", false},
+                     {"undetermined", false}, {"at_bound", false},
+                     {"held", true}};
+      }
+      fits[r.title] = FitJson(r);
+    }
+    j["parameters"] = params;
+    j["fits"] = fits;
+    j["warnings"] = CornerWarnings(c);
+    for (const std::string& w : CornerWarnings(c)) all_warnings.push_back(name + ": " + w);
+    corners[name] = j;
+  }
+  return {{"command", run.command},
+          {"telemetry", run.telemetry},
+          {"car", run.car_name},
+          {"out", run.out},
+          {"samples", run.time.size()},
+          {"duration_s", Num(run.time.empty() ? 0.0 : run.time.back() - run.time.front())},
+          {"options", run.options},
+          {"elapsed_s", Num(run.elapsed_s)},
+          {"warnings", all_warnings},
+          {"corners", corners}};
+}
+
+void PrintFitRun(const FitRun& run) {
+  fmt::print("hotlap {}: {} ({} samples, {:.2f} s of log) with car '{}'\n", run.command,
+             run.telemetry, run.time.size(),
+             run.time.empty() ? 0.0 : run.time.back() - run.time.front(), run.car_name);
+  for (const CornerOutcome& c : run.corners) {
+    fmt::print("{}:", CornerName(c.corner));
+    for (const auto& [key, value] : c.rms) fmt::print("  {} {:.4g}", key, value);
+    fmt::print("\n");
+    for (const auto& [p, e] : ModelParameters(c)) {
+      fmt::print("  {:<12} {:>11} {:<10} std error {:>9}  95% {:<24} well determined: {}\n",
+                 p->label, Short(e->value + p->display_offset), p->unit, Short(e->std_error),
+                 Interval(*p, *e), Verdict(*e));
+    }
+    for (const ReportedFit& r : c.fits) {
+      for (const auto& [k, v] : r.held) fmt::print("  {:<12} {:>11} (held)\n", k, Short(v));
+    }
+    for (const std::string& w : CornerWarnings(c)) {
+      std::fprintf(stderr, "hotlap: warning: %s: %s\n", std::string(CornerName(c.corner)).c_str(),
+                   w.c_str());
+    }
+  }
+  fmt::print("fitted in {:.2f} s\n", run.elapsed_s);
+}
+
+std::vector<std::filesystem::path> WriteFitReport(const FitRun& run,
+                                                  const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directory(dir, ec);
+  if (!std::filesystem::is_directory(dir)) {
+    throw InputError(fmt::format("--report '{}': cannot create the folder", dir.string()));
+  }
+  report::HtmlReport page("hotlap " + run.command + ": " +
+                          std::filesystem::path(run.telemetry).filename().string());
+  page.AddMetadata("telemetry", run.telemetry);
+  page.AddMetadata("car", run.car_name + " (" + run.car_path + ")");
+  page.AddMetadata("fitted car", run.out);
+  page.AddMetadata("samples", std::to_string(run.time.size()));
+  page.AddMetadata("options", run.options.dump());
+  for (const auto& [key, value] : run.log_metadata) page.AddMetadata("log " + key, value);
+
+  // The paper's tables: per corner the values and the RMS errors.
+  page.AddHeading("Fitted parameters");
+  report::Table summary{.title = "Per corner: fitted values and RMS errors (as 000 Tables 4, 6)"};
+  for (const CornerOutcome& c : run.corners) {
+    const auto params = ModelParameters(c);
+    if (summary.header.empty() && !params.empty()) {
+      summary.header.push_back("corner");
+      for (const auto& [p, e] : params) {
+        summary.header.push_back(p->label + (p->unit.empty() ? "" : " " + p->unit));
+      }
+      for (const auto& [key, v] : c.rms) summary.header.push_back(key);
+    }
+    if (params.size() + c.rms.size() + 1 != summary.header.size()) continue;
+    std::vector<std::string> row = {std::string(CornerName(c.corner))};
+    for (const auto& [p, e] : params) row.push_back(Short(e->value + p->display_offset));
+    for (const auto& [key, v] : c.rms) row.push_back(Short(v));
+    summary.rows.push_back(row);
+  }
+  if (!summary.header.empty()) page.AddTable(summary);
+
+  page.AddHeading("Uncertainty");
+  page.AddText(
+      "95% intervals are value \u00b1 1.96 standard errors (clipped to the bounds); a parameter is "
+      "well determined when that half-width is within the fit's max_relative_ci of its value, it "
+      "is not at a bound and the data do not leave it undetermined (docs/fitting.md).");
+  for (const CornerOutcome& c : run.corners) {
+    for (const ReportedFit& r : c.fits) {
+      report::Table t{.title = fmt::format("{}: {}", CornerName(c.corner), r.title),
+                      .header = {"parameter", "unit", "value", "std error", "95% interval",
+                                 "well determined", "start"}};
+      if (!c.truth.empty()) t.header.insert(t.header.end(), {"truth", "truth in 95%"});
+      for (size_t i = 0; i < r.fit.parameters.size(); ++i) {
+        const FitParameter& p = r.fit.parameters[i];
+        const ParameterEstimate& e = r.fit.estimates[i];
+        std::vector<std::string> row = {
+            p.label,        p.unit,     Short(e.value + p.display_offset), Short(e.std_error),
+            Interval(p, e), Verdict(e), Short(e.start + p.display_offset)};
+        if (!c.truth.empty()) {
+          const auto it = c.truth.find(p.key);
+          const bool known = it != c.truth.end();
+          const double t0 = known ? it->second - p.display_offset : 0.0;
+          row.push_back(known ? Short(it->second) : "");
+          row.push_back(known ? (t0 >= e.ci_low && t0 <= e.ci_high ? "yes" : "NO") : "");
+        }
+        t.rows.push_back(row);
+      }
+      for (const auto& [k, v] : r.held) {
+        std::vector<std::string> row = {k, "", Short(v), "held", "", "", ""};
+        if (!c.truth.empty()) row.insert(row.end(), {"", ""});
+        t.rows.push_back(row);
+      }
+      page.AddTable(t);
+      report::Table corr{.title = fmt::format("{}: {}: correlation of the estimates",
+                                              CornerName(c.corner), r.title),
+                         .header = {""}};
+      for (const FitParameter& p : r.fit.parameters) corr.header.push_back(p.label);
+      for (Eigen::Index i = 0; i < r.fit.correlation.rows(); ++i) {
+        std::vector<std::string> row = {r.fit.parameters[i].label};
+        for (Eigen::Index k = 0; k < r.fit.correlation.cols(); ++k) {
+          const double v = r.fit.correlation(i, k);
+          row.push_back(std::isfinite(v) ? fmt::format("{:.2f}", v) : "\u2013");
+        }
+        corr.rows.push_back(row);
+      }
+      page.AddTable(corr);
+    }
+  }
+
+  page.AddHeading("Warnings");
+  bool any = false;
+  for (const CornerOutcome& c : run.corners) {
+    for (const std::string& w : CornerWarnings(c)) {
+      page.AddText(std::string(CornerName(c.corner)) + ": " + w);
+      any = true;
+    }
+  }
+  if (!any) page.AddText("None.");
+
+  // Measured against modelled, one chart per channel and corner on a shared time axis.
+  std::vector<std::string> names = {"time_s"};
+  std::vector<std::vector<double>> columns = {run.time};
+  if (!run.corners.empty()) {
+    page.AddHeading("Measured and modelled");
+    for (size_t q = 0; q < run.corners.front().channels.size(); ++q) {
+      for (const CornerOutcome& c : run.corners) {
+        if (q >= c.channels.size()) continue;
+        const ChannelPair& ch = c.channels[q];
+        report::LineChart chart{.title = fmt::format("{} {}", CornerName(c.corner), ch.title),
+                                .x_axis = {.label = "time", .unit = "s"},
+                                .y_axis = {.label = ch.quantity, .unit = ch.unit},
+                                .x_link = "time"};
+        chart.series.push_back({.label = "measured",
+                                .x = run.time,
+                                .y = ch.measured,
+                                .corner = c.corner,
+                                .style = report::LineStyle::kDotted});
+        chart.series.push_back(
+            {.label = "model", .x = run.time, .y = ch.model, .colour = "#222222"});
+        page.AddLineChart(chart);
+        const std::string base =
+            fmt::format("{}_{}_{}", ch.quantity, CornerName(c.corner), ch.column_unit);
+        std::vector<double> residual(ch.model.size());
+        for (size_t k = 0; k < residual.size(); ++k) residual[k] = ch.model[k] - ch.measured[k];
+        names.insert(names.end(), {base, "measured_" + base, "residual_" + base});
+        columns.insert(columns.end(), {ch.model, ch.measured, residual});
+      }
+    }
+  }
+  const std::filesystem::path html = dir / "index.html", csv = dir / "channels.csv";
+  page.Write(html);
+  auto metadata = run.log_metadata;
+  metadata.emplace_back("source", "hotlap " + run.command + " (measured, modelled, residual)");
+  metadata.emplace_back("telemetry", run.telemetry);
+  WriteCsv(csv, metadata, names, columns);
+  return {html, csv};
+}
+
+}  // namespace hotlap::app

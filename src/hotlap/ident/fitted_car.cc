@@ -1,0 +1,195 @@
+#include "hotlap/ident/fitted_car.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include "hotlap/common/atomic_file.h"
+#include "hotlap/common/error.h"
+#include "hotlap/ident/yaml_text_edit.h"
+
+namespace hotlap::ident {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string ReadFile(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(fmt::format("cannot read {}", path.string()));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void WriteText(const fs::path& path, const std::string& text, std::vector<fs::path>* written) {
+  std::error_code ec;
+  if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
+  if (ec) {
+    throw InputError(
+        fmt::format("cannot create folder {}: {}", path.parent_path().string(), ec.message()));
+  }
+  WriteFileAtomically(path, [&](std::ostream& out) { out << text; });
+  written->push_back(path);
+}
+
+// Copies `source` to `target` unless an identical copy is there (corners share files).
+void CopyFile(const fs::path& source, const fs::path& target, std::vector<fs::path>* written) {
+  const std::string text = ReadFile(source);
+  if (std::find(written->begin(), written->end(), target) != written->end()) return;
+  WriteText(target, text, written);
+}
+
+// Names for the copies in one folder: the same source file gets the same name, different sources
+// with the same file name get a numbered one.
+class CopyNames {
+ public:
+  explicit CopyNames(std::vector<std::string> taken) : taken_(std::move(taken)) {}
+  std::string For(const fs::path& source) {
+    const std::string key = fs::weakly_canonical(source).string();
+    if (auto it = by_source_.find(key); it != by_source_.end()) return it->second;
+    std::string name = source.filename().string();
+    for (int i = 2; std::find(taken_.begin(), taken_.end(), name) != taken_.end(); ++i) {
+      name = fmt::format("{}-{}{}", source.stem().string(), i, source.extension().string());
+    }
+    taken_.push_back(name);
+    by_source_[key] = name;
+    return name;
+  }
+
+ private:
+  std::vector<std::string> taken_;
+  std::map<std::string, std::string> by_source_;
+};
+
+// The value of a fitted key as LoadCar read it back, in the file's unit.
+double TyreValue(const tyre::TyreThermalParams<double>& p, const std::string& key) {
+  const std::map<std::string, double> values = {
+      {"heat_generation.p1", p.p1},
+      {"heat_generation.p2_J_per_kgN", p.p2},
+      {"heat_generation.p3_J_per_kgN", p.p3},
+      {"heat_generation.p4_J_per_kgN", p.p4},
+      {"heat_generation.p5_W_per_m2K", p.p5},
+      {"wear.wp1_mm_per_s", p.wear_coeff},
+      {"wear.wp2", p.wear_exponent},
+      {"contact_length.p_cp1", p.contact_length_coeff},
+      {"contact_length.p_cp2", p.contact_length_exponent}};
+  const auto it = values.find(key);
+  return it == values.end() ? std::nan("") : it->second;
+}
+
+double BrakeValue(const brake::BrakeThermalParams<double>& p, const std::string& key) {
+  const auto l = [](const brake::ConvectionPolynomial<double>& c) {
+    return std::map<std::string, double>{{"l11", c.l11}, {"l21", c.l21}, {"l22", c.l22},
+                                         {"l31", c.l31}, {"l32", c.l32}, {"l33", c.l33}};
+  };
+  std::map<std::string, double> values = {{"heat_partition", p.heat_partition},
+                                          {"mass_participation", p.mass_participation}};
+  for (const auto& [k, v] : l(p.disc_convection)) {
+    values["disc_convection_cholesky_sqrtW_per_K." + k] = v;
+  }
+  for (const auto& [k, v] : l(p.calliper_convection)) {
+    values["calliper_convection_cholesky_sqrtW_per_K." + k] = v;
+  }
+  const auto it = values.find(key);
+  return it == values.end() ? std::nan("") : it->second;
+}
+
+void CheckReadBack(double read, const FileEdit& e, const fs::path& file) {
+  const double written = std::stod(FormatFileNumber(e.value));
+  if (!(std::abs(read - written) <= 1e-12 * std::max(1.0, std::abs(written)))) {
+    throw NumericalError(fmt::format("fitted file {} reads back {} = {:g}, not the {:g} written",
+                                     file.string(), e.key, read, written));
+  }
+}
+
+}  // namespace
+
+std::string TodayIsoDate() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm local{};
+  localtime_r(&now, &local);
+  return fmt::format("{:04d}-{:02d}-{:02d}", local.tm_year + 1900, local.tm_mon + 1, local.tm_mday);
+}
+
+std::string FormatFileNumber(double value) { return fmt::format("{:.8g}", value); }
+
+std::vector<fs::path> WriteFittedCar(const vehicle::Car& car, const fs::path& car_path,
+                                     const FittedCarEdits& edits) {
+  std::vector<fs::path> written;
+  const std::string stem = car_path.stem().string();
+  const fs::path parts = car_path.parent_path() / stem;
+  const std::string car_text = ReadFile(car.path);
+  YamlTextEditor car_edit(car_text, car.path.string());
+  CopyNames tyre_names({"fl.yaml", "fr.yaml", "rl.yaml", "rr.yaml"});
+
+  for (Corner c : kAllCorners) {
+    const int i = CornerIndex(c);
+    const std::string corner(CornerName(c));
+    // Tyre file: the fitted values, and its compound beside it.
+    const tyre::TyreFile& t = car.tyres[i];
+    YamlTextEditor tyre_edit(ReadFile(t.path), t.path.string());
+    const std::string compound = tyre_names.For(t.compound_path);
+    tyre_edit.SetValue("compound", compound);
+    for (const FileEdit& e : edits.tyres[i]) {
+      tyre_edit.SetValue(e.key, FormatFileNumber(e.value), e.comment);
+    }
+    std::vector<std::string> header = edits.header;
+    header.push_back(fmt::format("Based on {}.", fs::absolute(t.path).lexically_normal().string()));
+    tyre_edit.PrependComments(header);
+    WriteText(parts / "tyres" / (corner + ".yaml"), tyre_edit.Text(), &written);
+    CopyFile(t.compound_path, parts / "tyres" / compound, &written);
+    car_edit.SetValue("tyres." + corner, stem + "/tyres/" + corner + ".yaml");
+
+    // Brake file, one per corner now that each corner has its own values.
+    const brake::BrakeFile& b = car.brakes[i];
+    YamlTextEditor brake_edit(ReadFile(b.path), b.path.string());
+    for (const FileEdit& e : edits.brakes[i]) {
+      brake_edit.SetValue(e.key, FormatFileNumber(e.value), e.comment);
+    }
+    header = edits.header;
+    header.push_back(fmt::format("Based on {}.", fs::absolute(b.path).lexically_normal().string()));
+    brake_edit.PrependComments(header);
+    WriteText(parts / "brakes" / (corner + ".yaml"), brake_edit.Text(), &written);
+    car_edit.SetValue("brakes." + corner, stem + "/brakes/" + corner + ".yaml");
+  }
+
+  // The vehicle sections' files (tyre force models), copied beside the tyre files.
+  const YAML::Node root = YAML::Load(car_text);
+  if (root["tyre_forces"]) {
+    for (Corner c : kAllCorners) {
+      const std::string corner(CornerName(c));
+      const YAML::Node file = root["tyre_forces"][corner]["file"];
+      if (!file) continue;
+      const fs::path source = car.path.parent_path() / file.as<std::string>();
+      const std::string name = tyre_names.For(source);
+      CopyFile(source, parts / "tyres" / name, &written);
+      car_edit.SetValue("tyre_forces." + corner + ".file", stem + "/tyres/" + name);
+    }
+  }
+  std::vector<std::string> header = edits.header;
+  header.push_back(fmt::format("Based on {}.", fs::absolute(car.path).lexically_normal().string()));
+  car_edit.PrependComments(header);
+  WriteText(car_path, car_edit.Text(), &written);
+
+  // Read it back as every command will.
+  const vehicle::Car fitted = vehicle::LoadCar(car_path);
+  for (int i = 0; i < 4; ++i) {
+    for (const FileEdit& e : edits.tyres[i]) {
+      CheckReadBack(TyreValue(fitted.tyres[i].params, e.key), e, fitted.tyres[i].path);
+    }
+    for (const FileEdit& e : edits.brakes[i]) {
+      CheckReadBack(BrakeValue(fitted.brakes[i].params, e.key), e, fitted.brakes[i].path);
+    }
+  }
+  return written;
+}
+
+}  // namespace hotlap::ident

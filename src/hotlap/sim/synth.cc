@@ -1,0 +1,173 @@
+#include "hotlap/sim/synth.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "hotlap/common/csv.h"
+#include "hotlap/common/error.h"
+#include "hotlap/common/telemetry.h"
+#include "hotlap/sim/synth_sensor.h"
+
+namespace hotlap::sim {
+
+namespace {
+
+// Linear interpolation of y(x) at `at` (x increasing; held beyond the ends).
+double Interpolate(const std::vector<double>& x, const std::vector<double>& y, double at) {
+  if (at <= x.front()) return y.front();
+  if (at >= x.back()) return y.back();
+  const size_t j = std::upper_bound(x.begin(), x.end(), at) - x.begin();
+  const double f = (at - x[j - 1]) / (x[j] - x[j - 1]);
+  return y[j - 1] + f * (y[j] - y[j - 1]);
+}
+
+void CheckOptions(const SynthOptions& o) {
+  if (o.laps < 1) throw InputError(fmt::format("synth: laps must be >= 1, got {}", o.laps));
+  if (!(o.rate_hz > 0.0) || !std::isfinite(o.rate_hz)) {
+    throw InputError(fmt::format("synth: rate must be > 0 Hz, got {:g}", o.rate_hz));
+  }
+  for (const auto& [value, name] :
+       {std::pair{o.temp_noise_K, "temperature noise"}, std::pair{o.sensor_lag_s, "sensor lag"},
+        std::pair{o.wear_noise_mm, "wear noise"}, std::pair{o.radius_noise_m, "radius noise"}}) {
+    if (!(value >= 0.0) || !std::isfinite(value)) {
+      throw InputError(fmt::format("synth: {} must be finite and >= 0, got {:g}", name, value));
+    }
+  }
+}
+
+}  // namespace
+
+SynthLog SynthesizeLog(const vehicle::Car& car, std::span<const RoadPoint> road,
+                       const SynthOptions& o) {
+  CheckOptions(o);
+  vehicle::RequireVehicle(car, "hotlap synth (the lap simulation)");
+  ReplayInitialState initial;
+  if (o.initial) {
+    initial = *o.initial;
+  } else {
+    for (int i = 0; i < 4; ++i) {
+      initial.tyres[i] = {car.initial.tread_temp, car.initial.carcass_temp, 0.0};
+      initial.brakes[i] = {car.initial.disc_temp, car.initial.calliper_temp};
+    }
+  }
+  QssOptions qss;
+  qss.laps = o.laps;
+  qss.ambient_temp = o.ambient_temp;
+  qss.track_temp = o.track_temp;
+  qss.initial = initial;
+  qss.replay.max_step_s = o.max_step_s;
+  const QssResult laps = RunQssLap(car, road, qss);
+
+  // The laps back to back (each lap's closing sample is the next one's first).
+  ReplayInputs joined;
+  std::vector<double> distance, speed;
+  double t0 = 0.0, s0 = 0.0;
+  for (size_t l = 0; l < laps.laps.size(); ++l) {
+    const QssLap& lap = laps.laps[l];
+    const size_t count = lap.time.size() - (l + 1 < laps.laps.size() ? 1 : 0);
+    for (size_t i = 0; i < count; ++i) {
+      joined.time.push_back(t0 + lap.time[i]);
+      distance.push_back(s0 + lap.distance[i]);
+      speed.push_back(lap.speed[i]);
+      for (int c = 0; c < 4; ++c) {
+        const CornerChannels& from = lap.corners[c];
+        CornerChannels& to = joined.corners[c];
+        to.speed.push_back(from.speed[i]);
+        to.fx.push_back(from.fx[i]);
+        to.fy.push_back(from.fy[i]);
+        to.fz.push_back(from.fz[i]);
+        to.slip_angle.push_back(from.slip_angle[i]);
+        to.slip_ratio.push_back(from.slip_ratio[i]);
+      }
+    }
+    t0 += lap.time.back();
+    s0 += lap.distance.back();
+  }
+  joined.ambient_temp.assign(joined.time.size(), o.ambient_temp);
+  joined.track_temp.assign(joined.time.size(), o.track_temp);
+
+  SynthLog log;
+  log.lap_time_s = t0 / static_cast<double>(laps.laps.size());
+  log.inputs = ResampleReplayInputs(joined, o.rate_hz, 1);
+  ReplayOptions replay;
+  replay.max_step_s = o.max_step_s;
+  log.truth = RunReplay(car, log.inputs, initial, replay);
+
+  const ReplayInputs& in = log.inputs;
+  const size_t n = in.time.size();
+  const auto add = [&](std::string_view quantity, std::optional<Corner> corner,
+                       std::vector<double> si) {
+    for (double& v : si) v = ConvertSiToCanonical(quantity, v);
+    log.columns.push_back(ChannelColumn(quantity, corner, CanonicalUnit(quantity)));
+    log.values.push_back(std::move(si));
+  };
+  const auto resample = [&](const std::vector<double>& y) {
+    std::vector<double> out(n);
+    for (size_t k = 0; k < n; ++k) out[k] = Interpolate(joined.time, y, in.time[k]);
+    return out;
+  };
+  GaussianNoise noise(o.seed);
+  const auto sensed = [&](const std::vector<double>& truth, double lag, double sd) {
+    FirstOrderLag<double> sensor(lag);
+    std::vector<double> out(n);
+    for (size_t k = 0; k < n; ++k) out[k] = sensor.Next(in.time[k], truth[k]) + sd * noise.Next();
+    return out;
+  };
+  add("time", std::nullopt, in.time);
+  add("distance", std::nullopt, resample(distance));
+  add("speed", std::nullopt, resample(speed));
+  add("ambient_temp", std::nullopt, in.ambient_temp);
+  add("track_temp", std::nullopt, in.track_temp);
+  for (Corner c : kAllCorners) {
+    const int i = CornerIndex(c);
+    const CornerChannels& ch = in.corners[i];
+    const CornerHistory& h = log.truth.corners[i];
+    add("speed", c, ch.speed);
+    add("fx", c, ch.fx);
+    add("fy", c, ch.fy);
+    add("fz", c, ch.fz);
+    add("slip_angle", c, ch.slip_angle);
+    add("slip_ratio", c, ch.slip_ratio);
+    add("tread_temp", c, sensed(h.tread_temp, o.sensor_lag_s, o.temp_noise_K));
+    add("carcass_temp", c, sensed(h.carcass_temp, o.sensor_lag_s, o.temp_noise_K));
+    add("disc_temp", c, sensed(h.disc_temp, o.sensor_lag_s, o.temp_noise_K));
+    add("calliper_temp", c, sensed(h.calliper_temp, o.sensor_lag_s, o.temp_noise_K));
+    add("wear", c, sensed(h.wear, 0.0, o.wear_noise_mm));
+    // Rolling radius from the load: the contact patch is a chord of the unloaded circle.
+    const tyre::TyreThermalParams<double>& p = car.tyre(c).params;
+    std::vector<double> radius(n);
+    for (size_t k = 0; k < n; ++k) {
+      const double half = 0.5 * tyre::CalcContactLength(p, ch.fz[k]);
+      const double r2 = p.unloaded_radius * p.unloaded_radius - half * half;
+      radius[k] = r2 > 0.0 ? std::sqrt(r2) + o.radius_noise_m * noise.Next()
+                           : std::numeric_limits<double>::quiet_NaN();
+    }
+    add("rolling_radius", c, std::move(radius));
+  }
+
+  log.metadata = {
+      {"source", fmt::format("hotlap {} synth: simulated, not measured", HOTLAP_VERSION)},
+      {"car", car.name},
+      {"laps", std::to_string(o.laps)},
+      {"lap_time_s", fmt::format("{:.6f}", log.lap_time_s)},
+      {"rate_hz", fmt::format("{:g}", o.rate_hz)},
+      {"temp_noise_C", fmt::format("{:g}", o.temp_noise_K)},
+      {"sensor_lag_s", fmt::format("{:g}", o.sensor_lag_s)},
+      {"wear_noise_mm", fmt::format("{:g}", o.wear_noise_mm)},
+      {"rolling_radius_noise_mm", fmt::format("{:g}", 1e3 * o.radius_noise_m)},
+      {"seed", std::to_string(o.seed)},
+  };
+  return log;
+}
+
+void WriteSynthLog(const std::filesystem::path& path, const SynthLog& log,
+                   const std::vector<std::pair<std::string, std::string>>& extra_metadata) {
+  auto metadata = log.metadata;
+  metadata.insert(metadata.end(), extra_metadata.begin(), extra_metadata.end());
+  WriteCsv(path, metadata, log.columns, log.values);
+}
+
+}  // namespace hotlap::sim
