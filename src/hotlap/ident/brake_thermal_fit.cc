@@ -366,7 +366,14 @@ BrakeFitResult FitBrakeCorner(const brake::BrakeFile& brake, const BrakeCornerDa
     for (int i = 0; i < options.random_starts; ++i) {
       std::vector<double> s = {0.5 + 0.5 * static_cast<double>(rng() >> 11) * 0x1.0p-53,
                                LogUniform(rng, 0.02, 0.5)};
-      for (int j = kDisc; j < kDisc0; ++j) s.push_back(all[j] * LogUniform(rng, 0.3, 3.0));
+      // Scaled entries; the off-diagonal ones also flip sign half the time, since a coupling of
+      // the other sign is a separate basin that scaling alone never reaches.
+      for (int j = kDisc; j < kDisc0; ++j) {
+        const int e = (j - kDisc) % 6;  // l11, l21, l22, l31, l32, l33
+        const bool off_diagonal = e == 1 || e == 3 || e == 4;
+        const double sign = off_diagonal && (rng() & 1) ? -1.0 : 1.0;
+        s.push_back(sign * all[j] * LogUniform(rng, 0.3, 3.0));
+      }
       starts.push_back(with_states(s));
     }
     const JetPredictor<BrakeLogModel> predictor(model, all, free, {kDiscTemp, kCalliperTemp});
