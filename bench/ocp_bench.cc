@@ -1,7 +1,7 @@
 // Optimal-control speed.
 //
 // BM_DarlingtonOptimalLap/{0,1}: the two Darlington solves of `hotlap lap --method ocp
-// --compare-disc-limit-C 500` (without and with the 500 degC front-disc limit), 4 m mesh, each
+// --compare-disc-limit-C 500` (without and with the 500 degC front-disc limit), 3 m mesh (the default), each
 // from its QSS warm-up; counters: lap time, Ipopt iterations, solve seconds (Ipopt's own clock).
 //
 // BM_ChassisElementsHessian/{per_element,dense_node_60}: why the programme is lifted

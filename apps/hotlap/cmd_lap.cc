@@ -334,7 +334,7 @@ CommandRunner RegisterLapCommand(CLI::App& app) {
       ->check(CLI::IsMember({"qss", "ocp"}));
   sub->add_option("--compare-disc-limit-C", args->compare_disc_limit_C,
                   "ocp: solve without and with this front-disc limit (degC) and compare");
-  sub->add_option("--ocp-step-m", args->ocp_step_m, "ocp: mesh spacing, m (default 4)");
+  sub->add_option("--ocp-step-m", args->ocp_step_m, "ocp: mesh spacing, m (default 3)");
   sub->add_option("--track", args->track, "Built-in track name or a .yaml/.csv/.xml file")
       ->capture_default_str();
   sub->add_option("--car", args->car, "Built-in car name or path to a car.yaml")

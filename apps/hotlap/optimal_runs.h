@@ -14,7 +14,7 @@ struct OptimalArgs {
   std::string car = "gen7";
   std::string out;
   std::string json;
-  double step_m = 4.0;
+  double step_m = 3.0;
   std::optional<double> disc_limit_C;          ///< one solve with this front-disc limit
   std::optional<double> compare_disc_limit_C;  ///< two solves: without, and with this limit
   std::string thermal_start = "warm";

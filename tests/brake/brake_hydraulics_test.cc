@@ -54,7 +54,9 @@ TEST(BrakeHydraulicsTest, StepResponseRisesAtTheLimitThenSettlesExponentially) {
     x = hotlap::Rk4Step([&](double, double s) { return CalcPressureRate(p, s, 4 * kMPa); }, i * h,
                         x, h);
     const double t = (i + 1) * h;
-    if (i + 1 == 2000) EXPECT_NEAR(x, 1.6 * kMPa, 1e-3 * kMPa);
+    if (i + 1 == 2000) {
+      EXPECT_NEAR(x, 1.6 * kMPa, 1e-3 * kMPa);
+    }
     if (i + 1 == 6000) {
       EXPECT_NEAR(x, 4 * kMPa - 0.8 * kMPa * std::exp(-(t - 0.04) / 0.01), 1e-3 * kMPa);
     }

@@ -60,8 +60,8 @@ Recovery ExpectRecovered(const FitResult& fit, const std::map<std::string, doubl
     const double lo = std::max(p.lower, e.value - 3.29 * e.std_error);
     const double hi = std::min(p.upper, e.value + 3.29 * e.std_error);
     EXPECT_TRUE(e.undetermined || (t >= lo && t <= hi))
-        << where << " " << p.key << ": truth " << t << " outside the 99.9% interval [" << lo
-        << ", " << hi << "]";
+        << where << " " << p.key << ": truth " << t << " outside the 99.9% interval [" << lo << ", "
+        << hi << "]";
     if (e.well_determined) {
       EXPECT_LE(std::abs(e.value - t), 0.05 * std::abs(t)) << where << " " << p.key;
     }

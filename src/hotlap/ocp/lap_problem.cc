@@ -395,6 +395,15 @@ LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& tra
   if (!(options.step_m > 0.0)) throw InputError("optimal lap: the mesh step must be > 0 m");
   Builder b(car, p, track, options, guess);
   b.Build();
+  if (!options.start_point.empty()) {
+    if (static_cast<int>(options.start_point.size()) != b.nlp.variables()) {
+      throw InputError(fmt::format("optimal lap: a start point of {} values for {} variables",
+                                   options.start_point.size(), b.nlp.variables()));
+    }
+    for (int i = 0; i < b.nlp.variables(); ++i) {
+      b.nlp.set_initial(i, std::clamp(options.start_point[i], b.nlp.lower(i), b.nlp.upper(i)));
+    }
+  }
   LapSolution out;
   out.variables = b.nlp.variables();
   out.constraints = b.nlp.constraints();

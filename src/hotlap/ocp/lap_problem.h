@@ -51,6 +51,10 @@ struct LapProblemOptions {
   /// The tyre thermal model's |x| made smooth for the optimiser (tyre_thermal.h); the solution is
   /// replayed through the exact model to report the difference.
   tyre::TyreThermalSmoothing thermal_smoothing{10.0, 1e-3};
+  /// A starting point for every variable (a SolveResult::x of the same problem size, e.g. the
+  /// solution with a disc limit as the start of the lap without it); empty: from the guess.
+  /// Values are clipped to this problem's bounds.
+  std::vector<double> start_point;
 };
 
 /// One corner's channels along the solution, SI (K).

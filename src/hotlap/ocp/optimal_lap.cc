@@ -67,6 +67,7 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
   }
   lap.periodic_thermal = options.thermal_start == ThermalStart::kPeriodic;
   lap.initial = run.start;
+  lap.start_point = options.start_point;
   run.solution = SolveMinimumTimeLap(car, track, lap, warm.laps[1], options.ipopt);
 
   // The exact models over the solution's channels.

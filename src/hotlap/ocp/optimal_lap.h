@@ -22,13 +22,16 @@ enum class ThermalStart {
 };
 
 struct OptimalLapOptions {
-  double step_m = 4.0;                     ///< mesh spacing along the centre line
+  double step_m = 3.0;                     ///< mesh spacing along the centre line
   std::optional<double> front_disc_limit;  ///< K
   ThermalStart thermal_start = ThermalStart::kWarm;
   double ambient_temp = 0.0;      ///< K
   double track_temp = 0.0;        ///< K
   double line_margin_m = 1.5;     ///< the QSS guess's racing line keeps this from the edges
   double car_half_width_m = 1.0;  ///< the optimal line keeps the car's centre this far in
+  /// Start the solve here instead of the QSS guess: another solution's SolveResult::x on the same
+  /// track, car and mesh (LapProblemOptions::start_point).
+  std::vector<double> start_point;
   IpoptOptions ipopt;
 };
 
