@@ -76,6 +76,10 @@ int SolveBounded(Eigen::Matrix<double, N, 1>& x, const Eigen::Matrix<double, N, 
   return it;
 }
 
+// Whether the tyre is below its force peaks at this point: the side force still grows with the
+// slip angle (ISO-W: Fy falls as alpha rises) and the longitudinal force with the slip ratio.
+bool OnRisingBranch(const TyreEval& e) { return e.dfy_da < 0.0 && e.dfx_dk > 0.0; }
+
 // A starting point that does not depend on a previous solution: each slip from its own force
 // alone, by the secant slope at a small slip scaled so that the linear estimate cannot pass the
 // pure-slip peak region.
@@ -103,6 +107,7 @@ FreeWheelSolution SolveFreeWheelSlips(const InvertibleTyre& tyre, const TyreCond
     jac << e.dfx_dk, e.dfx_da, e.dfy_dk, e.dfy_da;
     return Vec(e.fx - fx_target, e.fy - fy_target);
   };
+  bool stable = true;  // of the last solve_from
   const auto solve_from = [&](double kappa, double alpha) {
     Vec x(std::clamp(kappa, -kMaxSlipRatio, kMaxSlipRatio),
           std::clamp(alpha, -kMaxSlipAngle, kMaxSlipAngle));
@@ -113,18 +118,26 @@ FreeWheelSolution SolveFreeWheelSlips(const InvertibleTyre& tyre, const TyreCond
     out.wheel = {x[0], x[1], e.fx, e.fy};
     out.reached =
         std::abs(e.fx - fx_target) <= tolerance && std::abs(e.fy - fy_target) <= tolerance;
+    stable = OnRisingBranch(e);
     return out;
   };
   const auto error = [&](const FreeWheelSolution& s) {
     return std::hypot(s.wheel.fx - fx_target, s.wheel.fy - fy_target);
   };
-  // From the previous solution first (cheap when the targets change little), else afresh.
+  // From the previous solution first (cheap when the targets change little), else afresh; also
+  // afresh when the continuation has carried the solution past the force peak: a force below the
+  // peak is made at two slips, and the one beyond the peak (sliding, hot) is not what a driver
+  // asks of the tyre.
   FreeWheelSolution best = solve_from(guess.slip_ratio, guess.slip_angle);
-  if (!best.reached) {
+  if (!best.reached || !stable) {
+    const bool best_stable = stable;
     const auto [kappa, alpha] = FreshGuess(tyre, c, fx_target, fy_target);
     FreeWheelSolution fresh = solve_from(kappa, alpha);
     fresh.iterations += best.iterations;
-    if (fresh.reached || error(fresh) < error(best)) best = fresh;
+    if ((fresh.reached && (stable || !best_stable || !best.reached)) ||
+        (!best.reached && error(fresh) < error(best))) {
+      best = fresh;
+    }
   }
   return best;
 }
@@ -159,6 +172,7 @@ SpoolAxleSolution SolveSpoolAxleSlips(const InvertibleTyre& left, const Invertib
         a.dfx_dk * dkl + b.dfx_dk * dkr, a.dfx_da, b.dfx_da;
     return Vec(a.fy - fy_left, b.fy - fy_right, a.fx + b.fx - fx_total);
   };
+  bool stable = true;  // of the last solve_from
   const auto solve_from = [&](Vec x) {
     x = x.cwiseMax(Vec(-kMaxSlipRatio, -kMaxSlipAngle, -kMaxSlipAngle))
             .cwiseMin(Vec(kMaxSlipRatio, kMaxSlipAngle, kMaxSlipAngle));
@@ -175,6 +189,7 @@ SpoolAxleSolution SolveSpoolAxleSlips(const InvertibleTyre& left, const Invertib
     out.wheels[1] = {k[1], x[2], b.fx, b.fy};
     out.reached = std::abs(a.fy - fy_left) <= tolerance && std::abs(b.fy - fy_right) <= tolerance &&
                   std::abs(a.fx + b.fx - fx_total) <= tolerance;
+    stable = OnRisingBranch(a) && OnRisingBranch(b);
     return out;
   };
   const auto error = [&](const SpoolAxleSolution& s) {
@@ -183,13 +198,17 @@ SpoolAxleSolution SolveSpoolAxleSlips(const InvertibleTyre& left, const Invertib
   };
   SpoolAxleSolution best =
       solve_from(Vec(s0, guess.wheels[0].slip_angle, guess.wheels[1].slip_angle));
-  if (!best.reached) {
+  if (!best.reached || !stable) {  // afresh, as for a free wheel
+    const bool best_stable = stable;
     // Afresh: each wheel's slip angle from its own Fy, the axle slip from the mean Fx.
     const auto [kl, al] = FreshGuess(left, cl, 0.5 * fx_total, fy_left);
     const auto [kr, ar] = FreshGuess(right, cr, 0.5 * fx_total, fy_right);
     SpoolAxleSolution fresh = solve_from(Vec(0.5 * (kl + kr), al, ar));
     fresh.iterations += best.iterations;
-    if (fresh.reached || error(fresh) < error(best)) best = fresh;
+    if ((fresh.reached && (stable || !best_stable || !best.reached)) ||
+        (!best.reached && error(fresh) < error(best))) {
+      best = fresh;
+    }
   }
   return best;
 }
