@@ -52,6 +52,10 @@ Solved Solve(const OptimalArgs& a, const vehicle::Car& car, const track::Track& 
   o.ambient_temp = CelsiusToKelvin(a.ambient_C);
   o.track_temp = CelsiusToKelvin(a.track_C);
   o.ipopt.max_iterations = a.max_iterations;
+  for (const std::string& kv : a.ipopt_options) {
+    const size_t eq = kv.find('=');
+    o.ipopt.extra.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
+  }
   o.ipopt.print_level = a.ipopt_output ? 5 : 0;
   o.ipopt.on_iteration = [&](int it, double obj, double pr, double du) {
     if (it % 10 == 0) {
@@ -180,6 +184,14 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
   sub->add_flag("--mesh-check", a.mesh_check,
                 "Solve again on a mesh of half the spacing and report the lap time's change");
   sub->add_flag("--ipopt-output", a.ipopt_output, "Print Ipopt's own iteration log");
+  sub->add_option("--ipopt-option", a.ipopt_options,
+                  "An Ipopt option as NAME=VALUE (repeatable), e.g. mumps_pivot_order=5")
+      ->check([](const std::string& s) {
+        const size_t eq = s.find('=');
+        return eq == std::string::npos || eq == 0 || eq + 1 == s.size()
+                   ? std::string("expected NAME=VALUE, got '" + s + "'")
+                   : std::string();
+      });
 }
 
 int RunOptimal(const OptimalArgs& a) {

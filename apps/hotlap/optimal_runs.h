@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -23,6 +24,7 @@ struct OptimalArgs {
   int max_iterations = 1000;
   bool mesh_check = false;
   bool ipopt_output = false;
+  std::vector<std::string> ipopt_options;  ///< NAME=VALUE, passed to Ipopt as they are
 };
 
 /// Adds the options shared by both commands to `sub`.

@@ -43,12 +43,6 @@ class LapCommandTest : public ::testing::Test {
   test::TempDir dir_;
 };
 
-const std::vector<double>& Column(const CsvTable& t, const std::string& name) {
-  const int i = t.ColumnIndex(name);
-  if (i < 0) throw std::runtime_error("no column " + name);
-  return t.values[static_cast<size_t>(i)];
-}
-
 // The acceptance on the built-in Darlington and Gen-7 car: lap time 28.5-31.5 s, top
 // speed 78-84 m/s, braking zones at the turn 1 and turn 3 entries (the entry clothoids start at
 // 187 m and 1297 m, docs/tracks.md).
@@ -95,8 +89,8 @@ TEST_F(LapCommandTest, DarlingtonQssLapMeetsTheAcceptance) {
 
   // The channels: the shared format, indexed by distance and time; the lap time matches.
   const CsvTable t = ReadCsv(out / "lap.csv");
-  const std::vector<double>& distance = Column(t, "distance_m");
-  const std::vector<double>& time = Column(t, "time_s");
+  const std::vector<double>& distance = t.Column("distance_m");
+  const std::vector<double>& time = t.Column("time_s");
   EXPECT_NEAR(distance.back(), 2198.0, 1e-6);
   EXPECT_NEAR(time.back(), lap_time, 1e-6);
   for (const char* name : {"speed_mps", "fx_fr_N", "fy_fr_N", "fz_fr_N", "slip_angle_fr_deg",
@@ -120,8 +114,8 @@ TEST_F(LapCommandTest, ChannelsReplayToTheSameTemperatures) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const CsvTable lap = ReadCsv(out / "lap.csv"), rep = ReadCsv(replayed);
   for (const char* name : {"tread_temp_fr_C", "carcass_temp_rr_C", "wear_rr_mm"}) {
-    const auto& a = Column(lap, name);
-    const auto& b = Column(rep, name);
+    const auto& a = lap.Column(name);
+    const auto& b = rep.Column(name);
     ASSERT_EQ(a.size(), b.size());
     for (size_t i = 0; i < a.size(); i += 50) EXPECT_NEAR(a[i], b[i], 0.05) << name << " " << i;
   }
@@ -138,8 +132,8 @@ TEST_F(LapCommandTest, StintOfThreeLaps) {
   EXPECT_GT(j["corners"]["rr"]["wear_total_mm"].get<double>(),
             2.5 * j["corners"]["rr"]["wear_per_lap_mm"].get<double>());
   const CsvTable t = ReadCsv(out / "lap.csv");
-  EXPECT_EQ(Column(t, "lap").back(), 3.0);
-  EXPECT_NEAR(Column(t, "distance_m").back(), 3 * 2198.0, 1e-6);
+  EXPECT_EQ(t.Column("lap").back(), 3.0);
+  EXPECT_NEAR(t.Column("distance_m").back(), 3 * 2198.0, 1e-6);
 }
 
 TEST_F(LapCommandTest, BadInputFailsCleanlyWithoutOutput) {
@@ -162,8 +156,10 @@ TEST_F(LapCommandTest, BadInputFailsCleanlyWithoutOutput) {
     std::string message;
   };
   const std::vector<Case> cases = {
-      {"lap --track nowhere", "nowhere"}, {"lap --car " + thermal_only.string(), "chassis"},
-      {"lap --laps 0", "--laps"},         {"lap --method qss --compare-disc-limit-C 500", "is for --method ocp"},
+      {"lap --track nowhere", "nowhere"},
+      {"lap --car " + thermal_only.string(), "chassis"},
+      {"lap --laps 0", "--laps"},
+      {"lap --method qss --compare-disc-limit-C 500", "is for --method ocp"},
       {"lap --step-m 500", "step"},
   };
   for (const Case& c : cases) {

@@ -21,12 +21,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::vector<double>& Column(const CsvTable& t, const std::string& name) {
-  const int i = t.ColumnIndex(name);
-  if (i < 0) throw std::runtime_error("no column " + name);
-  return t.values[static_cast<size_t>(i)];
-}
-
 double Max(const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); }
 
 TEST(OptimalLapCommandTest, DarlingtonDiscLimitComparisonMeetsTheAcceptance) {
@@ -64,7 +58,7 @@ TEST(OptimalLapCommandTest, DarlingtonDiscLimitComparisonMeetsTheAcceptance) {
 
   // The limit holds at every node of the channels, and the front-left disc is the one at it.
   const CsvTable c = ReadCsv(out / "constrained.csv");
-  const double fl = Max(Column(c, "disc_temp_fl_C")), fr = Max(Column(c, "disc_temp_fr_C"));
+  const double fl = Max(c.Column("disc_temp_fl_C")), fr = Max(c.Column("disc_temp_fr_C"));
   EXPECT_LE(fl, 500.0 + 1e-3);
   EXPECT_LE(fr, 500.0 + 1e-3);
   EXPECT_GT(fl, 499.5);
@@ -72,8 +66,8 @@ TEST(OptimalLapCommandTest, DarlingtonDiscLimitComparisonMeetsTheAcceptance) {
   EXPECT_NEAR(limited["corners"]["fl"]["peak_disc_temp_C"].get<double>(), fl, 1e-5);
 
   // The channels are a lap of the track whose time is the reported lap time.
-  const std::vector<double>& distance = Column(c, "distance_m");
-  const std::vector<double>& time = Column(c, "time_s");
+  const std::vector<double>& distance = c.Column("distance_m");
+  const std::vector<double>& time = c.Column("time_s");
   EXPECT_NEAR(distance.back() - distance.front(), 2198.0, 1e-6);
   EXPECT_NEAR(time.back() - time.front(), t_limited, 1e-5);
   EXPECT_TRUE(fs::exists(out / "unconstrained.csv"));

@@ -115,6 +115,14 @@ TEST_F(CsvTest, ReadsBomCrlfBlankLinesSpacesAndPlusSign) {
   EXPECT_EQ(table.ColumnIndex("speed_mps"), 1);
   EXPECT_EQ(table.ColumnIndex("note"), 2);
   EXPECT_EQ(table.ColumnIndex("speed"), -1);
+  EXPECT_EQ(&table.Column("note"), &table.values[2]);
+  try {
+    table.Column("speed");
+    ADD_FAILURE() << "no error for a missing column";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(test::Contains(e.what(), path.string()));
+    EXPECT_TRUE(test::Contains(e.what(), "no column 'speed'"));
+  }
   ASSERT_EQ(table.RowCount(), 3u);
   EXPECT_EQ(table.values[0], (std::vector<double>{0.0, 0.5, 1.0}));
   EXPECT_EQ(table.values[1][0], 1.5);

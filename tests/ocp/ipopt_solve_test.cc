@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "hotlap/common/error.h"
+
 namespace hotlap::ocp {
 namespace {
 
@@ -137,6 +139,28 @@ TEST(IpoptSolveTest, InfeasibleProblemSaysSo) {
   EXPECT_EQ(res.status, SolveStatus::kInfeasible) << res.message;
   EXPECT_NE(res.message.find("cannot all be met"), std::string::npos);
   EXPECT_EQ(res.x.size(), 1u);
+}
+
+// Extra options reach Ipopt by their type; one it does not know, or a value it refuses, is bad
+// input that names the option, not a solve quietly run without it.
+TEST(IpoptSolveTest, ExtraOptionsAreCheckedByIpopt) {
+  ElementNlp nlp;
+  const int x = nlp.AddVariable(0.5, 0.0, 1.0, 1.0);
+  nlp.AddObjectiveLinear(x, 1.0);
+  nlp.Finalize();
+  IpoptOptions o;
+  o.extra = {{"mumps_pivot_order", "5"}, {"mu_init", "1"}, {"mu_strategy", "monotone"}};
+  EXPECT_TRUE(SolveWithIpopt(nlp, o).ok());
+  for (const auto& bad :
+       {std::pair<std::string, std::string>{"no_such_option", "1"}, {"mu_strategy", "sideways"}}) {
+    o.extra = {bad};
+    try {
+      SolveWithIpopt(nlp, o);
+      ADD_FAILURE() << bad.first << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(bad.first), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace

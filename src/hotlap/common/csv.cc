@@ -113,6 +113,12 @@ int CsvTable::ColumnIndex(std::string_view name) const {
   return -1;
 }
 
+const std::vector<double>& CsvTable::Column(std::string_view name) const {
+  const int i = ColumnIndex(name);
+  if (i < 0) throw InputError(fmt::format("{}: no column '{}'", path.string(), name));
+  return values[static_cast<size_t>(i)];
+}
+
 size_t CsvTable::RowCount() const { return line_numbers.size(); }
 
 CsvTable ReadCsv(const std::filesystem::path& path) {

@@ -36,6 +36,8 @@ struct CsvTable {
 
   /// Position of the column named exactly `name`, or -1 if there is none.
   int ColumnIndex(std::string_view name) const;
+  /// The values of the column named exactly `name`; InputError naming the file if there is none.
+  const std::vector<double>& Column(std::string_view name) const;
   /// Number of data rows.
   size_t RowCount() const;
 };

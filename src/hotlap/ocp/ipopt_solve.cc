@@ -4,9 +4,13 @@
 #include <cmath>
 #include <cstdlib>
 
+#include <fmt/format.h>
+
 #include <IpIpoptApplication.hpp>
 #include <IpIpoptCalculatedQuantities.hpp>
 #include <IpTNLP.hpp>
+
+#include "hotlap/common/error.h"
 
 namespace hotlap::ocp {
 
@@ -187,17 +191,20 @@ SolveResult SolveWithIpopt(const ElementNlp& nlp, const IpoptOptions& options) {
   app->Options()->SetStringValue("mu_strategy", "adaptive");
   app->Options()->SetStringValue("sb", "yes");  // no banner
   for (const auto& [name, value] : options.extra) {
+    // The value as the option's type takes it: integer, number or text.
     char* end = nullptr;
     const long as_int = std::strtol(value.c_str(), &end, 10);
-    if (end != value.c_str() && *end == '\0') {
-      app->Options()->SetIntegerValue(name, static_cast<int>(as_int));
-      continue;
-    }
+    const bool is_int = end != value.c_str() && *end == '\0';
     const double as_number = std::strtod(value.c_str(), &end);
-    if (end != value.c_str() && *end == '\0') {
-      app->Options()->SetNumericValue(name, as_number);
-    } else {
-      app->Options()->SetStringValue(name, value);
+    const bool is_number = end != value.c_str() && *end == '\0';
+    Ipopt::OptionsList& o = *app->Options();
+    const bool set = (is_int && o.SetIntegerValue(name, static_cast<int>(as_int))) ||
+                     (is_number && o.SetNumericValue(name, as_number)) ||
+                     o.SetStringValue(name, value);
+    if (!set) {
+      throw InputError(fmt::format(
+          "Ipopt option '{}={}': Ipopt has no such option, or it does not take that value", name,
+          value));
     }
   }
   if (app->Initialize() != Ipopt::Solve_Succeeded) {

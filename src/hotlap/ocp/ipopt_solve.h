@@ -18,8 +18,9 @@ struct IpoptOptions {
   int max_iterations = 1000;
   double max_cpu_seconds = 600.0;
   int print_level = 0;  ///< Ipopt's own output, 0 = none
-  /// Further Ipopt options by name (e.g. {"mumps_pivot_order", "5"}); integers and numbers are
-  /// recognised from the text.
+  /// Further Ipopt options by name (e.g. {"mumps_pivot_order", "5"}), the value as the option's
+  /// type takes it (integer, number or text); an unknown name or a value it refuses is an
+  /// InputError.
   std::vector<std::pair<std::string, std::string>> extra;
   /// Called at every iteration with (iteration, objective, primal infeasibility, dual
   /// infeasibility); return false to stop.
@@ -55,7 +56,8 @@ struct SolveResult {
 };
 
 /// Solves from nlp's initial point. `nlp` must be finalized. Never throws for a failed solve:
-/// the status says what happened and x holds Ipopt's last iterate.
+/// the status says what happened and x holds Ipopt's last iterate (an unusable option in
+/// `options.extra` is an InputError, before any solving).
 SolveResult SolveWithIpopt(const ElementNlp& nlp, const IpoptOptions& options);
 
 }  // namespace hotlap::ocp
