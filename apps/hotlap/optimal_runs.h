@@ -23,6 +23,7 @@ struct OptimalArgs {
   int max_iterations = 1000;
   bool mesh_check = false;
   bool ipopt_output = false;
+  int mesh_points = 0;  ///< limebeer-2014-f1 cars only: mesh nodes (0: 500; docs/f1-peer.md)
 };
 
 /// Adds the options shared by both commands to `sub`.
