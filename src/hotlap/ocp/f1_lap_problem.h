@@ -52,7 +52,7 @@ std::vector<double> F1GuessSpeeds(const vehicle::F1CarParams& car, const track::
                                   int mesh_points);
 
 /// The Ipopt settings the F1 lap is solved with: monotone barrier updates (one factorisation per
-/// iteration and far fewer iterations here than the adaptive strategy: 47 against 113) and
+/// iteration and far fewer iterations here than the adaptive strategy: 47 against 84) and
 /// MUMPS without its own scaling (the programme is scaled by ElementNlp; MUMPS' scaling cost
 /// about a third of the linear-algebra time and changed nothing), SCOTCH ordering (MUMPS pivot
 /// order 3: 10-20 % less CPU than its automatic choice here). Tolerance 1e-7 (scaled).
