@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "f1_optimal_run.h"
 #include "hotlap/common/csv.h"
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/error.h"
@@ -19,6 +20,7 @@
 #include "hotlap/ocp/optimal_output.h"
 #include "hotlap/report/html_report.h"
 #include "hotlap/track/track_io.h"
+#include "hotlap/vehicle/f1_car.h"
 #include "output.h"
 
 namespace hotlap::app {
@@ -195,6 +197,10 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
 }
 
 int RunOptimal(const OptimalArgs& a) {
+  // The 3-DOF F1 car of the fastest-lap peer benchmark has its own solver (docs/f1-peer.md).
+  if (const fs::path f1 = ResolveCarFile(a.car); vehicle::IsF1CarFile(f1)) {
+    return RunF1Optimal(a, f1);
+  }
   const auto started = std::chrono::steady_clock::now();
   const vehicle::Car car = vehicle::LoadCar(ResolveCarFile(a.car));
   vehicle::RequireVehicle(car, "the optimal lap");

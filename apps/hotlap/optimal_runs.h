@@ -25,6 +25,7 @@ struct OptimalArgs {
   bool mesh_check = false;
   bool ipopt_output = false;
   std::vector<std::string> ipopt_options;  ///< NAME=VALUE, passed to Ipopt as they are
+  int mesh_points = 0;  ///< limebeer-2014-f1 cars only: mesh nodes (0: 500; docs/f1-peer.md)
 };
 
 /// Adds the options shared by both commands to `sub`.
