@@ -2,9 +2,9 @@
 
 #include "f1_optimal_run.h"
 
-#include <malloc.h>
-
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 #include <fmt/format.h>
@@ -12,9 +12,11 @@
 
 #include "hotlap/common/csv.h"
 #include "hotlap/common/error.h"
+#include "hotlap/common/units.h"
 #include "hotlap/ocp/f1_lap_problem.h"
 #include "hotlap/track/track_io.h"
 #include "output.h"
+#include "solver_memory.h"
 
 namespace hotlap::app {
 
@@ -61,16 +63,23 @@ int RunF1Optimal(const OptimalArgs& a, const fs::path& car_file) {
   if (a.disc_limit_C || a.compare_disc_limit_C) {
     throw InputError("the limebeer-2014-f1 car has no brake temperatures: no disc limit");
   }
+  double max_bank = 0.0, max_grade = 0.0;
+  for (double d = 0.0; d < track.length_m(); d += 5.0) {
+    max_bank = std::max(max_bank, std::abs(track.At(d).bank_rad));
+    max_grade = std::max(max_grade, std::abs(track.At(d).grade_rad));
+  }
+  if (max_bank > 1e-3 || max_grade > 1e-3) {
+    fmt::print(stderr,
+               "warning: the limebeer-2014-f1 model is planar: this track's banking (up to {:.1f} "
+               "deg) and grade (up to {:.1f} deg) are ignored\n",
+               RadToDeg(max_bank), RadToDeg(max_grade));
+  }
   ocp::F1LapOptions o;
   if (a.mesh_points > 0) o.mesh_points = a.mesh_points;
-  // glibc's malloc returns MUMPS' large work arrays to the kernel after every factorisation
-  // (mmap above 128 kB, trimming above 128 kB free): keep them instead. Process-wide, harmless for
-  // a command that ends after the solve; it removes most of the solve's system time.
-  mallopt(M_MMAP_THRESHOLD, 512 << 20);
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
-  mallopt(M_TOP_PAD, 64 << 20);
+  KeepSolverMemory();
   ocp::IpoptOptions ipopt = ocp::F1IpoptOptions();
   ipopt.max_iterations = a.max_iterations;
+  for (auto& kv : IpoptOptionPairs(a)) ipopt.extra.push_back(std::move(kv));
   ipopt.print_level = a.ipopt_output ? 5 : 0;
   ipopt.on_iteration = [](int it, double obj, double pr, double du) {
     if (it % 10 == 0) {

@@ -22,6 +22,7 @@
 #include "hotlap/track/track_io.h"
 #include "hotlap/vehicle/f1_car.h"
 #include "output.h"
+#include "solver_memory.h"
 
 namespace hotlap::app {
 
@@ -54,10 +55,7 @@ Solved Solve(const OptimalArgs& a, const vehicle::Car& car, const track::Track& 
   o.ambient_temp = CelsiusToKelvin(a.ambient_C);
   o.track_temp = CelsiusToKelvin(a.track_C);
   o.ipopt.max_iterations = a.max_iterations;
-  for (const std::string& kv : a.ipopt_options) {
-    const size_t eq = kv.find('=');
-    o.ipopt.extra.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
-  }
+  o.ipopt.extra = IpoptOptionPairs(a);
   o.ipopt.print_level = a.ipopt_output ? 5 : 0;
   o.ipopt.on_iteration = [&](int it, double obj, double pr, double du) {
     if (it % 10 == 0) {
@@ -196,6 +194,15 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
       });
 }
 
+std::vector<std::pair<std::string, std::string>> IpoptOptionPairs(const OptimalArgs& a) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const std::string& kv : a.ipopt_options) {
+    const size_t eq = kv.find('=');  // the option's check guarantees one
+    out.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
+  }
+  return out;
+}
+
 int RunOptimal(const OptimalArgs& a) {
   // The 3-DOF F1 car of the fastest-lap peer benchmark has its own solver (docs/f1-peer.md).
   if (const fs::path f1 = ResolveCarFile(a.car); vehicle::IsF1CarFile(f1)) {
@@ -217,6 +224,7 @@ int RunOptimal(const OptimalArgs& a) {
       throw InputError(fmt::format("the disc limit {:g} degC must be in (0, 1500)", *limit));
     }
   }
+  KeepSolverMemory();
   fmt::print("hotlap optimal lap: car '{}' on {} ({:.1f} m)\n", car.name, track.name(),
              track.length_m());
   std::vector<Solved> runs;

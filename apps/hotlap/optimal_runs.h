@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -30,6 +31,9 @@ struct OptimalArgs {
 
 /// Adds the options shared by both commands to `sub`.
 void AddOptimalOptions(CLI::App* sub, OptimalArgs& args);
+
+/// The --ipopt-option values as (name, value) pairs.
+std::vector<std::pair<std::string, std::string>> IpoptOptionPairs(const OptimalArgs& args);
 
 /// Runs the solve(s), prints the summary, writes the outputs. Returns the exit code: 0, or 3 when
 /// a solve did not converge (its last point is still written).
