@@ -14,9 +14,9 @@
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
 #include "hotlap/ocp/f1_lap_problem.h"
+#include "hotlap/ocp/solver_memory.h"
 #include "hotlap/track/track_io.h"
 #include "output.h"
-#include "solver_memory.h"
 
 namespace hotlap::app {
 
@@ -76,7 +76,7 @@ int RunF1Optimal(const OptimalArgs& a, const fs::path& car_file) {
   }
   ocp::F1LapOptions o;
   if (a.mesh_points > 0) o.mesh_points = a.mesh_points;
-  KeepSolverMemory();
+  ocp::KeepSolverMemory();
   ocp::IpoptOptions ipopt = ocp::F1IpoptOptions();
   ipopt.max_iterations = a.max_iterations;
   for (auto& kv : IpoptOptionPairs(a)) ipopt.extra.push_back(std::move(kv));

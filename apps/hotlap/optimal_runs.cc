@@ -18,11 +18,11 @@
 #include "hotlap/common/units.h"
 #include "hotlap/ocp/optimal_lap.h"
 #include "hotlap/ocp/optimal_output.h"
+#include "hotlap/ocp/solver_memory.h"
 #include "hotlap/report/html_report.h"
 #include "hotlap/track/track_io.h"
 #include "hotlap/vehicle/f1_car.h"
 #include "output.h"
-#include "solver_memory.h"
 
 namespace hotlap::app {
 
@@ -224,14 +224,17 @@ int RunOptimal(const OptimalArgs& a) {
       throw InputError(fmt::format("the disc limit {:g} degC must be in (0, 1500)", *limit));
     }
   }
-  KeepSolverMemory();
+  ocp::KeepSolverMemory();
   fmt::print("hotlap optimal lap: car '{}' on {} ({:.1f} m)\n", car.name, track.name(),
              track.length_m());
   std::vector<Solved> runs;
   if (a.compare_disc_limit_C) {
     runs.push_back(Solve(a, car, track, std::nullopt, a.step_m, "no limit"));
+    // The limited lap from the free one (continuation): the same neighbourhood, fewer iterations.
+    const ocp::SolveResult& free = runs[0].run.solution.solve;
     runs.push_back(Solve(a, car, track, a.compare_disc_limit_C, a.step_m,
-                         fmt::format("discs <= {:g} degC", *a.compare_disc_limit_C)));
+                         fmt::format("discs <= {:g} degC", *a.compare_disc_limit_C),
+                         free.ok() ? free.x : std::vector<double>()));
     // The problem is not convex, so each solve finds a local optimum. The limited lap is a
     // feasible point of the free problem: if it is faster, the free solve stopped at a worse
     // local optimum, and is solved again from the limited lap (then the better of the two kept).

@@ -1,8 +1,8 @@
-#include "solver_memory.h"
+#include "hotlap/ocp/solver_memory.h"
 
 #include <malloc.h>
 
-namespace hotlap::app {
+namespace hotlap::ocp {
 
 void KeepSolverMemory() {
   mallopt(M_MMAP_THRESHOLD, 512 << 20);
@@ -10,4 +10,4 @@ void KeepSolverMemory() {
   mallopt(M_TOP_PAD, 64 << 20);
 }
 
-}  // namespace hotlap::app
+}  // namespace hotlap::ocp

@@ -1,8 +1,9 @@
 #pragma once
 /// @file
-/// Process-wide memory tuning for the commands that run Ipopt with MUMPS.
+/// Process-wide memory tuning for programs that run Ipopt with MUMPS (the optimal-lap commands,
+/// the benchmarks).
 
-namespace hotlap::app {
+namespace hotlap::ocp {
 
 /// Keeps glibc's malloc from returning MUMPS' large work arrays to the kernel after every
 /// factorisation (by default anything above 128 kB is mmap'ed and freed, and the heap trimmed
@@ -10,4 +11,4 @@ namespace hotlap::app {
 /// commands that end after their solves; it removes most of a solve's system time.
 void KeepSolverMemory();
 
-}  // namespace hotlap::app
+}  // namespace hotlap::ocp
