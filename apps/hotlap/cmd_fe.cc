@@ -212,7 +212,7 @@ int RunFeCommand(const FeArgs& a) {
   if (last >= 2) {
     begin();
     const fe::RollResult rr = run.Roll(hooks);
-    WriteHistoryCsv(out / "roll_history.csv", "roll", config, rr.history, run.loaded_radius_m());
+    WriteHistoryCsv(out / "roll_history.csv", "roll", config, rr.history, run.slip_radius_m());
     j["roll"] = {{"speed_mps", RoundSignificant(rr.speed_mps, 6)},
                  {"spin_rad_per_s", RoundSignificant(rr.spin_rad_per_s, 6)},
                  {"effective_radius_mm", RoundSignificant(1e3 * rr.effective_radius_m, 6)},
@@ -229,10 +229,10 @@ int RunFeCommand(const FeArgs& a) {
   }
   if (last >= 3) {
     // The ABS issue's controller and hydraulics set the brake torque at the controller's period;
-    // the controller's R_l is the footprint's loaded radius.
+    // the controller's R_l is the free-rolling radius of the roll step (002:2).
     const sim::AbsConfig& ac = *abs_config;
     brake::AbsControllerParams cp = ac.controller;
-    cp.wheel_radius_m = run.loaded_radius_m();
+    cp.wheel_radius_m = run.slip_radius_m();
     brake::AbsController controller(cp);
     brake::PressureDelayLine delay(ac.DelayTicks(), 0.0);
     const brake::BrakeHydraulicsParams<double>& hyd = ac.plant.hydraulics;
@@ -249,7 +249,7 @@ int RunFeCommand(const FeArgs& a) {
     };
     begin();
     const fe::BrakeResult br = run.Brake(config.abs_duration_s, torque, hooks);
-    WriteHistoryCsv(out / "abs_history.csv", "abs", config, br.history, run.loaded_radius_m());
+    WriteHistoryCsv(out / "abs_history.csv", "abs", config, br.history, run.slip_radius_m());
     j["abs"] = {{"duration_s", RoundSignificant(config.abs_duration_s, 6)},
                 {"initial_speed_mps", RoundSignificant(br.initial_speed_mps, 6)},
                 {"final_speed_mps", RoundSignificant(br.final_speed_mps, 6)},

@@ -57,8 +57,8 @@ HistoryRow TyreRun::Row(double torque) const {
   const Eigen::Vector3d f = solver_.RoadForce();
   r.road_fx_N = f.x();
   r.road_fz_N = f.z();
-  if (std::abs(r.rim_vx_mps) > 0.1 && loaded_radius_ > 0.0) {
-    r.slip = (r.rim_vx_mps - loaded_radius_ * r.spin_rad_per_s) / r.rim_vx_mps;  // (002:2)
+  if (std::abs(r.rim_vx_mps) > 0.1 && slip_radius_m() > 0.0) {
+    r.slip = (r.rim_vx_mps - slip_radius_m() * r.spin_rad_per_s) / r.rim_vx_mps;  // (002:2)
   }
   r.energies = solver_.energies();
   return r;
@@ -221,6 +221,7 @@ RollResult TyreRun::Roll(const StepHooks& hooks) {
     r.road_fz_N /= n;
   }
   r.effective_radius_m = r.spin_rad_per_s > 0 ? r.speed_mps / r.spin_rad_per_s : 0.0;
+  rolling_radius_ = r.effective_radius_m;
   return r;
 }
 

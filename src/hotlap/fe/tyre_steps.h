@@ -32,7 +32,7 @@ struct HistoryRow {
   double spin_rad_per_s = 0.0;
   double brake_torque_Nm = 0.0;  ///< applied about +y (negative brakes forward rolling)
   double road_fx_N = 0.0, road_fz_N = 0.0;
-  double slip = 0.0;  ///< (Vx - R_l omega) / Vx, with R_l the loaded radius (002:2)
+  double slip = 0.0;  ///< (Vx - R_l omega) / Vx (002:2), R_l = TyreRun::slip_radius_m()
   Energies energies;
 };
 
@@ -116,6 +116,10 @@ class TyreRun {
   /// For benchmarks and tools that step the solver themselves.
   ExplicitSolver& mutable_solver() { return solver_; }
   double loaded_radius_m() const { return loaded_radius_; }
+  /// The R_l of the slip (002:2): the free-rolling radius V / omega once Roll has run (the paper's
+  /// "loaded radius from step four" is that ratio: 11.165 / 28.268 = 395 mm), else the loaded
+  /// radius from the footprint.
+  double slip_radius_m() const { return rolling_radius_ > 0.0 ? rolling_radius_ : loaded_radius_; }
 
  private:
   HistoryRow Row(double torque) const;
@@ -131,6 +135,7 @@ class TyreRun {
   double road_z_ = 0.0;
   double inflated_radius_ = 0.0;
   double loaded_radius_ = 0.0;
+  double rolling_radius_ = 0.0;
 };
 
 }  // namespace hotlap::fe
