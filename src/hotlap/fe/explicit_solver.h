@@ -18,7 +18,7 @@
 /// Central difference (velocities at half steps, positions at whole steps):
 ///   v(n+1/2) = v(n-1/2) + dt M^-1 f(x(n), v(n-1/2)),  x(n+1) = x(n) + dt v(n+1/2).
 /// Velocity-dependent forces (bulk viscosity, viscous hourglass, damping, friction) use v(n-1/2).
-/// The time step is fixed: Options::time_step_safety times the smallest element's stable step
+/// The time step is fixed: SolverOptions::time_step_safety times the smallest element's stable step
 ///   dt_e = (2 / omega_e) (sqrt(1 + b1^2) - b1),  omega_e^2 = 8 c_d^2 sum_a |B0_a|^2
 /// (the Flanagan-Belytschko bound for the one-point hexahedron with lumped mass; for a cube of
 /// edge L, 2 / omega_e = L / (sqrt(3) c_d) = 0.577 L / c_d, and the cube's true highest
