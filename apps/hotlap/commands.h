@@ -36,4 +36,7 @@ CommandRunner RegisterSynthCommand(CLI::App& app);
 /// `hotlap abs`: ABS braking of one wheel, with scenarios (cmd_abs.cc).
 CommandRunner RegisterAbsCommand(CLI::App& app);
 
+/// `hotlap fe inflate|footprint|roll|abs`: the finite-element tyre's steps (cmd_fe.cc).
+CommandRunner RegisterFeCommand(CLI::App& app);
+
 }  // namespace hotlap::app

@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
   add(&hotlap::app::RegisterFitCommand);
   add(&hotlap::app::RegisterSynthCommand);
   add(&hotlap::app::RegisterAbsCommand);
+  add(&hotlap::app::RegisterFeCommand);
 
   try {
     app.parse(argc, argv);

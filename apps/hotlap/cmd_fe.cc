@@ -1,0 +1,296 @@
+// `hotlap fe inflate|footprint|roll|abs`: the finite-element tyre's steps (docs/fe-tyre.md).
+// Each step runs the ones before it (footprint inflates first, and so on). Outputs: a history CSV
+// per step, the footprint pressure map (CSV and SVG), deformed shapes as .vtu, a JSON summary.
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include "commands.h"
+#include "hotlap/brake/abs_controller.h"
+#include "hotlap/brake/brake_hydraulics.h"
+#include "hotlap/common/atomic_file.h"
+#include "hotlap/common/csv.h"
+#include "hotlap/common/error.h"
+#include "hotlap/fe/fe_config.h"
+#include "hotlap/fe/tyre_steps.h"
+#include "hotlap/fe/vtu_writer.h"
+#include "hotlap/sim/abs_config.h"
+#include "output.h"
+
+namespace hotlap::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct FeArgs {
+  std::string step;
+  std::string config;
+  std::string out;
+  std::string json;
+  double duration_s = 0.0;  // 0: the file's
+};
+
+/// The history CSV of one step (docs/fe-tyre.md lists the columns).
+void WriteHistoryCsv(const fs::path& path, const std::string& step, const fe::FeConfig& c,
+                     const std::vector<fe::HistoryRow>& h, double loaded_radius) {
+  const std::vector<std::string> columns = {
+      "time_s",      "rim_x_m",         "rim_z_m",         "rim_vx_mps",     "spin_rad_per_s",
+      "omega_R_mps", "brake_torque_Nm", "road_fx_N",       "road_fz_N",      "slip",
+      "kinetic_J",   "internal_J",      "hourglass_J",     "bulk_viscous_J", "damping_J",
+      "friction_J",  "contact_J",       "external_work_J", "balance_error_J"};
+  std::vector<std::vector<double>> v(columns.size());
+  for (const fe::HistoryRow& r : h) {
+    const fe::Energies& e = r.energies;
+    const double row[] = {r.time_s,          r.rim_x_m,
+                          r.rim_z_m,         r.rim_vx_mps,
+                          r.spin_rad_per_s,  r.spin_rad_per_s * loaded_radius,
+                          r.brake_torque_Nm, r.road_fx_N,
+                          r.road_fz_N,       r.slip,
+                          e.kinetic,         e.internal,
+                          e.Hourglass(),     e.bulk_viscous,
+                          e.damping,         e.friction,
+                          e.contact_stored,  e.external_work,
+                          e.BalanceError()};
+    for (size_t k = 0; k < columns.size(); ++k) v[k].push_back(row[k]);
+  }
+  WriteCsv(path, {{"config", c.file.string()}, {"step", step}}, columns, v);
+}
+
+/// The footprint pressure map as an SVG: one disc per contact node, coloured by pressure.
+void WriteFootprintSvg(const fs::path& path, const fe::FootprintResult& fp) {
+  WriteFileAtomically(path, [&](std::ostream& out) {
+    const double scale = 2000.0;  // px per metre
+    const double w = 0.35 * scale, h = 0.35 * scale;
+    fmt::print(out,
+               "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0:.0f}\" height=\"{1:.0f}\">\n"
+               "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
+               "<text x=\"10\" y=\"20\" font-family=\"sans-serif\" font-size=\"14\">"
+               "contact pressure, peak {2:.0f} kPa (x forward to the right, y up)</text>\n",
+               w, h, 1e-3 * fp.peak_pressure_Pa);
+    for (const fe::ContactPoint& p : fp.contact) {
+      const double s = fp.peak_pressure_Pa > 0 ? p.pressure_Pa / fp.peak_pressure_Pa : 0.0;
+      const int red = static_cast<int>(255 * s), blue = static_cast<int>(255 * (1 - s));
+      fmt::print(out, "<circle cx=\"{:.1f}\" cy=\"{:.1f}\" r=\"6\" fill=\"rgb({},0,{})\"/>\n",
+                 0.5 * w + scale * p.x_m, 0.5 * h - scale * p.y_m, red, blue);
+    }
+    out << "</svg>\n";
+  });
+}
+
+nlohmann::json EnergiesJson(const fe::Energies& e) {
+  return {{"kinetic_J", RoundSignificant(e.kinetic, 6)},
+          {"internal_J", RoundSignificant(e.internal, 6)},
+          {"hourglass_J", RoundSignificant(e.Hourglass(), 6)},
+          {"bulk_viscous_J", RoundSignificant(e.bulk_viscous, 6)},
+          {"damping_J", RoundSignificant(e.damping, 6)},
+          {"friction_J", RoundSignificant(e.friction, 6)},
+          {"contact_J", RoundSignificant(e.contact_stored, 6)},
+          {"external_work_J", RoundSignificant(e.external_work, 6)},
+          {"balance_error_J", RoundSignificant(e.BalanceError(), 3)},
+          {"hourglass_over_internal",
+           RoundSignificant(e.internal > 0 ? e.Hourglass() / e.internal : 0.0, 3)}};
+}
+
+int RunFeCommand(const FeArgs& a) {
+  const fs::path out(a.out);
+  std::error_code ec;
+  fs::create_directories(out, ec);
+  if (!fs::is_directory(out)) {
+    throw InputError(fmt::format("--out: cannot create the folder '{}'", a.out));
+  }
+  if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
+  fe::FeConfig config = fe::LoadFeConfig(a.config);
+  const int last = a.step == "inflate" ? 0 : a.step == "footprint" ? 1 : a.step == "roll" ? 2 : 3;
+  if (a.duration_s > 0.0) {
+    if (last == 2) config.roll_duration_s = a.duration_s;
+    if (last == 3) config.abs_duration_s = a.duration_s;
+  }
+  std::optional<sim::AbsConfig> abs_config;
+  if (last == 3) abs_config = sim::LoadAbsConfig(config.abs_config);
+
+  fe::TyreRun run(config);
+  const fe::ExplicitSolver& solver = run.solver();
+  const fe::MassScalingReport& ms = solver.mass_scaling();
+  std::fprintf(stderr,
+               "fe: %zu elements, %zu nodes; time step %.3g s (stable %.3g s unscaled); mass "
+               "%.3f kg, mass scaling added %.3f kg in %d elements\n",
+               run.tyre().mesh.elements.size(), run.tyre().mesh.nodes.size(), solver.time_step(),
+               ms.stable_step_unscaled_s, ms.physical_mass_kg, ms.added_mass_kg,
+               ms.scaled_elements);
+
+  const auto wall0 = std::chrono::steady_clock::now();
+  fe::StepHooks hooks;
+  hooks.frames = config.vtu_frames;
+  hooks.history_interval_s = config.history_interval_s;
+  double step_t0 = 0.0;
+  auto step_wall0 = wall0;
+  hooks.progress = [&](const std::string& step, double t, double t_end) {
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - step_wall0).count();
+    const double done = (t - step_t0) / std::max(1e-12, t_end - step_t0);
+    const double left = done > 0 ? wall * (1.0 - done) / done : 0.0;
+    std::fprintf(stderr, "fe %s: t = %.5f s (%.0f%%), about %.0f s left\n", step.c_str(), t,
+                 100.0 * done, left);
+  };
+  hooks.frame = [&](const std::string& step, int frame) {
+    fe::WriteVtu(out / fmt::format("{}_{:03d}.vtu", step, frame), solver);
+  };
+  const auto begin = [&] {
+    step_t0 = solver.time();
+    step_wall0 = std::chrono::steady_clock::now();
+  };
+
+  nlohmann::json j;
+  j["config"] = config.file.string();
+  j["step"] = a.step;
+  j["mesh"] = {{"elements", run.tyre().mesh.elements.size()},
+               {"nodes", run.tyre().mesh.nodes.size()},
+               {"time_step_s", RoundSignificant(solver.time_step(), 6)},
+               {"stable_step_unscaled_s", RoundSignificant(ms.stable_step_unscaled_s, 6)},
+               {"physical_mass_kg", RoundSignificant(ms.physical_mass_kg, 6)},
+               {"mass_scaling_added_kg", RoundSignificant(ms.added_mass_kg, 6)},
+               {"mass_scaled_elements", ms.scaled_elements}};
+
+  begin();
+  const fe::InflateResult inf = run.Inflate(hooks);
+  WriteHistoryCsv(out / "inflate_history.csv", "inflate", config, inf.history, 0.0);
+  j["inflate"] = {
+      {"pressure_kPa", RoundSignificant(1e-3 * inf.pressure_Pa, 6)},
+      {"outer_radius_before_mm", RoundSignificant(1e3 * inf.outer_radius_before_m, 6)},
+      {"outer_radius_after_mm", RoundSignificant(1e3 * inf.outer_radius_after_m, 6)},
+      {"section_width_before_mm", RoundSignificant(1e3 * inf.section_width_before_m, 6)},
+      {"section_width_after_mm", RoundSignificant(1e3 * inf.section_width_after_m, 6)},
+      {"roundness_error_mm", RoundSignificant(1e3 * inf.max_roundness_error_m, 3)},
+      {"energies", EnergiesJson(solver.energies())}};
+  std::printf("inflate: %.0f kPa, outer radius %.2f -> %.2f mm, section width %.1f -> %.1f mm\n",
+              1e-3 * inf.pressure_Pa, 1e3 * inf.outer_radius_before_m,
+              1e3 * inf.outer_radius_after_m, 1e3 * inf.section_width_before_m,
+              1e3 * inf.section_width_after_m);
+
+  if (last >= 1) {
+    begin();
+    const fe::FootprintResult fp = run.Footprint(hooks);
+    WriteHistoryCsv(out / "footprint_history.csv", "footprint", config, fp.history, 0.0);
+    std::vector<std::vector<double>> map(4);
+    for (const fe::ContactPoint& p : fp.contact) {
+      map[0].push_back(p.x_m);
+      map[1].push_back(p.y_m);
+      map[2].push_back(p.force_N);
+      map[3].push_back(p.pressure_Pa);
+    }
+    WriteCsv(out / "footprint_pressure.csv", {{"config", config.file.string()}},
+             {"x_m", "y_m", "force_N", "pressure_Pa"}, map);
+    WriteFootprintSvg(out / "footprint_pressure.svg", fp);
+    j["footprint"] = {
+        {"vertical_load_N", RoundSignificant(fp.vertical_load_N, 6)},
+        {"road_force_z_N", RoundSignificant(fp.road_force_z_N, 6)},
+        {"loaded_radius_mm", RoundSignificant(1e3 * fp.loaded_radius_m, 6)},
+        {"deflection_mm", RoundSignificant(1e3 * fp.deflection_m, 6)},
+        {"vertical_stiffness_kN_per_m", RoundSignificant(1e-3 * fp.vertical_stiffness_N_per_m, 6)},
+        {"contact_area_cm2", RoundSignificant(1e4 * fp.contact_area_m2, 6)},
+        {"contact_length_mm", RoundSignificant(1e3 * fp.contact_length_m, 6)},
+        {"contact_width_mm", RoundSignificant(1e3 * fp.contact_width_m, 6)},
+        {"peak_pressure_kPa", RoundSignificant(1e-3 * fp.peak_pressure_Pa, 6)},
+        {"mean_pressure_kPa", RoundSignificant(1e-3 * fp.mean_pressure_Pa, 6)},
+        {"energies", EnergiesJson(solver.energies())}};
+    std::printf(
+        "footprint: %.0f N, loaded radius %.2f mm, deflection %.2f mm, %.0f kN/m, "
+        "contact %.0f cm^2 (%.0f x %.0f mm node to node), mean %.0f kPa\n",
+        fp.road_force_z_N, 1e3 * fp.loaded_radius_m, 1e3 * fp.deflection_m,
+        1e-3 * fp.vertical_stiffness_N_per_m, 1e4 * fp.contact_area_m2, 1e3 * fp.contact_length_m,
+        1e3 * fp.contact_width_m, 1e-3 * fp.mean_pressure_Pa);
+  }
+  if (last >= 2) {
+    begin();
+    const fe::RollResult rr = run.Roll(hooks);
+    WriteHistoryCsv(out / "roll_history.csv", "roll", config, rr.history, run.slip_radius_m());
+    j["roll"] = {{"speed_mps", RoundSignificant(rr.speed_mps, 6)},
+                 {"spin_rad_per_s", RoundSignificant(rr.spin_rad_per_s, 6)},
+                 {"effective_radius_mm", RoundSignificant(1e3 * rr.effective_radius_m, 6)},
+                 {"loaded_radius_mm", RoundSignificant(1e3 * rr.loaded_radius_m, 6)},
+                 {"road_fx_N", RoundSignificant(rr.road_fx_N, 6)},
+                 {"road_fz_N", RoundSignificant(rr.road_fz_N, 6)},
+                 {"paper_spin_rad_per_s", 28.268},
+                 {"paper_effective_radius_mm", 394.2},
+                 {"energies", EnergiesJson(solver.energies())}};
+    std::printf(
+        "roll: %.3f m/s, spin %.3f rad/s, effective radius %.2f mm (paper: 28.268 rad/s, "
+        "394.2 mm), loaded radius %.2f mm\n",
+        rr.speed_mps, rr.spin_rad_per_s, 1e3 * rr.effective_radius_m, 1e3 * rr.loaded_radius_m);
+  }
+  if (last >= 3) {
+    // The ABS issue's controller and hydraulics set the brake torque at the controller's period;
+    // the controller's R_l is the free-rolling radius of the roll step (002:2).
+    const sim::AbsConfig& ac = *abs_config;
+    brake::AbsControllerParams cp = ac.controller;
+    cp.wheel_radius_m = run.slip_radius_m();
+    brake::AbsController controller(cp);
+    brake::PressureDelayLine delay(ac.DelayTicks(), 0.0);
+    const brake::BrakeHydraulicsParams<double>& hyd = ac.plant.hydraulics;
+    double next_tick = 0.0, target = 0.0, pressure = 0.0, t_prev = 0.0;
+    const fe::BrakeTorqueFn torque = [&](double t, double vx, double spin) {
+      while (t >= next_tick - 1e-12) {
+        const brake::AbsCommand cmd = controller.Step({vx, spin, ac.driver.PressureAt(next_tick)});
+        target = delay.Push(cmd.pressure_target);
+        next_tick += cp.period_s;
+      }
+      pressure += (t - t_prev) * brake::CalcPressureRate(hyd, pressure, target);
+      t_prev = t;
+      return brake::CalcBrakeTorqueCapacity(hyd, pressure);
+    };
+    begin();
+    const fe::BrakeResult br = run.Brake(config.abs_duration_s, torque, hooks);
+    WriteHistoryCsv(out / "abs_history.csv", "abs", config, br.history, run.slip_radius_m());
+    j["abs"] = {{"duration_s", RoundSignificant(config.abs_duration_s, 6)},
+                {"initial_speed_mps", RoundSignificant(br.initial_speed_mps, 6)},
+                {"final_speed_mps", RoundSignificant(br.final_speed_mps, 6)},
+                {"distance_m", RoundSignificant(br.distance_m, 6)},
+                {"max_slip", RoundSignificant(br.max_slip, 6)},
+                {"max_brake_torque_Nm", RoundSignificant(br.max_brake_torque_Nm, 6)},
+                {"control_cycles", controller.state().cycles},
+                {"energies", EnergiesJson(solver.energies())}};
+    std::printf("abs: %.3f s, speed %.3f -> %.3f m/s over %.3f m, max slip %.3f, %d cycles\n",
+                config.abs_duration_s, br.initial_speed_mps, br.final_speed_mps, br.distance_m,
+                br.max_slip, controller.state().cycles);
+  }
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  j["performance"] = {
+      {"wall_s", RoundSignificant(wall, 4)},
+      {"steps", solver.steps()},
+      {"element_updates_per_s", RoundSignificant(solver.element_updates() / wall, 4)}};
+  std::printf("fe: %ld steps, %.3g element updates in %.1f s (%.3g per second)\n", solver.steps(),
+              solver.element_updates(), wall, solver.element_updates() / wall);
+  if (!a.json.empty()) WriteJsonFile(a.json, j);
+  return 0;
+}
+
+}  // namespace
+
+CommandRunner RegisterFeCommand(CLI::App& app) {
+  auto args = std::make_shared<FeArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "fe", "Finite-element tyre: inflate, footprint, free rolling, ABS stop (docs/fe-tyre.md)");
+  sub->add_option("step", args->step, "inflate | footprint | roll | abs (runs the ones before)")
+      ->required()
+      ->check(CLI::IsMember({"inflate", "footprint", "roll", "abs"}));
+  sub->add_option("--config", args->config, "FE tyre configuration (data/fe/*.yaml)")->required();
+  sub->add_option("--out", args->out, "Output folder: histories, footprint map, .vtu shapes")
+      ->required();
+  sub->add_option("--json", args->json, "Write the summary as JSON (docs/fe-tyre.md)");
+  sub->add_option("--duration-s", args->duration_s,
+                  "Simulated time of the last step (roll or abs), s (default: the file's)")
+      ->check(CLI::PositiveNumber);
+  return [args] { return RunFeCommand(*args); };
+}
+
+}  // namespace hotlap::app

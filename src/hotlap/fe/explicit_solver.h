@@ -1,0 +1,239 @@
+#pragma once
+/// @file
+/// Explicit dynamics of a hexahedral rubber mesh: lumped mass, central differences, one-point
+/// hexahedra with Flanagan-Belytschko hourglass control, Yeoh rubber, smeared cords, bulk
+/// viscosity, optional mass scaling and mass-proportional damping, a rigid road with friction,
+/// a follower inflation pressure and a rigid rim driven by force and torque.
+///
+/// How to use:
+///
+///   fe::ExplicitSolver solver(mesh, materials, rebars, options);
+///   solver.SetRoad(road);                 // optional
+///   solver.SetRim(rim);                   // optional: mesh.rim_nodes tied to a rigid body
+///   solver.Prescribe(node, dof, speed);   // optional velocity boundary conditions
+///   solver.set_pressure(220e3);           // inflation, Pa, on mesh.pressure_faces
+///   while (solver.time() < t_end) { solver.rim_loads().torque_Nm = ...; solver.Step(); }
+///   const fe::Energies& e = solver.energies();
+///
+/// Central difference (velocities at half steps, positions at whole steps):
+///   v(n+1/2) = v(n-1/2) + dt M^-1 f(x(n), v(n-1/2)),  x(n+1) = x(n) + dt v(n+1/2).
+/// Velocity-dependent forces (bulk viscosity, viscous hourglass, damping, friction) use v(n-1/2).
+/// The time step is fixed: SolverOptions::time_step_safety times the smallest element's stable step
+///   dt_e = (2 / omega_e) (sqrt(1 + b1^2) - b1),  omega_e^2 = 8 c_d^2 sum_a |B0_a|^2
+/// (the Flanagan-Belytschko bound for the one-point hexahedron with lumped mass; for a cube of
+/// edge L, 2 / omega_e = L / (sqrt(3) c_d) = 0.577 L / c_d, and the cube's true highest
+/// frequency, its volumetric mode, is sqrt(12 K / rho) / L, within 3.3% of the bound when
+/// K = 20 mu0), c_d^2 = (K + 4/3 mu0 + phi E_cord) / rho.
+///
+/// Energies: the strain energy (rubber and cords) and the stored hourglass and contact energies
+/// are state functions evaluated from the positions; the kinetic energy at t(n) is
+/// m v(n-1/2) . v(n+1/2) / 2 (the form that central differences conserve exactly for a linear
+/// system); dissipation and external work are accumulated as (f(n) + f(n+1)) . (x(n+1) - x(n)) / 2
+/// up to t(n). The initial kinetic energy is that form at the first step. Their
+/// balance is therefore a genuine check of the force computation (Energies::BalanceError).
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "hotlap/fe/hex8.h"
+#include "hotlap/fe/mesh.h"
+#include "hotlap/fe/rebar.h"
+#include "hotlap/fe/road_contact.h"
+#include "hotlap/fe/yeoh.h"
+
+namespace hotlap::fe {
+
+/// Solver settings. The defaults are Abaqus/Explicit's where it has one.
+struct SolverOptions {
+  double time_step_safety = 0.9;          ///< fraction of the stable step, in (0, 1]
+  double bulk_viscosity_linear = 0.06;    ///< b1 (Abaqus default), 1
+  double bulk_viscosity_quadratic = 1.2;  ///< b2 (Abaqus default), 1
+  /// Hourglass stiffness k = coeff mu0 V0 sum|B0|^2 / 8 per element, 1 (FB stiffness form).
+  double hourglass_stiffness = 0.05;
+  /// Viscous hourglass c = coeff rho c_d V0^(2/3) / 4 per element, 1 (FB viscous form; 0 = off).
+  double hourglass_viscous = 0.0;
+  /// Mass scaling: elements whose stable step is below this get their density raised so that
+  /// it is this, s (0 = none). Always reported (MassScalingReport).
+  double mass_scaling_min_step_s = 0.0;
+  double mass_damping_per_s = 0.0;  ///< alpha of the damping force -alpha m v, 1/s (>= 0)
+  double time_step_s = 0.0;         ///< fixed step if > 0 (must not exceed the stable one), s
+};
+
+/// What mass scaling did.
+struct MassScalingReport {
+  int scaled_elements = 0;
+  double physical_mass_kg = 0.0;  ///< rubber + cords
+  double added_mass_kg = 0.0;     ///< added by mass scaling
+  double stable_step_unscaled_s = 0.0;
+};
+
+/// Energy accounting, J. Stored terms are state functions; the others are accumulated.
+struct Energies {
+  double kinetic = 0.0;               ///< nodes and rigid rim, m v(n-1/2) . v(n+1/2) / 2
+  double internal = 0.0;              ///< strain energy of the rubber and the cords (stored)
+  double hourglass_stored = 0.0;      ///< FB stiffness-form energy (stored)
+  double hourglass_dissipated = 0.0;  ///< FB viscous-form work
+  double bulk_viscous = 0.0;          ///< dissipated by bulk viscosity
+  double damping = 0.0;               ///< dissipated by mass-proportional damping
+  double contact_stored = 0.0;        ///< penalty energy k g^2 / 2 (stored)
+  double friction = 0.0;              ///< dissipated by road friction
+  double external_work = 0.0;         ///< pressure, nodal loads, rim loads, prescribed motion
+  double initial_kinetic = 0.0;       ///< the kinetic energy at the first step
+
+  double Hourglass() const { return hourglass_stored + hourglass_dissipated; }
+  /// kinetic + internal + hourglass + dissipated + contact - external work - initial kinetic.
+  double BalanceError() const {
+    return kinetic + internal + Hourglass() + bulk_viscous + damping + contact_stored + friction -
+           external_work - initial_kinetic;
+  }
+};
+
+/// What can move the rim along one of its three planar degrees of freedom.
+enum class RimDofMode : std::uint8_t { kFree, kPrescribedVelocity };
+
+/// The rigid rim: mesh.rim_nodes move with a rigid body that translates in x and z and turns
+/// about the axle (+y). Positive spin about +y rolls the tyre towards +x on a road below it.
+struct RimSettings {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< axle centre (reference), m
+  double mass_kg = 0.0;       ///< the rim's own mass (tied nodes add theirs), kg
+  double inertia_kgm2 = 0.0;  ///< the rim's own spin inertia, kg m^2
+  RimDofMode x_mode = RimDofMode::kPrescribedVelocity;
+  RimDofMode z_mode = RimDofMode::kPrescribedVelocity;
+  RimDofMode spin_mode = RimDofMode::kPrescribedVelocity;
+};
+
+/// The rim's motion.
+struct RimState {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();    ///< m
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  ///< at the last half step, m/s
+  double angle_rad = 0.0;                              ///< spin about +y, rad
+  double spin_rad_per_s = 0.0;                         ///< at the last half step, rad/s
+};
+
+/// Loads on the rim (or, for prescribed DOFs, the reactions the constraint needed).
+struct RimLoads {
+  double force_x_N = 0.0;
+  double force_z_N = 0.0;
+  double torque_Nm = 0.0;  ///< about +y; a brake torque on a forward-rolling wheel is negative
+};
+
+/// The explicit solver. Holds copies of the model and the state.
+class ExplicitSolver {
+ public:
+  ExplicitSolver(Mesh mesh, std::vector<YeohMaterial> materials, std::vector<RebarMaterial> rebars,
+                 const SolverOptions& options);
+
+  void SetRoad(const RoadContact& road);
+  /// Ties mesh.rim_nodes to a rigid rim. Prescribed rim DOFs start at zero velocity.
+  void SetRim(const RimSettings& rim);
+  /// Velocity boundary condition on one node's dof (0 x, 1 y, 2 z), m/s. Call again to change.
+  void Prescribe(int node, int dof, double velocity_mps);
+  /// Sets the velocity of every free node, m/s. Before the first step this is the initial
+  /// condition; later (a step that starts rolling) the change of kinetic energy is booked as
+  /// external work.
+  void SetInitialVelocity(const std::vector<Eigen::Vector3d>& v);
+  /// Sets the rim's velocity and spin (translation m/s, spin rad/s), e.g. to start rolling; the
+  /// change of its kinetic energy is booked as external work after the first step.
+  void SetRimMotion(double vx_mps, double vz_mps, double spin_rad_per_s);
+  /// Adds translational mass to the rim (a quarter car for braking), kg; its spin inertia stays.
+  /// The added mass's kinetic energy at the rim's speed is booked as external work.
+  void AddRimTranslationalMass(double mass_kg);
+  /// Translational mass of the rim with its tied nodes, kg.
+  double rim_mass() const { return rim_mass_; }
+  /// Changes how the rim's DOFs move (e.g. free spin for rolling).
+  void SetRimModes(RimDofMode x_mode, RimDofMode z_mode, RimDofMode spin_mode);
+  /// Mass-proportional damping, 1/s (quasi-static steps on, dynamic steps off).
+  void set_mass_damping(double alpha_per_s) { options_.mass_damping_per_s = alpha_per_s; }
+
+  /// Moves the nodes (a restart, or a test's chosen configuration), m.
+  void SetPositions(const std::vector<Eigen::Vector3d>& x) { x_ = x; }
+  /// Forces of the elements (rubber, cords, hourglass, bulk viscosity) on each node at the
+  /// current positions and velocities, N. Does not advance the state.
+  std::vector<Eigen::Vector3d> CalcElementForces();
+
+  void set_pressure(double pressure_Pa) { pressure_Pa_ = pressure_Pa; }
+  /// Nodal forces held constant until changed, N.
+  std::vector<Eigen::Vector3d>& applied_forces() { return applied_; }
+  RimLoads& rim_loads() { return rim_loads_; }
+  /// Velocity of the prescribed rim DOFs (translation m/s, spin rad/s).
+  void SetRimVelocity(double vx_mps, double vz_mps, double spin_rad_per_s);
+
+  /// One central-difference step. Throws NumericalError on an inverted element or non-finite
+  /// state.
+  void Step();
+
+  double time() const { return time_; }
+  long steps() const { return steps_; }
+  double time_step() const { return dt_; }
+  const MassScalingReport& mass_scaling() const { return mass_report_; }
+  const Energies& energies() const { return energies_; }
+  const Mesh& mesh() const { return mesh_; }
+  const std::vector<Eigen::Vector3d>& positions() const { return x_; }
+  /// Lumped nodal masses (with cords and mass scaling), kg.
+  const std::vector<double>& node_masses() const { return mass_; }
+  /// Velocities at the last half step, m/s.
+  const std::vector<Eigen::Vector3d>& velocities() const { return v_; }
+  /// Reaction forces at prescribed dofs from the last step (zero elsewhere), N.
+  const std::vector<Eigen::Vector3d>& reactions() const { return reaction_; }
+  /// Road contact normal force per node from the last step (z), N.
+  const std::vector<double>& contact_forces() const { return contact_normal_; }
+  /// Sum of the road's force on the tyre from the last step (friction x, y; normal z), N.
+  Eigen::Vector3d RoadForce() const;
+  const RimState& rim_state() const { return rim_; }
+  /// Reaction loads of the prescribed rim DOFs from the last step.
+  const RimLoads& rim_reactions() const { return rim_reaction_; }
+  /// Cauchy stress of element `e` at the current positions (rubber plus cords), Pa.
+  Eigen::Matrix3d ElementStress(int e) const;
+  /// Number of element updates done so far (elements times steps).
+  double element_updates() const { return double(steps_) * mesh_.elements.size(); }
+  /// The stable step of the current (reference) mesh before the safety factor, s.
+  double StableStepEstimate() const { return stable_step_; }
+
+ private:
+  void ComputeForces();
+  void AdvanceRim();
+
+  Mesh mesh_;
+  std::vector<YeohMaterial> materials_;
+  std::vector<RebarMaterial> rebars_;
+  SolverOptions options_;
+  RoadContact road_;
+  bool has_rim_ = false;
+  RimSettings rim_settings_;
+  RimState rim_;
+  RimLoads rim_loads_, rim_reaction_;
+  Eigen::Vector3d rim_target_ = Eigen::Vector3d::Zero();  // prescribed vx, vz, spin
+  double rim_mass_ = 0.0, rim_inertia_ = 0.0;
+  std::vector<Eigen::Vector3d> rim_offsets_;  // reference X - centre of each rim node
+  std::vector<char> is_rim_node_;
+
+  std::vector<Hex8Reference> refs_;
+  std::vector<double> elem_density_;     // with cords and mass scaling, kg/m^3
+  std::vector<double> elem_wave_speed_;  // c_d with the cords, m/s
+  std::vector<double> hg_stiffness_, hg_viscous_;
+  std::vector<int> fibre_start_;  // CSR over fibres_sorted_
+  std::vector<FibreLayer> fibres_sorted_;
+  std::vector<double> mass_;
+  std::vector<double> contact_stiffness_;
+
+  std::vector<Eigen::Vector3d> X_, x_, v_, v_old_, applied_, reaction_;
+  std::vector<std::array<char, 3>> fixed_;
+  std::vector<Eigen::Vector3d> fixed_velocity_;
+  // Forces by kind at the current step.
+  std::vector<Eigen::Vector3d> f_stored_, f_dissip_bv_, f_dissip_hg_, f_damp_, f_contact_,
+      f_friction_, f_external_;
+  std::vector<double> contact_normal_;
+
+  double pressure_Pa_ = 0.0;
+  double dt_ = 0.0, stable_step_ = 0.0, time_ = 0.0;
+  long steps_ = 0;
+  MassScalingReport mass_report_;
+  Energies energies_;
+  double stored_internal_ = 0.0, stored_hg_ = 0.0, stored_contact_ = 0.0;
+  std::array<double, 5> work_to_midstep_{};  // external, bulk visc., hourglass, damping, friction
+};
+
+}  // namespace hotlap::fe

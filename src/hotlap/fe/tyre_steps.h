@@ -1,0 +1,141 @@
+#pragma once
+/// @file
+/// The FE/ABS paper's steps on the generated tyre (002 §2.1): inflation, the static footprint,
+/// free rolling and a braking event whose torque a callback sets (the ABS controller lives above
+/// this layer, in the app). One TyreRun carries the state from each step into the next.
+///
+///   fe::TyreRun run(config);
+///   const fe::InflateResult inf = run.Inflate(hooks);
+///   const fe::FootprintResult fp = run.Footprint(hooks);
+///   const fe::RollResult roll = run.Roll(hooks);
+///   const fe::BrakeResult br = run.Brake(duration, torque_callback, hooks);
+///
+/// Quasi-static steps (inflate, footprint) are dynamic relaxation: the load is ramped and held
+/// with mass-proportional damping. Rolling and braking run with no mass damping (it would act on
+/// the absolute velocity and brake the tyre); bulk viscosity remains.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "hotlap/fe/explicit_solver.h"
+#include "hotlap/fe/fe_config.h"
+#include "hotlap/fe/tyre_mesh.h"
+
+namespace hotlap::fe {
+
+/// One row of a step's history. SI units.
+struct HistoryRow {
+  double time_s = 0.0;
+  double rim_x_m = 0.0, rim_z_m = 0.0;
+  double rim_vx_mps = 0.0;
+  double spin_rad_per_s = 0.0;
+  double brake_torque_Nm = 0.0;  ///< applied about +y (negative brakes forward rolling)
+  double road_fx_N = 0.0, road_fz_N = 0.0;
+  double slip = 0.0;  ///< (Vx - R_l omega) / Vx (002:2), R_l = TyreRun::slip_radius_m()
+  Energies energies;
+};
+
+/// Called with the step's name, simulated time and end time, now and then.
+using ProgressFn = std::function<void(const std::string& step, double t, double t_end)>;
+/// Called for each deformed-shape frame (0-based) of a step.
+using FrameFn = std::function<void(const std::string& step, int frame)>;
+
+struct StepHooks {
+  ProgressFn progress;  ///< may be empty
+  FrameFn frame;        ///< may be empty
+  int frames = 1;       ///< frames per step, the last at the step's end
+  double history_interval_s = 1e-4;
+};
+
+struct InflateResult {
+  double pressure_Pa = 0.0;
+  double outer_radius_before_m = 0.0, outer_radius_after_m = 0.0;
+  double section_width_before_m = 0.0, section_width_after_m = 0.0;
+  double max_roundness_error_m = 0.0;  ///< spread of the crown radius round the circle
+  std::vector<HistoryRow> history;
+};
+
+/// One road-contact node at the end of the footprint step.
+struct ContactPoint {
+  double x_m = 0.0, y_m = 0.0;  ///< on the road, the rim centre above x = 0
+  double force_N = 0.0;
+  double pressure_Pa = 0.0;  ///< force over the node's share of the outer surface
+};
+
+struct FootprintResult {
+  double vertical_load_N = 0.0;
+  double road_force_z_N = 0.0;              ///< the road's reaction at the end
+  double loaded_radius_m = 0.0;             ///< rim centre to road
+  double deflection_m = 0.0;                ///< inflated outer radius less loaded radius
+  double vertical_stiffness_N_per_m = 0.0;  ///< load over deflection (secant)
+  double contact_area_m2 = 0.0;
+  double contact_length_m = 0.0, contact_width_m = 0.0;
+  double peak_pressure_Pa = 0.0, mean_pressure_Pa = 0.0;
+  std::vector<ContactPoint> contact;
+  std::vector<HistoryRow> history;
+};
+
+struct RollResult {
+  double speed_mps = 0.0;
+  double spin_rad_per_s = 0.0;              ///< mean over the second half of the step
+  double effective_radius_m = 0.0;          ///< speed / spin
+  double loaded_radius_m = 0.0;             ///< mean rim height over the road, second half
+  double road_fx_N = 0.0, road_fz_N = 0.0;  ///< means over the second half
+  std::vector<HistoryRow> history;
+};
+
+/// Brake torque magnitude (>= 0, N m) from the time, the rim's forward speed and its spin.
+using BrakeTorqueFn = std::function<double(double t, double vx_mps, double spin_rad_per_s)>;
+
+struct BrakeResult {
+  double initial_speed_mps = 0.0, final_speed_mps = 0.0;
+  double max_slip = 0.0;
+  double max_brake_torque_Nm = 0.0;  ///< largest torque magnitude applied
+  double distance_m = 0.0;
+  std::vector<HistoryRow> history;
+};
+
+/// The tyre model and its state across the steps.
+class TyreRun {
+ public:
+  explicit TyreRun(const FeConfig& config);
+
+  InflateResult Inflate(const StepHooks& hooks);
+  /// Needs Inflate first. The road is placed under the inflated tyre, the rim pressed down.
+  FootprintResult Footprint(const StepHooks& hooks);
+  /// Needs Footprint first. The rim is driven forward at the configured speed with its spin free.
+  RollResult Roll(const StepHooks& hooks);
+  /// Needs Roll first. The rim carries a quarter-car mass (load / g) free along x and the brake
+  /// torque opposes its spin (regularised near zero spin). Runs for `duration_s`.
+  BrakeResult Brake(double duration_s, const BrakeTorqueFn& torque, const StepHooks& hooks);
+
+  const FeConfig& config() const { return config_; }
+  const TyreMesh& tyre() const { return tyre_; }
+  const ExplicitSolver& solver() const { return solver_; }
+  /// For benchmarks and tools that step the solver themselves.
+  ExplicitSolver& mutable_solver() { return solver_; }
+  double loaded_radius_m() const { return loaded_radius_; }
+  /// The R_l of the slip (002:2): the free-rolling radius V / omega once Roll has run (the paper's
+  /// "loaded radius from step four" is that ratio: 11.165 / 28.268 = 395 mm), else the loaded
+  /// radius from the footprint.
+  double slip_radius_m() const { return rolling_radius_ > 0.0 ? rolling_radius_ : loaded_radius_; }
+
+ private:
+  HistoryRow Row(double torque) const;
+  /// Steps until `t_end`, calling `each` before every step, recording history and hooks.
+  void RunUntil(const std::string& step, double t_end, const StepHooks& hooks,
+                const std::function<void()>& each, std::vector<HistoryRow>& history,
+                const double* torque);
+  double OuterRadiusMean() const;
+
+  FeConfig config_;
+  TyreMesh tyre_;
+  ExplicitSolver solver_;
+  double road_z_ = 0.0;
+  double inflated_radius_ = 0.0;
+  double loaded_radius_ = 0.0;
+  double rolling_radius_ = 0.0;
+};
+
+}  // namespace hotlap::fe

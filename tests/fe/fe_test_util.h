@@ -1,0 +1,44 @@
+#pragma once
+// Shared helpers of the finite-element tests: the paper's tread rubber and hand-written Yeoh
+// formulas that do not call the code under test.
+
+#include <cmath>
+
+#include "hotlap/fe/yeoh.h"
+
+namespace hotlap::fe::testing {
+
+// 002 Table 1, tread: C1, C2, C3 (N/m^2) and density (kg/m^3).
+inline constexpr double kC10 = 7.77561e5, kC20 = -2.76138e5, kC30 = 9.5427e4, kRho = 1178.0;
+
+inline YeohMaterial Tread() { return MakeYeohMaterial(kC10, kC20, kC30, kRho, 20.0); }
+
+// dW/dI1b of the Yeoh energy W = C10 d + C20 d^2 + C30 d^3, d = I1b - 3, by hand.
+inline double HandW1(double i1b) {
+  const double d = i1b - 3.0;
+  return kC10 + 2.0 * kC20 * d + 3.0 * kC30 * d * d;
+}
+
+// Cauchy stress of F = diag(l1, l2, l2), component 11 (axial) or 22 (lateral), with K = 40 C10:
+// sigma_ii = (2/J) W1 (Bb_ii - I1b/3) + K (J - 1), Bb = J^(-2/3) B.
+inline double HandUniaxialStress(double l1, double l2, bool axial) {
+  const double k = 40.0 * kC10;
+  const double j = l1 * l2 * l2;
+  const double s = std::pow(j, -2.0 / 3.0);
+  const double b11 = s * l1 * l1, b22 = s * l2 * l2;
+  const double i1b = b11 + 2.0 * b22;
+  const double bii = axial ? b11 : b22;
+  return 2.0 / j * HandW1(i1b) * (bii - i1b / 3.0) + k * (j - 1.0);
+}
+
+// The lateral stretch that makes the lateral stress vanish (bisection).
+inline double HandUniaxialLateralStretch(double l1) {
+  double lo = 0.5, hi = 1.2;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (HandUniaxialStress(l1, mid, false) > 0.0 ? hi : lo) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace hotlap::fe::testing
