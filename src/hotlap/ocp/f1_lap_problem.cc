@@ -10,6 +10,7 @@
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
 #include "hotlap/ocp/element_nlp.h"
+#include "hotlap/ocp/lap_elements.h"
 
 namespace hotlap::ocp {
 
@@ -166,16 +167,6 @@ struct ScaledProductFn {
   }
 };
 
-// dn/ds: in (w, u, v, alpha) -> w (u sin alpha + v cos alpha).
-struct OffsetFn {
-  template <class T>
-  void operator()(const T* in, T* out) const {
-    using std::cos;
-    using std::sin;
-    out[0] = in[0] * (in[1] * sin(in[3]) + in[2] * cos(in[3]));
-  }
-};
-
 // The wheels on the track (fastest-lap's "real track limits"): in (n, alpha) ->
 // (n + t/2 cos alpha, n - t/2 cos alpha), the offsets of the axle ends.
 struct WheelOffsetsFn {
@@ -186,16 +177,6 @@ struct WheelOffsetsFn {
     const T d = half_track * cos(in[1]);
     out[0] = in[0] + d;
     out[1] = in[0] - d;
-  }
-};
-
-// A control's smoothness penalty: in (a, b) -> weight (b - a)^2.
-struct RateFn {
-  double weight;
-  template <class T>
-  void operator()(const T* in, T* out) const {
-    const T d = in[1] - in[0];
-    out[0] = weight * d * d;
   }
 };
 
@@ -378,7 +359,8 @@ struct Builder {
         std::shared_ptr<const Element>(MakeElement<4, 1>(LateralFn{1.0 / p.mass_kg}));
     const auto yaw = std::shared_ptr<const Element>(
         MakeElement<2, 1>(ScaledProductFn{1.0 / p.yaw_inertia_kgm2}));
-    const auto offset = std::shared_ptr<const Element>(MakeElement<4, 1>(OffsetFn{}));
+    // The stock car's dn/ds element; this problem's heading error alpha stands for its xi.
+    const auto offset = std::shared_ptr<const Element>(MakeElement<4, 1>(internal::OffsetFn{}));
     const auto heading = std::shared_ptr<const Element>(MakeElement<2, 1>(ScaledProductFn{1.0}));
     for (int k = 0; k < count; ++k) {
       const Node& nd = nodes[k];
@@ -394,10 +376,10 @@ struct Builder {
     // Lap time: the periodic trapezoid of dt/ds.
     for (int k = 0; k < count; ++k) nlp.AddObjectiveLinear(nodes[k].w, ds);
     // fastest-lap's control penalties: c ((u_{k+1} - u_k) / ds)^2 ds.
-    const auto steer_rate =
-        std::shared_ptr<const Element>(MakeElement<2, 1>(RateFn{options.steer_dissipation / ds}));
+    const auto steer_rate = std::shared_ptr<const Element>(
+        MakeElement<2, 1>(internal::RateFn{options.steer_dissipation / ds}));
     const auto throttle_rate = std::shared_ptr<const Element>(
-        MakeElement<2, 1>(RateFn{options.throttle_dissipation / ds}));
+        MakeElement<2, 1>(internal::RateFn{options.throttle_dissipation / ds}));
     for (int k = 0; k < count; ++k) {
       const int k1 = (k + 1) % count;
       if (options.steer_dissipation > 0.0) {
