@@ -326,8 +326,9 @@ int RunLap(const LapArgs& a) {
 
 CommandRunner RegisterLapCommand(CLI::App& app) {
   auto args = std::make_shared<LapArgs>();
-  CLI::App* sub = app.add_subcommand(
-      "lap", "Drive the car round a track (quasi-steady state) with the thermal models");
+  CLI::App* sub = app.add_subcommand("lap",
+                                     "Drive the car round a track with the thermal models: "
+                                     "quasi-steady state, or the optimal lap (--method ocp)");
   sub->add_option("--method", args->method,
                   "qss (quasi-steady state) or ocp (optimal control, as `hotlap optimise`)")
       ->capture_default_str()
