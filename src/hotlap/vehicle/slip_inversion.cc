@@ -130,12 +130,10 @@ FreeWheelSolution SolveFreeWheelSlips(const InvertibleTyre& tyre, const TyreCond
   // asks of the tyre.
   FreeWheelSolution best = solve_from(guess.slip_ratio, guess.slip_angle);
   if (!best.reached || !stable) {
-    const bool best_stable = stable;
     const auto [kappa, alpha] = FreshGuess(tyre, c, fx_target, fy_target);
     FreeWheelSolution fresh = solve_from(kappa, alpha);
     fresh.iterations += best.iterations;
-    if ((fresh.reached && (stable || !best_stable || !best.reached)) ||
-        (!best.reached && error(fresh) < error(best))) {
+    if (fresh.reached || (!best.reached && error(fresh) < error(best))) {
       best = fresh;
     }
   }
@@ -199,14 +197,12 @@ SpoolAxleSolution SolveSpoolAxleSlips(const InvertibleTyre& left, const Invertib
   SpoolAxleSolution best =
       solve_from(Vec(s0, guess.wheels[0].slip_angle, guess.wheels[1].slip_angle));
   if (!best.reached || !stable) {  // afresh, as for a free wheel
-    const bool best_stable = stable;
     // Afresh: each wheel's slip angle from its own Fy, the axle slip from the mean Fx.
     const auto [kl, al] = FreshGuess(left, cl, 0.5 * fx_total, fy_left);
     const auto [kr, ar] = FreshGuess(right, cr, 0.5 * fx_total, fy_right);
     SpoolAxleSolution fresh = solve_from(Vec(0.5 * (kl + kr), al, ar));
     fresh.iterations += best.iterations;
-    if ((fresh.reached && (stable || !best_stable || !best.reached)) ||
-        (!best.reached && error(fresh) < error(best))) {
+    if (fresh.reached || (!best.reached && error(fresh) < error(best))) {
       best = fresh;
     }
   }
