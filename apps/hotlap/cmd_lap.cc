@@ -168,13 +168,20 @@ int RunLap(const LapArgs& a) {
   const vehicle::Car car = vehicle::LoadCar(ResolveCarFile(a.car));
   vehicle::RequireVehicle(car, "`hotlap lap`");
   const track::Track track = track::LoadTrack(a.track);
-  const std::vector<sim::RoadPoint> road =
-      a.line == "centre" ? sim::SampleRoad(track, a.step_m)
-                         : sim::SampleRoadAlongLine(
-                               track,
-                               ocp::MinimumCurvatureLine(track, {.step_m = std::max(a.step_m, 2.0),
-                                                                 .margin_m = a.line_margin_m}),
-                               a.step_m);
+  std::vector<sim::RoadPoint> road;
+  if (a.line == "centre") {
+    road = sim::SampleRoad(track, a.step_m);
+  } else if (a.line == "min-curvature") {
+    road = sim::SampleRoadAlongLine(
+        track,
+        ocp::MinimumCurvatureLine(track,
+                                  {.step_m = std::max(a.step_m, 2.0), .margin_m = a.line_margin_m}),
+        a.step_m);
+  } else {
+    // A line from a file, e.g. the channels of `hotlap optimise` (its distance_m and offset_m).
+    road = sim::SampleRoadAlongLine(
+        track, track::ReadRacingLine(a.line, track, std::max(a.step_m, 2.0)), a.step_m);
+  }
   if (fs::exists(a.out) && !fs::is_directory(a.out)) {
     throw InputError(fmt::format("--out {}: exists and is not a folder", a.out));
   }
@@ -345,9 +352,10 @@ CommandRunner RegisterLapCommand(CLI::App& app) {
   sub->add_option("--out", args->out, "Output folder: lap.csv and lap.html")->required();
   sub->add_option("--json", args->json, "Write the summary as JSON (docs/json-output.md)");
   sub->add_option("--line", args->line,
-                  "The path driven: min-curvature (the minimum-curvature racing line) or centre")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"min-curvature", "centre"}));
+                  "The path driven: min-curvature (the minimum-curvature racing line), centre, "
+                  "or a CSV file with distance_m and offset_m columns (e.g. hotlap optimise's "
+                  "channels)")
+      ->capture_default_str();
   sub->add_option("--line-margin-m", args->line_margin_m,
                   "Space the racing line keeps from each edge, m")
       ->capture_default_str()

@@ -77,8 +77,11 @@ Solved Solve(const OptimalArgs& a, const vehicle::Car& car, const track::Track& 
   s.approaches =
       ocp::FindTurnApproaches(s.run.solution, track, car.vehicle->powertrain.WheelPower());
   const ocp::SolveResult& r = s.run.solution.solve;
-  fmt::print("{}: {} after {} iterations in {:.1f} s: lap {:.3f} s (QSS {:.3f} s)\n", label,
-             r.message, r.iterations, r.solve_seconds, s.figures.lap_time_s, s.run.qss_lap_time);
+  fmt::print(
+      "{}: {} after {} iterations in {:.1f} s: lap {:.3f} s (QSS {:.3f} s on the minimum-curvature "
+      "line, {:.3f} s on this lap's line)\n",
+      label, r.message, r.iterations, r.solve_seconds, s.figures.lap_time_s, s.run.qss_lap_time,
+      s.run.qss_on_line_lap_time);
   return s;
 }
 
@@ -105,6 +108,7 @@ nlohmann::json RunJson(const Solved& s) {
   }
   return {{"lap_time_s", RoundSignificant(f.lap_time_s)},
           {"qss_lap_time_s", RoundSignificant(s.run.qss_lap_time)},
+          {"qss_on_optimal_line_lap_time_s", RoundSignificant(s.run.qss_on_line_lap_time)},
           {"solve_time_s", RoundSignificant(r.solve_seconds)},
           {"ipopt_iterations", r.iterations},
           {"status", r.ok() ? "converged" : "failed"},

@@ -136,6 +136,27 @@ TEST_F(LapCommandTest, StintOfThreeLaps) {
   EXPECT_NEAR(t.Column("distance_m").back(), 3 * 2198.0, 1e-6);
 }
 
+// `--line FILE` drives a line read from a CSV: the min-curvature lap's own channels (distance_m,
+// offset_m) give back the same line, so the same lap to the resampling's accuracy.
+TEST_F(LapCommandTest, LineFromAFileReproducesTheLine) {
+  const fs::path a = dir() / "a", b = dir() / "b";
+  const fs::path ja = dir() / "a.json", jb = dir() / "b.json";
+  ASSERT_EQ(Run("lap --out " + a.string() + " --json " + ja.string()).exit_code, 0);
+  const RunResult r = Run("lap --line " + (a / "lap.csv").string() + " --out " + b.string() +
+                          " --json " + jb.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const double ta = Json(ja)["lap_time_s"].get<double>();
+  const double tb = Json(jb)["lap_time_s"].get<double>();
+  EXPECT_NEAR(tb, ta, 0.01);
+  const CsvTable ca = ReadCsv(a / "lap.csv"), cb = ReadCsv(b / "lap.csv");
+  const std::vector<double>&na = ca.Column("offset_m"), &nb = cb.Column("offset_m");
+  double worst = 0.0;
+  for (size_t k = 0; k < std::min(na.size(), nb.size()); k += 10) {
+    worst = std::max(worst, std::abs(na[k] - nb[k]));
+  }
+  EXPECT_LT(worst, 0.05);  // m: same line, sampled at the same cross-sections to within 1 m
+}
+
 TEST_F(LapCommandTest, BadInputFailsCleanlyWithoutOutput) {
   const fs::path out = dir() / "bad", json = dir() / "bad.json";
   const fs::path thermal_only = dir() / "car.yaml";
@@ -151,6 +172,11 @@ TEST_F(LapCommandTest, BadInputFailsCleanlyWithoutOutput) {
     }
     test::WriteTextFile(thermal_only, text);
   }
+  const fs::path backwards = dir() / "backwards.csv", off_track = dir() / "off.csv",
+                 no_offset = dir() / "no_offset.csv";
+  test::WriteTextFile(backwards, "distance_m,offset_m\n0,0\n100,1\n50,1\n300,0\n400,0\n");
+  test::WriteTextFile(off_track, "distance_m,offset_m\n0,0\n100,40\n200,1\n300,0\n400,0\n");
+  test::WriteTextFile(no_offset, "distance_m,n_m\n0,0\n100,1\n200,1\n300,0\n");
   struct Case {
     std::string args;
     std::string message;
@@ -161,6 +187,10 @@ TEST_F(LapCommandTest, BadInputFailsCleanlyWithoutOutput) {
       {"lap --laps 0", "--laps"},
       {"lap --method qss --compare-disc-limit-C 500", "is for --method ocp"},
       {"lap --step-m 500", "step"},
+      {"lap --line " + (dir() / "missing.csv").string(), "missing.csv"},
+      {"lap --line " + backwards.string(), "does not increase"},
+      {"lap --line " + off_track.string(), "off the track"},
+      {"lap --line " + no_offset.string(), "offset_m"},
   };
   for (const Case& c : cases) {
     const RunResult r = Run(c.args + " --out " + out.string() + " --json " + json.string());

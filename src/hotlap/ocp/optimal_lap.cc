@@ -70,8 +70,17 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
   lap.start_point = options.start_point;
   run.solution = SolveMinimumTimeLap(car, track, lap, warm.laps[1], options.ipopt);
 
-  // The exact models over the solution's channels.
+  // The QSS lap on the optimal line: the same warm-up on the path the optimiser chose.
   const LapSolution& s = run.solution;
+  if (s.distance.size() >= 4 && s.distance.size() == s.n.size()) {
+    std::vector<double> at(s.distance), offset(s.n);
+    if (at.back() >= track.length_m() - 1e-9) at.pop_back(), offset.pop_back();  // closing node
+    const std::vector<sim::RoadPoint> own =
+        sim::SampleRoadAlongLine(track, track::ResampleLine(at, offset, track, 2.0), 1.0);
+    run.qss_on_line_lap_time = sim::RunQssLap(car, own, qss).laps[1].lap_time;
+  }
+
+  // The exact models over the solution's channels.
   if (s.time.size() >= 2) {
     sim::ReplayInputs in;
     in.time = s.time;

@@ -37,7 +37,10 @@ struct OptimalLapOptions {
 
 struct OptimalLapRun {
   LapSolution solution;
-  double qss_lap_time = 0.0;      ///< the QSS flying lap (the guess), s
+  double qss_lap_time = 0.0;  ///< the QSS flying lap (the guess), s
+  /// The QSS flying lap on the optimal lap's own line (same car, same path: the difference left
+  /// is the dynamics the QSS leaves out), s; 0 if the solve gave no solution.
+  double qss_on_line_lap_time = 0.0;
   sim::ReplayInitialState start;  ///< the thermal state at the start line
   /// The solution's channels replayed through the exact thermal models, at the mesh nodes.
   sim::ReplayResult exact;

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "hotlap/common/csv.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
 #include "hotlap/track/track_point.h"
@@ -38,6 +39,57 @@ RacingLine CentreLine(const Track& track, double step_m) {
     line.offset_m.push_back(0.0);
   }
   return line;
+}
+
+RacingLine ResampleLine(std::span<const double> s, std::span<const double> n, const Track& track,
+                        double step_m) {
+  const size_t rows = s.size();
+  const double length = track.length_m();
+  // Linear interpolation between rows; the gap after the last row wraps to the first.
+  const auto offset_at = [&](double x) {
+    const auto it = std::upper_bound(s.begin(), s.end(), x);
+    const size_t hi = static_cast<size_t>(it - s.begin());
+    double s0, n0, s1, n1;
+    if (hi == 0) {
+      s0 = s[rows - 1] - length, n0 = n[rows - 1], s1 = s[0], n1 = n[0];
+    } else if (hi == rows) {
+      s0 = s[rows - 1], n0 = n[rows - 1], s1 = s[0] + length, n1 = n[0];
+    } else {
+      s0 = s[hi - 1], n0 = n[hi - 1], s1 = s[hi], n1 = n[hi];
+    }
+    return s1 > s0 ? n0 + (n1 - n0) * (x - s0) / (s1 - s0) : n0;
+  };
+  RacingLine line = CentreLine(track, step_m);
+  for (size_t k = 0; k < line.s_m.size(); ++k) line.offset_m[k] = offset_at(line.s_m[k]);
+  return line;
+}
+
+RacingLine ReadRacingLine(const std::filesystem::path& path, const Track& track, double step_m) {
+  const CsvTable table = ReadCsv(path);
+  const std::vector<double>& s = table.Column("distance_m");
+  const std::vector<double>& n = table.Column("offset_m");
+  const double length = track.length_m();
+  const size_t rows = s.size();
+  const auto fail = [&](size_t row, const std::string& what) {
+    return InputError(fmt::format("{}:{}: {}", path.string(), table.line_numbers[row], what));
+  };
+  for (size_t r = 0; r < rows; ++r) {
+    if (std::isnan(s[r]) || std::isnan(n[r])) throw fail(r, "empty distance_m or offset_m");
+    if (s[r] < 0.0 || s[r] > length + 1e-6) {
+      throw fail(r, fmt::format("distance_m {} is outside the lap [0, {:.3f}] m", s[r], length));
+    }
+    if (r > 0 && !(s[r] > s[r - 1])) {
+      throw fail(r, fmt::format("distance_m {} does not increase", s[r]));
+    }
+    const TrackPoint p = track.At(std::min(s[r], length));
+    if (n[r] > p.width_left_m || n[r] < -p.width_right_m) {
+      throw fail(r, fmt::format("offset_m {:.3f} is off the track (allowed [{:.3f}, {:.3f}] m)",
+                                n[r], -p.width_right_m, p.width_left_m));
+    }
+  }
+  if (rows < 4)
+    throw InputError(fmt::format("{}: a racing line needs 4 rows or more", path.string()));
+  return ResampleLine(s, n, track, step_m);
 }
 
 std::vector<LinePoint> SampleLine(const Track& track, const RacingLine& line, double step_m) {

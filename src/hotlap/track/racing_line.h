@@ -5,6 +5,8 @@
 ///
 /// How to use: SampleLine(track, line, 1.0) for points at equal spacing along the path.
 
+#include <filesystem>
+#include <span>
 #include <vector>
 
 #include "hotlap/track/track.h"
@@ -23,6 +25,20 @@ struct RacingLine {
 
 /// The centre line itself (zero offset) at `step_m` spacing.
 RacingLine CentreLine(const Track& track, double step_m);
+
+/// The line through offsets n at increasing centre-line distances s in [0, lap length] (sizes
+/// equal, 4 or more), resampled at round(length / step_m) equal intervals, linear between the
+/// points and wrapping round the start line.
+RacingLine ResampleLine(std::span<const double> s, std::span<const double> n, const Track& track,
+                        double step_m);
+
+/// A line read from a CSV file with columns `distance_m` (centre-line distance, increasing, within
+/// [0, lap length]) and `offset_m` (lateral offset, positive left), such as the channels of
+/// `hotlap optimise`; resampled at round(length / step_m) equal intervals (linear between the
+/// rows, wrapping round the start line). InputError naming the file and row when a column is
+/// missing, a cell empty, the distances not increasing or outside the lap, or an offset off the
+/// track.
+RacingLine ReadRacingLine(const std::filesystem::path& path, const Track& track, double step_m);
 
 /// A point of a racing line.
 struct LinePoint {
