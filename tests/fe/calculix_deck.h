@@ -222,8 +222,9 @@ struct CalculixRun {
   bool ok = false;  ///< exit 0, no "*ERROR" in the log
 };
 
-/// Writes `deck_text` to `folder`/`job`.inp and runs `ccx` there (one thread), N.B. ccx exits with
-/// 0 even after "*ERROR: too many cutbacks"; `ok` also requires that no *ERROR was logged.
+/// Writes `deck_text` to `folder`/`job`.inp and runs `ccx` there on one thread. ccx exits with 0
+/// even after "*ERROR: too many cutbacks", so `ok` also requires that no *ERROR was logged, and
+/// callers check that every increment is in the .dat file.
 inline CalculixRun RunCalculix(const std::filesystem::path& ccx,
                                const std::filesystem::path& folder, const std::string& job,
                                const std::string& deck_text) {
