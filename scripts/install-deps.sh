@@ -31,6 +31,7 @@ packages=(
 if [ "$with_tests" -eq 1 ]; then
   packages+=(
     chromium             # headless browser: the tests check that HTML reports render without errors
+    calculix-ccx         # CalculiX: implicit reference for the FE solver's pressed-block test
   )
 fi
 

@@ -2,7 +2,7 @@
 # The README's second command (and CI's): install dependencies, build, run the whole test suite.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh --test  # --test: also headless Chromium, for the HTML report tests
+bash scripts/install-deps.sh --test  # --test: also Chromium (report tests), CalculiX (FE check)
 bash scripts/build.sh
 cd build
 ctest --output-on-failure --parallel "$(nproc)" --timeout 900
