@@ -35,9 +35,9 @@ const vehicle::Car& Car() {
   return car;
 }
 
-// The free lap, kept for the limited one's start.
-std::vector<double>& FreeSolution() {
-  static std::vector<double> x;
+// The free lap, kept for the limited one's (warm) start.
+ocp::SolveResult& FreeSolution() {
+  static ocp::SolveResult x;
   return x;
 }
 
@@ -50,16 +50,19 @@ void BM_DarlingtonOptimalLap(benchmark::State& state) {
   if (state.range(0) == 1) {
     // As `hotlap lap --method ocp --compare-disc-limit-C 500`: from the free lap's solution.
     o.front_disc_limit = CelsiusToKelvin(500.0);
-    if (FreeSolution().empty()) {
+    if (FreeSolution().x.empty()) {
       ocp::OptimalLapOptions free = o;
       free.front_disc_limit.reset();
-      FreeSolution() = ocp::RunOptimalLap(Car(), track, free).solution.solve.x;
+      FreeSolution() = ocp::RunOptimalLap(Car(), track, free).solution.solve;
     }
-    o.start_point = FreeSolution();
+    o.start_point = FreeSolution().x;
+    o.ipopt.warm_z_lower = FreeSolution().z_lower;
+    o.ipopt.warm_z_upper = FreeSolution().z_upper;
+    o.ipopt.warm_lambda = FreeSolution().lambda;
   }
   ocp::OptimalLapRun run;
   for (auto _ : state) run = ocp::RunOptimalLap(Car(), track, o);
-  if (state.range(0) == 0 && run.solution.solve.ok()) FreeSolution() = run.solution.solve.x;
+  if (state.range(0) == 0 && run.solution.solve.ok()) FreeSolution() = run.solution.solve;
   state.counters["lap_time_s"] = run.solution.lap_time;
   state.counters["iterations"] = run.solution.solve.iterations;
   state.counters["ipopt_solve_s"] = run.solution.solve.solve_seconds;

@@ -46,9 +46,15 @@ struct Solved {
 
 Solved Solve(const OptimalArgs& a, const vehicle::Car& car, const track::Track& track,
              std::optional<double> limit_C, double step_m, const std::string& label,
-             const std::vector<double>& start_point = {}) {
+             const ocp::SolveResult* from = nullptr) {
   ocp::OptimalLapOptions o;
-  o.start_point = start_point;
+  if (from != nullptr) {
+    // Warm start: the other solution's point and multipliers (same variables and rows).
+    o.start_point = from->x;
+    o.ipopt.warm_z_lower = from->z_lower;
+    o.ipopt.warm_z_upper = from->z_upper;
+    o.ipopt.warm_lambda = from->lambda;
+  }
   o.step_m = step_m;
   if (limit_C) o.front_disc_limit = CelsiusToKelvin(*limit_C);
   o.thermal_start = ParseStart(a.thermal_start);
@@ -67,7 +73,7 @@ Solved Solve(const OptimalArgs& a, const vehicle::Car& car, const track::Track& 
   };
   fmt::print("{}: solving ({:.1f} m mesh{}{})...\n", label, step_m,
              limit_C ? fmt::format(", front discs <= {:g} degC", *limit_C) : "",
-             start_point.empty() ? "" : ", from the other solution");
+             from == nullptr ? "" : ", from the other solution");
   std::fflush(stdout);
   Solved s;
   s.label = label;
@@ -238,7 +244,7 @@ int RunOptimal(const OptimalArgs& a) {
     const ocp::SolveResult& free = runs[0].run.solution.solve;
     runs.push_back(Solve(a, car, track, a.compare_disc_limit_C, a.step_m,
                          fmt::format("discs <= {:g} degC", *a.compare_disc_limit_C),
-                         free.ok() ? free.x : std::vector<double>()));
+                         free.ok() ? &free : nullptr));
     // The problem is not convex, so each solve finds a local optimum. The limited lap is a
     // feasible point of the free problem: if it is faster, the free solve stopped at a worse
     // local optimum, and is solved again from the limited lap (then the better of the two kept).
@@ -250,7 +256,7 @@ int RunOptimal(const OptimalArgs& a) {
           "local optimum; solving it again from the limited lap\n",
           1e3 * (first.figures.lap_time_s - limited.figures.lap_time_s));
       Solved again =
-          Solve(a, car, track, std::nullopt, a.step_m, "no limit", limited.run.solution.solve.x);
+          Solve(a, car, track, std::nullopt, a.step_m, "no limit", &limited.run.solution.solve);
       if (again.run.solution.solve.ok() &&
           (!first.run.solution.solve.ok() || again.figures.lap_time_s < first.figures.lap_time_s)) {
         again.run.solution.solve.iterations += first.run.solution.solve.iterations;

@@ -4,6 +4,7 @@
 
 #include "hotlap/ocp/ipopt_solve.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -55,6 +56,72 @@ TEST(IpoptSolveTest, DoubleIntegratorMinimumTimeIsBangBang) {
   // Full throttle in the first half, full brake in the second (away from the switch).
   for (int k = 2; k < n / 2 - 2; ++k) EXPECT_NEAR(r.x[u[k]], 1.0, 1e-4) << k;
   for (int k = n / 2 + 3; k <= n - 2; ++k) EXPECT_NEAR(r.x[u[k]], -1.0, 1e-4) << k;
+}
+
+// The same double integrator with |u| <= u_max (T = 2 / sqrt(u_max)), for the warm start.
+ElementNlp DoubleIntegrator(int n, double u_max, int* t_index) {
+  ElementNlp nlp;
+  const int t = nlp.AddVariable(3.0, 0.1, 10.0, 1.0);
+  std::vector<int> x(n + 1), v(n + 1), u(n + 1);
+  for (int k = 0; k <= n; ++k) {
+    const double s = static_cast<double>(k) / n;
+    const bool end = k == 0 || k == n;
+    x[k] = nlp.AddVariable(s, end ? s : -1e19, end ? s : 1e19, 1.0);
+    v[k] = nlp.AddVariable(0.5, end ? 0.0 : -1e19, end ? 0.0 : 1e19, 1.0);
+    u[k] = nlp.AddVariable(0.0, -u_max, u_max, 1.0);
+  }
+  const std::shared_ptr<const Element> trap = MakeElement<3, 1>(FreeTimeTrapezoid{double(n)});
+  for (int k = 0; k < n; ++k) {
+    const int rx = nlp.AddConstraint(0, 0, 1.0), rv = nlp.AddConstraint(0, 0, 1.0);
+    nlp.AddLinear(rx, x[k + 1], 1.0);
+    nlp.AddLinear(rx, x[k], -1.0);
+    nlp.AddElement(trap, {t, v[k], v[k + 1]}, {{{rx, -1.0}}});
+    nlp.AddLinear(rv, v[k + 1], 1.0);
+    nlp.AddLinear(rv, v[k], -1.0);
+    nlp.AddElement(trap, {t, u[k], u[k + 1]}, {{{rv, -1.0}}});
+  }
+  nlp.AddObjectiveLinear(t, 1.0);
+  nlp.Finalize();
+  *t_index = t;
+  return nlp;
+}
+
+// A warm start from a neighbouring problem's point and multipliers (as the limited lap starts
+// from the free one) reaches the same optimum as a cold start, in fewer iterations; multipliers
+// of the wrong size are ignored (a cold start).
+TEST(IpoptSolveTest, WarmStartFromANeighbourConvergesFaster) {
+  const int n = 40;
+  int t = 0;
+  const ElementNlp first = DoubleIntegrator(n, 1.0, &t);
+  const SolveResult a = SolveWithIpopt(first, {});
+  ASSERT_TRUE(a.ok()) << a.message;
+  ASSERT_EQ(a.z_lower.size(), static_cast<size_t>(first.variables()));
+  ASSERT_EQ(a.lambda.size(), static_cast<size_t>(first.constraints()));
+
+  ElementNlp tighter = DoubleIntegrator(n, 0.8, &t);
+  const SolveResult cold = SolveWithIpopt(tighter, {});
+  for (int i = 0; i < tighter.variables(); ++i) {
+    tighter.set_initial(i, std::clamp(a.x[i], tighter.lower(i), tighter.upper(i)));
+  }
+  IpoptOptions warm;
+  warm.warm_z_lower = a.z_lower;
+  warm.warm_z_upper = a.z_upper;
+  warm.warm_lambda = a.lambda;
+  const SolveResult w = SolveWithIpopt(tighter, warm);
+  ASSERT_TRUE(cold.ok()) << cold.message;
+  ASSERT_TRUE(w.ok()) << w.message;
+  EXPECT_NEAR(w.x[t], 2.0 / std::sqrt(0.8), 2.0 / n);
+  EXPECT_NEAR(w.x[t], cold.x[t], 1e-6);
+  EXPECT_LT(w.iterations, cold.iterations);
+
+  IpoptOptions wrong = warm;
+  wrong.warm_lambda.pop_back();
+  const SolveResult ignored = SolveWithIpopt(tighter, wrong);
+  ASSERT_TRUE(ignored.ok()) << ignored.message;
+  EXPECT_NEAR(ignored.x[t], cold.x[t], 1e-6);
+  // The multipliers are what the warm start adds over the point alone (here 4 iterations against
+  // 5 from the point alone and 8 cold).
+  EXPECT_LT(w.iterations, ignored.iterations);
 }
 
 struct HalfSquareTrapezoid {

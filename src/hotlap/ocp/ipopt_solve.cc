@@ -1,5 +1,6 @@
 #include "hotlap/ocp/ipopt_solve.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -49,11 +50,26 @@ class Adaptor : public Ipopt::TNLP {
     return true;
   }
 
-  bool get_starting_point(Index n, bool init_x, Number* x, bool init_z, Number*, Number*, Index,
-                          bool init_lambda, Number*) override {
-    if (init_z || init_lambda) return false;
+  bool get_starting_point(Index n, bool init_x, Number* x, bool init_z, Number* z_l, Number* z_u,
+                          Index m, bool init_lambda, Number* lambda) override {
     if (init_x) nlp_.ScaledStart(x);
+    if (init_z) {
+      if (!WarmStart()) return false;
+      std::copy(options_.warm_z_lower.begin(), options_.warm_z_lower.end(), z_l);
+      std::copy(options_.warm_z_upper.begin(), options_.warm_z_upper.end(), z_u);
+    }
+    if (init_lambda) {
+      if (!WarmStart()) return false;
+      std::copy(options_.warm_lambda.begin(), options_.warm_lambda.end(), lambda);
+    }
+    (void)n, (void)m;
     return true;
+  }
+
+  bool WarmStart() const {
+    const size_t n = static_cast<size_t>(nlp_.variables());
+    return options_.warm_z_lower.size() == n && options_.warm_z_upper.size() == n &&
+           options_.warm_lambda.size() == static_cast<size_t>(nlp_.constraints());
   }
 
   bool eval_f(Index, const Number* x, bool, Number& obj_value) override {
@@ -107,10 +123,16 @@ class Adaptor : public Ipopt::TNLP {
     return true;
   }
 
-  void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number*,
-                         const Number*, Index, const Number*, const Number*, Number obj_value,
-                         const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities* q) override {
+  void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number* z_l,
+                         const Number* z_u, Index m, const Number*, const Number* lambda,
+                         Number obj_value, const Ipopt::IpoptData*,
+                         Ipopt::IpoptCalculatedQuantities* q) override {
     result_.x = nlp_.Unscale(x);
+    if (z_l != nullptr && z_u != nullptr && lambda != nullptr) {
+      result_.z_lower.assign(z_l, z_l + n);
+      result_.z_upper.assign(z_u, z_u + n);
+      result_.lambda.assign(lambda, lambda + m);
+    }
     result_.objective = obj_value;
     if (q != nullptr) {
       result_.primal_infeasibility = q->curr_constraint_violation();
@@ -189,7 +211,24 @@ SolveResult SolveWithIpopt(const ElementNlp& nlp, const IpoptOptions& options) {
   app->Options()->SetIntegerValue("print_level", options.print_level);
   app->Options()->SetStringValue("hessian_approximation", "exact");
   app->Options()->SetStringValue("mu_strategy", "adaptive");
+  app->Options()->SetStringValue("alpha_for_y", options.alpha_for_y);
   app->Options()->SetStringValue("sb", "yes");  // no banner
+  const size_t n = static_cast<size_t>(nlp.variables());
+  if (options.warm_z_lower.size() == n && options.warm_z_upper.size() == n &&
+      options.warm_lambda.size() == static_cast<size_t>(nlp.constraints())) {
+    // Start at the given point and multipliers, barely pushed off the bounds, with a small
+    // barrier parameter.
+    app->Options()->SetStringValue("warm_start_init_point", "yes");
+    // The adaptive barrier update stalls from a warm start (its first mu comes from the
+    // multipliers' complementarity); the monotone one brings mu down from warm_mu.
+    app->Options()->SetStringValue("mu_strategy", "monotone");
+    app->Options()->SetNumericValue("mu_init", options.warm_mu);
+    for (const char* name :
+         {"warm_start_bound_push", "warm_start_bound_frac", "warm_start_slack_bound_push",
+          "warm_start_slack_bound_frac", "warm_start_mult_bound_push"}) {
+      app->Options()->SetNumericValue(name, 1e-6);
+    }
+  }
   for (const auto& [name, value] : options.extra) {
     // The value as the option's type takes it: integer, number or text.
     char* end = nullptr;

@@ -18,10 +18,21 @@ struct IpoptOptions {
   int max_iterations = 1000;
   double max_cpu_seconds = 600.0;
   int print_level = 0;  ///< Ipopt's own output, 0 = none
+  /// Ipopt `alpha_for_y`: the step size for the equality multipliers ("primal", Ipopt's default,
+  /// or e.g. "min-dual-infeas", which cuts the lap problem's iterations by a quarter).
+  std::string alpha_for_y = "primal";
   /// Further Ipopt options by name (e.g. {"mumps_pivot_order", "5"}), the value as the option's
   /// type takes it (integer, number or text); an unknown name or a value it refuses is an
   /// InputError.
   std::vector<std::pair<std::string, std::string>> extra;
+  /// Warm start: the bound and constraint multipliers of an earlier solve of a programme with the
+  /// same variables and rows (SolveResult's, as Ipopt saw them). When all three have the right
+  /// sizes, Ipopt starts from them and nlp's initial point with a small barrier parameter
+  /// (`warm_start_init_point`), instead of pushing the start into the interior and restarting
+  /// the barrier.
+  std::vector<double> warm_z_lower, warm_z_upper, warm_lambda;
+  /// The barrier parameter a warm start begins with.
+  double warm_mu = 1e-4;
   /// Called at every iteration with (iteration, objective, primal infeasibility, dual
   /// infeasibility); return false to stop.
   std::function<bool(int, double, double, double)> on_iteration;
@@ -44,6 +55,8 @@ struct SolveResult {
   SolveStatus status = SolveStatus::kOther;
   std::string message;    ///< the status in plain words
   std::vector<double> x;  ///< the last (best) point, physical units
+  /// Multipliers at x, of the scaled programme (for IpoptOptions' warm start).
+  std::vector<double> z_lower, z_upper, lambda;
   double objective = 0.0;
   int iterations = 0;
   double primal_infeasibility = 0.0;  ///< max |constraint violation| at x, scaled
