@@ -1,16 +1,27 @@
 // Finite-element tyre speed: element updates per second of the explicit solver on the generated
 // 235/75R15 (data/fe/paper_235_75r15.yaml), inflated and pressed on the road (contact active),
 // at the shipped coarse mesh and at the paper's mesh size (33,792 elements here against the
-// paper's 33,794: 44 meridional x 4 through the wall x 192 around). Also reports the projected
-// wall time of the paper's 1.5 s braking event at that mesh and its stable time step
-// (issue 9's goal: under 2 hours on this 2-core machine; the paper took 26 h 27 min on 8 cores).
+// paper's 33,794: 44 meridional x 4 through the wall x 192 around), on 1 thread and on N threads
+// (the element loop is OpenMP-parallel; docs/fe-tyre.md), with both parallel assemblies
+// (per-thread force buffers, the default: on one thread the plain serial loop; element colours).
+// Also reports the projected wall time of the paper's 1.5 s braking event at each mesh and thread
+// count, and its stable time step (issue 9's goal: under 2 hours on this 2-core machine; the paper
+// took 26 h 27 min on 8 cores).
 //
-// Run: ./build/fe_bench --benchmark_min_time=1
+// Run: ./build/fe_bench [--threads N] [google-benchmark flags]
+//   --threads N: the multi-threaded runs use N threads (default: all cores, OpenMP's default).
 
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include "hotlap/fe/fe_config.h"
 #include "hotlap/fe/tyre_steps.h"
@@ -29,22 +40,32 @@ fe::FeConfig Config(bool paper_mesh) {
     c.mesh.circumferential_elements_contact = 48;
     c.mesh.circumferential_elements_rest = 144;
   }
-  return c;
-}
-
-// Steps of the loaded tyre: the road, the pressure and the rim all active.
-void BM_FeTyreSteps(benchmark::State& state) {
-  const bool paper_mesh = state.range(0) == 1;
-  fe::FeConfig c = Config(paper_mesh);
   // Short quasi-static steps: only the state matters here, not its accuracy.
   c.inflate.ramp_s = c.inflate.hold_s = 1e-4;
   c.footprint.ramp_s = c.footprint.hold_s = 1e-4;
-  fe::TyreRun run(c);
-  fe::StepHooks hooks;
-  hooks.history_interval_s = 1.0;
-  run.Inflate(hooks);
-  run.Footprint(hooks);
+  return c;
+}
+
+// The loaded tyre (road, pressure and rim active), prepared once per mesh and copied into each
+// benchmark.
+const fe::TyreRun& Prepared(bool paper_mesh) {
+  static std::map<bool, std::unique_ptr<fe::TyreRun>> prepared;
+  auto& run = prepared[paper_mesh];
+  if (!run) {
+    run = std::make_unique<fe::TyreRun>(Config(paper_mesh));
+    fe::StepHooks hooks;
+    hooks.history_interval_s = 1.0;
+    run->Inflate(hooks);
+    run->Footprint(hooks);
+  }
+  return *run;
+}
+
+void BM_FeTyreSteps(benchmark::State& state, bool paper_mesh, int threads, fe::Assembly assembly) {
+  fe::TyreRun run = Prepared(paper_mesh);
   fe::ExplicitSolver& solver = run.mutable_solver();
+  solver.set_threads(threads);
+  solver.set_assembly(assembly);
   const double elements = static_cast<double>(run.tyre().mesh.elements.size());
   long steps = 0;
   const auto t0 = std::chrono::steady_clock::now();
@@ -54,12 +75,52 @@ void BM_FeTyreSteps(benchmark::State& state) {
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   state.counters["elements"] = elements;
+  state.counters["threads"] = solver.threads();
+  state.counters["colours"] = solver.colours();
   state.counters["element_updates_per_s"] =
       benchmark::Counter(elements * steps, benchmark::Counter::kIsRate);
   state.counters["time_step_us"] = 1e6 * solver.time_step();
-  // Projected wall time of a 1.5 s event on one core, hours: (time per step) x (1.5 s / dt).
+  // Projected wall time of a 1.5 s event, hours: (time per step) x (1.5 s / dt).
   state.counters["event_1p5s_hours"] = wall / steps * (1.5 / solver.time_step()) / 3600.0;
 }
-BENCHMARK(BM_FeTyreSteps)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 }  // namespace
+
+int main(int argc, char** argv) {
+  // --threads N is ours; the rest goes to Google Benchmark.
+  int threads = 0;
+  std::vector<char*> rest;
+  for (int k = 0; k < argc; ++k) {
+    if (std::strcmp(argv[k], "--threads") == 0 && k + 1 < argc) {
+      threads = std::atoi(argv[++k]);
+      if (threads < 1) {
+        std::fprintf(stderr, "fe_bench: --threads wants a whole number >= 1, got '%s'\n", argv[k]);
+        return 2;
+      }
+    } else {
+      rest.push_back(argv[k]);
+    }
+  }
+  if (threads == 0) threads = fe::DefaultThreadCount();
+  std::vector<int> counts = {1};
+  if (threads > 1) counts.push_back(threads);
+  for (const bool paper : {false, true}) {
+    for (const int n : counts) {
+      for (const fe::Assembly assembly : {fe::Assembly::kColoured, fe::Assembly::kThreadBuffers}) {
+        const std::string name = std::string("BM_FeTyreSteps/") + (paper ? "paper" : "shipped") +
+                                 "/threads:" + std::to_string(n) + "/" +
+                                 (assembly == fe::Assembly::kColoured ? "coloured" : "buffers");
+        benchmark::RegisterBenchmark(name.c_str(), BM_FeTyreSteps, paper, n, assembly)
+            ->Unit(benchmark::kMillisecond)
+            ->MinTime(2.0)
+            ->UseRealTime();
+      }
+    }
+  }
+  int n_args = static_cast<int>(rest.size());
+  benchmark::Initialize(&n_args, rest.data());
+  if (benchmark::ReportUnrecognizedArguments(n_args, rest.data())) return 2;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,11 +1,15 @@
 // `hotlap fe inflate|footprint|roll|abs`: the finite-element tyre's steps (docs/fe-tyre.md).
 // Each step runs the ones before it (footprint inflates first, and so on). Outputs: a history CSV
 // per step, the footprint pressure map (CSV and SVG), deformed shapes as .vtu, a JSON summary.
+// The abs step can write checkpoints (--checkpoint-every-s) and continue from one (--restart).
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <deque>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,6 +23,7 @@
 #include "hotlap/common/atomic_file.h"
 #include "hotlap/common/csv.h"
 #include "hotlap/common/error.h"
+#include "hotlap/fe/checkpoint.h"
 #include "hotlap/fe/fe_config.h"
 #include "hotlap/fe/tyre_steps.h"
 #include "hotlap/fe/vtu_writer.h"
@@ -36,7 +41,124 @@ struct FeArgs {
   std::string config;
   std::string out;
   std::string json;
-  double duration_s = 0.0;  // 0: the file's
+  double duration_s = 0.0;          // 0: the file's
+  int threads = 0;                  // 0: OpenMP's default (all cores)
+  double checkpoint_every_s = 0.0;  // 0: no checkpoints
+  std::string restart;              // checkpoint to continue from
+};
+
+constexpr const char* kCheckpointName = "abs_checkpoint.bin";
+
+/// What the checkpoint is for: the mesh and the bytes of both configuration files (the FE file
+/// and the ABS file it names). --duration-s is not part of it: a restart may run longer.
+fe::CheckpointKey MakeCheckpointKey(const fe::TyreRun& run) {
+  const auto bytes = [](const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    if (!in) throw InputError(fmt::format("cannot read '{}'", p.string()));
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  fe::CheckpointKey key;
+  key.mesh_hash = fe::HashMesh(run.tyre().mesh);
+  key.nodes = run.tyre().mesh.nodes.size();
+  key.elements = run.tyre().mesh.elements.size();
+  key.config_hash =
+      fe::Fnv1a64(bytes(run.config().abs_config), fe::Fnv1a64(bytes(run.config().file)));
+  return key;
+}
+
+/// The ABS controller, its hydraulic delay line and the wheel-cylinder pressure, stepped at the
+/// controller's period inside the FE braking step, with what a checkpoint needs.
+class AbsTorque {
+ public:
+  AbsTorque(const sim::AbsConfig& ac, const brake::AbsControllerParams& cp)
+      : ac_(ac), cp_(cp), delay_(ac.DelayTicks(), 0.0) {}
+
+  /// Brake torque capacity at brake-step time t, N m.
+  double operator()(double t, double vx, double spin) {
+    while (t >= next_tick_ - 1e-12) {
+      const brake::AbsCommand cmd =
+          brake::StepAbsController(cp_, state_, {vx, spin, ac_.driver.PressureAt(next_tick_)});
+      target_ = Push(cmd.pressure_target);
+      next_tick_ += cp_.period_s;
+    }
+    const brake::BrakeHydraulicsParams<double>& hyd = ac_.plant.hydraulics;
+    pressure_ += (t - t_prev_) * brake::CalcPressureRate(hyd, pressure_, target_);
+    t_prev_ = t;
+    return brake::CalcBrakeTorqueCapacity(hyd, pressure_);
+  }
+  const brake::AbsControllerState& state() const { return state_; }
+
+  void Save(fe::BinaryWriter& w) const {
+    w.PutTag("ABS_");
+    const brake::AbsControllerState& s = state_;
+    w.PutU64(static_cast<std::uint64_t>(s.state));
+    w.PutU64(static_cast<std::uint64_t>(s.hold_phase));
+    w.PutU64((s.has_previous ? 1 : 0) | (s.seen_accel_above_a ? 2 : 0));
+    w.PutI64(s.cycles);
+    w.PutI64(s.ticks);
+    for (double d :
+         {s.pressure_command, s.time_in_state, s.step_timer, s.previous_wheel_speed,
+          s.release_pressure, s.slip, s.wheel_accel, next_tick_, target_, pressure_, t_prev_}) {
+      w.PutDouble(d);
+    }
+    w.PutDoubles(std::vector<double>(pushed_.begin(), pushed_.end()));
+  }
+  void Load(fe::BinaryReader& r) {
+    r.ExpectTag("ABS_");
+    brake::AbsControllerState s;
+    const std::uint64_t state = r.GetU64(), phase = r.GetU64(), flags = r.GetU64();
+    if (state > static_cast<std::uint64_t>(brake::AbsState::kExit) ||
+        phase > static_cast<std::uint64_t>(brake::AbsHoldPhase::kAfterFastIncrease) || flags > 3) {
+      r.Damaged("an ABS controller state out of range");
+    }
+    s.state = static_cast<brake::AbsState>(state);
+    s.hold_phase = static_cast<brake::AbsHoldPhase>(phase);
+    s.has_previous = flags & 1;
+    s.seen_accel_above_a = flags & 2;
+    const std::int64_t cycles = r.GetI64(), ticks = r.GetI64();
+    if (cycles < 0 || ticks < 0 || cycles > ticks || ticks > (std::int64_t{1} << 40)) {
+      r.Damaged("ABS controller counters out of range");
+    }
+    s.cycles = static_cast<int>(cycles);
+    s.ticks = static_cast<int>(ticks);
+    double next_tick, target, pressure, t_prev;
+    for (double* d :
+         {&s.pressure_command, &s.time_in_state, &s.step_timer, &s.previous_wheel_speed,
+          &s.release_pressure, &s.slip, &s.wheel_accel, &next_tick, &target, &pressure, &t_prev}) {
+      *d = r.GetFinite();
+    }
+    const size_t n = r.GetCount(sizeof(double));
+    if (n > static_cast<size_t>(std::max(0, ac_.DelayTicks()))) {
+      r.Damaged("more delayed pressure commands than the hydraulic delay holds");
+    }
+    std::vector<double> pushed(n);
+    for (double& d : pushed) d = r.GetFinite();
+    // Everything read: restore. The delay line is rebuilt by pushing the pending commands again.
+    state_ = s;
+    next_tick_ = next_tick;
+    target_ = target;
+    pressure_ = pressure;
+    t_prev_ = t_prev;
+    delay_ = brake::PressureDelayLine(ac_.DelayTicks(), 0.0);
+    pushed_.clear();
+    for (double d : pushed) Push(d);
+  }
+
+ private:
+  double Push(double command) {
+    pushed_.push_back(command);
+    if (pushed_.size() > static_cast<size_t>(std::max(0, delay_.delay_ticks()))) {
+      pushed_.pop_front();
+    }
+    return delay_.Push(command);
+  }
+
+  const sim::AbsConfig& ac_;
+  brake::AbsControllerParams cp_;
+  brake::AbsControllerState state_;
+  brake::PressureDelayLine delay_;
+  std::deque<double> pushed_;  // the last delay_ticks commands pushed, oldest first
+  double next_tick_ = 0.0, target_ = 0.0, pressure_ = 0.0, t_prev_ = 0.0;
 };
 
 /// The history CSV of one step (docs/fe-tyre.md lists the columns).
@@ -110,6 +232,12 @@ int RunFeCommand(const FeArgs& a) {
   if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
   fe::FeConfig config = fe::LoadFeConfig(a.config);
   const int last = a.step == "inflate" ? 0 : a.step == "footprint" ? 1 : a.step == "roll" ? 2 : 3;
+  if (last != 3 && !a.restart.empty()) {
+    throw InputError("--restart: only `hotlap fe abs` continues from a checkpoint");
+  }
+  if (last != 3 && a.checkpoint_every_s > 0.0) {
+    throw InputError("--checkpoint-every-s: only `hotlap fe abs` writes checkpoints");
+  }
   if (a.duration_s > 0.0) {
     if (last == 2) config.roll_duration_s = a.duration_s;
     if (last == 3) config.abs_duration_s = a.duration_s;
@@ -118,14 +246,55 @@ int RunFeCommand(const FeArgs& a) {
   if (last == 3) abs_config = sim::LoadAbsConfig(config.abs_config);
 
   fe::TyreRun run(config);
+  run.mutable_solver().set_threads(a.threads);
   const fe::ExplicitSolver& solver = run.solver();
   const fe::MassScalingReport& ms = solver.mass_scaling();
   std::fprintf(stderr,
                "fe: %zu elements, %zu nodes; time step %.3g s (stable %.3g s unscaled); mass "
-               "%.3f kg, mass scaling added %.3f kg in %d elements\n",
+               "%.3f kg, mass scaling added %.3f kg in %d elements; %d threads\n",
                run.tyre().mesh.elements.size(), run.tyre().mesh.nodes.size(), solver.time_step(),
-               ms.stable_step_unscaled_s, ms.physical_mass_kg, ms.added_mass_kg,
-               ms.scaled_elements);
+               ms.stable_step_unscaled_s, ms.physical_mass_kg, ms.added_mass_kg, ms.scaled_elements,
+               solver.threads());
+
+  // The ABS controller of the abs step (the ABS issue's controller and hydraulics set the brake
+  // torque at the controller's period; its R_l is the free-rolling radius of the roll step,
+  // (002:2), known once the roll step ran or the checkpoint is read).
+  std::unique_ptr<AbsTorque> abs_torque;
+  const auto make_abs_torque = [&] {
+    brake::AbsControllerParams cp = abs_config->controller;
+    cp.wheel_radius_m = run.slip_radius_m();
+    abs_torque = std::make_unique<AbsTorque>(*abs_config, cp);
+  };
+  nlohmann::json j;
+  fe::CheckpointKey key;
+  if (last == 3 && (a.checkpoint_every_s > 0.0 || !a.restart.empty())) key = MakeCheckpointKey(run);
+  if (!a.restart.empty()) {
+    // Read and check everything before anything is written.
+    const std::string payload = fe::ReadCheckpointFile(a.restart, key);
+    fe::BinaryReader r(payload, a.restart);
+    run.LoadState(r);
+    make_abs_torque();
+    abs_torque->Load(r);
+    r.ExpectTag("JSON");
+    try {
+      j = nlohmann::json::parse(r.GetString());
+    } catch (const nlohmann::json::exception&) {
+      r.Damaged("its summary of the earlier steps is not JSON");
+    }
+    r.ExpectTag("THRD");
+    const std::uint64_t threads = r.GetU64();
+    r.ExpectEnd();
+    if (threads != static_cast<std::uint64_t>(solver.threads())) {
+      std::fprintf(stderr,
+                   "fe: the checkpoint was written on %llu threads, this run uses %d: it continues "
+                   "to round-off, not bit for bit (the element forces are summed per thread)\n",
+                   static_cast<unsigned long long>(threads), solver.threads());
+    }
+    if (!j.is_object()) r.Damaged("its summary of the earlier steps is not a JSON object");
+    std::fprintf(stderr, "fe: restarting from '%s' at t = %.6g s (%.6g s into the abs step)\n",
+                 a.restart.c_str(), solver.time(), solver.time() - run.brake_start_s());
+  }
+  const long steps_at_start = solver.steps();
 
   const auto wall0 = std::chrono::steady_clock::now();
   fe::StepHooks hooks;
@@ -149,7 +318,7 @@ int RunFeCommand(const FeArgs& a) {
     step_wall0 = std::chrono::steady_clock::now();
   };
 
-  nlohmann::json j;
+  const bool restarted = !a.restart.empty();
   j["config"] = config.file.string();
   j["step"] = a.step;
   j["mesh"] = {{"elements", run.tyre().mesh.elements.size()},
@@ -160,95 +329,100 @@ int RunFeCommand(const FeArgs& a) {
                {"mass_scaling_added_kg", RoundSignificant(ms.added_mass_kg, 6)},
                {"mass_scaled_elements", ms.scaled_elements}};
 
-  begin();
-  const fe::InflateResult inf = run.Inflate(hooks);
-  WriteHistoryCsv(out / "inflate_history.csv", "inflate", config, inf.history, 0.0);
-  j["inflate"] = {
-      {"pressure_kPa", RoundSignificant(1e-3 * inf.pressure_Pa, 6)},
-      {"outer_radius_before_mm", RoundSignificant(1e3 * inf.outer_radius_before_m, 6)},
-      {"outer_radius_after_mm", RoundSignificant(1e3 * inf.outer_radius_after_m, 6)},
-      {"section_width_before_mm", RoundSignificant(1e3 * inf.section_width_before_m, 6)},
-      {"section_width_after_mm", RoundSignificant(1e3 * inf.section_width_after_m, 6)},
-      {"roundness_error_mm", RoundSignificant(1e3 * inf.max_roundness_error_m, 3)},
-      {"energies", EnergiesJson(solver.energies())}};
-  std::printf("inflate: %.0f kPa, outer radius %.2f -> %.2f mm, section width %.1f -> %.1f mm\n",
-              1e-3 * inf.pressure_Pa, 1e3 * inf.outer_radius_before_m,
-              1e3 * inf.outer_radius_after_m, 1e3 * inf.section_width_before_m,
-              1e3 * inf.section_width_after_m);
-
-  if (last >= 1) {
+  if (!restarted) {
     begin();
-    const fe::FootprintResult fp = run.Footprint(hooks);
-    WriteHistoryCsv(out / "footprint_history.csv", "footprint", config, fp.history, 0.0);
-    std::vector<std::vector<double>> map(4);
-    for (const fe::ContactPoint& p : fp.contact) {
-      map[0].push_back(p.x_m);
-      map[1].push_back(p.y_m);
-      map[2].push_back(p.force_N);
-      map[3].push_back(p.pressure_Pa);
-    }
-    WriteCsv(out / "footprint_pressure.csv", {{"config", config.file.string()}},
-             {"x_m", "y_m", "force_N", "pressure_Pa"}, map);
-    WriteFootprintSvg(out / "footprint_pressure.svg", fp);
-    j["footprint"] = {
-        {"vertical_load_N", RoundSignificant(fp.vertical_load_N, 6)},
-        {"road_force_z_N", RoundSignificant(fp.road_force_z_N, 6)},
-        {"loaded_radius_mm", RoundSignificant(1e3 * fp.loaded_radius_m, 6)},
-        {"deflection_mm", RoundSignificant(1e3 * fp.deflection_m, 6)},
-        {"vertical_stiffness_kN_per_m", RoundSignificant(1e-3 * fp.vertical_stiffness_N_per_m, 6)},
-        {"contact_area_cm2", RoundSignificant(1e4 * fp.contact_area_m2, 6)},
-        {"contact_length_mm", RoundSignificant(1e3 * fp.contact_length_m, 6)},
-        {"contact_width_mm", RoundSignificant(1e3 * fp.contact_width_m, 6)},
-        {"peak_pressure_kPa", RoundSignificant(1e-3 * fp.peak_pressure_Pa, 6)},
-        {"mean_pressure_kPa", RoundSignificant(1e-3 * fp.mean_pressure_Pa, 6)},
+    const fe::InflateResult inf = run.Inflate(hooks);
+    WriteHistoryCsv(out / "inflate_history.csv", "inflate", config, inf.history, 0.0);
+    j["inflate"] = {
+        {"pressure_kPa", RoundSignificant(1e-3 * inf.pressure_Pa, 6)},
+        {"outer_radius_before_mm", RoundSignificant(1e3 * inf.outer_radius_before_m, 6)},
+        {"outer_radius_after_mm", RoundSignificant(1e3 * inf.outer_radius_after_m, 6)},
+        {"section_width_before_mm", RoundSignificant(1e3 * inf.section_width_before_m, 6)},
+        {"section_width_after_mm", RoundSignificant(1e3 * inf.section_width_after_m, 6)},
+        {"roundness_error_mm", RoundSignificant(1e3 * inf.max_roundness_error_m, 3)},
         {"energies", EnergiesJson(solver.energies())}};
-    std::printf(
-        "footprint: %.0f N, loaded radius %.2f mm, deflection %.2f mm, %.0f kN/m, "
-        "contact %.0f cm^2 (%.0f x %.0f mm node to node), mean %.0f kPa\n",
-        fp.road_force_z_N, 1e3 * fp.loaded_radius_m, 1e3 * fp.deflection_m,
-        1e-3 * fp.vertical_stiffness_N_per_m, 1e4 * fp.contact_area_m2, 1e3 * fp.contact_length_m,
-        1e3 * fp.contact_width_m, 1e-3 * fp.mean_pressure_Pa);
-  }
-  if (last >= 2) {
-    begin();
-    const fe::RollResult rr = run.Roll(hooks);
-    WriteHistoryCsv(out / "roll_history.csv", "roll", config, rr.history, run.slip_radius_m());
-    j["roll"] = {{"speed_mps", RoundSignificant(rr.speed_mps, 6)},
-                 {"spin_rad_per_s", RoundSignificant(rr.spin_rad_per_s, 6)},
-                 {"effective_radius_mm", RoundSignificant(1e3 * rr.effective_radius_m, 6)},
-                 {"loaded_radius_mm", RoundSignificant(1e3 * rr.loaded_radius_m, 6)},
-                 {"road_fx_N", RoundSignificant(rr.road_fx_N, 6)},
-                 {"road_fz_N", RoundSignificant(rr.road_fz_N, 6)},
-                 {"paper_spin_rad_per_s", 28.268},
-                 {"paper_effective_radius_mm", 394.2},
-                 {"energies", EnergiesJson(solver.energies())}};
-    std::printf(
-        "roll: %.3f m/s, spin %.3f rad/s, effective radius %.2f mm (paper: 28.268 rad/s, "
-        "394.2 mm), loaded radius %.2f mm\n",
-        rr.speed_mps, rr.spin_rad_per_s, 1e3 * rr.effective_radius_m, 1e3 * rr.loaded_radius_m);
-  }
-  if (last >= 3) {
-    // The ABS issue's controller and hydraulics set the brake torque at the controller's period;
-    // the controller's R_l is the free-rolling radius of the roll step (002:2).
-    const sim::AbsConfig& ac = *abs_config;
-    brake::AbsControllerParams cp = ac.controller;
-    cp.wheel_radius_m = run.slip_radius_m();
-    brake::AbsController controller(cp);
-    brake::PressureDelayLine delay(ac.DelayTicks(), 0.0);
-    const brake::BrakeHydraulicsParams<double>& hyd = ac.plant.hydraulics;
-    double next_tick = 0.0, target = 0.0, pressure = 0.0, t_prev = 0.0;
-    const fe::BrakeTorqueFn torque = [&](double t, double vx, double spin) {
-      while (t >= next_tick - 1e-12) {
-        const brake::AbsCommand cmd = controller.Step({vx, spin, ac.driver.PressureAt(next_tick)});
-        target = delay.Push(cmd.pressure_target);
-        next_tick += cp.period_s;
+    std::printf("inflate: %.0f kPa, outer radius %.2f -> %.2f mm, section width %.1f -> %.1f mm\n",
+                1e-3 * inf.pressure_Pa, 1e3 * inf.outer_radius_before_m,
+                1e3 * inf.outer_radius_after_m, 1e3 * inf.section_width_before_m,
+                1e3 * inf.section_width_after_m);
+
+    if (last >= 1) {
+      begin();
+      const fe::FootprintResult fp = run.Footprint(hooks);
+      WriteHistoryCsv(out / "footprint_history.csv", "footprint", config, fp.history, 0.0);
+      std::vector<std::vector<double>> map(4);
+      for (const fe::ContactPoint& p : fp.contact) {
+        map[0].push_back(p.x_m);
+        map[1].push_back(p.y_m);
+        map[2].push_back(p.force_N);
+        map[3].push_back(p.pressure_Pa);
       }
-      pressure += (t - t_prev) * brake::CalcPressureRate(hyd, pressure, target);
-      t_prev = t;
-      return brake::CalcBrakeTorqueCapacity(hyd, pressure);
+      WriteCsv(out / "footprint_pressure.csv", {{"config", config.file.string()}},
+               {"x_m", "y_m", "force_N", "pressure_Pa"}, map);
+      WriteFootprintSvg(out / "footprint_pressure.svg", fp);
+      j["footprint"] = {{"vertical_load_N", RoundSignificant(fp.vertical_load_N, 6)},
+                        {"road_force_z_N", RoundSignificant(fp.road_force_z_N, 6)},
+                        {"loaded_radius_mm", RoundSignificant(1e3 * fp.loaded_radius_m, 6)},
+                        {"deflection_mm", RoundSignificant(1e3 * fp.deflection_m, 6)},
+                        {"vertical_stiffness_kN_per_m",
+                         RoundSignificant(1e-3 * fp.vertical_stiffness_N_per_m, 6)},
+                        {"contact_area_cm2", RoundSignificant(1e4 * fp.contact_area_m2, 6)},
+                        {"contact_length_mm", RoundSignificant(1e3 * fp.contact_length_m, 6)},
+                        {"contact_width_mm", RoundSignificant(1e3 * fp.contact_width_m, 6)},
+                        {"peak_pressure_kPa", RoundSignificant(1e-3 * fp.peak_pressure_Pa, 6)},
+                        {"mean_pressure_kPa", RoundSignificant(1e-3 * fp.mean_pressure_Pa, 6)},
+                        {"energies", EnergiesJson(solver.energies())}};
+      std::printf(
+          "footprint: %.0f N, loaded radius %.2f mm, deflection %.2f mm, %.0f kN/m, "
+          "contact %.0f cm^2 (%.0f x %.0f mm node to node), mean %.0f kPa\n",
+          fp.road_force_z_N, 1e3 * fp.loaded_radius_m, 1e3 * fp.deflection_m,
+          1e-3 * fp.vertical_stiffness_N_per_m, 1e4 * fp.contact_area_m2, 1e3 * fp.contact_length_m,
+          1e3 * fp.contact_width_m, 1e-3 * fp.mean_pressure_Pa);
+    }
+    if (last >= 2) {
+      begin();
+      const fe::RollResult rr = run.Roll(hooks);
+      WriteHistoryCsv(out / "roll_history.csv", "roll", config, rr.history, run.slip_radius_m());
+      j["roll"] = {{"speed_mps", RoundSignificant(rr.speed_mps, 6)},
+                   {"spin_rad_per_s", RoundSignificant(rr.spin_rad_per_s, 6)},
+                   {"effective_radius_mm", RoundSignificant(1e3 * rr.effective_radius_m, 6)},
+                   {"loaded_radius_mm", RoundSignificant(1e3 * rr.loaded_radius_m, 6)},
+                   {"road_fx_N", RoundSignificant(rr.road_fx_N, 6)},
+                   {"road_fz_N", RoundSignificant(rr.road_fz_N, 6)},
+                   {"paper_spin_rad_per_s", 28.268},
+                   {"paper_effective_radius_mm", 394.2},
+                   {"energies", EnergiesJson(solver.energies())}};
+      std::printf(
+          "roll: %.3f m/s, spin %.3f rad/s, effective radius %.2f mm (paper: 28.268 rad/s, "
+          "394.2 mm), loaded radius %.2f mm\n",
+          rr.speed_mps, rr.spin_rad_per_s, 1e3 * rr.effective_radius_m, 1e3 * rr.loaded_radius_m);
+    }
+  }  // !restarted
+  if (last >= 3) {
+    if (!restarted) make_abs_torque();
+    const fe::BrakeTorqueFn torque = [&](double t, double vx, double spin) {
+      return (*abs_torque)(t, vx, spin);
     };
+    fe::StepHooks abs_hooks = hooks;
+    if (a.checkpoint_every_s > 0.0) {
+      // The earlier steps' summary rides along, so that a restart's JSON is complete.
+      const std::string summary = j.dump();
+      abs_hooks.checkpoint_interval_s = a.checkpoint_every_s;
+      abs_hooks.checkpoint = [&, summary] {
+        fe::BinaryWriter w;
+        run.SaveState(w);
+        abs_torque->Save(w);
+        w.PutTag("JSON");
+        w.PutString(summary);
+        w.PutTag("THRD");
+        w.PutU64(solver.threads());
+        fe::WriteCheckpointFile(out / kCheckpointName, key, w.bytes());
+      };
+    }
     begin();
-    const fe::BrakeResult br = run.Brake(config.abs_duration_s, torque, hooks);
+    if (restarted) step_t0 = run.brake_start_s();
+    const fe::BrakeResult br = restarted ? run.ResumeBrake(config.abs_duration_s, torque, abs_hooks)
+                                         : run.Brake(config.abs_duration_s, torque, abs_hooks);
     WriteHistoryCsv(out / "abs_history.csv", "abs", config, br.history, run.slip_radius_m());
     j["abs"] = {{"duration_s", RoundSignificant(config.abs_duration_s, 6)},
                 {"initial_speed_mps", RoundSignificant(br.initial_speed_mps, 6)},
@@ -256,20 +430,24 @@ int RunFeCommand(const FeArgs& a) {
                 {"distance_m", RoundSignificant(br.distance_m, 6)},
                 {"max_slip", RoundSignificant(br.max_slip, 6)},
                 {"max_brake_torque_Nm", RoundSignificant(br.max_brake_torque_Nm, 6)},
-                {"control_cycles", controller.state().cycles},
+                {"control_cycles", abs_torque->state().cycles},
                 {"energies", EnergiesJson(solver.energies())}};
     std::printf("abs: %.3f s, speed %.3f -> %.3f m/s over %.3f m, max slip %.3f, %d cycles\n",
                 config.abs_duration_s, br.initial_speed_mps, br.final_speed_mps, br.distance_m,
-                br.max_slip, controller.state().cycles);
+                br.max_slip, abs_torque->state().cycles);
   }
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  j["performance"] = {
-      {"wall_s", RoundSignificant(wall, 4)},
-      {"steps", solver.steps()},
-      {"element_updates_per_s", RoundSignificant(solver.element_updates() / wall, 4)}};
-  std::printf("fe: %ld steps, %.3g element updates in %.1f s (%.3g per second)\n", solver.steps(),
-              solver.element_updates(), wall, solver.element_updates() / wall);
+  // This process's share (after a restart, the steps since the checkpoint).
+  const long steps = solver.steps() - steps_at_start;
+  const double updates = double(steps) * run.tyre().mesh.elements.size();
+  j["performance"] = {{"wall_s", RoundSignificant(wall, 4)},
+                      {"steps", steps},
+                      {"threads", solver.threads()},
+                      {"element_updates_per_s", RoundSignificant(updates / wall, 4)}};
+  if (restarted) j["performance"]["restarted_from"] = a.restart;
+  std::printf("fe: %ld steps on %d threads, %.3g element updates in %.1f s (%.3g per second)\n",
+              steps, solver.threads(), updates, wall, updates / wall);
   if (!a.json.empty()) WriteJsonFile(a.json, j);
   return 0;
 }
@@ -290,6 +468,14 @@ CommandRunner RegisterFeCommand(CLI::App& app) {
   sub->add_option("--duration-s", args->duration_s,
                   "Simulated time of the last step (roll or abs), s (default: the file's)")
       ->check(CLI::PositiveNumber);
+  sub->add_option("--threads", args->threads,
+                  "Threads of the solver's element loop (default: all cores, OpenMP's default)")
+      ->check(CLI::PositiveNumber);
+  sub->add_option("--checkpoint-every-s", args->checkpoint_every_s,
+                  "abs: write <out>/abs_checkpoint.bin every S of simulated time and at the end")
+      ->check(CLI::PositiveNumber);
+  sub->add_option("--restart", args->restart,
+                  "abs: continue from a checkpoint file (same configuration files and mesh)");
   return [args] { return RunFeCommand(*args); };
 }
 

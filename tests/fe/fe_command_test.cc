@@ -33,9 +33,11 @@ class FeCommandTest : public ::testing::Test {
  protected:
   int Run(const std::string& args) {
     const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const int status = std::system(
-        (std::string(HOTLAP_BINARY) + " fe " + args + " >" + out.string() + " 2>" + err.string())
-            .c_str());
+    // Passive OpenMP waiting: under ctest -j the cores are shared, and spinning threads would
+    // wait for each other's time slices (docs/fe-tyre.md, Speed).
+    const int status = std::system(("OMP_WAIT_POLICY=passive " + std::string(HOTLAP_BINARY) +
+                                    " fe " + args + " >" + out.string() + " 2>" + err.string())
+                                       .c_str());
     out_ = ReadTextFile(out);
     err_ = ReadTextFile(err);
     return WEXITSTATUS(status);
@@ -91,6 +93,87 @@ TEST_F(FeCommandTest, AbsStepRunsEveryStepAndWritesTheOutputs) {
   // The driver's pressure reaches the brake after the hydraulic delay (10 ms): torque applied.
   EXPECT_GT(j["abs"]["max_brake_torque_Nm"].get<double>(), 0.0);
   EXPECT_GT(j["abs"]["initial_speed_mps"].get<double>(), 11.0);
+}
+
+// A braking step run straight through and one stopped at a checkpoint and continued from it (all
+// on 2 threads): the end-of-step checkpoints, which hold the whole state (nodes, rim, energies,
+// the ABS controller and hydraulics, the history), are the same bytes, and so are the braking
+// histories. Bit-identical because the restart reads every double as its bytes and the same
+// thread count sums the element forces in the same order (a restart on another thread count is
+// allowed and agrees to round-off; it says so).
+TEST_F(FeCommandTest, RunStoppedAtACheckpointAndRestartedEqualsAStraightRun) {
+  const fs::path cfg = CoarseConfig(), a = dir_ / "a", b = dir_ / "b", c = dir_ / "c";
+  const std::string common = "abs --config " + cfg.string() + " --out ";
+  ASSERT_EQ(Run(common + a.string() + " --duration-s 0.03 --checkpoint-every-s 1 --threads 2"), 0)
+      << err_;
+  EXPECT_TRUE(Contains(err_, "2 threads")) << err_;
+  // Stopped at 0.012 s, having checkpointed at 0.005 and 0.010 s and at its end.
+  ASSERT_EQ(Run(common + b.string() + " --duration-s 0.012 --checkpoint-every-s 0.005 --threads 2"),
+            0)
+      << err_;
+  ASSERT_EQ(Run(common + c.string() + " --duration-s 0.03 --checkpoint-every-s 1 --threads 2 " +
+                "--json " + (dir_ / "c.json").string() + " --restart " +
+                (b / "abs_checkpoint.bin").string()),
+            0)
+      << err_;
+  EXPECT_TRUE(Contains(err_, "restarting from")) << err_;
+  EXPECT_FALSE(Contains(err_, "fe inflate")) << err_;  // the earlier steps are not rerun
+  const std::string straight = ReadTextFile(a / "abs_checkpoint.bin");
+  ASSERT_GT(straight.size(), 1000u);
+  EXPECT_TRUE(straight == ReadTextFile(c / "abs_checkpoint.bin"));
+  EXPECT_EQ(ReadTextFile(a / "abs_history.csv"), ReadTextFile(c / "abs_history.csv"));
+  EXPECT_NE(ReadTextFile(a / "abs_history.csv"), ReadTextFile(b / "abs_history.csv"));
+  // The restarted run's JSON carries the earlier steps' summary and the whole braking step.
+  const nlohmann::json j = nlohmann::json::parse(ReadTextFile(dir_ / "c.json"));
+  for (const char* k : {"mesh", "inflate", "footprint", "roll", "abs", "performance"}) {
+    EXPECT_TRUE(j.contains(k)) << k;
+  }
+  EXPECT_GT(j["abs"]["max_brake_torque_Nm"].get<double>(), 0.0);
+  EXPECT_EQ(j["performance"]["threads"].get<int>(), 2);
+}
+
+// A damaged checkpoint, one of another configuration, and --restart on another step: exit 2 with
+// one message naming the file, and nothing written into the output folder.
+TEST_F(FeCommandTest, BadCheckpointIsRefusedAndNothingIsWritten) {
+  const fs::path cfg = CoarseConfig(), a = dir_ / "a";
+  const std::string common = "abs --config " + cfg.string() + " --out ";
+  ASSERT_EQ(Run(common + a.string() + " --duration-s 0.001 --checkpoint-every-s 1"), 0) << err_;
+  const fs::path ckpt = a / "abs_checkpoint.bin";
+  std::string bytes = ReadTextFile(ckpt);
+  ASSERT_GT(bytes.size(), 1000u);
+  const auto refused = [&](const std::string& args, const std::string& what) {
+    const fs::path out = dir_ / "refused";
+    fs::remove_all(out);
+    EXPECT_EQ(Run(args + " --out " + out.string() + " --json " + (dir_ / "r.json").string()), 2)
+        << args;
+    EXPECT_TRUE(Contains(err_, what)) << err_;
+    EXPECT_TRUE(!fs::exists(out) || fs::is_empty(out)) << args;
+    EXPECT_FALSE(fs::exists(dir_ / "r.json"));
+  };
+  const std::string base = "abs --config " + cfg.string() + " --duration-s 0.002";
+  // One byte in the middle of the state flipped.
+  std::string damaged = bytes;
+  damaged[damaged.size() / 2] ^= 1;
+  std::ofstream(dir_ / "damaged.bin", std::ios::binary) << damaged;
+  refused(base + " --restart " + (dir_ / "damaged.bin").string(), "damaged.bin' is damaged");
+  // Truncated.
+  std::ofstream(dir_ / "short.bin", std::ios::binary) << bytes.substr(0, bytes.size() / 3);
+  refused(base + " --restart " + (dir_ / "short.bin").string(), "short.bin' is damaged");
+  // Another configuration: the same mesh, another inflation pressure.
+  std::string y = ReadTextFile(cfg);
+  y = Replace(y, "pressure_kPa: 220 ", "pressure_kPa: 200 ");
+  std::ofstream(dir_ / "other.yaml") << y;
+  refused("abs --config " + (dir_ / "other.yaml").string() + " --restart " + ckpt.string(),
+          "written for another configuration");
+  // Another mesh.
+  std::string m = ReadTextFile(cfg);
+  m = Replace(m, "circumferential_elements_rest: 16", "circumferential_elements_rest: 20");
+  std::ofstream(dir_ / "mesh.yaml") << m;
+  refused("abs --config " + (dir_ / "mesh.yaml").string() + " --restart " + ckpt.string(),
+          "written for another mesh");
+  refused("roll --config " + cfg.string() + " --restart " + ckpt.string(),
+          "only `hotlap fe abs` continues");
+  refused(base + " --restart " + (dir_ / "none.bin").string(), "does not exist");
 }
 
 TEST_F(FeCommandTest, BadConfigurationNamesTheField) {

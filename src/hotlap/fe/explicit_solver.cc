@@ -10,12 +10,23 @@
 #include <Eigen/LU>
 
 #include "hotlap/common/error.h"
+#include "hotlap/fe/checkpoint.h"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace hotlap::fe {
 
 namespace {
 
 using Mat83 = Eigen::Matrix<double, 8, 3>;
+
+// Sums over nodes and elements are taken over blocks of this many terms (each block in order,
+// then the blocks in order), so that they do not depend on the thread count.
+constexpr long kSumBlock = 512;
+
+long Blocks(size_t n) { return (static_cast<long>(n) + kSumBlock - 1) / kSumBlock; }
 
 Eigen::Matrix3d RotationY(double angle) {
   const double c = std::cos(angle), s = std::sin(angle);
@@ -99,6 +110,43 @@ ExplicitSolver::ExplicitSolver(Mesh mesh, std::vector<YeohMaterial> materials,
         options_.hourglass_viscous * rho * elem_wave_speed_[e] * std::pow(v0, 2.0 / 3.0) / 4.0;
     for (int a = 0; a < 8; ++a) mass_[mesh_.elements[e][a]] += rho * v0 / 8.0;
   }
+  // Element colours, greedy: each element takes the lowest colour that no element sharing one of
+  // its nodes has yet (a structured hexahedral mesh needs 8).
+  std::vector<std::uint64_t> node_colours(nn, 0);
+  std::vector<int> colour(ne);
+  int n_colours = 0;
+  for (size_t e = 0; e < ne; ++e) {
+    std::uint64_t used = 0;
+    for (int n : mesh_.elements[e]) used |= node_colours[n];
+    if (~used == 0) throw NumericalError("fe: more than 64 element colours needed");
+    int c = 0;
+    while (used & (std::uint64_t{1} << c)) ++c;
+    colour[e] = c;
+    n_colours = std::max(n_colours, c + 1);
+    for (int n : mesh_.elements[e]) node_colours[n] |= std::uint64_t{1} << c;
+  }
+  colour_start_.assign(n_colours + 1, 0);
+  for (size_t e = 0; e < ne; ++e) ++colour_start_[colour[e] + 1];
+  for (int c = 0; c < n_colours; ++c) colour_start_[c + 1] += colour_start_[c];
+  colour_elements_.resize(ne);
+  std::vector<int> fill(colour_start_.begin(), colour_start_.end() - 1);
+  for (size_t e = 0; e < ne; ++e) colour_elements_[fill[colour[e]]++] = static_cast<int>(e);
+  elem_energy_.assign(ne, {0.0, 0.0});
+  v_old_ = v_;
+  // Pressure faces of each node (CSR), gathered in face order; contact nodes as flags.
+  node_face_start_.assign(nn + 1, 0);
+  for (const auto& face : mesh_.pressure_faces) {
+    for (int n : face) ++node_face_start_[n + 1];
+  }
+  for (size_t a = 0; a < nn; ++a) node_face_start_[a + 1] += node_face_start_[a];
+  node_faces_.resize(node_face_start_[nn]);
+  std::vector<int> next(node_face_start_.begin(), node_face_start_.end() - 1);
+  for (size_t k = 0; k < mesh_.pressure_faces.size(); ++k) {
+    for (int n : mesh_.pressure_faces[k]) node_faces_[next[n]++] = static_cast<int>(k);
+  }
+  is_contact_node_.assign(nn, 0);
+  for (int a : mesh_.contact_nodes) is_contact_node_[a] = 1;
+
   mass_report_.stable_step_unscaled_s = stable_unscaled;
   stable_step_ = stable;
   dt_ = options_.time_step_s > 0.0 ? options_.time_step_s : options_.time_step_safety * stable;
@@ -180,116 +228,97 @@ void ExplicitSolver::SetRimVelocity(double vx_mps, double vz_mps, double spin_ra
   rim_target_ = Eigen::Vector3d(vx_mps, vz_mps, spin_rad_per_s);
 }
 
-void ExplicitSolver::ComputeForces() {
-  const size_t nn = x_.size(), ne = mesh_.elements.size();
-  for (size_t a = 0; a < nn; ++a) {
-    f_stored_[a].setZero();
-    f_dissip_bv_[a].setZero();
-    f_dissip_hg_[a].setZero();
-    f_contact_[a].setZero();
-    f_friction_[a].setZero();
-    f_external_[a] = applied_[a];
-    f_damp_[a] = -options_.mass_damping_per_s * mass_[a] * v_[a];
-    contact_normal_[a] = 0.0;
-  }
-  stored_internal_ = stored_hg_ = stored_contact_ = 0.0;
-  const double b1 = options_.bulk_viscosity_linear, b2 = options_.bulk_viscosity_quadratic;
+void ExplicitSolver::set_threads(int threads) {
+  if (threads < 0) throw InputError("fe: thread count " + std::to_string(threads) + " < 0");
+  threads_ = threads;
+}
 
+int DefaultThreadCount() {
+#ifdef _OPENMP
+  return omp_get_max_threads();
+#else
+  return 1;
+#endif
+}
+
+int ExplicitSolver::threads() const {
+  if (threads_ > 0) return threads_;
+  // The default: all cores, but no more threads than the mesh keeps busy (a thread per
+  // kElementsPerThread elements), since each step synchronises the threads twice.
+  const int useful = static_cast<int>(mesh_.elements.size() / kElementsPerThread);
+  return std::max(1, std::min(DefaultThreadCount(), useful));
+}
+
+bool ExplicitSolver::AddElementForces(size_t e, Eigen::Vector3d* f_stored, Eigen::Vector3d* f_bulk,
+                                      Eigen::Vector3d* f_hourglass) {
+  const double b1 = options_.bulk_viscosity_linear, b2 = options_.bulk_viscosity_quadratic;
   // Written with 3-vectors and 3x3 matrices only: Eigen's 8x3 products with transposes do not
   // inline well, and this loop is the solver's cost.
   using Eigen::Vector3d;
   std::array<Vector3d, 8> u, vel;
-  for (size_t e = 0; e < ne; ++e) {
-    const auto& nodes = mesh_.elements[e];
-    const Hex8Reference& ref = refs_[e];
-    Eigen::Matrix3d F = Eigen::Matrix3d::Zero(), f_dot = Eigen::Matrix3d::Zero();
+  const auto& nodes = mesh_.elements[e];
+  const Hex8Reference& ref = refs_[e];
+  Eigen::Matrix3d F = Eigen::Matrix3d::Zero(), f_dot = Eigen::Matrix3d::Zero();
+  for (int a = 0; a < 8; ++a) {
+    const Vector3d& xa = x_[nodes[a]];
+    const Eigen::RowVector3d g = ref.grad.row(a);
+    F.noalias() += xa * g;
+    vel[a] = v_[nodes[a]];
+    f_dot.noalias() += vel[a] * g;
+    u[a] = xa - X_[nodes[a]];
+  }
+  const double j = F.determinant();
+  if (!(j > 0.0)) return false;
+  const YeohMaterial& m = materials_[mesh_.element_material[e]];
+  const Eigen::Matrix3d f_inv = F.inverse();
+  const Eigen::Matrix3d f_inv_t = f_inv.transpose();
+  Eigen::Matrix3d P;
+  double w = CalcYeohPiolaAndEnergy(m, F, j, f_inv_t, P);
+  for (int k = fibre_start_[e]; k < fibre_start_[e + 1]; ++k) {
+    const FibreLayer& f = fibres_sorted_[k];
+    w += AddFibreStress(rebars_[f.rebar], f, F, P);
+  }
+  const double v0 = ref.volume_m3;
+
+  // Bulk viscosity (Abaqus/Explicit form): a pressure against the volumetric strain rate,
+  // linear b1 rho c_d L_e evol, plus quadratic rho (b2 L_e evol)^2 in compression only.
+  const double evol = f_dot.cwiseProduct(f_inv_t).sum();  // tr(F_dot F^-1)
+  const double le = ref.length_m * std::cbrt(j);          // current characteristic length
+  const double rho = elem_density_[e];
+  double q = b1 * rho * elem_wave_speed_[e] * le * evol;
+  if (evol < 0.0) q -= rho * (b2 * le * evol) * (b2 * le * evol);
+  const Eigen::Matrix3d pv = (-v0 * j * q) * f_inv_t;
+  const Eigen::Matrix3d ps = -v0 * P;
+
+  // Hourglass: generalised displacements Q_alpha = sum_a gamma_alpha,a u_a (and rates).
+  std::array<Vector3d, 4> qhg, qdot;
+  const auto& gam = ref.hourglass;
+  double hg_energy = 0.0;
+  for (int al = 0; al < 4; ++al) {
+    qhg[al].setZero();
+    qdot[al].setZero();
     for (int a = 0; a < 8; ++a) {
-      const Vector3d& xa = x_[nodes[a]];
-      const Eigen::RowVector3d g = ref.grad.row(a);
-      F.noalias() += xa * g;
-      vel[a] = v_[nodes[a]];
-      f_dot.noalias() += vel[a] * g;
-      u[a] = xa - X_[nodes[a]];
+      qhg[al] += gam(al, a) * u[a];
+      qdot[al] += gam(al, a) * vel[a];
     }
-    const double j = F.determinant();
-    if (!(j > 0.0)) {
-      throw NumericalError("fe: element " + std::to_string(e) + " inverted (J = " +
-                           std::to_string(j) + ") at t = " + std::to_string(time_) + " s");
-    }
-    const YeohMaterial& m = materials_[mesh_.element_material[e]];
-    const Eigen::Matrix3d f_inv = F.inverse();
-    const Eigen::Matrix3d f_inv_t = f_inv.transpose();
-    Eigen::Matrix3d P;
-    double w = CalcYeohPiolaAndEnergy(m, F, j, f_inv_t, P);
-    for (int k = fibre_start_[e]; k < fibre_start_[e + 1]; ++k) {
-      const FibreLayer& f = fibres_sorted_[k];
-      w += AddFibreStress(rebars_[f.rebar], f, F, P);
-    }
-    const double v0 = ref.volume_m3;
-    stored_internal_ += v0 * w;
-
-    // Bulk viscosity (Abaqus/Explicit form): a pressure against the volumetric strain rate,
-    // linear b1 rho c_d L_e evol, plus quadratic rho (b2 L_e evol)^2 in compression only.
-    const double evol = f_dot.cwiseProduct(f_inv_t).sum();  // tr(F_dot F^-1)
-    const double le = ref.length_m * std::cbrt(j);          // current characteristic length
-    const double rho = elem_density_[e];
-    double q = b1 * rho * elem_wave_speed_[e] * le * evol;
-    if (evol < 0.0) q -= rho * (b2 * le * evol) * (b2 * le * evol);
-    const Eigen::Matrix3d pv = (-v0 * j * q) * f_inv_t;
-    const Eigen::Matrix3d ps = -v0 * P;
-
-    // Hourglass: generalised displacements Q_alpha = sum_a gamma_alpha,a u_a (and rates).
-    std::array<Vector3d, 4> qhg, qdot;
-    const auto& gam = ref.hourglass;
+    hg_energy += 0.5 * hg_stiffness_[e] * qhg[al].squaredNorm();
+  }
+  elem_energy_[e] = {v0 * w, hg_energy};
+  const double khg = hg_stiffness_[e], chg = hg_viscous_[e];
+  // Nodal forces: -V0 P B0_a (rubber and cords), -V0 P_v B0_a (bulk viscosity),
+  // -k gamma^T Q (hourglass stiffness), -c gamma^T Q_dot (hourglass viscosity).
+  for (int a = 0; a < 8; ++a) {
+    const Vector3d g = ref.grad.row(a).transpose();
+    Vector3d hs = Vector3d::Zero(), hv = Vector3d::Zero();
     for (int al = 0; al < 4; ++al) {
-      qhg[al].setZero();
-      qdot[al].setZero();
-      for (int a = 0; a < 8; ++a) {
-        qhg[al] += gam(al, a) * u[a];
-        qdot[al] += gam(al, a) * vel[a];
-      }
-      stored_hg_ += 0.5 * hg_stiffness_[e] * qhg[al].squaredNorm();
+      hs += gam(al, a) * qhg[al];
+      hv += gam(al, a) * qdot[al];
     }
-    const double khg = hg_stiffness_[e], chg = hg_viscous_[e];
-    // Nodal forces: -V0 P B0_a (rubber and cords), -V0 P_v B0_a (bulk viscosity),
-    // -k gamma^T Q (hourglass stiffness), -c gamma^T Q_dot (hourglass viscosity).
-    for (int a = 0; a < 8; ++a) {
-      const Vector3d g = ref.grad.row(a).transpose();
-      Vector3d hs = Vector3d::Zero(), hv = Vector3d::Zero();
-      for (int al = 0; al < 4; ++al) {
-        hs += gam(al, a) * qhg[al];
-        hv += gam(al, a) * qdot[al];
-      }
-      f_stored_[nodes[a]] += ps * g - khg * hs;
-      f_dissip_bv_[nodes[a]] += pv * g;
-      if (chg > 0.0) f_dissip_hg_[nodes[a]] -= chg * hv;
-    }
+    f_stored[nodes[a]] += ps * g - khg * hs;
+    f_bulk[nodes[a]] += pv * g;
+    if (chg > 0.0) f_hourglass[nodes[a]] -= chg * hv;
   }
-
-  // Inflation pressure: a follower load on each face, a quarter of p times the area vector on
-  // each of its nodes, pushing into the solid.
-  if (pressure_Pa_ != 0.0) {
-    for (const auto& face : mesh_.pressure_faces) {
-      const Eigen::Vector3d area =
-          0.5 * (x_[face[2]] - x_[face[0]]).cross(x_[face[3]] - x_[face[1]]);
-      for (int n : face) f_external_[n] -= 0.25 * pressure_Pa_ * area;
-    }
-  }
-
-  // Road: penalty normal force and friction (002:1).
-  if (road_.enabled) {
-    const Eigen::Vector3d road_velocity(road_.road_speed_x_mps, 0.0, 0.0);
-    for (int a : mesh_.contact_nodes) {
-      const double g = road_.height_m - x_[a].z();
-      if (g <= 0.0) continue;
-      const double fn = contact_stiffness_[a] * g;
-      contact_normal_[a] = fn;
-      f_contact_[a].z() += fn;
-      stored_contact_ += 0.5 * contact_stiffness_[a] * g * g;
-      f_friction_[a] +=
-          CalcFrictionForce(road_.friction, fn, v_[a] - road_velocity, mass_[a] / dt_);
-    }
-  }
+  return true;
 }
 
 void ExplicitSolver::AdvanceRim() {
@@ -330,34 +359,131 @@ void ExplicitSolver::AdvanceRim() {
   }
 }
 
-void ExplicitSolver::Step() {
-  ComputeForces();
-  const size_t nn = x_.size();
-  v_old_ = v_;
-  const std::vector<Eigen::Vector3d>& v_old = v_old_;
-  const Eigen::Vector3d rim_v_old = rim_.velocity;
-  const double rim_w_old = rim_.spin_rad_per_s;
+void ExplicitSolver::RunStep(bool advance) {
+  const long nn = static_cast<long>(x_.size()), ne = static_cast<long>(mesh_.elements.size());
+  const long nf = static_cast<long>(mesh_.pressure_faces.size());
+  const int nt = threads();
+  const bool coloured = assembly_ == Assembly::kColoured;
+  // Per-thread buffers on one thread: the elements add straight to the nodes, in element order
+  // (the same bits as one buffer).
+  const bool direct = !coloured && nt == 1;
+  const int buffers = coloured || direct ? 0 : nt;
+  if (buffers > 0 && thread_forces_.size() < 3 * static_cast<size_t>(nt)) {
+    thread_forces_.resize(3 * nt, std::vector<Eigen::Vector3d>(nn));
+  }
+  const long node_blocks = Blocks(nn), elem_blocks = Blocks(ne);
+  node_sums_.resize(node_blocks);
+  elem_sums_.resize(elem_blocks);
+  face_force_.resize(nf);
+  const double p = pressure_Pa_;
+  const Eigen::Vector3d road_velocity(road_.road_speed_x_mps, 0.0, 0.0);
+  long bad = ne;  // the lowest inverted element, if any
 
-  for (size_t a = 0; a < nn; ++a) {
-    reaction_[a].setZero();
-    if (is_rim_node_[a]) continue;
-    const Eigen::Vector3d f = f_stored_[a] + f_dissip_bv_[a] + f_dissip_hg_[a] + f_damp_[a] +
-                              f_contact_[a] + f_friction_[a] + f_external_[a];
-    for (int d = 0; d < 3; ++d) {
-      if (fixed_[a][d]) {
-        v_[a](d) = fixed_velocity_[a](d);
-        reaction_[a](d) = mass_[a] * (v_[a](d) - v_old[a](d)) / dt_ - f(d);
-      } else {
-        v_[a](d) += dt_ * f(d) / mass_[a];
+  // One parallel region per step. Its synchronisation points: the end of the element loop
+  // (every colour's loop with the coloured assembly) and the end of the node loop; few, because
+  // on a loaded machine each one can cost a scheduler time slice.
+#pragma omp parallel num_threads(nt)
+  {
+    // Inflation pressure: a follower load on each face, a quarter of p times the area vector on
+    // each of its nodes, pushing into the solid (gathered per node below).
+    if (p != 0.0) {
+#pragma omp for schedule(static) nowait
+      for (long k = 0; k < nf; ++k) {
+        const auto& face = mesh_.pressure_faces[k];
+        face_force_[k] = -0.125 * p * (x_[face[2]] - x_[face[0]]).cross(x_[face[3]] - x_[face[1]]);
+      }
+    }
+    if (coloured || direct) {
+#pragma omp for schedule(static)
+      for (long a = 0; a < nn; ++a) {
+        f_stored_[a].setZero();
+        f_dissip_bv_[a].setZero();
+        f_dissip_hg_[a].setZero();
+      }
+      // Elements of one colour share no node: they add to the nodes without a race. The
+      // implicit barrier at the end of each loop separates the colours.
+      const int n_loops = direct ? 1 : colours();
+      for (int c = 0; c < n_loops; ++c) {
+        const long k0 = direct ? 0 : colour_start_[c], k1 = direct ? ne : colour_start_[c + 1];
+#pragma omp for schedule(static)
+        for (long k = k0; k < k1; ++k) {
+          const int e = direct ? static_cast<int>(k) : colour_elements_[k];
+          if (!AddElementForces(e, f_stored_.data(), f_dissip_bv_.data(), f_dissip_hg_.data())) {
+#pragma omp critical(hotlap_fe_inverted)
+            bad = std::min(bad, static_cast<long>(e));
+          }
+        }
+      }
+    } else {
+#ifdef _OPENMP
+      const int t = omp_get_thread_num();
+#else
+      const int t = 0;
+#endif
+      Eigen::Vector3d* fs = thread_forces_[3 * t].data();
+      Eigen::Vector3d* fb = thread_forces_[3 * t + 1].data();
+      Eigen::Vector3d* fh = thread_forces_[3 * t + 2].data();
+      for (long a = 0; a < nn; ++a) {
+        fs[a].setZero();
+        fb[a].setZero();
+        fh[a].setZero();
+      }
+#pragma omp for schedule(static)
+      for (long e = 0; e < ne; ++e) {
+        if (!AddElementForces(e, fs, fb, fh)) {
+#pragma omp critical(hotlap_fe_inverted)
+          bad = std::min(bad, e);
+        }
+      }
+    }
+    // Past the barrier: every element and face force is known, and so is `bad`.
+    if (bad == ne) {
+#pragma omp for schedule(static) nowait
+      for (long b = 0; b < elem_blocks; ++b) {
+        std::array<double, 2> sum{0.0, 0.0};
+        for (long e = b * kSumBlock; e < std::min(ne, (b + 1) * kSumBlock); ++e) {
+          sum[0] += elem_energy_[e][0];
+          sum[1] += elem_energy_[e][1];
+        }
+        elem_sums_[b] = sum;
+      }
+#pragma omp for schedule(static)
+      for (long b = 0; b < node_blocks; ++b) {
+        NodeSums sum{};
+        for (long a = b * kSumBlock; a < std::min(nn, (b + 1) * kSumBlock); ++a) {
+          NodeUpdate(a, buffers, road_velocity, advance, sum);
+        }
+        node_sums_[b] = sum;
       }
     }
   }
+  if (bad < ne) {
+    Eigen::Matrix3d F = Eigen::Matrix3d::Zero();
+    for (int a = 0; a < 8; ++a) F.noalias() += x_[mesh_.elements[bad][a]] * refs_[bad].grad.row(a);
+    throw NumericalError("fe: element " + std::to_string(bad) +
+                         " inverted (J = " + std::to_string(F.determinant()) +
+                         ") at t = " + std::to_string(time_) + " s");
+  }
+  // Sums in block order: the same for every thread count.
+  stored_internal_ = stored_hg_ = stored_contact_ = 0.0;
+  for (const auto& b : elem_sums_) {
+    stored_internal_ += b[0];
+    stored_hg_ += b[1];
+  }
+  NodeSums total{};
+  for (const NodeSums& b : node_sums_) {
+    for (size_t k = 0; k < total.size(); ++k) total[k] += b[k];
+  }
+  stored_contact_ = total[kContactSum];
+  if (!advance) return;
+
   // The rim: its applied loads and constraint reactions do work at its mean velocity.
+  const Eigen::Vector3d rim_v_old = rim_.velocity;
+  const double rim_w_old = rim_.spin_rad_per_s;
   if (has_rim_) {
     AdvanceRim();
-  }
-  for (size_t a = 0; a < nn; ++a) {
-    if (!is_rim_node_[a]) x_[a] += dt_ * v_[a];
+    // The rim nodes' force terms, now that their new velocities are known.
+    for (int a : mesh_.rim_nodes) AddWorkTerms(a, total);
   }
 
   // Energy accounting. The work of f(n) is f(n) . (x(n+1) - x(n-1)) / 2 (trapezoidal in the
@@ -366,29 +492,23 @@ void ExplicitSolver::Step() {
   // system this balance is exact under central differences; with the mean velocity squared, or
   // with the look-ahead half counted, it is off by terms of order omega dt, large for the
   // highest modes.
-  // Work terms: external (with reactions), bulk viscosity, viscous hourglass, damping, friction.
-  std::array<double, 5> back{}, ahead{};
-  double ke = 0.0;
+  // Work terms (AddWorkTerms): external (with reactions), bulk viscosity, viscous hourglass,
+  // damping, friction; each as the sum of f . v(n-1/2) ("back") and of f . v(n+1/2) ("ahead").
   const bool first = steps_ == 0;
-  const auto add = [&](const Eigen::Vector3d& f, int kind, const Eigen::Vector3d& vo,
-                       const Eigen::Vector3d& vn) {
-    if (!first) back[kind] += f.dot(vo);
-    ahead[kind] += f.dot(vn);
-  };
-  for (size_t a = 0; a < nn; ++a) {
-    add(f_external_[a] + reaction_[a], 0, v_old[a], v_[a]);
-    add(f_dissip_bv_[a], 1, v_old[a], v_[a]);
-    add(f_dissip_hg_[a], 2, v_old[a], v_[a]);
-    add(f_damp_[a], 3, v_old[a], v_[a]);
-    add(f_friction_[a], 4, v_old[a], v_[a]);
-    if (!is_rim_node_[a]) ke += 0.5 * mass_[a] * v_old[a].dot(v_[a]);
+  std::array<double, 5> back{}, ahead{};
+  for (int k = 0; k < 5; ++k) {
+    back[k] = first ? 0.0 : total[k];
+    ahead[k] = total[5 + k];
   }
+  double ke = total[kKineticSum];
   if (has_rim_) {
     const Eigen::Vector3d f(rim_loads_.force_x_N + rim_reaction_.force_x_N,
                             rim_loads_.torque_Nm + rim_reaction_.torque_Nm,
                             rim_loads_.force_z_N + rim_reaction_.force_z_N);
-    add(f, 0, Eigen::Vector3d(rim_v_old.x(), rim_w_old, rim_v_old.z()),
-        Eigen::Vector3d(rim_.velocity.x(), rim_.spin_rad_per_s, rim_.velocity.z()));
+    const Eigen::Vector3d vo(rim_v_old.x(), rim_w_old, rim_v_old.z());
+    const Eigen::Vector3d vn(rim_.velocity.x(), rim_.spin_rad_per_s, rim_.velocity.z());
+    if (!first) back[0] += f.dot(vo);
+    ahead[0] += f.dot(vn);
     ke += 0.5 * rim_mass_ * rim_v_old.dot(rim_.velocity) +
           0.5 * rim_inertia_ * rim_w_old * rim_.spin_rad_per_s;
   }
@@ -414,8 +534,73 @@ void ExplicitSolver::Step() {
   ++steps_;
 }
 
+void ExplicitSolver::AddWorkTerms(long a, NodeSums& sum) const {
+  const Eigen::Vector3d fe = f_external_[a] + reaction_[a];
+  const Eigen::Vector3d* f[5] = {&fe, &f_dissip_bv_[a], &f_dissip_hg_[a], &f_damp_[a],
+                                 &f_friction_[a]};
+  for (int k = 0; k < 5; ++k) {
+    sum[k] += f[k]->dot(v_old_[a]);
+    sum[5 + k] += f[k]->dot(v_[a]);
+  }
+}
+
+void ExplicitSolver::NodeUpdate(long a, int buffers, const Eigen::Vector3d& road_velocity,
+                                bool advance, NodeSums& sum) {
+  if (buffers > 0) {
+    f_stored_[a] = thread_forces_[0][a];
+    f_dissip_bv_[a] = thread_forces_[1][a];
+    f_dissip_hg_[a] = thread_forces_[2][a];
+    for (int t = 1; t < buffers; ++t) {
+      f_stored_[a] += thread_forces_[3 * t][a];
+      f_dissip_bv_[a] += thread_forces_[3 * t + 1][a];
+      f_dissip_hg_[a] += thread_forces_[3 * t + 2][a];
+    }
+  }
+  Eigen::Vector3d fe = applied_[a];
+  if (pressure_Pa_ != 0.0) {
+    for (int k = node_face_start_[a]; k < node_face_start_[a + 1]; ++k) {
+      fe += face_force_[node_faces_[k]];
+    }
+  }
+  f_external_[a] = fe;
+  f_damp_[a] = -options_.mass_damping_per_s * mass_[a] * v_[a];
+  f_contact_[a].setZero();
+  f_friction_[a].setZero();
+  contact_normal_[a] = 0.0;
+  // Road: penalty normal force and friction (002:1).
+  if (road_.enabled && is_contact_node_[a]) {
+    const double g = road_.height_m - x_[a].z();
+    if (g > 0.0) {
+      const double fn = contact_stiffness_[a] * g;
+      contact_normal_[a] = fn;
+      f_contact_[a].z() = fn;
+      sum[kContactSum] += 0.5 * contact_stiffness_[a] * g * g;
+      f_friction_[a] = CalcFrictionForce(road_.friction, fn, v_[a] - road_velocity, mass_[a] / dt_);
+    }
+  }
+  if (!advance) return;
+  v_old_[a] = v_[a];
+  reaction_[a].setZero();
+  if (is_rim_node_[a]) return;  // moved with the rim, after the node loop
+  const Eigen::Vector3d f = f_stored_[a] + f_dissip_bv_[a] + f_dissip_hg_[a] + f_damp_[a] +
+                            f_contact_[a] + f_friction_[a] + f_external_[a];
+  for (int d = 0; d < 3; ++d) {
+    if (fixed_[a][d]) {
+      v_[a](d) = fixed_velocity_[a](d);
+      reaction_[a](d) = mass_[a] * (v_[a](d) - v_old_[a](d)) / dt_ - f(d);
+    } else {
+      v_[a](d) += dt_ * f(d) / mass_[a];
+    }
+  }
+  x_[a] += dt_ * v_[a];
+  AddWorkTerms(a, sum);
+  sum[kKineticSum] += 0.5 * mass_[a] * v_old_[a].dot(v_[a]);
+}
+
+void ExplicitSolver::Step() { RunStep(/*advance=*/true); }
+
 std::vector<Eigen::Vector3d> ExplicitSolver::CalcElementForces() {
-  ComputeForces();
+  RunStep(/*advance=*/false);
   std::vector<Eigen::Vector3d> f(x_.size());
   for (size_t a = 0; a < f.size(); ++a) f[a] = f_stored_[a] + f_dissip_bv_[a] + f_dissip_hg_[a];
   return f;
@@ -437,6 +622,159 @@ Eigen::Matrix3d ExplicitSolver::ElementStress(int e) const {
     AddFibreStress(rebars_[f.rebar], f, F, P);
   }
   return P * F.transpose() / F.determinant();
+}
+
+void ExplicitSolver::SaveState(BinaryWriter& out) const {
+  out.PutTag("SOLV");
+  out.PutDouble(dt_);
+  out.PutDouble(time_);
+  out.PutI64(steps_);
+  out.PutDouble(pressure_Pa_);
+  out.PutDouble(options_.mass_damping_per_s);
+  for (const auto* v :
+       {&x_, &v_, &applied_, &reaction_, &fixed_velocity_, &f_stored_, &f_dissip_bv_, &f_dissip_hg_,
+        &f_damp_, &f_contact_, &f_friction_, &f_external_}) {
+    out.PutVectors(*v);
+  }
+  out.PutU64(fixed_.size());
+  for (const auto& f : fixed_) out.PutU64(f[0] | f[1] << 1 | f[2] << 2);
+  out.PutDoubles(contact_normal_);
+  out.PutTag("ROAD");
+  out.PutU64(road_.enabled ? 1 : 0);
+  for (double d : {road_.height_m, road_.penalty_factor, road_.road_speed_x_mps,
+                   road_.friction.static_coefficient, road_.friction.kinetic_coefficient,
+                   road_.friction.decay_s_per_m}) {
+    out.PutDouble(d);
+  }
+  out.PutTag("RIM_");
+  out.PutU64(has_rim_ ? 1 : 0);
+  out.PutU64(static_cast<std::uint64_t>(rim_settings_.x_mode) |
+             static_cast<std::uint64_t>(rim_settings_.z_mode) << 8 |
+             static_cast<std::uint64_t>(rim_settings_.spin_mode) << 16);
+  out.PutVector(rim_.centre);
+  out.PutVector(rim_.velocity);
+  out.PutDouble(rim_.angle_rad);
+  out.PutDouble(rim_.spin_rad_per_s);
+  for (const RimLoads* l : {&rim_loads_, &rim_reaction_}) {
+    out.PutDouble(l->force_x_N);
+    out.PutDouble(l->force_z_N);
+    out.PutDouble(l->torque_Nm);
+  }
+  out.PutVector(rim_target_);
+  out.PutDouble(rim_mass_);
+  out.PutDouble(rim_inertia_);
+  out.PutTag("ENRG");
+  const Energies& e = energies_;
+  for (double d : {e.kinetic, e.internal, e.hourglass_stored, e.hourglass_dissipated,
+                   e.bulk_viscous, e.damping, e.contact_stored, e.friction, e.external_work,
+                   e.initial_kinetic, stored_internal_, stored_hg_, stored_contact_}) {
+    out.PutDouble(d);
+  }
+  for (double d : work_to_midstep_) out.PutDouble(d);
+}
+
+void ExplicitSolver::LoadState(BinaryReader& in) {
+  in.ExpectTag("SOLV");
+  const double dt = in.GetDouble();
+  if (dt != dt_) {
+    in.Damaged("its time step " + std::to_string(dt) + " s is not this model's " +
+               std::to_string(dt_) + " s");
+  }
+  const size_t nn = x_.size();
+  const double time = in.GetFinite();
+  const std::int64_t steps = in.GetI64();
+  if (steps < 0) in.Damaged("a negative step count");
+  const double pressure = in.GetFinite();
+  const double damping = in.GetFinite();
+  std::vector<Eigen::Vector3d>* arrays[] = {
+      &x_,           &v_,           &applied_, &reaction_,  &fixed_velocity_, &f_stored_,
+      &f_dissip_bv_, &f_dissip_hg_, &f_damp_,  &f_contact_, &f_friction_,     &f_external_};
+  std::vector<std::vector<Eigen::Vector3d>> read;
+  for (size_t k = 0; k < std::size(arrays); ++k) read.push_back(in.GetVectors(nn));
+  for (const Eigen::Vector3d& p : read[0]) {
+    if (!p.allFinite()) in.Damaged("a non-finite node position");
+  }
+  if (in.GetCount(8) != nn) in.Damaged("the fixed-dof table does not match the mesh");
+  std::vector<std::array<char, 3>> fixed(nn);
+  for (auto& f : fixed) {
+    const std::uint64_t bits = in.GetU64();
+    if (bits > 7) in.Damaged("a fixed-dof entry out of range");
+    f = {char(bits & 1), char(bits >> 1 & 1), char(bits >> 2 & 1)};
+  }
+  std::vector<double> normal = in.GetDoubles(nn);
+  in.ExpectTag("ROAD");
+  RoadContact road;
+  road.enabled = in.GetU64() != 0;
+  road.height_m = in.GetFinite();
+  road.penalty_factor = in.GetFinite();
+  road.road_speed_x_mps = in.GetFinite();
+  road.friction.static_coefficient = in.GetFinite();
+  road.friction.kinetic_coefficient = in.GetFinite();
+  road.friction.decay_s_per_m = in.GetFinite();
+  in.ExpectTag("RIM_");
+  const bool has_rim = in.GetU64() != 0;
+  if (has_rim != has_rim_) in.Damaged("its rim does not match this model's");
+  const std::uint64_t modes = in.GetU64();
+  const auto mode = [&](int shift) {
+    const std::uint64_t m = modes >> shift & 0xff;
+    if (m > static_cast<std::uint64_t>(RimDofMode::kPrescribedVelocity) || modes >> 24 != 0) {
+      in.Damaged("a rim mode out of range");
+    }
+    return static_cast<RimDofMode>(m);
+  };
+  RimSettings settings = rim_settings_;
+  settings.x_mode = mode(0);
+  settings.z_mode = mode(8);
+  settings.spin_mode = mode(16);
+  RimState rim;
+  rim.centre = in.GetVector();
+  rim.velocity = in.GetVector();
+  rim.angle_rad = in.GetFinite();
+  rim.spin_rad_per_s = in.GetFinite();
+  RimLoads loads[2];
+  for (RimLoads& l : loads) {
+    l.force_x_N = in.GetDouble();
+    l.force_z_N = in.GetDouble();
+    l.torque_Nm = in.GetDouble();
+  }
+  const Eigen::Vector3d target = in.GetVector();
+  const double rim_mass = in.GetFinite(), rim_inertia = in.GetFinite();
+  in.ExpectTag("ENRG");
+  Energies e;
+  double stored[3];
+  for (double* d : {&e.kinetic, &e.internal, &e.hourglass_stored, &e.hourglass_dissipated,
+                    &e.bulk_viscous, &e.damping, &e.contact_stored, &e.friction, &e.external_work,
+                    &e.initial_kinetic, &stored[0], &stored[1], &stored[2]}) {
+    *d = in.GetFinite();
+  }
+  std::array<double, 5> work{};
+  for (double& d : work) d = in.GetFinite();
+
+  // Everything read and checked: only now change the solver.
+  time_ = time;
+  steps_ = steps;
+  pressure_Pa_ = pressure;
+  options_.mass_damping_per_s = damping;
+  for (size_t k = 0; k < std::size(arrays); ++k) *arrays[k] = std::move(read[k]);
+  fixed_ = std::move(fixed);
+  contact_normal_ = std::move(normal);
+  if (road.enabled) {
+    SetRoad(road);
+  } else {
+    road_ = road;
+  }
+  rim_settings_ = settings;
+  rim_ = rim;
+  rim_loads_ = loads[0];
+  rim_reaction_ = loads[1];
+  rim_target_ = target;
+  rim_mass_ = rim_mass;
+  rim_inertia_ = rim_inertia;
+  energies_ = e;
+  stored_internal_ = stored[0];
+  stored_hg_ = stored[1];
+  stored_contact_ = stored[2];
+  work_to_midstep_ = work;
 }
 
 }  // namespace hotlap::fe

@@ -31,6 +31,18 @@
 /// system); dissipation and external work are accumulated as (f(n) + f(n+1)) . (x(n+1) - x(n)) / 2
 /// up to t(n). The initial kinetic energy is that form at the first step. Their
 /// balance is therefore a genuine check of the force computation (Energies::BalanceError).
+///
+/// Threads (OpenMP): the element loop (rubber, cords, hourglass, bulk viscosity), the pressure
+/// faces and the node loop (contact, friction, damping, the update, the energy sums) run on
+/// set_threads() threads in one parallel region per step; the rim is serial. Two assemblies:
+/// Assembly::kThreadBuffers (the default, the faster one: docs/fe-tyre.md) gives each thread a
+/// contiguous range of elements and its own force buffer, summed per node in thread order:
+/// deterministic for a given thread count, and equal to the serial (one-thread) result to
+/// round-off. Assembly::kColoured splits the elements into colours whose elements share no node;
+/// each colour runs in parallel and adds straight to the nodes: the same bits for every thread
+/// count, but slower (a barrier per colour, and each colour sweeps the whole mesh). Every sum
+/// (energies) is taken over fixed blocks in a fixed order, so it does not depend on the thread
+/// count.
 
 #include <array>
 #include <cstdint>
@@ -45,6 +57,18 @@
 #include "hotlap/fe/yeoh.h"
 
 namespace hotlap::fe {
+
+class BinaryReader;
+class BinaryWriter;
+
+/// How the parallel element loop adds element forces to the nodes (see the file comment).
+enum class Assembly : std::uint8_t {
+  kThreadBuffers,  ///< a force buffer per thread, summed after the loop in thread order (default)
+  kColoured,       ///< colours of elements that share no node; independent of the thread count
+};
+
+/// OpenMP's default thread count (omp_get_max_threads(): the cores, or OMP_NUM_THREADS).
+int DefaultThreadCount();
 
 /// Solver settings. The defaults are Abaqus/Explicit's where it has one.
 struct SolverOptions {
@@ -145,6 +169,31 @@ class ExplicitSolver {
   double rim_mass() const { return rim_mass_; }
   /// Changes how the rim's DOFs move (e.g. free spin for rolling).
   void SetRimModes(RimDofMode x_mode, RimDofMode z_mode, RimDofMode spin_mode);
+  /// Threads of the element and node loops; 0 (the default) is OpenMP's default
+  /// (omp_get_max_threads(): all cores unless OMP_NUM_THREADS says otherwise), capped at one
+  /// thread per kElementsPerThread elements (small meshes run serially).
+  void set_threads(int threads);
+  static constexpr int kElementsPerThread = 1000;
+  /// The thread count the loops use.
+  int threads() const;
+  void set_assembly(Assembly assembly) { assembly_ = assembly; }
+  Assembly assembly() const { return assembly_; }
+  /// Number of element colours (no two elements of a colour share a node).
+  int colours() const { return static_cast<int>(colour_start_.size()) - 1; }
+  /// The elements of colour c, ascending.
+  std::vector<int> ColourElements(int c) const {
+    return {colour_elements_.begin() + colour_start_.at(c),
+            colour_elements_.begin() + colour_start_.at(c + 1)};
+  }
+
+  /// Writes everything that changes while the solver runs (time, step count, nodal positions,
+  /// velocities and last forces, rim, road, loads, energy accumulators) so that LoadState on a
+  /// solver built from the same mesh, materials and options continues bit for bit.
+  void SaveState(BinaryWriter& out) const;
+  /// Reads what SaveState wrote. Throws InputError (via the reader) if it does not fit this
+  /// solver (array sizes, time step).
+  void LoadState(BinaryReader& in);
+
   /// Mass-proportional damping, 1/s (quasi-static steps on, dynamic steps off).
   void set_mass_damping(double alpha_per_s) { options_.mass_damping_per_s = alpha_per_s; }
 
@@ -193,8 +242,23 @@ class ExplicitSolver {
   double StableStepEstimate() const { return stable_step_; }
 
  private:
-  void ComputeForces();
+  // Per-node sums of a step: work terms back (0-4) and ahead (5-9), kinetic, contact energy.
+  static constexpr int kKineticSum = 10, kContactSum = 11;
+  using NodeSums = std::array<double, 12>;
+
+  /// Forces at the current state; with `advance`, also one central-difference step.
+  void RunStep(bool advance);
+  /// Node a's external, damping and contact forces (and the sum of the thread buffers if
+  /// `buffers` > 0); with `advance`, its new velocity and position and its energy terms.
+  void NodeUpdate(long a, int buffers, const Eigen::Vector3d& road_velocity, bool advance,
+                  NodeSums& sum);
+  /// Node a's work terms f . v(n-1/2) and f . v(n+1/2).
+  void AddWorkTerms(long a, NodeSums& sum) const;
   void AdvanceRim();
+  /// Forces of element e added to the three arrays (indexed by node); its strain and hourglass
+  /// energies to elem_energy_[e]. False (nothing added) if the element is inverted.
+  bool AddElementForces(size_t e, Eigen::Vector3d* f_stored, Eigen::Vector3d* f_bulk,
+                        Eigen::Vector3d* f_hourglass);
 
   Mesh mesh_;
   std::vector<YeohMaterial> materials_;
@@ -218,6 +282,19 @@ class ExplicitSolver {
   std::vector<FibreLayer> fibres_sorted_;
   std::vector<double> mass_;
   std::vector<double> contact_stiffness_;
+
+  // Parallel loops.
+  int threads_ = 0;
+  Assembly assembly_ = Assembly::kThreadBuffers;
+  std::vector<int> colour_start_;                            // CSR over colour_elements_
+  std::vector<int> colour_elements_;                         // ascending within a colour
+  std::vector<std::array<double, 2>> elem_energy_;           // strain, hourglass of each element
+  std::vector<std::vector<Eigen::Vector3d>> thread_forces_;  // kThreadBuffers: 3 per thread
+  std::vector<int> node_face_start_, node_faces_;            // pressure faces of each node (CSR)
+  std::vector<char> is_contact_node_;
+  std::vector<Eigen::Vector3d> face_force_;       // a quarter of each face's pressure force
+  std::vector<NodeSums> node_sums_;               // per block of nodes
+  std::vector<std::array<double, 2>> elem_sums_;  // per block of elements
 
   std::vector<Eigen::Vector3d> X_, x_, v_, v_old_, applied_, reaction_;
   std::vector<std::array<char, 3>> fixed_;

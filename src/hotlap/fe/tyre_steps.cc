@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <Eigen/Geometry>
 
@@ -66,29 +67,46 @@ HistoryRow TyreRun::Row(double torque) const {
 
 void TyreRun::RunUntil(const std::string& step, double t_end, const StepHooks& hooks,
                        const std::function<void()>& each, std::vector<HistoryRow>& history,
-                       const double* torque) {
-  const double t0 = solver_.time(), dt = solver_.time_step();
-  double next_history = t0;
-  int next_frame = 0;
+                       const double* torque, bool resume) {
+  const double dt = solver_.time_step();
+  if (!resume) {
+    cursor_ = StepCursor{};
+    cursor_.t0 = cursor_.next_history = solver_.time();
+    history.push_back(Row(torque ? *torque : 0.0));
+  }
+  const double t0 = cursor_.t0;
   const int frames = std::max(1, hooks.frames);
-  long k = 0;
-  history.push_back(Row(torque ? *torque : 0.0));
+  // Checkpoints at t0 + m * interval (the first one after now), and at the end.
+  const double interval = hooks.checkpoint ? hooks.checkpoint_interval_s : 0.0;
+  double next_checkpoint = std::numeric_limits<double>::infinity();
+  if (interval > 0.0) {
+    next_checkpoint = t0 + interval * (std::floor((solver_.time() - t0) / interval + 0.5) + 1.0);
+  }
+  bool checkpoint_now = false;
   while (solver_.time() < t_end - 0.5 * dt) {
     if (each) each();
     solver_.Step();
-    if (solver_.time() >= next_history + hooks.history_interval_s - 0.5 * dt) {
-      next_history = solver_.time();
+    if (solver_.time() >= cursor_.next_history + hooks.history_interval_s - 0.5 * dt) {
+      cursor_.next_history = solver_.time();
       history.push_back(Row(torque ? *torque : 0.0));
     }
-    const double frame_time = t0 + (t_end - t0) * (next_frame + 1) / frames;
-    if (next_frame < frames - 1 && solver_.time() >= frame_time - 0.5 * dt) {
-      if (hooks.frame) hooks.frame(step, next_frame);
-      ++next_frame;
+    const double frame_time = t0 + (t_end - t0) * (cursor_.next_frame + 1) / frames;
+    if (cursor_.next_frame < frames - 1 && solver_.time() >= frame_time - 0.5 * dt) {
+      if (hooks.frame) hooks.frame(step, cursor_.next_frame);
+      ++cursor_.next_frame;
     }
-    if (hooks.progress && (++k % 2000 == 0)) hooks.progress(step, solver_.time(), t_end);
+    if (hooks.progress && (++cursor_.calls % 2000 == 0)) {
+      hooks.progress(step, solver_.time(), t_end);
+    }
+    checkpoint_now = solver_.time() >= next_checkpoint - 0.5 * dt;
+    if (checkpoint_now) {
+      hooks.checkpoint();
+      while (next_checkpoint < solver_.time() + 0.5 * dt) next_checkpoint += interval;
+    }
   }
   if (hooks.frame) hooks.frame(step, frames - 1);
   if (hooks.progress) hooks.progress(step, solver_.time(), t_end);
+  if (hooks.checkpoint && !checkpoint_now) hooks.checkpoint();
 }
 
 InflateResult TyreRun::Inflate(const StepHooks& hooks) {
@@ -227,34 +245,120 @@ RollResult TyreRun::Roll(const StepHooks& hooks) {
 
 BrakeResult TyreRun::Brake(double duration_s, const BrakeTorqueFn& torque, const StepHooks& hooks) {
   if (loaded_radius_ <= 0.0) throw InputError("fe: braking needs the roll step first");
-  BrakeResult r;
-  r.initial_speed_mps = solver_.rim_state().velocity.x();
   // Quarter car: the translating mass is load / g (spec section 8), the tyre's included.
   const double quarter = config_.vertical_load_N / kGravity;
   double tyre_mass = 0.0;
   for (size_t a = 0; a < solver_.node_masses().size(); ++a) tyre_mass += solver_.node_masses()[a];
   solver_.AddRimTranslationalMass(std::max(0.0, quarter - tyre_mass - config_.rim_mass_kg));
   solver_.SetRimModes(RimDofMode::kFree, RimDofMode::kFree, RimDofMode::kFree);
-  const double x0 = solver_.rim_state().centre.x(), t0 = solver_.time();
-  double applied = 0.0;
+  brake_ = BrakeStep{};
+  brake_.active = true;
+  brake_.t0 = solver_.time();
+  brake_.x0 = solver_.rim_state().centre.x();
+  return RunBrake(duration_s, torque, hooks, /*resume=*/false);
+}
+
+BrakeResult TyreRun::ResumeBrake(double duration_s, const BrakeTorqueFn& torque,
+                                 const StepHooks& hooks) {
+  if (!brake_.active) throw InputError("fe: no braking step to resume");
+  return RunBrake(duration_s, torque, hooks, /*resume=*/true);
+}
+
+BrakeResult TyreRun::RunBrake(double duration_s, const BrakeTorqueFn& torque,
+                              const StepHooks& hooks, bool resume) {
+  const double t0 = brake_.t0;
   RunUntil(
       "abs", t0 + duration_s, hooks,
       [&] {
         const RimState& rim = solver_.rim_state();
         const double capacity =
             std::max(0.0, torque(solver_.time() - t0, rim.velocity.x(), rim.spin_rad_per_s));
-        applied = -capacity * std::tanh(rim.spin_rad_per_s / kBrakeSpinRegularisation);
-        solver_.rim_loads().torque_Nm = applied;
+        brake_.applied = -capacity * std::tanh(rim.spin_rad_per_s / kBrakeSpinRegularisation);
+        solver_.rim_loads().torque_Nm = brake_.applied;
         solver_.rim_loads().force_z_N = -config_.vertical_load_N;
       },
-      r.history, &applied);
+      brake_.history, &brake_.applied, resume);
+  BrakeResult r;
+  r.history = brake_.history;
+  r.initial_speed_mps = r.history.front().rim_vx_mps;
   for (const HistoryRow& h : r.history) {
     r.max_slip = std::max(r.max_slip, h.slip);
     r.max_brake_torque_Nm = std::max(r.max_brake_torque_Nm, std::abs(h.brake_torque_Nm));
   }
   r.final_speed_mps = solver_.rim_state().velocity.x();
-  r.distance_m = solver_.rim_state().centre.x() - x0;
+  r.distance_m = solver_.rim_state().centre.x() - brake_.x0;
   return r;
+}
+
+namespace {
+
+void PutRow(BinaryWriter& out, const HistoryRow& h) {
+  const Energies& e = h.energies;
+  for (double d : {h.time_s, h.rim_x_m, h.rim_z_m, h.rim_vx_mps, h.spin_rad_per_s,
+                   h.brake_torque_Nm, h.road_fx_N, h.road_fz_N, h.slip, e.kinetic, e.internal,
+                   e.hourglass_stored, e.hourglass_dissipated, e.bulk_viscous, e.damping,
+                   e.contact_stored, e.friction, e.external_work, e.initial_kinetic}) {
+    out.PutDouble(d);
+  }
+}
+
+constexpr size_t kRowDoubles = 19;
+
+HistoryRow GetRow(BinaryReader& in) {
+  HistoryRow h;
+  Energies& e = h.energies;
+  for (double* d :
+       {&h.time_s, &h.rim_x_m, &h.rim_z_m, &h.rim_vx_mps, &h.spin_rad_per_s, &h.brake_torque_Nm,
+        &h.road_fx_N, &h.road_fz_N, &h.slip, &e.kinetic, &e.internal, &e.hourglass_stored,
+        &e.hourglass_dissipated, &e.bulk_viscous, &e.damping, &e.contact_stored, &e.friction,
+        &e.external_work, &e.initial_kinetic}) {
+    *d = in.GetDouble();
+  }
+  return h;
+}
+
+}  // namespace
+
+void TyreRun::SaveState(BinaryWriter& out) const {
+  if (!brake_.active) throw InputError("fe: a checkpoint needs a braking step");
+  out.PutTag("TYRE");
+  for (double d : {road_z_, inflated_radius_, loaded_radius_, rolling_radius_, cursor_.t0,
+                   cursor_.next_history, brake_.t0, brake_.x0, brake_.applied}) {
+    out.PutDouble(d);
+  }
+  out.PutI64(cursor_.next_frame);
+  out.PutI64(cursor_.calls);
+  out.PutU64(brake_.history.size());
+  for (const HistoryRow& h : brake_.history) PutRow(out, h);
+  solver_.SaveState(out);
+}
+
+void TyreRun::LoadState(BinaryReader& in) {
+  in.ExpectTag("TYRE");
+  double d[9];
+  for (double& v : d) v = in.GetFinite();
+  const std::int64_t next_frame = in.GetI64(), calls = in.GetI64();
+  if (next_frame < 0 || next_frame > 1000000 || calls < 0)
+    in.Damaged("a step position out of range");
+  const size_t rows = in.GetCount(kRowDoubles * sizeof(double));
+  if (rows == 0) in.Damaged("an empty braking history");
+  std::vector<HistoryRow> history;
+  history.reserve(rows);
+  for (size_t k = 0; k < rows; ++k) history.push_back(GetRow(in));
+  solver_.LoadState(in);
+  road_z_ = d[0];
+  inflated_radius_ = d[1];
+  loaded_radius_ = d[2];
+  rolling_radius_ = d[3];
+  cursor_.t0 = d[4];
+  cursor_.next_history = d[5];
+  cursor_.next_frame = static_cast<int>(next_frame);
+  cursor_.calls = calls;
+  brake_.active = true;
+  brake_.t0 = d[6];
+  brake_.x0 = d[7];
+  brake_.applied = d[8];
+  brake_.history = std::move(history);
 }
 
 }  // namespace hotlap::fe

@@ -13,11 +13,18 @@
 /// Quasi-static steps (inflate, footprint) are dynamic relaxation: the load is ramped and held
 /// with mass-proportional damping. Rolling and braking run with no mass damping (it would act on
 /// the absolute velocity and brake the tyre); bulk viscosity remains.
+///
+/// Checkpoints (braking only): StepHooks::checkpoint is called every
+/// StepHooks::checkpoint_interval_s of simulated time and at the end of the step; in it the caller
+/// writes SaveState (and its own state: the torque callback's). A new TyreRun of the same
+/// configuration that reads it with LoadState continues with ResumeBrake bit for bit.
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "hotlap/fe/checkpoint.h"
 #include "hotlap/fe/explicit_solver.h"
 #include "hotlap/fe/fe_config.h"
 #include "hotlap/fe/tyre_mesh.h"
@@ -46,6 +53,10 @@ struct StepHooks {
   FrameFn frame;        ///< may be empty
   int frames = 1;       ///< frames per step, the last at the step's end
   double history_interval_s = 1e-4;
+  /// Called between two time steps every checkpoint_interval_s of simulated time after the
+  /// step's start, and at its end; may be empty.
+  std::function<void()> checkpoint;
+  double checkpoint_interval_s = 0.0;  ///< s (0: only at the end)
 };
 
 struct InflateResult {
@@ -109,6 +120,17 @@ class TyreRun {
   /// Needs Roll first. The rim carries a quarter-car mass (load / g) free along x and the brake
   /// torque opposes its spin (regularised near zero spin). Runs for `duration_s`.
   BrakeResult Brake(double duration_s, const BrakeTorqueFn& torque, const StepHooks& hooks);
+  /// Continues a braking step restored by LoadState until `duration_s` after its start; the
+  /// result covers the whole step (its history from the start).
+  BrakeResult ResumeBrake(double duration_s, const BrakeTorqueFn& torque, const StepHooks& hooks);
+
+  /// Writes the state of a braking step in progress (or just ended): the solver's, the step's
+  /// history and position, and the radii of the earlier steps. Throws if no braking step ran.
+  void SaveState(BinaryWriter& out) const;
+  /// Reads what SaveState wrote (InputError via the reader if it does not fit).
+  void LoadState(BinaryReader& in);
+  /// The braking step's start time, s (once Brake ran or LoadState read one).
+  double brake_start_s() const { return brake_.t0; }
 
   const FeConfig& config() const { return config_; }
   const TyreMesh& tyre() const { return tyre_; }
@@ -122,11 +144,29 @@ class TyreRun {
   double slip_radius_m() const { return rolling_radius_ > 0.0 ? rolling_radius_ : loaded_radius_; }
 
  private:
+  /// Where RunUntil is within a step.
+  struct StepCursor {
+    double t0 = 0.0;            // the step's start, s
+    double next_history = 0.0;  // time of the last history row, s
+    int next_frame = 0;
+    std::int64_t calls = 0;  // steps taken in this step (progress lines every 2000)
+  };
+  /// The braking step's own state.
+  struct BrakeStep {
+    bool active = false;
+    double t0 = 0.0, x0 = 0.0;  // start time and rim position
+    double applied = 0.0;       // torque of the last step, N m
+    std::vector<HistoryRow> history;
+  };
+
   HistoryRow Row(double torque) const;
-  /// Steps until `t_end`, calling `each` before every step, recording history and hooks.
+  /// Steps until `t_end`, calling `each` before every step, recording history and hooks. With
+  /// `resume`, continues from cursor_ (no new first history row).
   void RunUntil(const std::string& step, double t_end, const StepHooks& hooks,
                 const std::function<void()>& each, std::vector<HistoryRow>& history,
-                const double* torque);
+                const double* torque, bool resume = false);
+  BrakeResult RunBrake(double duration_s, const BrakeTorqueFn& torque, const StepHooks& hooks,
+                       bool resume);
   double OuterRadiusMean() const;
 
   FeConfig config_;
@@ -136,6 +176,8 @@ class TyreRun {
   double inflated_radius_ = 0.0;
   double loaded_radius_ = 0.0;
   double rolling_radius_ = 0.0;
+  StepCursor cursor_;
+  BrakeStep brake_;
 };
 
 }  // namespace hotlap::fe

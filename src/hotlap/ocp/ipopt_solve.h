@@ -32,7 +32,7 @@ struct IpoptOptions {
   /// the barrier.
   std::vector<double> warm_z_lower, warm_z_upper, warm_lambda;
   /// The barrier parameter a warm start begins with.
-  double warm_mu = 1e-4;
+  double warm_mu = 1e-6;
   /// Called at every iteration with (iteration, objective, primal infeasibility, dual
   /// infeasibility); return false to stop.
   std::function<bool(int, double, double, double)> on_iteration;
