@@ -5,7 +5,6 @@
 // an inverted element found inside the parallel loop is reported as a NumericalError, not a crash.
 
 #include <cmath>
-#include <random>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -54,16 +53,8 @@ Result RunBlock(int threads, Assembly assembly, double pulse_N = 0.3, int steps 
   s.set_threads(threads);
   s.set_assembly(assembly);
   EXPECT_EQ(s.threads(), threads);
-  std::mt19937 rng(5);
-  std::normal_distribution<double> n(0.0, 0.02);
-  std::vector<Eigen::Vector3d> v(mesh.nodes.size());
-  const Eigen::Vector3d centre(0.5 * kNx * kH, 0.5 * kNy * kH, 0.5 * kNz * kH);
-  for (size_t a = 0; a < v.size(); ++a) {
-    const Eigen::Vector3d r = mesh.nodes[a] - centre;
-    v[a] = Eigen::Vector3d(0, 0, 40.0).cross(r) + Eigen::Vector3d(30.0 * r.x(), 0, 0) +
-           Eigen::Vector3d(n(rng), n(rng), n(rng));
-  }
-  s.SetInitialVelocity(v);
+  s.SetInitialVelocity(testing::SpinStretchNoiseVelocities(
+      mesh.nodes, Eigen::Vector3d(0.5 * kNx * kH, 0.5 * kNy * kH, 0.5 * kNz * kH), 5));
   s.set_pressure(50e3);
   Result out;
   double scale = 0.0;

@@ -94,16 +94,8 @@ BlockRun RunBlock(bool pulse) {
     }
   }
   ExplicitSolver s(mesh, {testing::Tread()}, {}, SolverOptions{});
-  std::mt19937 rng(11);
-  std::normal_distribution<double> n(0.0, 0.02);
-  std::vector<Eigen::Vector3d> v(mesh.nodes.size());
-  const Eigen::Vector3d centre(2 * h, 1.5 * h, h);
-  for (size_t a = 0; a < v.size(); ++a) {
-    const Eigen::Vector3d r = mesh.nodes[a] - centre;
-    v[a] = Eigen::Vector3d(0, 0, 40.0).cross(r) + Eigen::Vector3d(30.0 * r.x(), 0, 0) +
-           Eigen::Vector3d(n(rng), n(rng), n(rng));
-  }
-  s.SetInitialVelocity(v);
+  s.SetInitialVelocity(
+      testing::SpinStretchNoiseVelocities(mesh.nodes, Eigen::Vector3d(2 * h, 1.5 * h, h), 11));
   s.set_pressure(50e3);
   BlockRun out;
   double scale = 0.0, max_hg = 0.0, max_ie = 0.0;

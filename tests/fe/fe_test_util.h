@@ -3,6 +3,10 @@
 // formulas that do not call the code under test.
 
 #include <cmath>
+#include <random>
+#include <vector>
+
+#include <Eigen/Geometry>
 
 #include "hotlap/fe/yeoh.h"
 
@@ -39,6 +43,21 @@ inline double HandUniaxialLateralStretch(double l1) {
     (HandUniaxialStress(l1, mid, false) > 0.0 ? hi : lo) = mid;
   }
   return 0.5 * (lo + hi);
+}
+
+// Nodal velocities of a block spinning at 40 rad/s about z through `centre`, stretching at 30 /s
+// along x, plus N(0, 0.02 m/s) noise from `seed`: every mode, rigid and deforming, excited.
+inline std::vector<Eigen::Vector3d> SpinStretchNoiseVelocities(
+    const std::vector<Eigen::Vector3d>& nodes, const Eigen::Vector3d& centre, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> n(0.0, 0.02);
+  std::vector<Eigen::Vector3d> v(nodes.size());
+  for (size_t a = 0; a < v.size(); ++a) {
+    const Eigen::Vector3d r = nodes[a] - centre;
+    v[a] = Eigen::Vector3d(0, 0, 40.0).cross(r) + Eigen::Vector3d(30.0 * r.x(), 0, 0) +
+           Eigen::Vector3d(n(rng), n(rng), n(rng));
+  }
+  return v;
 }
 
 }  // namespace hotlap::fe::testing

@@ -24,45 +24,20 @@ struct FreeTimeTrapezoid {
   }
 };
 
-// Minimum time to move a double integrator x'' = u, |u| <= 1, from rest at 0 to rest at 1:
-// accelerate for 1 s and brake for 1 s, T = 2.
-TEST(IpoptSolveTest, DoubleIntegratorMinimumTimeIsBangBang) {
-  const int n = 40;
+// Minimum time to move a double integrator x'' = u, |u| <= u_max, from rest at 0 to rest at 1:
+// accelerate for half the time and brake for the other half, T = 2 / sqrt(u_max).
+struct DoubleIntegrator {
   ElementNlp nlp;
-  const int t = nlp.AddVariable(3.0, 0.1, 10.0, 1.0);
-  std::vector<int> x(n + 1), v(n + 1), u(n + 1);
-  for (int k = 0; k <= n; ++k) {
-    const double s = static_cast<double>(k) / n;
-    x[k] = nlp.AddVariable(s, k == 0 ? 0.0 : (k == n ? 1.0 : -1e19),
-                           k == 0 ? 0.0 : (k == n ? 1.0 : 1e19), 1.0);
-    v[k] = nlp.AddVariable(0.5, k == 0 || k == n ? 0.0 : -1e19, k == 0 || k == n ? 0.0 : 1e19, 1.0);
-    u[k] = nlp.AddVariable(0.0, -1.0, 1.0, 1.0);
-  }
-  const std::shared_ptr<const Element> trap = MakeElement<3, 1>(FreeTimeTrapezoid{double(n)});
-  for (int k = 0; k < n; ++k) {
-    const int rx = nlp.AddConstraint(0, 0, 1.0), rv = nlp.AddConstraint(0, 0, 1.0);
-    nlp.AddLinear(rx, x[k + 1], 1.0);
-    nlp.AddLinear(rx, x[k], -1.0);
-    nlp.AddElement(trap, {t, v[k], v[k + 1]}, {{{rx, -1.0}}});
-    nlp.AddLinear(rv, v[k + 1], 1.0);
-    nlp.AddLinear(rv, v[k], -1.0);
-    nlp.AddElement(trap, {t, u[k], u[k + 1]}, {{{rv, -1.0}}});
-  }
-  nlp.AddObjectiveLinear(t, 1.0);
-  nlp.Finalize();
-  const SolveResult r = SolveWithIpopt(nlp, {});
-  ASSERT_TRUE(r.ok()) << r.message;
-  EXPECT_NEAR(r.x[t], 2.0, 2.0 / n);
-  // Full throttle in the first half, full brake in the second (away from the switch).
-  for (int k = 2; k < n / 2 - 2; ++k) EXPECT_NEAR(r.x[u[k]], 1.0, 1e-4) << k;
-  for (int k = n / 2 + 3; k <= n - 2; ++k) EXPECT_NEAR(r.x[u[k]], -1.0, 1e-4) << k;
-}
+  int t = 0;           // the final time's variable
+  std::vector<int> u;  // the control's, per node
+};
 
-// The same double integrator with |u| <= u_max (T = 2 / sqrt(u_max)), for the warm start.
-ElementNlp DoubleIntegrator(int n, double u_max, int* t_index) {
-  ElementNlp nlp;
-  const int t = nlp.AddVariable(3.0, 0.1, 10.0, 1.0);
-  std::vector<int> x(n + 1), v(n + 1), u(n + 1);
+DoubleIntegrator MakeDoubleIntegrator(int n, double u_max) {
+  DoubleIntegrator d;
+  ElementNlp& nlp = d.nlp;
+  const int t = d.t = nlp.AddVariable(3.0, 0.1, 10.0, 1.0);
+  std::vector<int> x(n + 1), v(n + 1), &u = d.u;
+  u.resize(n + 1);
   for (int k = 0; k <= n; ++k) {
     const double s = static_cast<double>(k) / n;
     const bool end = k == 0 || k == n;
@@ -82,8 +57,19 @@ ElementNlp DoubleIntegrator(int n, double u_max, int* t_index) {
   }
   nlp.AddObjectiveLinear(t, 1.0);
   nlp.Finalize();
-  *t_index = t;
-  return nlp;
+  return d;
+}
+
+// |u| <= 1: T = 2.
+TEST(IpoptSolveTest, DoubleIntegratorMinimumTimeIsBangBang) {
+  const int n = 40;
+  const DoubleIntegrator d = MakeDoubleIntegrator(n, 1.0);
+  const SolveResult r = SolveWithIpopt(d.nlp, {});
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_NEAR(r.x[d.t], 2.0, 2.0 / n);
+  // Full throttle in the first half, full brake in the second (away from the switch).
+  for (int k = 2; k < n / 2 - 2; ++k) EXPECT_NEAR(r.x[d.u[k]], 1.0, 1e-4) << k;
+  for (int k = n / 2 + 3; k <= n - 2; ++k) EXPECT_NEAR(r.x[d.u[k]], -1.0, 1e-4) << k;
 }
 
 // A warm start from a neighbouring problem's point and multipliers (as the limited lap starts
@@ -91,14 +77,16 @@ ElementNlp DoubleIntegrator(int n, double u_max, int* t_index) {
 // of the wrong size are ignored (a cold start).
 TEST(IpoptSolveTest, WarmStartFromANeighbourConvergesFaster) {
   const int n = 40;
-  int t = 0;
-  const ElementNlp first = DoubleIntegrator(n, 1.0, &t);
+  const DoubleIntegrator d1 = MakeDoubleIntegrator(n, 1.0);
+  const ElementNlp& first = d1.nlp;
+  const int t = d1.t;
   const SolveResult a = SolveWithIpopt(first, {});
   ASSERT_TRUE(a.ok()) << a.message;
   ASSERT_EQ(a.z_lower.size(), static_cast<size_t>(first.variables()));
   ASSERT_EQ(a.lambda.size(), static_cast<size_t>(first.constraints()));
 
-  ElementNlp tighter = DoubleIntegrator(n, 0.8, &t);
+  DoubleIntegrator d2 = MakeDoubleIntegrator(n, 0.8);
+  ElementNlp& tighter = d2.nlp;
   const SolveResult cold = SolveWithIpopt(tighter, {});
   for (int i = 0; i < tighter.variables(); ++i) {
     tighter.set_initial(i, std::clamp(a.x[i], tighter.lower(i), tighter.upper(i)));
