@@ -20,6 +20,13 @@ namespace {
 using Ipopt::Index;
 using Ipopt::Number;
 
+// Whether the options carry multipliers sized for this programme (a warm start).
+bool HasWarmStart(const ElementNlp& nlp, const IpoptOptions& options) {
+  const size_t n = static_cast<size_t>(nlp.variables());
+  return options.warm_z_lower.size() == n && options.warm_z_upper.size() == n &&
+         options.warm_lambda.size() == static_cast<size_t>(nlp.constraints());
+}
+
 class Adaptor : public Ipopt::TNLP {
  public:
   Adaptor(const ElementNlp& nlp, const IpoptOptions& options, SolveResult& result)
@@ -54,22 +61,16 @@ class Adaptor : public Ipopt::TNLP {
                           Index m, bool init_lambda, Number* lambda) override {
     if (init_x) nlp_.ScaledStart(x);
     if (init_z) {
-      if (!WarmStart()) return false;
+      if (!HasWarmStart(nlp_, options_)) return false;
       std::copy(options_.warm_z_lower.begin(), options_.warm_z_lower.end(), z_l);
       std::copy(options_.warm_z_upper.begin(), options_.warm_z_upper.end(), z_u);
     }
     if (init_lambda) {
-      if (!WarmStart()) return false;
+      if (!HasWarmStart(nlp_, options_)) return false;
       std::copy(options_.warm_lambda.begin(), options_.warm_lambda.end(), lambda);
     }
     (void)n, (void)m;
     return true;
-  }
-
-  bool WarmStart() const {
-    const size_t n = static_cast<size_t>(nlp_.variables());
-    return options_.warm_z_lower.size() == n && options_.warm_z_upper.size() == n &&
-           options_.warm_lambda.size() == static_cast<size_t>(nlp_.constraints());
   }
 
   bool eval_f(Index, const Number* x, bool, Number& obj_value) override {
@@ -213,9 +214,7 @@ SolveResult SolveWithIpopt(const ElementNlp& nlp, const IpoptOptions& options) {
   app->Options()->SetStringValue("mu_strategy", "adaptive");
   app->Options()->SetStringValue("alpha_for_y", options.alpha_for_y);
   app->Options()->SetStringValue("sb", "yes");  // no banner
-  const size_t n = static_cast<size_t>(nlp.variables());
-  if (options.warm_z_lower.size() == n && options.warm_z_upper.size() == n &&
-      options.warm_lambda.size() == static_cast<size_t>(nlp.constraints())) {
+  if (HasWarmStart(nlp, options)) {
     // Start at the given point and multipliers, barely pushed off the bounds, with a small
     // barrier parameter.
     app->Options()->SetStringValue("warm_start_init_point", "yes");
