@@ -273,7 +273,8 @@ bool ExplicitSolver::AddElementForces(size_t e, Eigen::Vector3d* f_stored, Eigen
   const Eigen::Matrix3d f_inv = F.inverse();
   const Eigen::Matrix3d f_inv_t = f_inv.transpose();
   Eigen::Matrix3d P;
-  double w = CalcYeohPiolaAndEnergy(m, F, j, f_inv_t, P);
+  const double cbrt_j = std::cbrt(j);  // one cube root per element (Yeoh and bulk viscosity)
+  double w = CalcYeohPiolaAndEnergy(m, F, j, cbrt_j, f_inv_t, P);
   for (int k = fibre_start_[e]; k < fibre_start_[e + 1]; ++k) {
     const FibreLayer& f = fibres_sorted_[k];
     w += AddFibreStress(rebars_[f.rebar], f, F, P);
@@ -283,7 +284,7 @@ bool ExplicitSolver::AddElementForces(size_t e, Eigen::Vector3d* f_stored, Eigen
   // Bulk viscosity (Abaqus/Explicit form): a pressure against the volumetric strain rate,
   // linear b1 rho c_d L_e evol, plus quadratic rho (b2 L_e evol)^2 in compression only.
   const double evol = f_dot.cwiseProduct(f_inv_t).sum();  // tr(F_dot F^-1)
-  const double le = ref.length_m * std::cbrt(j);          // current characteristic length
+  const double le = ref.length_m * cbrt_j;                // current characteristic length
   const double rho = elem_density_[e];
   double q = b1 * rho * elem_wave_speed_[e] * le * evol;
   if (evol < 0.0) q -= rho * (b2 * le * evol) * (b2 * le * evol);

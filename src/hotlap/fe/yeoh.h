@@ -47,8 +47,8 @@ Eigen::Matrix3d CalcYeohFirstPiola(const YeohMaterial& m, const Eigen::Matrix3d&
 
 /// The solver's fused form: given F, J = det F and F^-T, sets P (Pa) and returns W (J/m^3),
 ///   P = 2 W1 J^(-2/3) F - (2/3) W1 I1b F^-T + K (J - 1) J F^-T,
-/// the same P as J sigma F^-T without forming B.
+/// the same P as J sigma F^-T without forming B. `cbrt_j` is J^(1/3) (the caller needs it too).
 double CalcYeohPiolaAndEnergy(const YeohMaterial& m, const Eigen::Matrix3d& F, double j,
-                              const Eigen::Matrix3d& f_inv_t, Eigen::Matrix3d& P);
+                              double cbrt_j, const Eigen::Matrix3d& f_inv_t, Eigen::Matrix3d& P);
 
 }  // namespace hotlap::fe
