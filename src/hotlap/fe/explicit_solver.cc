@@ -276,7 +276,7 @@ bool ExplicitSolver::AddElementForces(size_t e, Eigen::Vector3d* f_stored, Eigen
   const Eigen::Matrix3d f_inv = F.inverse();
   const Eigen::Matrix3d f_inv_t = f_inv.transpose();
   Eigen::Matrix3d P;
-  const double cbrt_j = std::cbrt(j);  // one cube root per element (Yeoh and bulk viscosity)
+  const double cbrt_j = CubeRoot(j);  // one cube root per element (Yeoh and bulk viscosity)
   double w = CalcYeohPiolaAndEnergy(m, F, j, cbrt_j, f_inv_t, P);
   for (int k = fibre_start_[e]; k < fibre_start_[e + 1]; ++k) {
     const FibreLayer& f = fibres_sorted_[k];
