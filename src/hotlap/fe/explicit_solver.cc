@@ -294,33 +294,39 @@ bool ExplicitSolver::AddElementForces(size_t e, Eigen::Vector3d* f_stored, Eigen
   const Eigen::Matrix3d pv = (-v0 * j * q) * f_inv_t;
   const Eigen::Matrix3d ps = -v0 * P;
 
-  // Hourglass: generalised displacements Q_alpha = sum_a gamma_alpha,a u_a (and rates).
+  // Hourglass: generalised displacements Q_alpha = sum_a gamma_alpha,a u_a (and rates, only
+  // with viscous hourglass control: it is off by default and in the paper's model, and the
+  // rates and their forces are a tenth of the element's arithmetic).
+  const double khg = hg_stiffness_[e], chg = hg_viscous_[e];
+  const bool viscous_hg = chg > 0.0;
   std::array<Vector3d, 4> qhg, qdot;
   const auto& gam = ref.hourglass;
   double hg_energy = 0.0;
   for (int al = 0; al < 4; ++al) {
     qhg[al].setZero();
-    qdot[al].setZero();
-    for (int a = 0; a < 8; ++a) {
-      qhg[al] += gam(al, a) * u[a];
-      qdot[al] += gam(al, a) * vel[a];
+    for (int a = 0; a < 8; ++a) qhg[al] += gam(al, a) * u[a];
+    hg_energy += 0.5 * khg * qhg[al].squaredNorm();
+  }
+  if (viscous_hg) {
+    for (int al = 0; al < 4; ++al) {
+      qdot[al].setZero();
+      for (int a = 0; a < 8; ++a) qdot[al] += gam(al, a) * vel[a];
     }
-    hg_energy += 0.5 * hg_stiffness_[e] * qhg[al].squaredNorm();
   }
   elem_energy_[e] = {v0 * w, hg_energy};
-  const double khg = hg_stiffness_[e], chg = hg_viscous_[e];
   // Nodal forces: -V0 P B0_a (rubber and cords), -V0 P_v B0_a (bulk viscosity),
   // -k gamma^T Q (hourglass stiffness), -c gamma^T Q_dot (hourglass viscosity).
   for (int a = 0; a < 8; ++a) {
     const Vector3d g = ref.grad.row(a).transpose();
-    Vector3d hs = Vector3d::Zero(), hv = Vector3d::Zero();
-    for (int al = 0; al < 4; ++al) {
-      hs += gam(al, a) * qhg[al];
-      hv += gam(al, a) * qdot[al];
-    }
+    Vector3d hs = Vector3d::Zero();
+    for (int al = 0; al < 4; ++al) hs += gam(al, a) * qhg[al];
     f_stored[nodes[a]] += ps * g - khg * hs;
     f_bulk[nodes[a]] += pv * g;
-    if (chg > 0.0) f_hourglass[nodes[a]] -= chg * hv;
+    if (viscous_hg) {
+      Vector3d hv = Vector3d::Zero();
+      for (int al = 0; al < 4; ++al) hv += gam(al, a) * qdot[al];
+      f_hourglass[nodes[a]] -= chg * hv;
+    }
   }
   return true;
 }
