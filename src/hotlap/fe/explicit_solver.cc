@@ -134,6 +134,8 @@ ExplicitSolver::ExplicitSolver(Mesh mesh, std::vector<YeohMaterial> materials,
   colour_elements_.resize(ne);
   std::vector<int> fill(colour_start_.begin(), colour_start_.end() - 1);
   for (size_t e = 0; e < ne; ++e) colour_elements_[fill[colour[e]]++] = static_cast<int>(e);
+  viscous_hourglass_ =
+      std::any_of(hg_viscous_.begin(), hg_viscous_.end(), [](double c) { return c > 0.0; });
   elem_energy_.assign(ne, {0.0, 0.0});
   v_old_ = v_;
   // Pressure faces of each node (CSR), gathered in face order; contact nodes as flags.
@@ -586,13 +588,15 @@ void ExplicitSolver::NodeUpdate(long a, int buffers, const Eigen::Vector3d& road
       const int t = std::countr_zero(mask);
       Eigen::Vector3d& bs = thread_forces_[3 * t][a];
       Eigen::Vector3d& bb = thread_forces_[3 * t + 1][a];
-      Eigen::Vector3d& bh = thread_forces_[3 * t + 2][a];
       fs += bs;
       fb += bb;
-      fh += bh;
       bs.setZero();
       bb.setZero();
-      bh.setZero();
+      if (viscous_hourglass_) {  // else no element adds to the hourglass buffers
+        Eigen::Vector3d& bh = thread_forces_[3 * t + 2][a];
+        fh += bh;
+        bh.setZero();
+      }
     }
     f_stored_[a] = fs;
     f_dissip_bv_[a] = fb;

@@ -285,7 +285,8 @@ class ExplicitSolver {
   std::vector<double> elem_density_;     // with cords and mass scaling, kg/m^3
   std::vector<double> elem_wave_speed_;  // c_d with the cords, m/s
   std::vector<double> hg_stiffness_, hg_viscous_;
-  std::vector<int> fibre_start_;  // CSR over fibres_sorted_
+  bool viscous_hourglass_ = false;  // any hg_viscous_ > 0
+  std::vector<int> fibre_start_;    // CSR over fibres_sorted_
   std::vector<FibreLayer> fibres_sorted_;
   std::vector<double> mass_;
   std::vector<double> contact_stiffness_;
