@@ -47,9 +47,10 @@ struct Result {
 // struck on a corner (0.3 x (2, -1, 3) N for 100 steps: a 1 N push on one 2 mm corner is so
 // violent that the O(dt^2) balance error of the nonlinear motion reaches 3e-3): every force kind of
 // the element loop is active (rubber, hourglass, bulk viscosity in compression and tension).
-Result RunBlock(int threads, Assembly assembly, double pulse_N = 0.3, int steps = 400) {
+Result RunBlock(int threads, Assembly assembly, double pulse_N = 0.3, int steps = 400,
+                const SolverOptions& options = {}) {
   const Mesh mesh = Block();
-  ExplicitSolver s(mesh, {testing::Tread()}, {}, SolverOptions{});
+  ExplicitSolver s(mesh, {testing::Tread()}, {}, options);
   s.set_threads(threads);
   s.set_assembly(assembly);
   EXPECT_EQ(s.threads(), threads);
@@ -133,6 +134,22 @@ TEST(FeParallel, ThreadBuffersAreDeterministicAndAgreeToRoundOff) {
   EXPECT_LT(a.worst_balance, 1e-3);
   std::printf("2 threads vs serial: max |dx| = %.3g m (%.3g of the size), differ: %d\n", max_dx,
               max_dx / size, any_difference);
+}
+
+// Viscous hourglass control (off by default, so its forces and per-thread buffers are skipped
+// then): on 2 threads with per-thread buffers it dissipates as on one, and the balance closes.
+TEST(FeParallel, ThreadBuffersCarryTheViscousHourglassForces) {
+  SolverOptions options;
+  options.hourglass_viscous = 0.1;
+  const Result a = RunBlock(2, Assembly::kThreadBuffers, 0.3, 400, options);
+  const Result ref = RunBlock(1, Assembly::kThreadBuffers, 0.3, 400, options);
+  const double scale = ref.energies.external_work + ref.energies.initial_kinetic;
+  EXPECT_GT(ref.energies.hourglass_dissipated, 1e-6 * scale);
+  EXPECT_NEAR(a.energies.hourglass_dissipated, ref.energies.hourglass_dissipated, 1e-9 * scale);
+  double max_dx = 0.0;
+  for (size_t n = 0; n < a.x.size(); ++n) max_dx = std::max(max_dx, (a.x[n] - ref.x[n]).norm());
+  EXPECT_LT(max_dx, 1e-10 * kNx * kH);
+  EXPECT_LT(a.worst_balance, 1e-3);
 }
 
 // An element inverted inside the parallel loop: the error leaves the OpenMP region as a

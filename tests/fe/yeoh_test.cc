@@ -20,6 +20,16 @@ using testing::HandW1;
 using testing::kC10;
 using testing::Tread;
 
+TEST(FeYeoh, CubeRootAgreesWithCbrtToRoundOff) {
+  for (double x = 1e-12; x < 1e12; x *= 1.0137) {
+    for (double y : {x, 1.0 + (x - 1.0) * 1e-9}) {
+      EXPECT_NEAR(fe::CubeRoot(y), std::cbrt(y), 8e-16 * std::cbrt(y)) << y;
+    }
+  }
+  EXPECT_EQ(fe::CubeRoot(8.0), 2.0);
+  EXPECT_NEAR(fe::CubeRoot(1e-310), std::cbrt(1e-310), 1e-118);
+}
+
 TEST(FeYeoh, BulkToShearTwentyGivesPoissonNearPoint475) {
   const YeohMaterial m = Tread();
   EXPECT_DOUBLE_EQ(InitialShearModulus(m), 2.0 * kC10);

@@ -1,6 +1,7 @@
 #include "hotlap/fe/explicit_solver.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -25,6 +26,8 @@ using Mat83 = Eigen::Matrix<double, 8, 3>;
 // Sums over nodes and elements are taken over blocks of this many terms (each block in order,
 // then the blocks in order), so that they do not depend on the thread count.
 constexpr long kSumBlock = 512;
+
+Eigen::Vector3d Vec3Zero() { return Eigen::Vector3d::Zero(); }
 
 long Blocks(size_t n) { return (static_cast<long>(n) + kSumBlock - 1) / kSumBlock; }
 
@@ -131,6 +134,8 @@ ExplicitSolver::ExplicitSolver(Mesh mesh, std::vector<YeohMaterial> materials,
   colour_elements_.resize(ne);
   std::vector<int> fill(colour_start_.begin(), colour_start_.end() - 1);
   for (size_t e = 0; e < ne; ++e) colour_elements_[fill[colour[e]]++] = static_cast<int>(e);
+  viscous_hourglass_ =
+      std::any_of(hg_viscous_.begin(), hg_viscous_.end(), [](double c) { return c > 0.0; });
   elem_energy_.assign(ne, {0.0, 0.0});
   v_old_ = v_;
   // Pressure faces of each node (CSR), gathered in face order; contact nodes as flags.
@@ -273,7 +278,8 @@ bool ExplicitSolver::AddElementForces(size_t e, Eigen::Vector3d* f_stored, Eigen
   const Eigen::Matrix3d f_inv = F.inverse();
   const Eigen::Matrix3d f_inv_t = f_inv.transpose();
   Eigen::Matrix3d P;
-  double w = CalcYeohPiolaAndEnergy(m, F, j, f_inv_t, P);
+  const double cbrt_j = CubeRoot(j);  // one cube root per element (Yeoh and bulk viscosity)
+  double w = CalcYeohPiolaAndEnergy(m, F, j, cbrt_j, f_inv_t, P);
   for (int k = fibre_start_[e]; k < fibre_start_[e + 1]; ++k) {
     const FibreLayer& f = fibres_sorted_[k];
     w += AddFibreStress(rebars_[f.rebar], f, F, P);
@@ -283,42 +289,67 @@ bool ExplicitSolver::AddElementForces(size_t e, Eigen::Vector3d* f_stored, Eigen
   // Bulk viscosity (Abaqus/Explicit form): a pressure against the volumetric strain rate,
   // linear b1 rho c_d L_e evol, plus quadratic rho (b2 L_e evol)^2 in compression only.
   const double evol = f_dot.cwiseProduct(f_inv_t).sum();  // tr(F_dot F^-1)
-  const double le = ref.length_m * std::cbrt(j);          // current characteristic length
+  const double le = ref.length_m * cbrt_j;                // current characteristic length
   const double rho = elem_density_[e];
   double q = b1 * rho * elem_wave_speed_[e] * le * evol;
   if (evol < 0.0) q -= rho * (b2 * le * evol) * (b2 * le * evol);
   const Eigen::Matrix3d pv = (-v0 * j * q) * f_inv_t;
   const Eigen::Matrix3d ps = -v0 * P;
 
-  // Hourglass: generalised displacements Q_alpha = sum_a gamma_alpha,a u_a (and rates).
+  // Hourglass: generalised displacements Q_alpha = sum_a gamma_alpha,a u_a (and rates, only
+  // with viscous hourglass control: it is off by default and in the paper's model, and the
+  // rates and their forces are a tenth of the element's arithmetic).
+  const double khg = hg_stiffness_[e], chg = hg_viscous_[e];
+  const bool viscous_hg = chg > 0.0;
   std::array<Vector3d, 4> qhg, qdot;
   const auto& gam = ref.hourglass;
   double hg_energy = 0.0;
   for (int al = 0; al < 4; ++al) {
     qhg[al].setZero();
-    qdot[al].setZero();
-    for (int a = 0; a < 8; ++a) {
-      qhg[al] += gam(al, a) * u[a];
-      qdot[al] += gam(al, a) * vel[a];
+    for (int a = 0; a < 8; ++a) qhg[al] += gam(al, a) * u[a];
+    hg_energy += 0.5 * khg * qhg[al].squaredNorm();
+  }
+  if (viscous_hg) {
+    for (int al = 0; al < 4; ++al) {
+      qdot[al].setZero();
+      for (int a = 0; a < 8; ++a) qdot[al] += gam(al, a) * vel[a];
     }
-    hg_energy += 0.5 * hg_stiffness_[e] * qhg[al].squaredNorm();
   }
   elem_energy_[e] = {v0 * w, hg_energy};
-  const double khg = hg_stiffness_[e], chg = hg_viscous_[e];
   // Nodal forces: -V0 P B0_a (rubber and cords), -V0 P_v B0_a (bulk viscosity),
   // -k gamma^T Q (hourglass stiffness), -c gamma^T Q_dot (hourglass viscosity).
   for (int a = 0; a < 8; ++a) {
     const Vector3d g = ref.grad.row(a).transpose();
-    Vector3d hs = Vector3d::Zero(), hv = Vector3d::Zero();
-    for (int al = 0; al < 4; ++al) {
-      hs += gam(al, a) * qhg[al];
-      hv += gam(al, a) * qdot[al];
-    }
+    Vector3d hs = Vector3d::Zero();
+    for (int al = 0; al < 4; ++al) hs += gam(al, a) * qhg[al];
     f_stored[nodes[a]] += ps * g - khg * hs;
     f_bulk[nodes[a]] += pv * g;
-    if (chg > 0.0) f_hourglass[nodes[a]] -= chg * hv;
+    if (viscous_hg) {
+      Vector3d hv = Vector3d::Zero();
+      for (int al = 0; al < 4; ++al) hv += gam(al, a) * qdot[al];
+      f_hourglass[nodes[a]] -= chg * hv;
+    }
   }
   return true;
+}
+
+std::pair<long, long> ExplicitSolver::BufferElements(int t, int buffers) const {
+  const long ne = static_cast<long>(mesh_.elements.size());
+  return {ne * t / buffers, ne * (t + 1) / buffers};
+}
+
+void ExplicitSolver::PrepareThreadBuffers(int buffers) {
+  const size_t nn = x_.size();
+  thread_forces_.assign(3 * static_cast<size_t>(buffers),
+                        std::vector<Eigen::Vector3d>(nn, Vec3Zero()));
+  node_thread_mask_.assign(nn, 0);
+  for (int t = 0; t < buffers; ++t) {
+    const auto [e0, e1] = BufferElements(t, buffers);
+    for (long e = e0; e < e1; ++e) {
+      for (int n : mesh_.elements[e]) node_thread_mask_[n] |= std::uint64_t{1} << t;
+    }
+  }
+  buffer_count_ = buffers;
 }
 
 void ExplicitSolver::AdvanceRim() {
@@ -367,10 +398,8 @@ void ExplicitSolver::RunStep(bool advance) {
   // Per-thread buffers on one thread: the elements add straight to the nodes, in element order
   // (the same bits as one buffer).
   const bool direct = !coloured && nt == 1;
-  const int buffers = coloured || direct ? 0 : nt;
-  if (buffers > 0 && thread_forces_.size() < 3 * static_cast<size_t>(nt)) {
-    thread_forces_.resize(3 * nt, std::vector<Eigen::Vector3d>(nn));
-  }
+  const int buffers = coloured || direct ? 0 : std::min(nt, kMaxBuffers);
+  if (buffers > 0 && buffers != buffer_count_) PrepareThreadBuffers(buffers);
   const long node_blocks = Blocks(nn), elem_blocks = Blocks(ne);
   node_sums_.resize(node_blocks);
   elem_sums_.resize(elem_blocks);
@@ -416,25 +445,27 @@ void ExplicitSolver::RunStep(bool advance) {
       }
     } else {
 #ifdef _OPENMP
-      const int t = omp_get_thread_num();
+      const int team = omp_get_num_threads(), rank = omp_get_thread_num();
 #else
-      const int t = 0;
+      const int team = 1, rank = 0;
 #endif
-      Eigen::Vector3d* fs = thread_forces_[3 * t].data();
-      Eigen::Vector3d* fb = thread_forces_[3 * t + 1].data();
-      Eigen::Vector3d* fh = thread_forces_[3 * t + 2].data();
-      for (long a = 0; a < nn; ++a) {
-        fs[a].setZero();
-        fb[a].setZero();
-        fh[a].setZero();
-      }
-#pragma omp for schedule(static)
-      for (long e = 0; e < ne; ++e) {
-        if (!AddElementForces(e, fs, fb, fh)) {
+      // The buffers are zero here (the node loop zeroes what it sums). Buffer t takes a fixed
+      // range of elements, so node_thread_mask_ holds; a smaller team than asked for takes
+      // several buffers per thread.
+      for (int t = rank; t < buffers; t += team) {
+        Eigen::Vector3d* fs = thread_forces_[3 * t].data();
+        Eigen::Vector3d* fb = thread_forces_[3 * t + 1].data();
+        Eigen::Vector3d* fh = thread_forces_[3 * t + 2].data();
+        const auto [e0, e1] = BufferElements(t, buffers);
+        for (long e = e0; e < e1; ++e) {
+          if (!AddElementForces(e, fs, fb, fh)) {
 #pragma omp critical(hotlap_fe_inverted)
-          bad = std::min(bad, e);
+            bad = std::min(bad, e);
+            break;
+          }
         }
       }
+#pragma omp barrier
     }
     // Past the barrier: every element and face force is known, and so is `bad`.
     if (bad == ne) {
@@ -458,6 +489,8 @@ void ExplicitSolver::RunStep(bool advance) {
     }
   }
   if (bad < ne) {
+    // The node loop did not run: zero the buffers for a later step.
+    for (auto& buffer : thread_forces_) std::fill(buffer.begin(), buffer.end(), Vec3Zero());
     Eigen::Matrix3d F = Eigen::Matrix3d::Zero();
     for (int a = 0; a < 8; ++a) F.noalias() += x_[mesh_.elements[bad][a]] * refs_[bad].grad.row(a);
     throw NumericalError("fe: element " + std::to_string(bad) +
@@ -547,14 +580,27 @@ void ExplicitSolver::AddWorkTerms(long a, NodeSums& sum) const {
 void ExplicitSolver::NodeUpdate(long a, int buffers, const Eigen::Vector3d& road_velocity,
                                 bool advance, NodeSums& sum) {
   if (buffers > 0) {
-    f_stored_[a] = thread_forces_[0][a];
-    f_dissip_bv_[a] = thread_forces_[1][a];
-    f_dissip_hg_[a] = thread_forces_[2][a];
-    for (int t = 1; t < buffers; ++t) {
-      f_stored_[a] += thread_forces_[3 * t][a];
-      f_dissip_bv_[a] += thread_forces_[3 * t + 1][a];
-      f_dissip_hg_[a] += thread_forces_[3 * t + 2][a];
+    // Sum the buffers in thread order, reading (and zeroing for the next step) only those whose
+    // elements touch this node: the others hold zeros, and at the paper's mesh size the memory
+    // traffic of reading and clearing them all is a large part of the step.
+    Eigen::Vector3d fs = Vec3Zero(), fb = Vec3Zero(), fh = Vec3Zero();
+    for (std::uint64_t mask = node_thread_mask_[a]; mask != 0; mask &= mask - 1) {
+      const int t = std::countr_zero(mask);
+      Eigen::Vector3d& bs = thread_forces_[3 * t][a];
+      Eigen::Vector3d& bb = thread_forces_[3 * t + 1][a];
+      fs += bs;
+      fb += bb;
+      bs.setZero();
+      bb.setZero();
+      if (viscous_hourglass_) {  // else no element adds to the hourglass buffers
+        Eigen::Vector3d& bh = thread_forces_[3 * t + 2][a];
+        fh += bh;
+        bh.setZero();
+      }
     }
+    f_stored_[a] = fs;
+    f_dissip_bv_[a] = fb;
+    f_dissip_hg_[a] = fh;
   }
   Eigen::Vector3d fe = applied_[a];
   if (pressure_Pa_ != 0.0) {

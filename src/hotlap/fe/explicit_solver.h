@@ -245,16 +245,23 @@ class ExplicitSolver {
   // Per-node sums of a step: work terms back (0-4) and ahead (5-9), kinetic, contact energy.
   static constexpr int kKineticSum = 10, kContactSum = 11;
   using NodeSums = std::array<double, 12>;
+  // Per-thread force buffers beyond this count are not used (node_thread_mask_ is 64 bits).
+  static constexpr int kMaxBuffers = 64;
 
   /// Forces at the current state; with `advance`, also one central-difference step.
   void RunStep(bool advance);
   /// Node a's external, damping and contact forces (and the sum of the thread buffers if
-  /// `buffers` > 0); with `advance`, its new velocity and position and its energy terms.
+  /// `buffers` > 0, which zeroes their entries for the next step); with `advance`, its new velocity
+  /// and position and its energy terms.
   void NodeUpdate(long a, int buffers, const Eigen::Vector3d& road_velocity, bool advance,
                   NodeSums& sum);
   /// Node a's work terms f . v(n-1/2) and f . v(n+1/2).
   void AddWorkTerms(long a, NodeSums& sum) const;
   void AdvanceRim();
+  /// Sizes the per-thread force buffers (zeroed) and node_thread_mask_ for `buffers` buffers.
+  void PrepareThreadBuffers(int buffers);
+  /// Elements [first, last) of buffer t out of `buffers` (contiguous, in order).
+  std::pair<long, long> BufferElements(int t, int buffers) const;
   /// Forces of element e added to the three arrays (indexed by node); its strain and hourglass
   /// energies to elem_energy_[e]. False (nothing added) if the element is inverted.
   bool AddElementForces(size_t e, Eigen::Vector3d* f_stored, Eigen::Vector3d* f_bulk,
@@ -278,7 +285,8 @@ class ExplicitSolver {
   std::vector<double> elem_density_;     // with cords and mass scaling, kg/m^3
   std::vector<double> elem_wave_speed_;  // c_d with the cords, m/s
   std::vector<double> hg_stiffness_, hg_viscous_;
-  std::vector<int> fibre_start_;  // CSR over fibres_sorted_
+  bool viscous_hourglass_ = false;  // any hg_viscous_ > 0
+  std::vector<int> fibre_start_;    // CSR over fibres_sorted_
   std::vector<FibreLayer> fibres_sorted_;
   std::vector<double> mass_;
   std::vector<double> contact_stiffness_;
@@ -290,7 +298,11 @@ class ExplicitSolver {
   std::vector<int> colour_elements_;                         // ascending within a colour
   std::vector<std::array<double, 2>> elem_energy_;           // strain, hourglass of each element
   std::vector<std::vector<Eigen::Vector3d>> thread_forces_;  // kThreadBuffers: 3 per thread
-  std::vector<int> node_face_start_, node_faces_;            // pressure faces of each node (CSR)
+  // kThreadBuffers: bit t of node_thread_mask_[a] is set if buffer t's elements touch node a
+  // (for buffer_count_ buffers); only those entries are read, summed and zeroed.
+  std::vector<std::uint64_t> node_thread_mask_;
+  int buffer_count_ = 0;
+  std::vector<int> node_face_start_, node_faces_;  // pressure faces of each node (CSR)
   std::vector<char> is_contact_node_;
   std::vector<Eigen::Vector3d> face_force_;       // a quarter of each face's pressure force
   std::vector<NodeSums> node_sums_;               // per block of nodes

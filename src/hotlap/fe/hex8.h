@@ -21,8 +21,9 @@ namespace hotlap::fe {
 
 /// Reference geometry of one hexahedron, computed once.
 struct Hex8Reference {
-  double volume_m3 = 0.0;                 ///< V0, m^3
-  Eigen::Matrix<double, 8, 3> grad;       ///< B0: row a is mean dN_a/dX, 1/m
+  double volume_m3 = 0.0;  ///< V0, m^3
+  /// B0: row a is mean dN_a/dX, 1/m (row-major: the solver reads it a row at a time).
+  Eigen::Matrix<double, 8, 3, Eigen::RowMajor> grad;
   Eigen::Matrix<double, 4, 8> hourglass;  ///< gamma: row alpha is the FB shape vector, 1
   double length_m = 0.0;                  ///< L_e = sqrt(1.5 / sum_a |B0_a|^2), m (cube: edge)
 };

@@ -51,9 +51,8 @@ Eigen::Matrix3d CalcYeohFirstPiola(const YeohMaterial& m, const Eigen::Matrix3d&
 }
 
 double CalcYeohPiolaAndEnergy(const YeohMaterial& m, const Eigen::Matrix3d& F, double j,
-                              const Eigen::Matrix3d& f_inv_t, Eigen::Matrix3d& P) {
-  const double c = std::cbrt(j);
-  const double jm23 = 1.0 / (c * c);  // J^(-2/3)
+                              double cbrt_j, const Eigen::Matrix3d& f_inv_t, Eigen::Matrix3d& P) {
+  const double jm23 = 1.0 / (cbrt_j * cbrt_j);  // J^(-2/3)
   const double i1b = jm23 * F.squaredNorm();
   const double d = i1b - 3.0;
   const double w1 = m.c10_Pa + 2.0 * m.c20_Pa * d + 3.0 * m.c30_Pa * d * d;

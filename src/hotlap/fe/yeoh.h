@@ -11,6 +11,10 @@
 /// Cauchy stress: sigma = (2 / J) W1 dev(Bb) + K (J - 1) I, with Bb = J^(-2/3) F F^T and
 /// W1 = dW/dI1b = C10 + 2 C20 (I1b - 3) + 3 C30 (I1b - 3)^2. SI units throughout.
 
+#include <bit>
+#include <cmath>
+#include <cstdint>
+
 #include <Eigen/Core>
 
 namespace hotlap::fe {
@@ -45,10 +49,24 @@ Eigen::Matrix3d CalcYeohCauchyStress(const YeohMaterial& m, const Eigen::Matrix3
 /// First Piola-Kirchhoff stress P = J sigma F^-T, Pa (dW/dF).
 Eigen::Matrix3d CalcYeohFirstPiola(const YeohMaterial& m, const Eigen::Matrix3d& F);
 
+/// x^(1/3) for the solver's element loop, where glibc's cbrt (with its frexp and scalbn calls)
+/// was about 7% of a step: a first guess from the exponent bits (within 3.2%), then three
+/// Halley steps (cubic convergence: 3e-2, 3e-5, 3e-14, round-off). Within 3 ulp of std::cbrt;
+/// falls back to it outside [1e-300, 1e300].
+inline double CubeRoot(double x) {
+  if (!(x >= 1e-300 && x <= 1e300)) return std::cbrt(x);
+  double y = std::bit_cast<double>(std::bit_cast<std::uint64_t>(x) / 3 + 0x2a9f7893782da1ceULL);
+  for (int k = 0; k < 3; ++k) {
+    const double y3 = y * y * y;
+    y *= (y3 + 2.0 * x) / (2.0 * y3 + x);
+  }
+  return y;
+}
+
 /// The solver's fused form: given F, J = det F and F^-T, sets P (Pa) and returns W (J/m^3),
 ///   P = 2 W1 J^(-2/3) F - (2/3) W1 I1b F^-T + K (J - 1) J F^-T,
-/// the same P as J sigma F^-T without forming B.
+/// the same P as J sigma F^-T without forming B. `cbrt_j` is J^(1/3) (the caller needs it too).
 double CalcYeohPiolaAndEnergy(const YeohMaterial& m, const Eigen::Matrix3d& F, double j,
-                              const Eigen::Matrix3d& f_inv_t, Eigen::Matrix3d& P);
+                              double cbrt_j, const Eigen::Matrix3d& f_inv_t, Eigen::Matrix3d& P);
 
 }  // namespace hotlap::fe
