@@ -191,6 +191,10 @@ TEST_F(LapCommandTest, BadInputFailsCleanlyWithoutOutput) {
       {"lap --line " + backwards.string(), "does not increase"},
       {"lap --line " + off_track.string(), "off the track"},
       {"lap --line " + no_offset.string(), "offset_m"},
+      // An option of the other optimal-lap model is refused, not ignored.
+      {"optimise --car f1-2014 --step-m 2", "--step-m does not apply"},
+      {"optimise --car f1-2014 --mesh-check", "--mesh-check does not apply"},
+      {"optimise --car gen7 --mesh-points 100", "--mesh-points does not apply"},
   };
   for (const Case& c : cases) {
     const RunResult r = Run(c.args + " --out " + out.string() + " --json " + json.string());
