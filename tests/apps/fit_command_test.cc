@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "apps/run_hotlap.h"
 #include "report/chromium.h"
 #include "test_util.h"
 
@@ -20,10 +21,7 @@ namespace fs = std::filesystem;
 using hotlap::test::Contains;
 using hotlap::test::ReadTextFile;
 
-struct RunResult {
-  int exit_code;
-  std::string out, err;
-};
+using hotlap::test::RunResult;
 
 const char* kTruth =
     "name: truth-test\n"
@@ -48,11 +46,7 @@ class FitCommandTest : public ::testing::Test {
   static void TearDownTestSuite() { delete dir_; }
 
   static RunResult Run(const std::string& args) {
-    const fs::path out = dir_->path() / "stdout.txt", err = dir_->path() / "stderr.txt";
-    const std::string command =
-        std::string(HOTLAP_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WEXITSTATUS(status), ReadTextFile(out), ReadTextFile(err)};
+    return hotlap::test::RunHotlap(args, dir_->path());
   }
   static fs::path P(const std::string& name) { return dir_->path() / name; }
   static std::string Log() { return P("log.csv").string(); }
