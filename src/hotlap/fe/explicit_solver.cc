@@ -819,8 +819,9 @@ void ExplicitSolver::LoadState(BinaryReader& in) {
   road.friction.decay_s_per_m = in.GetFinite();
   road.tangential_penalty_factor = in.GetFinite();
   const std::uint64_t stick = in.GetU64();
-  if (stick > static_cast<std::uint64_t>(StickModel::kViscous))
+  if (stick > static_cast<std::uint64_t>(StickModel::kViscous)) {
     in.Damaged("a stick model out of range");
+  }
   road.stick = static_cast<StickModel>(stick);
   in.ExpectTag("STIK");
   const size_t nc = mesh_.contact_nodes.size();
