@@ -198,7 +198,7 @@ struct SideLoadRun {
 // 100 ms with mass damping (every mode decays as exp(-750 t)).
 SideLoadRun RunSideLoad(StickModel stick, double side_N) {
   const double h = 0.01, load = 320.0;
-  std::vector<int> top, bottom;
+  std::vector<int> top;
   const Mesh mesh = BlockOnRoad(h, 4, 4, 2, &top);
   SolverOptions opt;
   opt.mass_damping_per_s = 1500.0;
