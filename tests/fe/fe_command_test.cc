@@ -197,4 +197,24 @@ TEST_F(FeCommandTest, BadConfigurationNamesTheField) {
   EXPECT_TRUE(Contains(err_, "bad.yaml")) << err_;
 }
 
+// The stick spring's penalty factor: outside (0, 1), or above the stability bound
+// 4 (1 - time_step_safety^2) = 0.76 (road_contact.h).
+TEST_F(FeCommandTest, BadTangentialPenaltyFactorNamesTheFieldAndTheBound) {
+  const std::string shipped =
+      ReadTextFile(hotlap::test::SourcePath("data/fe/paper_235_75r15.yaml"));
+  for (const auto& [value, expected] : {std::pair{"0.9",
+                                                  "must be at most 4 (1 - "
+                                                  "solver.time_step_safety^2) = 0.76"},
+                                        std::pair{"0", "in (0, 1)"}}) {
+    const std::string y = Replace(shipped, "tangential_penalty_factor: 0.1",
+                                  std::string("tangential_penalty_factor: ") + value);
+    const fs::path p = dir_ / "bad.yaml";
+    std::ofstream(p) << y;
+    EXPECT_EQ(Run("inflate --config " + p.string() + " --out " + (dir_ / "o").string()), 2);
+    EXPECT_TRUE(Contains(err_, "road.tangential_penalty_factor")) << err_;
+    EXPECT_TRUE(Contains(err_, "bad.yaml")) << err_;
+    EXPECT_TRUE(Contains(err_, expected)) << err_;
+  }
+}
+
 }  // namespace
