@@ -84,6 +84,16 @@ Mesh BlockOnRoad(double h, int nx, int ny, int nz, std::vector<int>* top) {
   return mesh;
 }
 
+// The road of these tests: penalty factors 0.1 (normal and tangential), the paper's friction.
+RoadContact TestRoad() {
+  RoadContact road;
+  road.enabled = true;
+  road.penalty_factor = 0.1;
+  road.tangential_penalty_factor = 0.1;
+  road.friction = PaperFriction();
+  return road;
+}
+
 // A 40 x 40 x 20 mm tread block pressed on the road by 320 N (0.2 MPa) spread over its top face,
 // ramped over 20 ms and held for 30 ms with mass damping.
 TEST(FeRoad, BlockPressedOnRoadReactionEqualsLoad) {
@@ -93,11 +103,7 @@ TEST(FeRoad, BlockPressedOnRoadReactionEqualsLoad) {
   SolverOptions opt;
   opt.mass_damping_per_s = 1500.0;
   ExplicitSolver s(mesh, {testing::Tread()}, {}, opt);
-  RoadContact road;
-  road.enabled = true;
-  road.penalty_factor = 0.1;
-  road.friction = PaperFriction();
-  s.SetRoad(road);
+  s.SetRoad(TestRoad());
   // Nodal shares of a uniform traction on the top face: corner 1/4, edge 1/2, interior 1.
   std::vector<double> share(mesh.nodes.size(), 0.0);
   double total = 0.0;
@@ -134,11 +140,7 @@ TEST(FeRoad, SlidingBlockDeceleratesAtMuG) {
   const Mesh mesh = BlockOnRoad(h, 2, 2, 1, &top);
   SolverOptions opt;
   ExplicitSolver s(mesh, {testing::Tread()}, {}, opt);
-  RoadContact road;
-  road.enabled = true;
-  road.penalty_factor = 0.1;
-  road.friction = PaperFriction();
-  s.SetRoad(road);
+  s.SetRoad(TestRoad());
   const double mass = testing::kRho * 4 * h * h * h;
   const std::vector<double>& m_node = s.node_masses();
   double mass_sum = 0.0;
@@ -152,7 +154,7 @@ TEST(FeRoad, SlidingBlockDeceleratesAtMuG) {
   const double t_end = 0.1;
   double predicted_v = v0;
   while (s.time() < t_end) {
-    predicted_v -= CalcFrictionCoefficient(road.friction, predicted_v) * g * s.time_step();
+    predicted_v -= CalcFrictionCoefficient(PaperFriction(), predicted_v) * g * s.time_step();
     s.Step();
   }
   double momentum = 0.0;
@@ -203,12 +205,8 @@ SideLoadRun RunSideLoad(StickModel stick, double side_N) {
   SolverOptions opt;
   opt.mass_damping_per_s = 1500.0;
   ExplicitSolver s(mesh, {testing::Tread()}, {}, opt);
-  RoadContact road;
-  road.enabled = true;
-  road.penalty_factor = 0.1;
-  road.tangential_penalty_factor = 0.1;
+  RoadContact road = TestRoad();
   road.stick = stick;
-  road.friction = PaperFriction();
   s.SetRoad(road);
   const std::vector<double> share = TopShares(mesh, top, h, 4, 4);
   const auto bottom_ux = [&] {
@@ -276,12 +274,7 @@ TEST(FeRoad, SideLoadAboveMuKSlides) {
     std::vector<int> top;
     const Mesh mesh = BlockOnRoad(h, 2, 2, 1, &top);
     ExplicitSolver s(mesh, {testing::Tread()}, {}, SolverOptions{});
-    RoadContact road;
-    road.enabled = true;
-    road.penalty_factor = 0.1;
-    road.tangential_penalty_factor = 0.1;
-    road.friction = PaperFriction();
-    s.SetRoad(road);
+    s.SetRoad(TestRoad());
     const std::vector<double>& m_node = s.node_masses();
     double mass = 0.0;
     for (size_t a = 0; a < mesh.nodes.size(); ++a) {
@@ -292,7 +285,7 @@ TEST(FeRoad, SideLoadAboveMuKSlides) {
         std::vector<Eigen::Vector3d>(mesh.nodes.size(), Eigen::Vector3d(v0, 0, 0)));
     double predicted = v0, friction_share = 0.0;
     while (s.time() < 0.1) {
-      const double mu = CalcFrictionCoefficient(road.friction, predicted);
+      const double mu = CalcFrictionCoefficient(PaperFriction(), predicted);
       predicted += (side - mu) * g * s.time_step();
       friction_share += mu * g * s.time_step();
       s.Step();
@@ -321,12 +314,8 @@ TEST(FeRoad, EnergyBalanceClosesThroughStickAndSlip) {
     std::vector<int> top;
     const Mesh mesh = BlockOnRoad(h, 4, 4, 2, &top);
     ExplicitSolver s(mesh, {testing::Tread()}, {}, SolverOptions{});
-    RoadContact road;
-    road.enabled = true;
-    road.penalty_factor = 0.1;
-    road.tangential_penalty_factor = 0.1;
+    RoadContact road = TestRoad();
     road.road_speed_x_mps = road_speed;
-    road.friction = PaperFriction();
     s.SetRoad(road);
     const std::vector<double> share = TopShares(mesh, top, h, 4, 4);
     double scale = 0.0, worst = 0.0, stick_stored_at_20ms = 0.0, friction_at_20ms = -1.0;
@@ -375,9 +364,7 @@ double StickEnergyGrowth(double tangential_penalty_factor) {
   std::vector<int> top;
   const Mesh mesh = BlockOnRoad(h, 2, 2, 1, &top);
   ExplicitSolver s(mesh, {testing::Tread()}, {}, SolverOptions{});
-  RoadContact road;
-  road.enabled = true;
-  road.penalty_factor = 0.1;
+  RoadContact road = TestRoad();
   road.tangential_penalty_factor = tangential_penalty_factor;
   road.friction = {1e6, 1e6, 0.0};
   s.SetRoad(road);
