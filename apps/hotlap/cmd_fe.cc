@@ -18,6 +18,7 @@
 #include <fmt/ostream.h>
 
 #include "commands.h"
+#include "fe_abs_report.h"
 #include "hotlap/brake/abs_controller.h"
 #include "hotlap/brake/brake_hydraulics.h"
 #include "hotlap/common/atomic_file.h"
@@ -64,6 +65,11 @@ fe::CheckpointKey MakeCheckpointKey(const fe::TyreRun& run) {
   key.config_hash =
       fe::Fnv1a64(bytes(run.config().abs_config), fe::Fnv1a64(bytes(run.config().file)));
   return key;
+}
+
+/// A number rounded to `digits` significant digits, or null where it is NaN.
+nlohmann::json NullIfNaN(double x, int digits) {
+  return std::isnan(x) ? nlohmann::json(nullptr) : nlohmann::json(RoundSignificant(x, digits));
 }
 
 /// The ABS controller, its hydraulic delay line and the wheel-cylinder pressure, stepped at the
@@ -425,6 +431,11 @@ int RunFeCommand(const FeArgs& a) {
     const fe::BrakeResult br = restarted ? run.ResumeBrake(config.abs_duration_s, torque, abs_hooks)
                                          : run.Brake(config.abs_duration_s, torque, abs_hooks);
     WriteHistoryCsv(out / "abs_history.csv", "abs", config, br.history, run.slip_radius_m());
+    const fe::BrakeSlipSummary slip = fe::SummarizeBrakeSlip(br.history);
+    WriteFeAbsReport(out / "abs_report.html", br.history, run.slip_radius_m(),
+                     {{"configuration", config.file.string()},
+                      {"mesh", fmt::format("{} elements, {} nodes", run.tyre().mesh.elements.size(),
+                                           run.tyre().mesh.nodes.size())}});
     j["abs"] = {{"duration_s", RoundSignificant(config.abs_duration_s, 6)},
                 {"initial_speed_mps", RoundSignificant(br.initial_speed_mps, 6)},
                 {"final_speed_mps", RoundSignificant(br.final_speed_mps, 6)},
@@ -432,6 +443,10 @@ int RunFeCommand(const FeArgs& a) {
                 {"max_slip", RoundSignificant(br.max_slip, 6)},
                 {"max_brake_torque_Nm", RoundSignificant(br.max_brake_torque_Nm, 6)},
                 {"control_cycles", abs_torque->state().cycles},
+                {"first_cycle_end_s", NullIfNaN(slip.first_cycle_end_s, 6)},
+                {"max_slip_after_first_cycle", NullIfNaN(slip.max_slip_after_first_cycle, 6)},
+                {"fraction_time_slip_below_0_135_after_first_cycle",
+                 NullIfNaN(slip.fraction_time_below_0_135_after_first_cycle, 4)},
                 {"energies", EnergiesJson(solver.energies())}};
     std::printf("abs: %.3f s, speed %.3f -> %.3f m/s over %.3f m, max slip %.3f, %d cycles\n",
                 config.abs_duration_s, br.initial_speed_mps, br.final_speed_mps, br.distance_m,

@@ -187,6 +187,12 @@ int RunFit(const FitArgs& a, FitKind kind) {
   options.initial_state = ident::ParseInitialStateMode(a.initial_state);
   options.random_starts = a.starts;
   options.seed = a.seed;
+  // The joint intervals hold every model parameter this command can fit, over all its corners:
+  // p1..p5, wp1, wp2 per tyre; gamma, xi and the 12 convection entries per brake; p_cp1, p_cp2.
+  const size_t per_corner = kind == FitKind::kTyre    ? ident::TyreParameterKeys().size()
+                            : kind == FitKind::kBrake ? ident::BrakeParameterKeys().size()
+                                                      : 2;
+  options.solver.joint_family_size = static_cast<int>(corners.size() * per_corner);
 
   FitRun run;
   run.command = CommandName(kind);
@@ -204,6 +210,7 @@ int RunFit(const FitArgs& a, FitKind kind) {
                  {"random_starts", a.starts},
                  {"seed", a.seed}};
   run.corners.resize(corners.size());
+  run.joint_family_size = options.solver.joint_family_size;
   ident::FittedCarEdits edits;
   const std::string date = ident::TodayIsoDate();
   const std::string log_name = fs::path(a.telemetry).filename().string();

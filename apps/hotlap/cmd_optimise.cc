@@ -15,9 +15,10 @@ CommandRunner RegisterOptimiseCommand(CLI::App& app) {
   AddOptimalOptions(sub, *args);
   sub->add_option("--disc-limit-C", args->disc_limit_C,
                   "Front disc temperatures at most this, degC (none by default)");
-  sub->add_option("--mesh-points", args->mesh_points,
-                  "limebeer-2014-f1 cars only: mesh nodes (default 500; docs/f1-peer.md)")
-      ->check(CLI::Range(20, 100000));
+  args->f1_only.push_back(
+      sub->add_option("--mesh-points", args->mesh_points,
+                      "limebeer-2014-f1 cars only: mesh nodes (default 500; docs/f1-peer.md)")
+          ->check(CLI::Range(20, 100000)));
   return [args] { return RunOptimal(*args); };
 }
 

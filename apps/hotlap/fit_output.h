@@ -58,6 +58,8 @@ struct FitRun {
   nlohmann::json options;  ///< the options that shape the result
   std::vector<CornerOutcome> corners;
   double elapsed_s = 0.0;
+  /// The parameters whose joint intervals hold together (FitOptions::joint_family_size).
+  int joint_family_size = 1;
 };
 
 /// The JSON summary (docs/json-output.md).

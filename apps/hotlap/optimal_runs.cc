@@ -178,21 +178,27 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
   sub->add_option("--car", a.car, "Built-in car name or path to a car.yaml")->capture_default_str();
   sub->add_option("--out", a.out, "Output folder")->required();
   sub->add_option("--json", a.json, "Write the summary as JSON (docs/json-output.md)");
-  sub->add_option("--step-m", a.step_m, "Mesh spacing along the centre line, m")
-      ->capture_default_str()
-      ->check(CLI::Range(0.5, 50.0));
-  sub->add_option("--thermal-start", a.thermal_start,
-                  "Thermal states at the start: warm (after a QSS out-lap), car (the car file's "
-                  "initial_state) or periodic (temperatures end where they start)")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"warm", "car", "periodic"}));
-  sub->add_option("--ambient-temp-C", a.ambient_C, "Air temperature")->capture_default_str();
-  sub->add_option("--track-temp-C", a.track_C, "Track surface temperature")->capture_default_str();
+  a.stock_car_only.push_back(
+      sub->add_option("--step-m", a.step_m, "Mesh spacing along the centre line, m")
+          ->capture_default_str()
+          ->check(CLI::Range(0.5, 50.0)));
+  a.stock_car_only.push_back(
+      sub->add_option("--thermal-start", a.thermal_start,
+                      "Thermal states at the start: warm (after a QSS out-lap), car (the car "
+                      "file's initial_state) or periodic (temperatures end where they start)")
+          ->capture_default_str()
+          ->check(CLI::IsMember({"warm", "car", "periodic"})));
+  a.stock_car_only.push_back(
+      sub->add_option("--ambient-temp-C", a.ambient_C, "Air temperature")->capture_default_str());
+  a.stock_car_only.push_back(
+      sub->add_option("--track-temp-C", a.track_C, "Track surface temperature")
+          ->capture_default_str());
   sub->add_option("--max-iterations", a.max_iterations, "Ipopt's iteration limit")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  sub->add_flag("--mesh-check", a.mesh_check,
-                "Solve again on a mesh of half the spacing and report the lap time's change");
+  a.stock_car_only.push_back(
+      sub->add_flag("--mesh-check", a.mesh_check,
+                    "Solve again on a mesh of half the spacing and report the lap time's change"));
   sub->add_flag("--ipopt-output", a.ipopt_output, "Print Ipopt's own iteration log");
   sub->add_option("--ipopt-option", a.ipopt_options,
                   "An Ipopt option as NAME=VALUE (repeatable), e.g. mumps_pivot_order=5")
@@ -215,11 +221,19 @@ std::vector<std::pair<std::string, std::string>> IpoptOptionPairs(const OptimalA
 
 int RunOptimal(const OptimalArgs& a) {
   // The 3-DOF F1 car of the fastest-lap peer benchmark has its own solver (docs/f1-peer.md).
-  if (const fs::path f1 = ResolveCarFile(a.car); vehicle::IsF1CarFile(f1)) {
-    return RunF1Optimal(a, f1);
+  const fs::path car_file = ResolveCarFile(a.car);
+  const bool f1 = vehicle::IsF1CarFile(car_file);
+  for (const CLI::Option* o : f1 ? a.stock_car_only : a.f1_only) {
+    if (o->count() > 0) {
+      throw InputError(fmt::format("{} does not apply to the car '{}' ({} model){}", o->get_name(),
+                                   a.car, f1 ? "the limebeer-2014-f1" : "the stock-car",
+                                   f1 ? ": its mesh is set by --mesh-points (docs/f1-peer.md)"
+                                      : ": its mesh is set by --step-m (docs/optimal-control.md)"));
+    }
   }
+  if (f1) return RunF1Optimal(a, car_file);
   const auto started = std::chrono::steady_clock::now();
-  const vehicle::Car car = vehicle::LoadCar(ResolveCarFile(a.car));
+  const vehicle::Car car = vehicle::LoadCar(car_file);
   vehicle::RequireVehicle(car, "the optimal lap");
   const track::Track track = track::LoadTrack(a.track);
   if (fs::exists(a.out) && !fs::is_directory(a.out)) {

@@ -27,6 +27,10 @@ struct OptimalArgs {
   bool ipopt_output = false;
   std::vector<std::string> ipopt_options;  ///< NAME=VALUE, passed to Ipopt as they are
   int mesh_points = 0;  ///< limebeer-2014-f1 cars only: mesh nodes (0: 500; docs/f1-peer.md)
+  /// Options given on the command line that only one of the two models uses (filled by CLI11
+  /// at parse time): the stock car's mesh spacing, thermal start, temperatures and mesh check;
+  /// the F1 car's mesh points. Giving one to the other model is an input error, not ignored.
+  std::vector<const CLI::Option*> stock_car_only, f1_only;
 };
 
 /// Adds the options shared by both commands to `sub`.

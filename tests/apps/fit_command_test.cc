@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "apps/run_hotlap.h"
 #include "report/chromium.h"
 #include "test_util.h"
 
@@ -20,10 +21,7 @@ namespace fs = std::filesystem;
 using hotlap::test::Contains;
 using hotlap::test::ReadTextFile;
 
-struct RunResult {
-  int exit_code;
-  std::string out, err;
-};
+using hotlap::test::RunResult;
 
 const char* kTruth =
     "name: truth-test\n"
@@ -48,11 +46,7 @@ class FitCommandTest : public ::testing::Test {
   static void TearDownTestSuite() { delete dir_; }
 
   static RunResult Run(const std::string& args) {
-    const fs::path out = dir_->path() / "stdout.txt", err = dir_->path() / "stderr.txt";
-    const std::string command =
-        std::string(HOTLAP_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WEXITSTATUS(status), ReadTextFile(out), ReadTextFile(err)};
+    return hotlap::test::RunHotlap(args, dir_->path());
   }
   static fs::path P(const std::string& name) { return dir_->path() / name; }
   static std::string Log() { return P("log.csv").string(); }
@@ -68,6 +62,15 @@ void ExpectParameter(const nlohmann::json& p, const std::string& what) {
   ASSERT_TRUE(p["ci95"].is_array()) << what;
   EXPECT_EQ(p["ci95"].size(), 2u) << what;
   EXPECT_TRUE(p["well_determined"].is_boolean()) << what;
+  // The joint interval contains the 95% one (where both ends are numbers).
+  ASSERT_TRUE(p["ci95_joint"].is_array()) << what;
+  ASSERT_EQ(p["ci95_joint"].size(), 2u) << what;
+  if (p["ci95"][0].is_number() && p["ci95_joint"][0].is_number()) {
+    EXPECT_LE(p["ci95_joint"][0].get<double>(), p["ci95"][0].get<double>()) << what;
+  }
+  if (p["ci95"][1].is_number() && p["ci95_joint"][1].is_number()) {
+    EXPECT_GE(p["ci95_joint"][1].get<double>(), p["ci95"][1].get<double>()) << what;
+  }
 }
 
 TEST_F(FitCommandTest, TyreJsonHasTheDocumentedKeysAndTheCarReplays) {
@@ -96,6 +99,9 @@ TEST_F(FitCommandTest, TyreJsonHasTheDocumentedKeysAndTheCarReplays) {
     EXPECT_TRUE(corner["fits"]["thermal"]["nuisance"].contains("initial_tread_temp_C"));
   }
   EXPECT_TRUE(j["corners"]["rr"]["parameters"]["p1"]["in_ci95"].is_boolean());
+  EXPECT_TRUE(j["corners"]["rr"]["parameters"]["p1"]["in_ci95_joint"].is_boolean());
+  EXPECT_EQ(j["joint_family_size"].get<int>(), 14);  // 7 parameters on each of two corners
+  EXPECT_TRUE(Contains(r.out, "joint ["));
   EXPECT_NEAR(j["corners"]["rr"]["parameters"]["p1"]["truth"].get<double>(), 0.492, 1e-9);
 
   // The fitted car is a car: replay the log with it.

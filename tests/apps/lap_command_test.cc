@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "apps/run_hotlap.h"
 #include "hotlap/common/csv.h"
 #include "report/chromium.h"
 #include "test_util.h"
@@ -21,27 +22,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct RunResult {
-  int exit_code;
-  std::string out;
-  std::string err;
-};
+using test::RunResult;
 
-class LapCommandTest : public ::testing::Test {
- protected:
-  RunResult Run(const std::string& args) {
-    const fs::path out = dir() / "stdout.txt", err = dir() / "stderr.txt";
-    const std::string command =
-        std::string(HOTLAP_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WEXITSTATUS(status), test::ReadTextFile(out), test::ReadTextFile(err)};
-  }
-  nlohmann::json Json(const fs::path& p) { return nlohmann::json::parse(test::ReadTextFile(p)); }
-  const fs::path& dir() const { return dir_.path(); }
-
- private:
-  test::TempDir dir_;
-};
+class LapCommandTest : public test::CommandTest {};
 
 // The acceptance on the built-in Darlington and Gen-7 car: lap time 28.5-31.5 s, top
 // speed 78-84 m/s, braking zones at the turn 1 and turn 3 entries (the entry clothoids start at
@@ -191,6 +174,10 @@ TEST_F(LapCommandTest, BadInputFailsCleanlyWithoutOutput) {
       {"lap --line " + backwards.string(), "does not increase"},
       {"lap --line " + off_track.string(), "off the track"},
       {"lap --line " + no_offset.string(), "offset_m"},
+      // An option of the other optimal-lap model is refused, not ignored.
+      {"optimise --car f1-2014 --step-m 2", "--step-m does not apply"},
+      {"optimise --car f1-2014 --mesh-check", "--mesh-check does not apply"},
+      {"optimise --car gen7 --mesh-points 100", "--mesh-points does not apply"},
   };
   for (const Case& c : cases) {
     const RunResult r = Run(c.args + " --out " + out.string() + " --json " + json.string());

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "apps/run_hotlap.h"
 #include "hotlap/common/csv.h"
 #include "hotlap/common/units.h"
 #include "test_util.h"
@@ -21,11 +22,7 @@ namespace fs = std::filesystem;
 const fs::path kSource = HOTLAP_SOURCE_DIR;
 const fs::path kExample = kSource / "data/telemetry/darlington_example.csv";
 
-struct RunResult {
-  int exit_code;
-  std::string out;
-  std::string err;
-};
+using hotlap::test::RunResult;
 
 using hotlap::test::ReadTextFile;
 using hotlap::test::WriteTextFile;
@@ -33,13 +30,7 @@ using hotlap::test::WriteTextFile;
 // A fresh folder per test, removed with everything in it at the end.
 class ReplayCommandTest : public ::testing::Test {
  protected:
-  RunResult Run(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command =
-        std::string(HOTLAP_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WEXITSTATUS(status), ReadTextFile(out), ReadTextFile(err)};
-  }
+  RunResult Run(const std::string& args) { return hotlap::test::RunHotlap(args, dir_); }
 
   // A copy of the example log with one edit applied to its text.
   fs::path EditedLog(const std::function<std::string(std::string)>& edit) {

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "apps/run_hotlap.h"
 #include "hotlap/common/csv.h"
 #include "hotlap/common/telemetry.h"
 #include "hotlap/common/units.h"
@@ -22,27 +23,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct RunResult {
-  int exit_code;
-  std::string out;
-  std::string err;
-};
+using test::RunResult;
 
-class TrackCommandTest : public ::testing::Test {
- protected:
-  RunResult Run(const std::string& args) {
-    const fs::path out = dir() / "stdout.txt", err = dir() / "stderr.txt";
-    const std::string command =
-        std::string(HOTLAP_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WEXITSTATUS(status), test::ReadTextFile(out), test::ReadTextFile(err)};
-  }
-  nlohmann::json Json(const fs::path& p) { return nlohmann::json::parse(test::ReadTextFile(p)); }
-  const fs::path& dir() const { return dir_.path(); }
-
- private:
-  test::TempDir dir_;
-};
+class TrackCommandTest : public test::CommandTest {};
 
 TEST_F(TrackCommandTest, DarlingtonInfoJsonAndRibbonCsv) {
   const fs::path json = dir() / "info.json", csv = dir() / "ribbon.csv";

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "apps/run_hotlap.h"
 #include "hotlap/common/csv.h"
 #include "hotlap/common/units.h"
 #include "hotlap/ident/mf_fit.h"
@@ -28,27 +29,9 @@ namespace fs = std::filesystem;
 const fs::path kTir = test::SourcePath("tests/data/tir/mfeval/MagicFormula61_Parameters.tir");
 const fs::path kUniTire = test::SourcePath("data/tyres/unitire_example.yaml");
 
-struct RunResult {
-  int exit_code;
-  std::string out;
-  std::string err;
-};
+using test::RunResult;
 
-class TyreCommandTest : public ::testing::Test {
- protected:
-  RunResult Run(const std::string& args) {
-    const fs::path out = dir_.path() / "stdout.txt", err = dir_.path() / "stderr.txt";
-    const std::string command =
-        std::string(HOTLAP_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WEXITSTATUS(status), test::ReadTextFile(out), test::ReadTextFile(err)};
-  }
-  nlohmann::json Json(const fs::path& p) { return nlohmann::json::parse(test::ReadTextFile(p)); }
-  const fs::path& dir() const { return dir_.path(); }
-
- private:
-  test::TempDir dir_;
-};
+class TyreCommandTest : public test::CommandTest {};
 
 // The point evaluation prints and writes exactly the model's forces at the given inputs (in the
 // command line's units: degrees, degC).
@@ -145,8 +128,8 @@ TEST_F(TyreCommandTest, FitMagicFormulaWritesATirFile) {
   const fs::path rig = dir() / "rig.csv";
   ident::WriteRigCsv(rig, {{"source", "synthesized"}}, samples);
   const fs::path out = dir() / "fitted.tir", json = dir() / "fit.json";
-  const RunResult r = Run("tyre fit --model mf --data " + rig.string() + " --out " +
-                          out.string() + " --json " + json.string());
+  const RunResult r = Run("tyre fit --model mf --data " + rig.string() + " --out " + out.string() +
+                          " --json " + json.string());
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   const nlohmann::json j = Json(json);
   EXPECT_TRUE(j["converged"].get<bool>());

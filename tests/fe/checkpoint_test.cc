@@ -28,7 +28,7 @@ using namespace std::string_literals;
 
 // A 3 x 2 x 2 block of 5 mm elements on a road, its bottom-left nodes tied to a free rim that is
 // pushed down and spun; random initial velocities. Every part of the state is in play: positions,
-// velocities, the rim, contact and friction, the energy accumulators.
+// velocities, the rim, contact and friction (stick springs anchored), the energy accumulators.
 ExplicitSolver MakeSolver(int threads) {
   const double h = 0.005;
   Mesh mesh = MakeBlockMesh(3 * h, 2 * h, 2 * h, 3, 2, 2);
@@ -67,31 +67,52 @@ void Advance(ExplicitSolver& s, int steps) {
   }
 }
 
+int Anchored(const ExplicitSolver& s) {
+  int n = 0;
+  for (int a : s.mesh().contact_nodes) {
+    n += s.contact_forces()[a] > 0.0 && s.stick_extensions()[a].norm() > 0.0;
+  }
+  return n;
+}
+
+void ExpectSameState(const ExplicitSolver& restored, const ExplicitSolver& straight) {
+  EXPECT_EQ(restored.time(), straight.time());
+  for (size_t a = 0; a < straight.positions().size(); ++a) {
+    ASSERT_EQ(restored.positions()[a], straight.positions()[a]) << a;
+    ASSERT_EQ(restored.velocities()[a], straight.velocities()[a]) << a;
+    ASSERT_EQ(restored.stick_extensions()[a], straight.stick_extensions()[a]) << a;
+  }
+  EXPECT_EQ(restored.energies().contact_stored, straight.energies().contact_stored);
+  EXPECT_EQ(restored.rim_state().spin_rad_per_s, straight.rim_state().spin_rad_per_s);
+  EXPECT_EQ(restored.rim_state().centre, straight.rim_state().centre);
+  EXPECT_EQ(restored.energies().friction, straight.energies().friction);
+  EXPECT_EQ(restored.energies().external_work, straight.energies().external_work);
+  EXPECT_EQ(restored.energies().BalanceError(), straight.energies().BalanceError());
+}
+
+// Saved at step 30 with bottom nodes on the road and their stick springs stretched (anchors in
+// play), compared at step 60 (still anchored) and 300 (the block has bounced off the road).
 TEST(FeCheckpoint, SolverStateRoundTripContinuesBitForBit) {
   ExplicitSolver straight = MakeSolver(2);
-  Advance(straight, 150);
+  Advance(straight, 30);
+  ASSERT_GT(Anchored(straight), 0);
   BinaryWriter w;
   straight.SaveState(w);
-  Advance(straight, 150);
-  ASSERT_GT(straight.energies().friction, 0.0);  // the road and friction were in play
 
   // Restored on the same thread count (per-thread buffers: bits depend on it).
   ExplicitSolver restored = MakeSolver(2);
   BinaryReader r(w.bytes(), "memory");
   restored.LoadState(r);
   r.ExpectEnd();
-  EXPECT_EQ(restored.steps(), 150);
-  Advance(restored, 150);
-  EXPECT_EQ(restored.time(), straight.time());
-  for (size_t a = 0; a < straight.positions().size(); ++a) {
-    ASSERT_EQ(restored.positions()[a], straight.positions()[a]) << a;
-    ASSERT_EQ(restored.velocities()[a], straight.velocities()[a]) << a;
-  }
-  EXPECT_EQ(restored.rim_state().spin_rad_per_s, straight.rim_state().spin_rad_per_s);
-  EXPECT_EQ(restored.rim_state().centre, straight.rim_state().centre);
-  EXPECT_EQ(restored.energies().friction, straight.energies().friction);
-  EXPECT_EQ(restored.energies().external_work, straight.energies().external_work);
-  EXPECT_EQ(restored.energies().BalanceError(), straight.energies().BalanceError());
+  EXPECT_EQ(restored.steps(), 30);
+  Advance(straight, 30);
+  Advance(restored, 30);
+  ASSERT_GT(Anchored(straight), 0);
+  ExpectSameState(restored, straight);
+  Advance(straight, 240);
+  Advance(restored, 240);
+  ASSERT_GT(straight.energies().friction, 0.0);  // the road and friction were in play
+  ExpectSameState(restored, straight);
 }
 
 // Every prefix of a saved state is refused, and the solver is left as it was.
@@ -183,14 +204,22 @@ TEST_F(FeCheckpointFile, AnotherMeshConfigurationOrVersionIsRefused) {
   other = key_;
   other.config_hash ^= 1;
   EXPECT_NE(Refusal(p, other).find("another configuration"), std::string::npos);
-  // A file of a future format version (the checksum made right again): refused by version.
-  std::string s = ReadBytes(p);
-  s[8] = 2;
-  s.resize(s.size() - 8);
-  const std::uint64_t h = Fnv1a64(s);
-  s.append(reinterpret_cast<const char*>(&h), 8);
-  WriteBytes(p, s);
-  EXPECT_NE(Refusal(p, key_).find("format version 2"), std::string::npos) << Refusal(p, key_);
+  // A file of version 1 (before the stick anchors) and of a future version (the checksum made
+  // right again): refused by version.
+  ASSERT_EQ(kCheckpointVersion, 2u);
+  const std::string good = ReadBytes(p);
+  for (const char version : {1, 3}) {
+    std::string s = good;
+    s[8] = version;
+    s.resize(s.size() - 8);
+    const std::uint64_t h = Fnv1a64(s);
+    s.append(reinterpret_cast<const char*>(&h), 8);
+    WriteBytes(p, s);
+    EXPECT_NE(Refusal(p, key_).find("has format version " + std::to_string(version) +
+                                    "; this build reads version 2"),
+              std::string::npos)
+        << Refusal(p, key_);
+  }
 }
 
 TEST(FeCheckpointHash, MeshHashSeesAMovedNode) {

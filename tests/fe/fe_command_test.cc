@@ -72,9 +72,9 @@ TEST_F(FeCommandTest, AbsStepRunsEveryStepAndWritesTheOutputs) {
       << err_;
   EXPECT_TRUE(Contains(err_, "fe inflate: t = "));
   EXPECT_TRUE(Contains(err_, "mass scaling added"));
-  for (const char* f :
-       {"inflate_history.csv", "footprint_history.csv", "roll_history.csv", "abs_history.csv",
-        "footprint_pressure.csv", "footprint_pressure.svg", "inflate_002.vtu", "abs_002.vtu"}) {
+  for (const char* f : {"inflate_history.csv", "footprint_history.csv", "roll_history.csv",
+                        "abs_history.csv", "footprint_pressure.csv", "footprint_pressure.svg",
+                        "inflate_002.vtu", "abs_002.vtu", "abs_report.html"}) {
     EXPECT_TRUE(fs::exists(out / f)) << f;
   }
   const nlohmann::json j = nlohmann::json::parse(ReadTextFile(json));
@@ -93,6 +93,17 @@ TEST_F(FeCommandTest, AbsStepRunsEveryStepAndWritesTheOutputs) {
   // The driver's pressure reaches the brake after the hydraulic delay (10 ms): torque applied.
   EXPECT_GT(j["abs"]["max_brake_torque_Nm"].get<double>(), 0.0);
   EXPECT_GT(j["abs"]["initial_speed_mps"].get<double>(), 11.0);
+  // 20 ms is shorter than a control cycle: the cycle figures are there, and null.
+  for (const char* k : {"first_cycle_end_s", "max_slip_after_first_cycle",
+                        "fraction_time_slip_below_0_135_after_first_cycle"}) {
+    ASSERT_TRUE(j["abs"].contains(k)) << k;
+    EXPECT_TRUE(j["abs"][k].is_null()) << k;
+  }
+  const std::string html = ReadTextFile(out / "abs_report.html");
+  for (const char* title : {"cf. 002 Fig. 8", "cf. 002 Fig. 9", "cf. 002 Fig. 10",
+                            "cf. 002 Fig. 11", "Energy balance error"}) {
+    EXPECT_TRUE(Contains(html, title)) << title;
+  }
 }
 
 // A braking step run straight through and one stopped at a checkpoint and continued from it (all
@@ -184,6 +195,26 @@ TEST_F(FeCommandTest, BadConfigurationNamesTheField) {
   EXPECT_EQ(Run("inflate --config " + p.string() + " --out " + (dir_ / "o").string()), 2);
   EXPECT_TRUE(Contains(err_, "mesh.thickness_elements")) << err_;
   EXPECT_TRUE(Contains(err_, "bad.yaml")) << err_;
+}
+
+// The stick spring's penalty factor: outside (0, 1), or above the stability bound
+// 4 (1 - time_step_safety^2) = 0.76 (road_contact.h).
+TEST_F(FeCommandTest, BadTangentialPenaltyFactorNamesTheFieldAndTheBound) {
+  const std::string shipped =
+      ReadTextFile(hotlap::test::SourcePath("data/fe/paper_235_75r15.yaml"));
+  for (const auto& [value, expected] : {std::pair{"0.9",
+                                                  "must be at most 4 (1 - "
+                                                  "solver.time_step_safety^2) = 0.76"},
+                                        std::pair{"0", "in (0, 1)"}}) {
+    const std::string y = Replace(shipped, "tangential_penalty_factor: 0.1",
+                                  std::string("tangential_penalty_factor: ") + value);
+    const fs::path p = dir_ / "bad.yaml";
+    std::ofstream(p) << y;
+    EXPECT_EQ(Run("inflate --config " + p.string() + " --out " + (dir_ / "o").string()), 2);
+    EXPECT_TRUE(Contains(err_, "road.tangential_penalty_factor")) << err_;
+    EXPECT_TRUE(Contains(err_, "bad.yaml")) << err_;
+    EXPECT_TRUE(Contains(err_, expected)) << err_;
+  }
 }
 
 }  // namespace

@@ -96,6 +96,11 @@ TEST(FeTyre, InflateAndFootprintOnACoarseMesh) {
   c.inflate.hold_s = 0.01;
   // Mass scaling doubles the tyre's mass: critical damping of the rim bounce is then about 150/s.
   c.footprint.damping_per_s = 150.0;
+  // The footprint stuck to the road (elastic stick) no longer creeps, which damped the rim's
+  // approach: the road force overshoots the load by 1.2% 65 ms into the hold and the rest decays
+  // as exp(-alpha t / 2) (measured: 4362.0 N at the shipped 70 ms hold, 4323.1 N at 100 ms,
+  // 4314.7 N at 120 ms; the viscous stick gave 4311.6 N at 70 ms). Hold 100 ms.
+  c.footprint.hold_s = 0.10;
   TyreRun run(c);
   StepHooks hooks;
   hooks.history_interval_s = 1e-3;

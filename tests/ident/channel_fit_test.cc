@@ -5,6 +5,7 @@
 #include "hotlap/ident/channel_fit.h"
 
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -90,10 +91,48 @@ TEST(ChannelFitTest, StraightLineCovarianceIsSigmaSquaredInverseXtX) {
   EXPECT_NEAR(r.correlation(0, 1), cov(0, 1) / std::sqrt(cov(0, 0) * cov(1, 1)), 1e-9);
   EXPECT_TRUE(r.estimates[0].well_determined && r.estimates[1].well_determined);
   EXPECT_TRUE(r.AllWarnings().empty());
+  // A family of one: the joint interval is the 95% one.
+  EXPECT_EQ(r.estimates[1].joint_high, r.estimates[1].ci_high);
+  EXPECT_EQ(r.estimates[1].joint_low, r.estimates[1].ci_low);
+
+  // A family of ten (Bonferroni, 0.5% per interval): Phi^-1(0.9975) = 2.807034 std errors (a
+  // linear model: its cost is exactly quadratic, so no widening).
+  options.joint_family_size = 10;
+  const FitResult r10 = FitChannels(predictor, params, std::vector{ch},
+                                    std::vector<std::vector<double>>{{0.0, 0.0}}, {}, options);
+  EXPECT_NEAR(r10.estimates[1].joint_high - r10.estimates[1].value, 2.807034 * std::sqrt(cov(1, 1)),
+              1e-6);
+  EXPECT_NEAR(r10.estimates[1].value - r10.estimates[1].joint_low, 2.807034 * std::sqrt(cov(1, 1)),
+              1e-6);
+  EXPECT_NEAR(r10.estimates[1].ci_high - r10.estimates[1].value, 1.959964 * std::sqrt(cov(1, 1)),
+              1e-6);
+  options.joint_family_size = 0;
+  EXPECT_THROW(FitChannels(predictor, params, std::vector{ch},
+                           std::vector<std::vector<double>>{{0.0, 0.0}}, {}, options),
+               std::invalid_argument);
+}
+
+// Table values of the standard normal quantile.
+TEST(ChannelFitTest, NormalQuantileMatchesTables) {
+  EXPECT_NEAR(NormalQuantile(0.5), 0.0, 1e-14);
+  EXPECT_NEAR(NormalQuantile(0.975), 1.959963984540054, 1e-12);
+  EXPECT_NEAR(NormalQuantile(0.995), 2.575829303548901, 1e-12);
+  EXPECT_NEAR(NormalQuantile(0.999), 3.090232306167814, 1e-12);
+  EXPECT_NEAR(NormalQuantile(0.001), -3.090232306167814, 1e-12);
+  EXPECT_NEAR(NormalQuantile(1e-9), -5.997807015007686, 1e-10);
+  EXPECT_NEAR(JointNormalQuantile(1), 1.959963984540054, 1e-12);
+  EXPECT_NEAR(JointNormalQuantile(2), 2.241402727604947, 1e-12);   // Phi^-1(0.9875)
+  EXPECT_NEAR(JointNormalQuantile(10), 2.807033768343811, 1e-12);  // Phi^-1(0.9975)
+  EXPECT_THROW(NormalQuantile(0.0), std::invalid_argument);
+  EXPECT_THROW(NormalQuantile(1.0), std::invalid_argument);
+  EXPECT_THROW(JointNormalQuantile(0), std::invalid_argument);
 }
 
 // Over 200 noisy realisations, each 95% interval holds the truth about 95% of the time (the
-// binomial standard deviation is 1.5%), with the noise level estimated from the residuals.
+// binomial standard deviation is 1.5%), with the noise level estimated from the residuals; the
+// joint intervals of the two parameters hold both at once at least about 95% of the time
+// (Bonferroni is conservative: 95% to 97.5% by the correlation), where the two 95% intervals
+// together hold both only about 90 to 95% of the time.
 TEST(ChannelFitTest, NinetyFivePercentIntervalsCoverNinetyFivePercent) {
   const DecayModel model{Grid(80, 0.05)};
   std::vector<double> truth;
@@ -101,21 +140,33 @@ TEST(ChannelFitTest, NinetyFivePercentIntervalsCoverNinetyFivePercent) {
   const std::vector<FitParameter> params = {{"A", "A", "", 0.0, 100.0, 5.0},
                                             {"tau", "tau", "s", 0.01, 100.0, 1.0}};
   const JetPredictor<DecayModel> predictor(model, {1.0, 1.0}, {0, 1}, {0});
-  int covered[2] = {0, 0};
+  int covered[2] = {0, 0}, both_covered = 0, jointly_covered = 0;
   constexpr int kRuns = 200;
+  FitOptions options;
+  options.joint_family_size = 2;
   for (int seed = 1; seed <= kRuns; ++seed) {
     const FitResult r =
         FitChannels(predictor, params, std::vector{Noisy(truth, 0.05, seed)},
-                    std::vector<std::vector<double>>{{1.0, 1.0}, {10.0, 0.2}}, {}, FitOptions{});
+                    std::vector<std::vector<double>>{{1.0, 1.0}, {10.0, 0.2}}, {}, options);
     const double t[2] = {5.0, 1.5};
+    bool both = true, joint = true;
     for (int i = 0; i < 2; ++i) {
-      covered[i] += t[i] >= r.estimates[i].ci_low && t[i] <= r.estimates[i].ci_high;
+      const ParameterEstimate& e = r.estimates[i];
+      const bool in = t[i] >= e.ci_low && t[i] <= e.ci_high;
+      covered[i] += in;
+      both = both && in;
+      joint = joint && t[i] >= e.joint_low && t[i] <= e.joint_high;
+      EXPECT_TRUE(e.joint_low <= e.ci_low && e.joint_high >= e.ci_high) << seed;
     }
+    both_covered += both;
+    jointly_covered += joint;
   }
   for (int i = 0; i < 2; ++i) {
     EXPECT_GE(covered[i], 0.91 * kRuns) << i;
     EXPECT_LE(covered[i], 0.99 * kRuns) << i;
   }
+  EXPECT_GE(jointly_covered, 0.92 * kRuns);
+  EXPECT_GT(jointly_covered, both_covered);
 }
 
 TEST(ChannelFitTest, RankDeficientModelReportsTheUndeterminedCombination) {

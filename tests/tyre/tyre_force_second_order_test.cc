@@ -140,14 +140,13 @@ TEST(TyreForceSecondOrderTest, MagicFormulaDerivativesMatchCentralDifferences) {
   }
 }
 
-// UniTire: gradient and Hessian. The brush model: the gradient only. It solves its torsional
-// fixed point in double and takes one Newton step in T with the slope held constant
-// (brush_model.cc), which gives exact first derivatives but not second ones (its Hessian is off
-// by up to several times the entry here), so its Hessian is not checked.
+// UniTire and the brush model: gradient and Hessian. The brush model solves its torsional fixed
+// point in double and then takes two chord steps in T (brush_model.cc): one step alone gives
+// exact first derivatives but a Hessian off by up to several times the entry here.
 TEST(TyreForceSecondOrderTest, BrushAndUniTireDerivativesMatchCentralDifferences) {
   for (const auto& [path, order] :
        {std::pair{"data/tyres/unitire_example.yaml", Order::kGradientAndHessian},
-        std::pair{"data/tyres/brush_example.yaml", Order::kGradient}}) {
+        std::pair{"data/tyres/brush_example.yaml", Order::kGradientAndHessian}}) {
     const TyreForceModel<double> model = LoadTyreForceModel(test::SourcePath(path));
     EXPECT_EQ(model.Cast<S3>().kind(), model.kind());
     for (size_t k = 0; k < kProbes.size(); ++k) {

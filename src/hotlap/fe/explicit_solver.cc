@@ -59,6 +59,8 @@ ExplicitSolver::ExplicitSolver(Mesh mesh, std::vector<YeohMaterial> materials,
   applied_ = reaction_ = v_;
   f_stored_ = f_dissip_bv_ = f_dissip_hg_ = f_damp_ = f_contact_ = f_friction_ = f_external_ = v_;
   contact_normal_.assign(nn, 0.0);
+  stick_extension_.assign(nn, Eigen::Vector2d::Zero());
+  on_road_.assign(nn, 0);
   fixed_.assign(nn, {0, 0, 0});
   fixed_velocity_ = v_;
   mass_.assign(nn, 0.0);
@@ -163,9 +165,13 @@ ExplicitSolver::ExplicitSolver(Mesh mesh, std::vector<YeohMaterial> materials,
 void ExplicitSolver::SetRoad(const RoadContact& road) {
   road_ = road;
   contact_stiffness_.assign(mesh_.nodes.size(), 0.0);
+  stick_stiffness_.assign(mesh_.nodes.size(), 0.0);
   for (size_t a = 0; a < mass_.size(); ++a) {
     contact_stiffness_[a] = road_.penalty_factor * mass_[a] / (dt_ * dt_);
+    stick_stiffness_[a] = road_.tangential_penalty_factor * mass_[a] / (dt_ * dt_);
   }
+  stick_extension_.assign(mesh_.nodes.size(), Eigen::Vector2d::Zero());
+  on_road_.assign(mesh_.nodes.size(), 0);
 }
 
 void ExplicitSolver::SetRim(const RimSettings& rim) {
@@ -644,7 +650,8 @@ void ExplicitSolver::RunStep(bool advance) {
   energies_.bulk_viscous = -now[1];
   energies_.hourglass_dissipated = -now[2];
   energies_.damping = -now[3];
-  energies_.friction = -now[4];
+  slip_dissipation_ += total[kSlipSum];
+  energies_.friction = road_.stick == StickModel::kViscous ? -now[4] : slip_dissipation_;
   energies_.kinetic = ke;
   energies_.internal = stored_internal_;
   energies_.hourglass_stored = stored_hg_;
@@ -664,6 +671,13 @@ void ExplicitSolver::AddWorkTerms(long a, NodeSums& sum) const {
     sum[k] += f[k]->dot(v_old_[a]);
     sum[5 + k] += f[k]->dot(v_[a]);
   }
+  // A moving road works on the friction force: external work; the friction term is the work
+  // relative to the road.
+  const double road_power = f_friction_[a].x() * road_.road_speed_x_mps;
+  sum[0] += road_power;
+  sum[5] += road_power;
+  sum[4] -= road_power;
+  sum[9] -= road_power;
 }
 
 void ExplicitSolver::NodeUpdate(long a, int buffers, const Eigen::Vector3d& road_velocity,
@@ -702,15 +716,51 @@ void ExplicitSolver::NodeUpdate(long a, int buffers, const Eigen::Vector3d& road
   f_contact_[a].setZero();
   f_friction_[a].setZero();
   contact_normal_[a] = 0.0;
-  // Road: penalty normal force and friction (002:1).
+  // Road: penalty normal force and friction (002:1); road_contact.h.
   if (road_.enabled && is_contact_node_[a]) {
     const double g = road_.height_m - x_[a].z();
-    if (g > 0.0) {
-      const double fn = contact_stiffness_[a] * g;
+    const bool on_road = g > 0.0;
+    double fn = 0.0;
+    if (on_road) {
+      fn = contact_stiffness_[a] * g;
       contact_normal_[a] = fn;
       f_contact_[a].z() = fn;
       sum[kContactSum] += 0.5 * contact_stiffness_[a] * g * g;
-      f_friction_[a] = CalcFrictionForce(road_.friction, fn, v_[a] - road_velocity, mass_[a] / dt_);
+    }
+    const Eigen::Vector3d slip = v_[a] - road_velocity;  // v(n-1/2) relative to the road
+    if (road_.stick == StickModel::kViscous) {
+      if (on_road) f_friction_[a] = CalcFrictionForce(road_.friction, fn, slip, mass_[a] / dt_);
+    } else if (on_road || on_road_[a]) {
+      // The stick spring's trial extension x_t(n) - anchor(n-1): the last extension plus the
+      // node's move relative to the road over the last step, dt v_slip(n-1/2) (the anchor moves
+      // with the road). A node touching down anchors where it crossed the road plane during the
+      // last step (linearly; where it is if it was below the plane already, e.g. a road just
+      // set); one leaving the road lets go (limit 0).
+      const Eigen::Vector2d slip_t(slip.x(), slip.y());
+      const bool was_on_road = on_road_[a] != 0;
+      const Eigen::Vector2d last = was_on_road ? stick_extension_[a] : Eigen::Vector2d::Zero();
+      const Eigen::Vector2d moved = last + dt_ * slip_t;  // with the anchor carried along
+      Eigen::Vector2d trial = moved;
+      if (!was_on_road) {
+        const double g_last = g + dt_ * v_[a].z();  // the penetration a step ago
+        trial *= g_last < 0.0 && steps_ > 0 ? g / (g - g_last) : 0.0;
+      }
+      const double k = stick_stiffness_[a];
+      const double limit =
+          on_road ? CalcFrictionCoefficient(road_.friction, slip_t.norm()) * fn : 0.0;
+      Eigen::Vector2d ext = trial;
+      const Eigen::Vector2d f = ReturnMapFriction(k, limit, ext);
+      f_friction_[a] = Eigen::Vector3d(f.x(), f.y(), 0.0);
+      sum[kContactSum] += 0.5 * k * ext.squaredNorm();
+      if (advance) {
+        // Dissipated over [t(n-1), t(n)]: (f(n-1) + f(n)) / 2 against the anchor's move relative
+        // to the road, moved - ext (zero in stick; before touch-down the anchor is taken as
+        // carried with the node, f(n-1) being zero); with the spring energy this closes the
+        // node's friction work exactly (explicit_solver.h, Energies).
+        sum[kSlipSum] += 0.5 * k * (last + ext).dot(moved - ext);
+        stick_extension_[a] = ext;
+        on_road_[a] = on_road;
+      }
     }
   }
   if (!advance) return;
@@ -778,8 +828,17 @@ void ExplicitSolver::SaveState(BinaryWriter& out) const {
   out.PutU64(road_.enabled ? 1 : 0);
   for (double d : {road_.height_m, road_.penalty_factor, road_.road_speed_x_mps,
                    road_.friction.static_coefficient, road_.friction.kinetic_coefficient,
-                   road_.friction.decay_s_per_m}) {
+                   road_.friction.decay_s_per_m, road_.tangential_penalty_factor}) {
     out.PutDouble(d);
+  }
+  out.PutU64(static_cast<std::uint64_t>(road_.stick));
+  // The stick springs of the contact nodes (in mesh.contact_nodes order): on the road, extension.
+  out.PutTag("STIK");
+  out.PutU64(mesh_.contact_nodes.size());
+  for (int a : mesh_.contact_nodes) {
+    out.PutU64(on_road_[a] ? 1 : 0);
+    out.PutDouble(stick_extension_[a].x());
+    out.PutDouble(stick_extension_[a].y());
   }
   out.PutTag("RIM_");
   out.PutU64(has_rim_ ? 1 : 0);
@@ -806,6 +865,7 @@ void ExplicitSolver::SaveState(BinaryWriter& out) const {
     out.PutDouble(d);
   }
   for (double d : work_to_midstep_) out.PutDouble(d);
+  out.PutDouble(slip_dissipation_);
 }
 
 void ExplicitSolver::LoadState(BinaryReader& in) {
@@ -846,6 +906,24 @@ void ExplicitSolver::LoadState(BinaryReader& in) {
   road.friction.static_coefficient = in.GetFinite();
   road.friction.kinetic_coefficient = in.GetFinite();
   road.friction.decay_s_per_m = in.GetFinite();
+  road.tangential_penalty_factor = in.GetFinite();
+  const std::uint64_t stick = in.GetU64();
+  if (stick > static_cast<std::uint64_t>(StickModel::kViscous)) {
+    in.Damaged("a stick model out of range");
+  }
+  road.stick = static_cast<StickModel>(stick);
+  in.ExpectTag("STIK");
+  const size_t nc = mesh_.contact_nodes.size();
+  if (in.GetCount(24) != nc) in.Damaged("the stick anchors do not match the mesh's contact nodes");
+  std::vector<char> on_road(nc);
+  std::vector<Eigen::Vector2d> extension(nc);
+  for (size_t k = 0; k < nc; ++k) {
+    const std::uint64_t flag = in.GetU64();
+    if (flag > 1) in.Damaged("a stick anchor flag out of range");
+    on_road[k] = static_cast<char>(flag);
+    extension[k].x() = in.GetFinite();
+    extension[k].y() = in.GetFinite();
+  }
   in.ExpectTag("RIM_");
   const bool has_rim = in.GetU64() != 0;
   if (has_rim != has_rim_) in.Damaged("its rim does not match this model's");
@@ -884,6 +962,7 @@ void ExplicitSolver::LoadState(BinaryReader& in) {
   }
   std::array<double, 5> work{};
   for (double& d : work) d = in.GetFinite();
+  const double slip_dissipation = in.GetFinite();
 
   // Everything read and checked: only now change the solver.
   time_ = time;
@@ -898,6 +977,10 @@ void ExplicitSolver::LoadState(BinaryReader& in) {
   } else {
     road_ = road;
   }
+  for (size_t k = 0; k < nc; ++k) {  // after SetRoad, which drops the anchors
+    on_road_[mesh_.contact_nodes[k]] = on_road[k];
+    stick_extension_[mesh_.contact_nodes[k]] = extension[k];
+  }
   rim_settings_ = settings;
   rim_ = rim;
   rim_loads_ = loads[0];
@@ -910,6 +993,7 @@ void ExplicitSolver::LoadState(BinaryReader& in) {
   stored_hg_ = stored[1];
   stored_contact_ = stored[2];
   work_to_midstep_ = work;
+  slip_dissipation_ = slip_dissipation;
 }
 
 }  // namespace hotlap::fe

@@ -26,11 +26,16 @@
 /// K = 20 mu0), c_d^2 = (K + 4/3 mu0 + phi E_cord) / rho.
 ///
 /// Energies: the strain energy (rubber and cords) and the stored hourglass and contact energies
-/// are state functions evaluated from the positions; the kinetic energy at t(n) is
-/// m v(n-1/2) . v(n+1/2) / 2 (the form that central differences conserve exactly for a linear
-/// system); dissipation and external work are accumulated as (f(n) + f(n+1)) . (x(n+1) - x(n)) / 2
-/// up to t(n). The initial kinetic energy is that form at the first step. Their
-/// balance is therefore a genuine check of the force computation (Energies::BalanceError).
+/// are state functions evaluated from the positions (and the stick springs' extensions); the
+/// kinetic energy at t(n) is m v(n-1/2) . v(n+1/2) / 2 (the form that central differences conserve
+/// exactly for a linear system); dissipation and external work are accumulated as
+/// (f(n) + f(n+1)) . (x(n+1) - x(n)) / 2 up to t(n). The initial kinetic energy is that form at
+/// the first step. Friction with the elastic stick is booked from the return mapping, not from the
+/// nodes' motion: (f(n) + f(n+1)) . (anchor(n+1) - anchor(n)) / 2 per node, the anchors' moves
+/// relative to the road (the road's own work on the friction forces, f . v_road, is external).
+/// Their balance is therefore a genuine check of the force computation (Energies::BalanceError):
+/// for a stick spring, it closes only if the friction force applied to the node, the spring's
+/// stored energy and the anchor's moves agree.
 ///
 /// Threads (OpenMP): the element loop (rubber, cords, hourglass, bulk viscosity), the pressure
 /// faces and the node loop (contact, friction, damping, the update, the energy sums) run on
@@ -118,10 +123,14 @@ struct Energies {
   double hourglass_dissipated = 0.0;  ///< FB viscous-form work
   double bulk_viscous = 0.0;          ///< dissipated by bulk viscosity
   double damping = 0.0;               ///< dissipated by mass-proportional damping
-  double contact_stored = 0.0;        ///< penalty energy k g^2 / 2 (stored)
-  double friction = 0.0;              ///< dissipated by road friction
-  double external_work = 0.0;         ///< pressure, nodal loads, rim loads, prescribed motion
-  double initial_kinetic = 0.0;       ///< the kinetic energy at the first step
+  /// Penalty energies of the road, normal k g^2 / 2 and tangential (the stick springs)
+  /// k_t |x_t - anchor|^2 / 2 (stored).
+  double contact_stored = 0.0;
+  /// Dissipated by road friction: the limit force's work over the anchors' moves (elastic
+  /// stick), or all the friction work relative to the road (viscous stick).
+  double friction = 0.0;
+  double external_work = 0.0;    ///< pressure, nodal loads, rim loads, prescribed motion, road
+  double initial_kinetic = 0.0;  ///< the kinetic energy at the first step
 
   double Hourglass() const { return hourglass_stored + hourglass_dissipated; }
   /// kinetic + internal + hourglass + dissipated + contact - external work - initial kinetic.
@@ -166,6 +175,7 @@ class ExplicitSolver {
   ExplicitSolver(Mesh mesh, std::vector<YeohMaterial> materials, std::vector<RebarMaterial> rebars,
                  const SolverOptions& options);
 
+  /// Sets the road; drops every stick anchor (no node has touched this road yet).
   void SetRoad(const RoadContact& road);
   /// Ties mesh.rim_nodes to a rigid rim. Prescribed rim DOFs start at zero velocity.
   void SetRim(const RimSettings& rim);
@@ -208,8 +218,8 @@ class ExplicitSolver {
   }
 
   /// Writes everything that changes while the solver runs (time, step count, nodal positions,
-  /// velocities and last forces, rim, road, loads, energy accumulators) so that LoadState on a
-  /// solver built from the same mesh, materials and options continues bit for bit.
+  /// velocities and last forces, rim, road, stick anchors, loads, energy accumulators) so that
+  /// LoadState on a solver built from the same mesh, materials and options continues bit for bit.
   void SaveState(BinaryWriter& out) const;
   /// Reads what SaveState wrote. Throws InputError (via the reader) if it does not fit this
   /// solver (array sizes, time step).
@@ -250,6 +260,11 @@ class ExplicitSolver {
   const std::vector<Eigen::Vector3d>& reactions() const { return reaction_; }
   /// Road contact normal force per node from the last step (z), N.
   const std::vector<double>& contact_forces() const { return contact_normal_; }
+  /// Extension x_t - anchor of each node's stick spring (tangential x, y) after the last step's
+  /// return mapping, m; zero for a node off the road (road_contact.h, StickModel::kElasticSpring).
+  const std::vector<Eigen::Vector2d>& stick_extensions() const { return stick_extension_; }
+  /// Tangential stiffness k_t of each node's stick spring, N/m.
+  const std::vector<double>& stick_stiffness() const { return stick_stiffness_; }
   /// Sum of the road's force on the tyre from the last step (friction x, y; normal z), N.
   Eigen::Vector3d RoadForce() const;
   const RimState& rim_state() const { return rim_; }
@@ -263,9 +278,10 @@ class ExplicitSolver {
   double StableStepEstimate() const { return stable_step_; }
 
  private:
-  // Per-node sums of a step: work terms back (0-4) and ahead (5-9), kinetic, contact energy.
-  static constexpr int kKineticSum = 10, kContactSum = 11;
-  using NodeSums = std::array<double, 12>;
+  // Per-node sums of a step: work terms back (0-4) and ahead (5-9), kinetic, contact energy
+  // (normal and stick springs), friction dissipated by the anchors' moves over the last interval.
+  static constexpr int kKineticSum = 10, kContactSum = 11, kSlipSum = 12;
+  using NodeSums = std::array<double, 13>;
   // Per-thread force buffers beyond this count are not used (node_thread_mask_ is 64 bits).
   static constexpr int kMaxBuffers = 64;
 
@@ -324,6 +340,11 @@ class ExplicitSolver {
   std::vector<FibreLayer> fibres_sorted_;
   std::vector<double> mass_;
   std::vector<double> contact_stiffness_;
+  std::vector<double> stick_stiffness_;  // k_t of each node's stick spring, N/m
+  // The stick springs: the extension x_t - anchor of each node in contact (the anchor moves with
+  // the road), and whether the node was on the road at the last step (its anchor is set).
+  std::vector<Eigen::Vector2d> stick_extension_;
+  std::vector<char> on_road_;
 
   // Parallel loops.
   int threads_ = 0;
@@ -357,7 +378,10 @@ class ExplicitSolver {
   MassScalingReport mass_report_;
   Energies energies_;
   double stored_internal_ = 0.0, stored_hg_ = 0.0, stored_contact_ = 0.0;
-  std::array<double, 5> work_to_midstep_{};  // external, bulk visc., hourglass, damping, friction
+  // External, bulk viscosity, hourglass, damping, friction (relative to the road; the road's own
+  // work on the friction forces is external).
+  std::array<double, 5> work_to_midstep_{};
+  double slip_dissipation_ = 0.0;  // friction dissipated by the anchors' moves, J
 };
 
 }  // namespace hotlap::fe

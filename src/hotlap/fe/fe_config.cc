@@ -1,5 +1,7 @@
 #include "hotlap/fe/fe_config.h"
 
+#include <utility>
+
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
@@ -121,6 +123,19 @@ FeConfig LoadFeConfig(const std::filesystem::path& path) {
   {
     YamlReader r = y.Map("road");
     c.road.penalty_factor = r.Number("penalty_factor", {0.0, 1.0, false, false, ""});
+    c.road.tangential_penalty_factor =
+        r.Number("tangential_penalty_factor", {0.0, 1.0, false, false, ""});
+    // Stable with any mesh up to 4 (1 - s^2), s the step's safety factor (road_contact.h).
+    const double bound = MaxStablePenaltyFactor(c.solver.time_step_safety);
+    for (const auto& [key, value] :
+         {std::pair{"penalty_factor", c.road.penalty_factor},
+          {"tangential_penalty_factor", c.road.tangential_penalty_factor}}) {
+      if (value > bound) {
+        r.Fail(key, fmt::format("{:g} must be at most 4 (1 - solver.time_step_safety^2) = {:g}: "
+                                "a stiffer contact spring can make the explicit step unstable",
+                                value, bound));
+      }
+    }
     c.road.friction.static_coefficient = r.Number("static_friction", Range::Closed(0, 3, ""));
     c.road.friction.kinetic_coefficient = r.Number("kinetic_friction", Range::Closed(0, 3, ""));
     c.road.friction.decay_s_per_m = r.Number("decay_s_per_m", Range::NonNegative("s/m"));

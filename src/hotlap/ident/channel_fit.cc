@@ -170,6 +170,9 @@ FitResult FitChannels(const ChannelModel& model, std::span<const FitParameter> p
     throw std::invalid_argument("FitChannels: model and parameter/channel counts differ");
   }
   if (!time.empty() && time.size() != n) throw std::invalid_argument("FitChannels: time size");
+  if (options.joint_family_size < 1) {
+    throw std::invalid_argument("FitChannels: joint_family_size must be at least 1");
+  }
   std::vector<double> scale(n_par), lower(n_par), upper(n_par);
   for (int i = 0; i < n_par; ++i) {
     const FitParameter& p = parameters[i];
@@ -448,29 +451,41 @@ FitResult FitChannels(const ChannelModel& model, std::span<const FitParameter> p
       for (int j = 0; j < n_par; ++j) at[j] = std::clamp(best[j] + t * d(j), lower[j], upper[j]);
       return cost_at(at) - cost_best;  // infinite where the model fails
     };
-    for (const double side : {-1.0, 1.0}) {
-      constexpr double kRise = 1.920729;  // chi-square(1) 95% / 2
-      double inside = 0.0, outside = side * kZ95;
-      if (rise(outside) >= kRise) continue;  // the quadratic is wide enough
-      // Out until the cost has risen enough (or a bound stops the parameter), then bisect.
-      bool found = false;
-      for (int k = 0; k < 12 && !found; ++k) {
-        inside = outside;
-        outside *= 2.0;
-        found = rise(outside) >= kRise;
-        const double ui = best[i] + outside * d(i);
-        if (!found && (ui <= lower[i] || ui >= upper[i])) break;
+    // Each interval's level: the 95% one and the joint one (the same when the family is one).
+    const double z_joint = JointNormalQuantile(options.joint_family_size);
+    for (const bool joint : {false, true}) {
+      ParameterEstimate& e = result.estimates[i];
+      if (joint && options.joint_family_size <= 1) {
+        e.joint_likelihood_low = e.likelihood_low;
+        e.joint_likelihood_high = e.likelihood_high;
+        continue;
       }
-      double endpoint = (side < 0 ? lower[i] : upper[i]) * scale[i];  // never rose enough
-      if (found) {
-        for (int k = 0; k < 20; ++k) {
-          const double mid = 0.5 * (inside + outside);
-          (rise(mid) >= kRise ? outside : inside) = mid;
+      const double z = joint ? z_joint : kZ95;
+      const double level_rise = 0.5 * z * z;  // chi-square(1) at the level, over 2
+      for (const double side : {-1.0, 1.0}) {
+        double& out = joint ? (side < 0 ? e.joint_likelihood_low : e.joint_likelihood_high)
+                            : (side < 0 ? e.likelihood_low : e.likelihood_high);
+        double inside = 0.0, outside = side * z;
+        if (rise(outside) >= level_rise) continue;  // the quadratic is wide enough
+        // Out until the cost has risen enough (or a bound stops the parameter), then bisect.
+        bool found = false;
+        for (int k = 0; k < 12 && !found; ++k) {
+          inside = outside;
+          outside *= 2.0;
+          found = rise(outside) >= level_rise;
+          const double ui = best[i] + outside * d(i);
+          if (!found && (ui <= lower[i] || ui >= upper[i])) break;
         }
-        endpoint = (best[i] + outside * d(i)) * scale[i];
+        double endpoint = (side < 0 ? lower[i] : upper[i]) * scale[i];  // never rose enough
+        if (found) {
+          for (int k = 0; k < 20; ++k) {
+            const double mid = 0.5 * (inside + outside);
+            (rise(mid) >= level_rise ? outside : inside) = mid;
+          }
+          endpoint = (best[i] + outside * d(i)) * scale[i];
+        }
+        out = endpoint;
       }
-      (side < 0 ? result.estimates[i].likelihood_low : result.estimates[i].likelihood_high) =
-          endpoint;
     }
   }
   u = best;

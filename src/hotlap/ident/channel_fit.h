@@ -33,7 +33,8 @@
 ///    followed outwards until it has risen by 1.92 (the 95% likelihood-ratio level); where that
 ///    is beyond the Wald endpoint (value -/+ 1.96 std errors) the interval is widened to it. Near
 ///    the minimum of a valley that curves or flattens the quadratic underestimates its extent.
-///    Re-optimising along the way (a true profile) could only widen it further.
+///    Re-optimising along the way (a true profile) could only widen it further. The joint
+///    intervals (FitOptions::joint_family_size) are checked the same way at their own level.
 ///
 /// Pitfall: the optimiser works on value / scale; give every parameter a scale of its typical
 /// magnitude (a zero scale is an error), or the covariance's rank test compares apples with pears.
@@ -123,7 +124,19 @@ struct FitOptions {
   /// False: no solving; the noise levels, statistics and covariance are those at the first
   /// start (to report a solution found elsewhere in other coordinates).
   bool solve = true;
+  /// How many model parameters the caller reports together (e.g. every parameter of every
+  /// corner of one `hotlap fit` command). Their joint intervals hold all of them at once with
+  /// 95% probability: each is a 1 - 0.05 / joint_family_size interval (Bonferroni). 1: the
+  /// joint interval is the 95% interval.
+  int joint_family_size = 1;
 };
+
+/// The two-sided normal quantile of a family of `family_size` intervals that hold together with
+/// probability 0.95 (Bonferroni): Phi^-1(1 - 0.025 / family_size); 1.96 for one. family_size >= 1.
+double JointNormalQuantile(int family_size);
+
+/// Phi^-1(p), the standard normal quantile, for p in (0, 1) (to 1e-12).
+double NormalQuantile(double p);
 
 /// What the fit says about one parameter.
 struct ParameterEstimate {
@@ -137,6 +150,12 @@ struct ParameterEstimate {
   /// NaN where not computed; the bounds where it never does.
   double likelihood_low = std::numeric_limits<double>::quiet_NaN();
   double likelihood_high = std::numeric_limits<double>::quiet_NaN();
+  /// Joint 95% interval (FitOptions::joint_family_size): value -/+ z_joint std errors, widened
+  /// the same way to where the cost rises by z_joint^2 / 2 (joint_likelihood_*), clipped.
+  double joint_low = 0.0;
+  double joint_high = 0.0;
+  double joint_likelihood_low = std::numeric_limits<double>::quiet_NaN();
+  double joint_likelihood_high = std::numeric_limits<double>::quiet_NaN();
   bool well_determined = false;
   bool at_bound = false;      ///< within 1e-6 of its range from a bound
   bool undetermined = false;  ///< in the null space of the Jacobian

@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -64,6 +66,28 @@ std::vector<std::string> NullSpaceWarnings(std::span<const FitParameter> paramet
   return out;
 }
 
+double NormalQuantile(double p) {
+  if (!(p > 0.0 && p < 1.0)) throw std::invalid_argument("NormalQuantile: p outside (0, 1)");
+  // Bisection on Phi(z) = erfc(-z / sqrt 2) / 2, then Newton steps polish it.
+  double lo = -40.0, hi = 40.0;
+  for (int k = 0; k < 60; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (0.5 * std::erfc(-mid / std::sqrt(2.0)) < p ? lo : hi) = mid;
+  }
+  double z = 0.5 * (lo + hi);
+  for (int k = 0; k < 3; ++k) {
+    const double pdf = std::exp(-0.5 * z * z) / std::sqrt(2.0 * std::numbers::pi);
+    if (!(pdf > 0.0)) break;
+    z -= (0.5 * std::erfc(-z / std::sqrt(2.0)) - p) / pdf;
+  }
+  return z;
+}
+
+double JointNormalQuantile(int family_size) {
+  if (family_size < 1) throw std::invalid_argument("JointNormalQuantile: family_size < 1");
+  return NormalQuantile(1.0 - 0.025 / family_size);
+}
+
 LossKind ParseLossKind(const std::string& text) {
   if (text == "none") return LossKind::kNone;
   if (text == "huber") return LossKind::kHuber;
@@ -85,6 +109,7 @@ const char* LossKindName(LossKind kind) {
 
 void SummarizeEstimates(FitResult& result, const FitOptions& options) {
   const size_t n = result.parameters.size();
+  const double z_joint = JointNormalQuantile(options.joint_family_size);
   result.correlation = Eigen::MatrixXd::Constant(n, n, kNaN);
   std::vector<std::string>& warnings = result.estimate_warnings;
   warnings.clear();
@@ -96,10 +121,21 @@ void SummarizeEstimates(FitResult& result, const FitOptions& options) {
     e.std_error = e.undetermined ? kInf : std::sqrt(std::max(var, 0.0));
     e.ci_low = e.undetermined ? p.lower : std::max(p.lower, e.value - kZ95 * e.std_error);
     e.ci_high = e.undetermined ? p.upper : std::min(p.upper, e.value + kZ95 * e.std_error);
+    e.joint_low = e.undetermined ? p.lower : std::max(p.lower, e.value - z_joint * e.std_error);
+    e.joint_high = e.undetermined ? p.upper : std::min(p.upper, e.value + z_joint * e.std_error);
     if (!e.undetermined && std::isfinite(e.std_error)) {
       if (e.likelihood_low < e.ci_low) e.ci_low = std::max(p.lower, e.likelihood_low);
       if (e.likelihood_high > e.ci_high) e.ci_high = std::min(p.upper, e.likelihood_high);
+      if (e.joint_likelihood_low < e.joint_low) {
+        e.joint_low = std::max(p.lower, e.joint_likelihood_low);
+      }
+      if (e.joint_likelihood_high > e.joint_high) {
+        e.joint_high = std::min(p.upper, e.joint_likelihood_high);
+      }
     }
+    // A joint interval is never narrower than the 95% one (a widened 95% edge may reach past it).
+    e.joint_low = std::min(e.joint_low, e.ci_low);
+    e.joint_high = std::max(e.joint_high, e.ci_high);
     const double range = p.upper - p.lower;
     const double tol = std::min(std::isfinite(range) ? 1e-6 * range : kInf, 1e-4 * p.scale);
     e.at_bound = e.value - p.lower <= tol || p.upper - e.value <= tol;

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
+#include "hotlap/ident/rig_fit_common.h"
 #include "hotlap/tyre/magic_formula.h"
 
 namespace hotlap::ident {
@@ -23,9 +24,10 @@ using tyre::MagicFormulaParams;
 // The coefficients this fit can free, by `.tir` name.
 #define HOTLAP_MF_FITTABLE(X)                                                                     \
   X(PCY1)                                                                                         \
-  X(PDY1) X(PDY2) X(PDY3) X(PEY1) X(PEY2) X(PEY3) X(PKY1) X(PKY2) X(PKY4) X(PKY6) X(PKY7) X(PHY1) \
-      X(PHY2) X(PVY1) X(PVY2) X(PVY3) X(PVY4) X(PCX1) X(PDX1) X(PDX2) X(PDX3) X(PEX1) X(PEX2)     \
-          X(PEX3) X(PEX4) X(PKX1) X(PKX2) X(PKX3) X(PHX1) X(PHX2) X(PVX1) X(PVX2)
+  X(PDY1)                                                                                         \
+  X(PDY2) X(PDY3) X(PEY1) X(PEY2) X(PEY3) X(PKY1) X(PKY2) X(PKY4) X(PKY6) X(PKY7) X(PHY1) X(PHY2) \
+      X(PVY1) X(PVY2) X(PVY3) X(PVY4) X(PCX1) X(PDX1) X(PDX2) X(PDX3) X(PEX1) X(PEX2) X(PEX3)     \
+          X(PEX4) X(PKX1) X(PKX2) X(PKX3) X(PHX1) X(PHX2) X(PVX1) X(PVX2)
 
 enum class Coef {
 #define HOTLAP_ENUM(name) name,
@@ -70,18 +72,6 @@ bool IsLongitudinal(const RigSample& s) { return s.fx && std::abs(s.slip_angle) 
 double Measured(const RigSample& s, Channel c) { return c == Channel::kLateral ? s.fy : *s.fx; }
 double Slip(const RigSample& s, Channel c) {
   return c == Channel::kLateral ? s.slip_angle : s.slip_ratio;
-}
-
-template <Scalar T>
-tyre::TyreOperatingPoint<T> OperatingPoint(const RigSample& s) {
-  tyre::TyreOperatingPoint<T> op;
-  op.fz = T(s.fz);
-  op.slip_ratio = T(s.slip_ratio);
-  op.slip_angle = T(s.slip_angle);
-  op.camber = T(s.camber);
-  op.speed = T(s.speed);
-  op.tread_temp = T(s.tread_temp);
-  return op;
 }
 
 // Load groups: sorted loads no more than 2% apart.
@@ -171,26 +161,6 @@ std::vector<CurveEstimate> EstimateCurves(const std::vector<const RigSample*>& s
   return out;
 }
 
-// Least squares y = c0 + c1 x (c1 = 0 with one point).
-std::pair<double, double> LineFit(const std::vector<double>& x, const std::vector<double>& y) {
-  const double n = static_cast<double>(x.size());
-  const double mx = std::accumulate(x.begin(), x.end(), 0.0) / n;
-  const double my = std::accumulate(y.begin(), y.end(), 0.0) / n;
-  double sxy = 0.0, sxx = 0.0;
-  for (size_t i = 0; i < x.size(); ++i) {
-    sxy += (x[i] - mx) * (y[i] - my);
-    sxx += (x[i] - mx) * (x[i] - mx);
-  }
-  const double c1 = sxx > 0.0 ? sxy / sxx : 0.0;
-  return {my - c1 * mx, c1};
-}
-
-double Median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 // Starting lateral coefficients from the curves: friction line in dfz, cornering stiffness law
 // K = PKY1 Fz0 sin(2 atan(Fz / (PKY2 Fz0))), i.e. Fz/K linear in Fz^2.
 // Where the non-estimated coefficients start.
@@ -210,12 +180,12 @@ void GuessLateral(const std::vector<CurveEstimate>& curves, Start start,
     fz2.push_back(c.fz * c.fz);
     fz_over_k.push_back(c.fz / std::abs(c.slope));
   }
-  const auto [mu0, mu1] = LineFit(dfz, mu);
+  const auto [mu0, mu1] = internal::LineFit(dfz, mu);
   p.PDY1 = std::clamp(mu0, 0.2, 3.5);
   p.PDY2 = curves.size() >= 2 ? std::clamp(mu1 / 1.0, -0.9, 0.9) : p.PDY2;
   const double sign = curves.front().slope < 0.0 ? -1.0 : 1.0;  // ISO-W: negative
   if (start == Start::kGeneric) p.PKY4 = 2.0;
-  const auto [a, b] = LineFit(fz2, fz_over_k);
+  const auto [a, b] = internal::LineFit(fz2, fz_over_k);
   if (start == Start::kGeneric && curves.size() >= 2 && a > 0.0 && b > 0.0) {
     const double pky1 = 1.0 / (2.0 * fz0 * std::sqrt(a * b));
     p.PKY1 = sign * std::clamp(pky1, 1.0, 250.0);
@@ -253,8 +223,8 @@ void GuessLongitudinal(const std::vector<CurveEstimate>& curves, Start start,
     mu.push_back(c.peak / c.fz);
     k.push_back(c.slope / c.fz);
   }
-  const auto [mu0, mu1] = LineFit(dfz, mu);
-  const auto [k0, k1] = LineFit(dfz, k);
+  const auto [mu0, mu1] = internal::LineFit(dfz, mu);
+  const auto [k0, k1] = internal::LineFit(dfz, k);
   p.PDX1 = std::clamp(mu0, 0.2, 3.5);
   p.PDX2 = curves.size() >= 2 ? std::clamp(mu1, -0.9, 0.9) : p.PDX2;
   p.PKX1 = std::clamp(k0, 1.0, 250.0);
@@ -319,7 +289,8 @@ struct Residual {
   bool operator()(T const* const* x, T* r) const {
     MagicFormulaParams<T> p = base->Cast<T>();
     for (size_t i = 0; i < free->size(); ++i) Field(p, (*free)[i].coef) = x[0][i];
-    const tyre::TyreForces<T> f = tyre::CalcMagicFormula(p, OperatingPoint<T>(sample), {});
+    const tyre::TyreForces<T> f =
+        tyre::CalcMagicFormula(p, internal::RigOperatingPoint<T>(sample), {});
     r[0] = ((channel == Channel::kLateral ? f.fy : f.fx) - Measured(sample, channel)) / scale;
     return true;
   }
@@ -392,19 +363,6 @@ ChannelFit FitChannel(const std::vector<const RigSample*>& samples, Channel chan
   return out;
 }
 
-void CheckSamples(std::span<const RigSample> samples) {
-  for (size_t i = 0; i < samples.size(); ++i) {
-    const RigSample& s = samples[i];
-    const bool finite = std::isfinite(s.slip_angle) && std::isfinite(s.slip_ratio) &&
-                        std::isfinite(s.camber) && std::isfinite(s.speed) &&
-                        std::isfinite(s.tread_temp) && std::isfinite(s.fy) && std::isfinite(s.mz) &&
-                        (!s.fx || std::isfinite(*s.fx));
-    if (!finite) throw InputError(fmt::format("rig sample {}: a value is not a finite number", i));
-    if (!(s.fz > 0.0))
-      throw InputError(fmt::format("rig sample {}: fz {:g} N must be > 0", i, s.fz));
-  }
-}
-
 std::vector<MagicFormulaFitMetrics> Metrics(const MagicFormulaParams<double>& params,
                                             const std::vector<const RigSample*>& samples,
                                             Channel channel) {
@@ -414,7 +372,7 @@ std::vector<MagicFormulaFitMetrics> Metrics(const MagicFormulaParams<double>& pa
   for (size_t i = 0; i < samples.size(); ++i) {
     const RigSample& s = *samples[i];
     const tyre::TyreForces<double> f =
-        tyre::CalcMagicFormula(params, OperatingPoint<double>(s), {});
+        tyre::CalcMagicFormula(params, internal::RigOperatingPoint<double>(s), {});
     const double model = channel == Channel::kLateral ? f.fy : f.fx;
     const double measured = Measured(s, channel);
     MagicFormulaFitMetrics& m = rows[groups.index[i]];
@@ -435,7 +393,7 @@ std::vector<MagicFormulaFitMetrics> Metrics(const MagicFormulaParams<double>& pa
 
 MagicFormulaFitResult FitMagicFormula(std::span<const RigSample> samples,
                                       const MagicFormulaFitOptions& options) {
-  CheckSamples(samples);
+  internal::CheckRigSamples(samples);
   MagicFormulaFitResult result;
   std::vector<const RigSample*> lateral, longitudinal;
   int combined = 0;
@@ -472,8 +430,8 @@ MagicFormulaFitResult FitMagicFormula(std::span<const RigSample> samples,
     p = *options.base;
   } else {
     p = tyre::MagicFormulaDefaults();
-    p.FNOMIN = Median(loads);
-    p.LONGVL = std::max(Median(speeds), 1.0);
+    p.FNOMIN = internal::Median(loads);
+    p.LONGVL = std::max(internal::Median(speeds), 1.0);
     p.FZMIN = 0.0;
     p.FZMAX = 3.0 * *std::max_element(loads.begin(), loads.end());
   }
@@ -556,7 +514,7 @@ std::vector<RigSample> SynthesizeMagicFormulaRigData(const tyre::MagicFormulaPar
       s.tread_temp = tread_temp;
       (lateral ? s.slip_angle : s.slip_ratio) = x;
       const tyre::TyreForces<double> f =
-          tyre::CalcMagicFormula(truth, OperatingPoint<double>(s), {});
+          tyre::CalcMagicFormula(truth, internal::RigOperatingPoint<double>(s), {});
       s.fy = f.fy;
       s.mz = f.mz;
       s.fx = f.fx;

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
+#include "hotlap/ident/rig_fit_common.h"
 
 namespace hotlap::ident {
 
@@ -44,18 +45,6 @@ struct FreeField {
   double lower;
   double upper;
 };
-
-template <Scalar T>
-tyre::TyreOperatingPoint<T> OperatingPoint(const RigSample& s) {
-  tyre::TyreOperatingPoint<T> op;
-  op.fz = T(s.fz);
-  op.slip_ratio = T(s.slip_ratio);
-  op.slip_angle = T(s.slip_angle);
-  op.camber = T(s.camber);
-  op.speed = T(s.speed);
-  op.tread_temp = T(s.tread_temp);
-  return op;
-}
 
 // --- Grouping -----------------------------------------------------------------------------------
 
@@ -93,24 +82,6 @@ Groups GroupValues(const std::vector<double>& values, double tolerance, bool rel
 bool IsFitTemp(double temp, std::span<const double> fit_temps, double tolerance) {
   return std::any_of(fit_temps.begin(), fit_temps.end(),
                      [&](double t) { return std::abs(temp - t) <= tolerance; });
-}
-
-void CheckSamples(std::span<const RigSample> samples) {
-  for (size_t i = 0; i < samples.size(); ++i) {
-    const RigSample& s = samples[i];
-    const bool finite = std::isfinite(s.slip_angle) && std::isfinite(s.slip_ratio) &&
-                        std::isfinite(s.camber) && std::isfinite(s.speed) &&
-                        std::isfinite(s.tread_temp) && std::isfinite(s.fy) && std::isfinite(s.mz) &&
-                        (!s.fx || std::isfinite(*s.fx));
-    if (!finite) throw InputError(fmt::format("rig sample {}: a value is not a finite number", i));
-    if (!(s.fz > 0.0) || !std::isfinite(s.fz)) {
-      throw InputError(fmt::format("rig sample {}: fz {:g} N must be > 0", i, s.fz));
-    }
-    if (!(s.tread_temp > 0.0)) {
-      throw InputError(
-          fmt::format("rig sample {}: tread_temp {:g} K must be > 0 (kelvin)", i, s.tread_temp));
-    }
-  }
 }
 
 // --- Initial guess -------------------------------------------------------------------------------
@@ -282,26 +253,6 @@ std::array<double, 3> SechLoadLaw(const LoadLaw& law, double nominal_load) {
   return {s11, std::clamp(s12, -10.0, 10.0), std::clamp(s13, 0.0, 10.0)};
 }
 
-// Least squares y = c0 + c1 x; c1 = 0 with fewer than two distinct x.
-std::pair<double, double> LineFit(const std::vector<double>& x, const std::vector<double>& y) {
-  const double n = static_cast<double>(x.size());
-  const double mx = std::accumulate(x.begin(), x.end(), 0.0) / n;
-  const double my = std::accumulate(y.begin(), y.end(), 0.0) / n;
-  double sxy = 0.0, sxx = 0.0;
-  for (size_t i = 0; i < x.size(); ++i) {
-    sxy += (x[i] - mx) * (y[i] - my);
-    sxx += (x[i] - mx) * (x[i] - mx);
-  }
-  const double c1 = sxx > 0.0 ? sxy / sxx : 0.0;
-  return {my - c1 * mx, c1};
-}
-
-double Median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 std::vector<const RigSample*> FitSamples(std::span<const RigSample> samples,
                                          const UniTireFitOptions& options) {
   if (options.fit_temps.empty()) {
@@ -322,7 +273,7 @@ double NominalLoad(const std::vector<const RigSample*>& fit, const UniTireFitOpt
   if (options.nominal_load) return *options.nominal_load;
   std::vector<double> loads;
   for (const RigSample* s : fit) loads.push_back(s->fz);
-  return Median(loads);
+  return internal::Median(loads);
 }
 
 double ReferenceTemp(const UniTireFitOptions& options) {
@@ -344,7 +295,8 @@ struct SampleResidual {
     UniTireParams<T> p = base->Cast<T>();
     const auto fields = FieldPointers(p);
     for (size_t i = 0; i < free->size(); ++i) *fields[(*free)[i]] = x[0][i];
-    const tyre::TyreForces<T> f = tyre::CalcUniTireForces(p, OperatingPoint<T>(sample));
+    const tyre::TyreForces<T> f =
+        tyre::CalcUniTireForces(p, internal::RigOperatingPoint<T>(sample));
     r[0] = (f.fy - sample.fy) / fy_scale;
     r[1] = (f.mz - sample.mz) / mz_scale;
     if (sample.fx) r[2] = (f.fx - *sample.fx) / fx_scale;
@@ -356,7 +308,7 @@ struct SampleResidual {
 
 tyre::UniTireParams<double> CalcUniTireInitialGuess(std::span<const RigSample> samples,
                                                     const UniTireFitOptions& options) {
-  CheckSamples(samples);
+  internal::CheckRigSamples(samples);
   const std::vector<const RigSample*> fit = FitSamples(samples, options);
   const double nominal_load = NominalLoad(fit, options);
   const double reference_temp = ReferenceTemp(options);
@@ -391,7 +343,7 @@ tyre::UniTireParams<double> CalcUniTireInitialGuess(std::span<const RigSample> s
       x.push_back(c.fz / nominal_load - 1.0);
       y.push_back(std::log(c.peak / c.fz));
     }
-    const auto [c0, c1] = LineFit(x, y);
+    const auto [c0, c1] = internal::LineFit(x, y);
     p.friction_y = std::clamp(std::exp(c0), 0.1, 4.0);
     p.friction_load_decay = std::clamp(-c1, -1.0, 1.0);
   }
@@ -413,7 +365,7 @@ tyre::UniTireParams<double> CalcUniTireInitialGuess(std::span<const RigSample> s
       x.push_back(std::log(t_law.loads[l] / nominal_load));
       y.push_back(std::log(t_law.ref_value[l]));
     }
-    const auto [c0, c1] = LineFit(x, y);
+    const auto [c0, c1] = internal::LineFit(x, y);
     p.trail_load_exponent = t_law.loads.size() >= 2 ? std::clamp(c1, 0.0, 2.0) : 0.5;
     p.trail = std::clamp(std::exp(c0), 1e-4, 0.5);
   }
@@ -479,7 +431,8 @@ std::vector<UniTireTempMetrics> EvaluateUniTire(const tyre::UniTireParams<double
   for (size_t i = 0; i < samples.size(); ++i) {
     const RigSample& s = samples[i];
     const int g = tg.index[i];
-    const tyre::TyreForces<double> f = tyre::CalcUniTireForces(params, OperatingPoint<double>(s));
+    const tyre::TyreForces<double> f =
+        tyre::CalcUniTireForces(params, internal::RigOperatingPoint<double>(s));
     fy2[g] += (f.fy - s.fy) * (f.fy - s.fy);
     mz2[g] += (f.mz - s.mz) * (f.mz - s.mz);
     if (s.fx) {
@@ -502,7 +455,7 @@ std::vector<UniTireTempMetrics> EvaluateUniTire(const tyre::UniTireParams<double
 }
 
 UniTireFitResult FitUniTire(std::span<const RigSample> samples, const UniTireFitOptions& options) {
-  CheckSamples(samples);
+  internal::CheckRigSamples(samples);
   const std::vector<const RigSample*> fit = FitSamples(samples, options);
   UniTireFitResult result;
   result.initial_guess =
@@ -653,7 +606,7 @@ std::vector<RigSample> SynthesizeRigData(const tyre::UniTireParams<double>& trut
         s.speed = kRigSpeed;
         s.tread_temp = temp;
         const tyre::TyreForces<double> f =
-            tyre::CalcUniTireForces(truth, OperatingPoint<double>(s));
+            tyre::CalcUniTireForces(truth, internal::RigOperatingPoint<double>(s));
         s.fy = f.fy;
         s.mz = f.mz;
         fy_peak = std::max(fy_peak, std::abs(f.fy));

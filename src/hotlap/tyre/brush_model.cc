@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace hotlap::tyre {
 
@@ -167,13 +168,19 @@ TyreForces<T> CalcBrushForces(const BrushParams<T>& params, const TyreOperatingP
   const T tan_alpha = tan(op.slip_angle);
 
   // Torsional fixed point tan(alpha') = tan(alpha) - Mz(alpha') / c_ct: converge in double, then
-  // one Newton step in T from the converged value (exact value, implicit-function derivative).
+  // Newton (chord) steps in T from the converged value with its slope. The first makes the first
+  // derivatives exact (implicit function: -dh / h'); each chord step multiplies the error's order
+  // in the perturbation, so a second one makes second derivatives exact too (the SecondOrder
+  // scalar of the optimal control carries Hessians). In double, the converged value is kept.
   const FixedPoint fp =
       SolveFixedPoint(ValueOf(mu_fz), ValueOf(theta), ValueOf(a), ValueOf(op.slip_ratio),
                       ValueOf(tan_alpha), ValueOf(inv_c_ct));
-  const T u0(fp.u);
-  const T h = FixedPointResidual(mu_fz, theta, a, op.slip_ratio, tan_alpha, inv_c_ct, u0);
-  const T u = u0 - h / fp.slope;
+  T u(fp.u);
+  if constexpr (!std::is_same_v<T, double>) {
+    for (int step = 0; step < 2; ++step) {
+      u -= FixedPointResidual(mu_fz, theta, a, op.slip_ratio, tan_alpha, inv_c_ct, u) / fp.slope;
+    }
+  }
 
   const RigidBrush<T> b = CalcRigidBrush(mu_fz, theta, a, op.slip_ratio, u);
   out.fx = b.fx;

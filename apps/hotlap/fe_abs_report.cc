@@ -1,0 +1,110 @@
+#include "fe_abs_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "hotlap/report/html_report.h"
+
+namespace hotlap::app {
+
+namespace {
+
+using fe::kPaperSlipTarget;
+
+report::LineChart TimeChart(const std::string& title, const std::string& label,
+                            const std::string& unit) {
+  return report::LineChart{.title = title,
+                           .x_axis = {.label = "time", .unit = "s"},
+                           .y_axis = {.label = label, .unit = unit},
+                           .x_link = "time"};
+}
+
+}  // namespace
+
+void WriteFeAbsReport(const std::filesystem::path& path, const std::vector<fe::HistoryRow>& history,
+                      double loaded_radius_m,
+                      const std::vector<std::pair<std::string, std::string>>& metadata) {
+  if (history.empty()) throw std::invalid_argument("WriteFeAbsReport: empty history");
+  const size_t n = history.size();
+  std::vector<double> t(n), torque(n), vx(n), omega_r(n), slip(n), fx(n), balance(n);
+  std::vector<double> kinetic(n), internal(n), friction(n), external(n);
+  for (size_t k = 0; k < n; ++k) {
+    const fe::HistoryRow& r = history[k];
+    t[k] = r.time_s;
+    torque[k] = r.brake_torque_Nm;
+    vx[k] = r.rim_vx_mps;
+    omega_r[k] = r.spin_rad_per_s * loaded_radius_m;
+    slip[k] = r.slip;
+    fx[k] = r.road_fx_N;
+    kinetic[k] = r.energies.kinetic;
+    internal[k] = r.energies.internal;
+    friction[k] = r.energies.friction;
+    external[k] = r.energies.external_work;
+    balance[k] = r.energies.BalanceError();
+  }
+  const fe::BrakeSlipSummary summary = fe::SummarizeBrakeSlip(history);
+
+  report::HtmlReport page("hotlap fe abs: finite-element tyre braking event");
+  for (const auto& [key, value] : metadata) page.AddMetadata(key, value);
+  page.AddText(fmt::format("{:.3f} s of braking from {:.3f} m/s to {:.3f} m/s; peak slip {:.3f}. ",
+                           t.back() - t.front(), vx.front(), vx.back(), summary.max_slip));
+  if (std::isfinite(summary.first_cycle_end_s)) {
+    page.AddText(fmt::format(
+        "After the first control cycle (it ends at {:.3f} s, when the slip first falls back below "
+        "0.045) the slip stays below {:.3f} for {:.1f}% of the time, at most {:.3f}.",
+        summary.first_cycle_end_s, kPaperSlipTarget,
+        100.0 * summary.fraction_time_below_0_135_after_first_cycle,
+        summary.max_slip_after_first_cycle));
+  } else {
+    page.AddText("The slip never exceeded 0.135 and fell back: no control cycle completed.");
+  }
+  page.AddText(
+      "The charts follow the FE/ABS paper's Figures 8 to 11 (the paper's Figure 11 draws the "
+      "force and the slip together; here they are the two charts above it and beside it). "
+      "docs/fe-tyre.md says what was compared.");
+
+  page.AddHeading("Braking event (002 Figures 8 to 11)");
+  report::LineChart fig8 = TimeChart("Brake torque (cf. 002 Fig. 8)", "torque", "N m");
+  fig8.series.push_back({.label = "ABS brake torque", .x = t, .y = torque});
+  page.AddLineChart(fig8);
+
+  report::LineChart fig9 =
+      TimeChart("Forward and circumferential speeds (cf. 002 Fig. 9)", "speed", "m/s");
+  fig9.series.push_back({.label = "Vx (rim)", .x = t, .y = vx});
+  fig9.series.push_back(
+      {.label = "omega R_l", .x = t, .y = omega_r, .style = report::LineStyle::kDashed});
+  page.AddLineChart(fig9);
+
+  report::LineChart fig10 = TimeChart("Slip ratio (cf. 002 Fig. 10)", "slip", "");
+  fig10.series.push_back({.label = "slip", .x = t, .y = slip});
+  fig10.series.push_back({.label = "0.135 (002 Fig. 10)",
+                          .x = {t.front(), t.back()},
+                          .y = {kPaperSlipTarget, kPaperSlipTarget},
+                          .colour = "#e15759",
+                          .style = report::LineStyle::kDashed});
+  page.AddLineChart(fig10);
+
+  report::LineChart fig11 =
+      TimeChart("Road longitudinal force (cf. 002 Fig. 11)", "road force Fx", "N");
+  fig11.series.push_back({.label = "road Fx on the tyre", .x = t, .y = fx});
+  page.AddLineChart(fig11);
+
+  page.AddHeading("Energies");
+  report::LineChart energy = TimeChart("Energies of the braking step", "energy", "J");
+  energy.series.push_back({.label = "kinetic", .x = t, .y = kinetic});
+  energy.series.push_back({.label = "internal (strain)", .x = t, .y = internal});
+  energy.series.push_back({.label = "friction dissipated", .x = t, .y = friction});
+  energy.series.push_back(
+      {.label = "external work", .x = t, .y = external, .style = report::LineStyle::kDashed});
+  page.AddLineChart(energy);
+  report::LineChart error = TimeChart("Energy balance error", "balance error", "J");
+  error.series.push_back({.label = "balance error", .x = t, .y = balance});
+  page.AddLineChart(error);
+  page.Write(path);
+}
+
+}  // namespace hotlap::app

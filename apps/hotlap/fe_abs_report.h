@@ -1,0 +1,25 @@
+#pragma once
+/// @file
+/// The HTML report of `hotlap fe abs`: the braking event's histories in the layout of the FE/ABS
+/// paper's Figures 8 to 11 (brake torque; forward and circumferential speeds; slip against the
+/// 0.135 target; the road's longitudinal force with its slip), plus the energy balance.
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "hotlap/fe/abs_slip_summary.h"
+#include "hotlap/fe/tyre_steps.h"
+
+namespace hotlap::app {
+
+/// Writes the report to `path` (atomically). `loaded_radius_m` turns the rim spin into the
+/// circumferential speed omega R_l (as the history CSV's omega_R_mps); `metadata` lines go under
+/// the title. Throws InputError if the file cannot be written, std::invalid_argument if the
+/// history is empty.
+void WriteFeAbsReport(const std::filesystem::path& path, const std::vector<fe::HistoryRow>& history,
+                      double loaded_radius_m,
+                      const std::vector<std::pair<std::string, std::string>>& metadata);
+
+}  // namespace hotlap::app

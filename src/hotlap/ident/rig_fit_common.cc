@@ -1,0 +1,50 @@
+#include "hotlap/ident/rig_fit_common.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include <fmt/format.h>
+
+#include "hotlap/common/error.h"
+
+namespace hotlap::ident::internal {
+
+void CheckRigSamples(std::span<const RigSample> samples) {
+  for (size_t i = 0; i < samples.size(); ++i) {
+    const RigSample& s = samples[i];
+    const bool finite = std::isfinite(s.slip_angle) && std::isfinite(s.slip_ratio) &&
+                        std::isfinite(s.camber) && std::isfinite(s.speed) &&
+                        std::isfinite(s.tread_temp) && std::isfinite(s.fy) && std::isfinite(s.mz) &&
+                        (!s.fx || std::isfinite(*s.fx));
+    if (!finite) throw InputError(fmt::format("rig sample {}: a value is not a finite number", i));
+    if (!(s.fz > 0.0) || !std::isfinite(s.fz)) {
+      throw InputError(fmt::format("rig sample {}: fz {:g} N must be > 0", i, s.fz));
+    }
+    if (!(s.tread_temp > 0.0)) {
+      throw InputError(
+          fmt::format("rig sample {}: tread_temp {:g} K must be > 0 (kelvin)", i, s.tread_temp));
+    }
+  }
+}
+
+std::pair<double, double> LineFit(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = static_cast<double>(x.size());
+  const double mx = std::accumulate(x.begin(), x.end(), 0.0) / n;
+  const double my = std::accumulate(y.begin(), y.end(), 0.0) / n;
+  double sxy = 0.0, sxx = 0.0;
+  for (size_t i = 0; i < x.size(); ++i) {
+    sxy += (x[i] - mx) * (y[i] - my);
+    sxx += (x[i] - mx) * (x[i] - mx);
+  }
+  const double c1 = sxx > 0.0 ? sxy / sxx : 0.0;
+  return {my - c1 * mx, c1};
+}
+
+double Median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace hotlap::ident::internal

@@ -1,0 +1,38 @@
+#pragma once
+/// @file
+/// Pieces the Magic Formula and UniTire rig fits (mf_fit.h, unitire_fit.h) share; not API.
+
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "hotlap/common/scalar.h"
+#include "hotlap/ident/unitire_fit.h"
+#include "hotlap/tyre/tyre_force.h"
+
+namespace hotlap::ident::internal {
+
+/// The operating point of a rig sample in the scalar type T.
+template <Scalar T>
+tyre::TyreOperatingPoint<T> RigOperatingPoint(const RigSample& s) {
+  tyre::TyreOperatingPoint<T> op;
+  op.fz = T(s.fz);
+  op.slip_ratio = T(s.slip_ratio);
+  op.slip_angle = T(s.slip_angle);
+  op.camber = T(s.camber);
+  op.speed = T(s.speed);
+  op.tread_temp = T(s.tread_temp);
+  return op;
+}
+
+/// InputError naming the sample for a value that is not finite, a load that is not positive or
+/// a tread temperature that is not positive (kelvin).
+void CheckRigSamples(std::span<const RigSample> samples);
+
+/// Least squares y = c0 + c1 x; c1 = 0 with fewer than two distinct x. Returns (c0, c1).
+std::pair<double, double> LineFit(const std::vector<double>& x, const std::vector<double>& y);
+
+/// The median of `v` (not empty).
+double Median(std::vector<double> v);
+
+}  // namespace hotlap::ident::internal
