@@ -10,6 +10,8 @@
 //
 // Run: ./build/fe_bench [--threads N] [google-benchmark flags]
 //   --threads N: the multi-threaded runs use N threads (default: all cores, OpenMP's default).
+// The element kernel is the solver's default: AVX2 where the CPU has it, the portable one with
+// HOTLAP_FE_KERNEL=portable (counter avx2: 1 or 0).
 
 #include <benchmark/benchmark.h>
 
@@ -77,6 +79,8 @@ void BM_FeTyreSteps(benchmark::State& state, bool paper_mesh, int threads, fe::A
   state.counters["elements"] = elements;
   state.counters["threads"] = solver.threads();
   state.counters["colours"] = solver.colours();
+  // 1: the AVX2 element kernel (the default where the CPU has it; HOTLAP_FE_KERNEL=portable: 0).
+  state.counters["avx2"] = solver.element_kernel() == fe::ElementKernel::kAvx2 ? 1 : 0;
   state.counters["element_updates_per_s"] =
       benchmark::Counter(elements * steps, benchmark::Counter::kIsRate);
   state.counters["time_step_us"] = 1e6 * solver.time_step();

@@ -255,12 +255,13 @@ int RunFeCommand(const FeArgs& a) {
   run.mutable_solver().set_threads(a.threads);
   const fe::ExplicitSolver& solver = run.solver();
   const fe::MassScalingReport& ms = solver.mass_scaling();
-  std::fprintf(stderr,
-               "fe: %zu elements, %zu nodes; time step %.3g s (stable %.3g s unscaled); mass "
-               "%.3f kg, mass scaling added %.3f kg in %d elements; %d threads\n",
-               run.tyre().mesh.elements.size(), run.tyre().mesh.nodes.size(), solver.time_step(),
-               ms.stable_step_unscaled_s, ms.physical_mass_kg, ms.added_mass_kg, ms.scaled_elements,
-               solver.threads());
+  std::fprintf(
+      stderr,
+      "fe: %zu elements, %zu nodes; time step %.3g s (stable %.3g s unscaled); mass "
+      "%.3f kg, mass scaling added %.3f kg in %d elements; %d threads, %s element kernel\n",
+      run.tyre().mesh.elements.size(), run.tyre().mesh.nodes.size(), solver.time_step(),
+      ms.stable_step_unscaled_s, ms.physical_mass_kg, ms.added_mass_kg, ms.scaled_elements,
+      solver.threads(), fe::ElementKernelName(solver.element_kernel()));
 
   // The ABS controller of the abs step (the ABS issue's controller and hydraulics set the brake
   // torque at the controller's period; its R_l is the free-rolling radius of the roll step,
@@ -459,6 +460,7 @@ int RunFeCommand(const FeArgs& a) {
   j["performance"] = {{"wall_s", RoundSignificant(wall, 4)},
                       {"steps", steps},
                       {"threads", solver.threads()},
+                      {"element_kernel", fe::ElementKernelName(solver.element_kernel())},
                       {"element_updates_per_s", RoundSignificant(updates / wall, 4)}};
   if (restarted) j["performance"]["restarted_from"] = a.restart;
   std::printf("fe: %ld steps on %d threads, %.3g element updates in %.1f s (%.3g per second)\n",

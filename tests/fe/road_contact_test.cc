@@ -162,7 +162,11 @@ TEST(FeRoad, SlidingBlockDeceleratesAtMuG) {
   const double vx = momentum / mass;
   std::printf("sliding: v %.5f m/s, predicted %.5f m/s (dv %.4f vs %.4f)\n", vx, predicted_v,
               v0 - vx, v0 - predicted_v);
-  EXPECT_NEAR(v0 - vx, v0 - predicted_v, 0.03 * (v0 - predicted_v));
+  // The nodes' stick and slip make the result sensitive to round-off: changing v0 by 1e-15 of
+  // itself moved it between -3.3% and +5.9% of the prediction with the elastic stick (12 runs on
+  // each element kernel, portable and AVX2; -5.6% to +5.8% with the former viscous stick), hence
+  // 8%, not the 3% of a single run.
+  EXPECT_NEAR(v0 - vx, v0 - predicted_v, 0.08 * (v0 - predicted_v));
   const Energies& e = s.energies();
   EXPECT_GT(e.friction, 0.0);
   EXPECT_LT(std::abs(e.BalanceError()), 5e-3 * e.initial_kinetic);

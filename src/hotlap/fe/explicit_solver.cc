@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <string>
 #include <utility>
@@ -153,6 +154,7 @@ ExplicitSolver::ExplicitSolver(Mesh mesh, std::vector<YeohMaterial> materials,
   }
   is_contact_node_.assign(nn, 0);
   for (int a : mesh_.contact_nodes) is_contact_node_[a] = 1;
+  kernel_ = DefaultElementKernel();
 
   mass_report_.stable_step_unscaled_s = stable_unscaled;
   stable_step_ = stable;
@@ -252,6 +254,50 @@ int DefaultThreadCount() {
 #endif
 }
 
+bool ElementKernelSupported(ElementKernel kernel) {
+  switch (kernel) {
+    case ElementKernel::kPortable:
+      return true;
+    case ElementKernel::kAvx2:
+#if defined(__GNUC__) && defined(__x86_64__)
+      __builtin_cpu_init();
+      return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+#else
+      return false;
+#endif
+  }
+  return false;
+}
+
+ElementKernel DefaultElementKernel() {
+  const char* env = std::getenv("HOTLAP_FE_KERNEL");
+  const std::string want = env != nullptr ? env : "";
+  if (want == "portable") return ElementKernel::kPortable;
+  if (want == "avx2") {
+    if (!ElementKernelSupported(ElementKernel::kAvx2)) {
+      throw InputError("fe: HOTLAP_FE_KERNEL=avx2, but this CPU has no AVX2 and FMA");
+    }
+    return ElementKernel::kAvx2;
+  }
+  if (!want.empty() && want != "auto") {
+    throw InputError("fe: HOTLAP_FE_KERNEL='" + want + "': use portable, avx2 or auto");
+  }
+  return ElementKernelSupported(ElementKernel::kAvx2) ? ElementKernel::kAvx2
+                                                      : ElementKernel::kPortable;
+}
+
+const char* ElementKernelName(ElementKernel kernel) {
+  return kernel == ElementKernel::kAvx2 ? "avx2" : "portable";
+}
+
+void ExplicitSolver::set_element_kernel(ElementKernel kernel) {
+  if (!ElementKernelSupported(kernel)) {
+    throw InputError(std::string("fe: this CPU cannot run the ") + ElementKernelName(kernel) +
+                     " element kernel");
+  }
+  kernel_ = kernel;
+}
+
 int ExplicitSolver::threads() const {
   if (threads_ > 0) return threads_;
   // The default: all cores, but no more threads than the mesh keeps busy (a thread per
@@ -337,6 +383,42 @@ bool ExplicitSolver::AddElementForces(size_t e, Eigen::Vector3d* f_stored, Eigen
     }
   }
   return true;
+}
+
+// The element loop, compiled twice: for the x86-64 baseline and for AVX2 with FMA. `flatten`
+// inlines everything it calls (AddElementForces, the Yeoh and cord stresses, Eigen's small
+// matrices), so the whole kernel is compiled for the variant's instruction set; the AVX2 variant
+// runs only where the CPU has it (ElementKernelSupported).
+#define HOTLAP_FE_ELEMENT_RANGE_BODY                                   \
+  for (long k = k0; k < k1; ++k) {                                     \
+    const long e = list != nullptr ? list[k] : k;                      \
+    if (!AddElementForces(e, f_stored, f_bulk, f_hourglass)) return e; \
+  }                                                                    \
+  return -1;
+
+__attribute__((flatten)) long ExplicitSolver::AddElementRangePortable(
+    const int* list, long k0, long k1, Eigen::Vector3d* f_stored, Eigen::Vector3d* f_bulk,
+    Eigen::Vector3d* f_hourglass) {
+  HOTLAP_FE_ELEMENT_RANGE_BODY
+}
+
+#if defined(__GNUC__) && defined(__x86_64__)
+__attribute__((target("avx2,fma"), flatten)) long ExplicitSolver::AddElementRangeAvx2(
+    const int* list, long k0, long k1, Eigen::Vector3d* f_stored, Eigen::Vector3d* f_bulk,
+    Eigen::Vector3d* f_hourglass) {
+  HOTLAP_FE_ELEMENT_RANGE_BODY
+}
+#endif
+#undef HOTLAP_FE_ELEMENT_RANGE_BODY
+
+long ExplicitSolver::AddElementRange(const int* list, long k0, long k1, Eigen::Vector3d* f_stored,
+                                     Eigen::Vector3d* f_bulk, Eigen::Vector3d* f_hourglass) {
+#if defined(__GNUC__) && defined(__x86_64__)
+  if (kernel_ == ElementKernel::kAvx2) {
+    return AddElementRangeAvx2(list, k0, k1, f_stored, f_bulk, f_hourglass);
+  }
+#endif
+  return AddElementRangePortable(list, k0, k1, f_stored, f_bulk, f_hourglass);
 }
 
 std::pair<long, long> ExplicitSolver::BufferElements(int t, int buffers) const {
@@ -437,17 +519,26 @@ void ExplicitSolver::RunStep(bool advance) {
       }
       // Elements of one colour share no node: they add to the nodes without a race. The
       // implicit barrier at the end of each loop separates the colours.
+      // Each thread takes a contiguous share of each colour (as schedule(static)); the barrier
+      // after each colour separates the colours.
       const int n_loops = direct ? 1 : colours();
+#ifdef _OPENMP
+      const int team = omp_get_num_threads(), rank = omp_get_thread_num();
+#else
+      const int team = 1, rank = 0;
+#endif
       for (int c = 0; c < n_loops; ++c) {
         const long k0 = direct ? 0 : colour_start_[c], k1 = direct ? ne : colour_start_[c + 1];
-#pragma omp for schedule(static)
-        for (long k = k0; k < k1; ++k) {
-          const int e = direct ? static_cast<int>(k) : colour_elements_[k];
-          if (!AddElementForces(e, f_stored_.data(), f_dissip_bv_.data(), f_dissip_hg_.data())) {
+        const long n = k1 - k0;
+        // The lowest inverted element of this share (a colour lists its elements ascending).
+        const long e = AddElementRange(direct ? nullptr : colour_elements_.data(),
+                                       k0 + n * rank / team, k0 + n * (rank + 1) / team,
+                                       f_stored_.data(), f_dissip_bv_.data(), f_dissip_hg_.data());
+        if (e >= 0) {
 #pragma omp critical(hotlap_fe_inverted)
-            bad = std::min(bad, static_cast<long>(e));
-          }
+          bad = std::min(bad, e);
         }
+#pragma omp barrier
       }
     } else {
 #ifdef _OPENMP
@@ -463,12 +554,10 @@ void ExplicitSolver::RunStep(bool advance) {
         Eigen::Vector3d* fb = thread_forces_[3 * t + 1].data();
         Eigen::Vector3d* fh = thread_forces_[3 * t + 2].data();
         const auto [e0, e1] = BufferElements(t, buffers);
-        for (long e = e0; e < e1; ++e) {
-          if (!AddElementForces(e, fs, fb, fh)) {
+        const long e = AddElementRange(nullptr, e0, e1, fs, fb, fh);
+        if (e >= 0) {
 #pragma omp critical(hotlap_fe_inverted)
-            bad = std::min(bad, e);
-            break;
-          }
+          bad = std::min(bad, e);
         }
       }
 #pragma omp barrier

@@ -75,6 +75,22 @@ enum class Assembly : std::uint8_t {
 /// OpenMP's default thread count (omp_get_max_threads(): the cores, or OMP_NUM_THREADS).
 int DefaultThreadCount();
 
+/// The instruction set the element loop is compiled for (docs/fe-tyre.md, "Speed"). The binary
+/// carries both and picks at run time, so it runs on every x86-64 machine.
+enum class ElementKernel : std::uint8_t {
+  kPortable,  ///< the x86-64 baseline (SSE2), on every machine
+  kAvx2,      ///< AVX2 with fused multiply-add: faster; results differ in the last bits
+};
+
+/// Whether this machine can run `kernel` (kAvx2: the CPU has AVX2 and FMA; x86-64 GCC builds).
+bool ElementKernelSupported(ElementKernel kernel);
+/// The kernel a new solver uses: kAvx2 where supported, unless the environment variable
+/// HOTLAP_FE_KERNEL is "portable" (then kPortable; "avx2" asks for kAvx2 and throws InputError
+/// where it is not supported; "auto" or unset is the default; anything else throws InputError).
+ElementKernel DefaultElementKernel();
+/// "portable" or "avx2".
+const char* ElementKernelName(ElementKernel kernel);
+
 /// Solver settings. The defaults are Abaqus/Explicit's where it has one.
 struct SolverOptions {
   double time_step_safety = 0.9;          ///< fraction of the stable step, in (0, 1]
@@ -187,6 +203,11 @@ class ExplicitSolver {
   /// The thread count the loops use.
   int threads() const;
   void set_assembly(Assembly assembly) { assembly_ = assembly; }
+  /// The element loop's instruction set (default DefaultElementKernel()). Throws InputError if
+  /// this machine does not support it. The two give the same results to round-off, not bit for
+  /// bit (fused multiply-adds round once).
+  void set_element_kernel(ElementKernel kernel);
+  ElementKernel element_kernel() const { return kernel_; }
   Assembly assembly() const { return assembly_; }
   /// Number of element colours (no two elements of a colour share a node).
   int colours() const { return static_cast<int>(colour_start_.size()) - 1; }
@@ -282,6 +303,19 @@ class ExplicitSolver {
   /// energies to elem_energy_[e]. False (nothing added) if the element is inverted.
   bool AddElementForces(size_t e, Eigen::Vector3d* f_stored, Eigen::Vector3d* f_bulk,
                         Eigen::Vector3d* f_hourglass);
+  /// AddElementForces for elements list[k] (or k if list is null), k in [k0, k1), in order, up
+  /// to the first inverted one: returns its index, or -1. Runs the kernel_ variant.
+  long AddElementRange(const int* list, long k0, long k1, Eigen::Vector3d* f_stored,
+                       Eigen::Vector3d* f_bulk, Eigen::Vector3d* f_hourglass);
+  // The two compilations of the same loop (AddElementForces inlined into each).
+  long AddElementRangePortable(const int* list, long k0, long k1, Eigen::Vector3d* f_stored,
+                               Eigen::Vector3d* f_bulk, Eigen::Vector3d* f_hourglass);
+#if defined(__GNUC__) && defined(__x86_64__)
+  __attribute__((target("avx2,fma"))) long AddElementRangeAvx2(const int* list, long k0, long k1,
+                                                               Eigen::Vector3d* f_stored,
+                                                               Eigen::Vector3d* f_bulk,
+                                                               Eigen::Vector3d* f_hourglass);
+#endif
 
   Mesh mesh_;
   std::vector<YeohMaterial> materials_;
@@ -315,6 +349,7 @@ class ExplicitSolver {
   // Parallel loops.
   int threads_ = 0;
   Assembly assembly_ = Assembly::kThreadBuffers;
+  ElementKernel kernel_ = ElementKernel::kPortable;
   std::vector<int> colour_start_;                            // CSR over colour_elements_
   std::vector<int> colour_elements_;                         // ascending within a colour
   std::vector<std::array<double, 2>> elem_energy_;           // strain, hourglass of each element

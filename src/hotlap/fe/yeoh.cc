@@ -50,15 +50,4 @@ Eigen::Matrix3d CalcYeohFirstPiola(const YeohMaterial& m, const Eigen::Matrix3d&
   return F.determinant() * CalcYeohCauchyStress(m, F) * F.inverse().transpose();
 }
 
-double CalcYeohPiolaAndEnergy(const YeohMaterial& m, const Eigen::Matrix3d& F, double j,
-                              double cbrt_j, const Eigen::Matrix3d& f_inv_t, Eigen::Matrix3d& P) {
-  const double jm23 = 1.0 / (cbrt_j * cbrt_j);  // J^(-2/3)
-  const double i1b = jm23 * F.squaredNorm();
-  const double d = i1b - 3.0;
-  const double w1 = m.c10_Pa + 2.0 * m.c20_Pa * d + 3.0 * m.c30_Pa * d * d;
-  const double vol = m.bulk_modulus_Pa * (j - 1.0);
-  P.noalias() = (2.0 * w1 * jm23) * F + (vol * j - 2.0 / 3.0 * w1 * i1b) * f_inv_t;
-  return m.c10_Pa * d + m.c20_Pa * d * d + m.c30_Pa * d * d * d + 0.5 * vol * (j - 1.0);
-}
-
 }  // namespace hotlap::fe

@@ -66,7 +66,18 @@ inline double CubeRoot(double x) {
 /// The solver's fused form: given F, J = det F and F^-T, sets P (Pa) and returns W (J/m^3),
 ///   P = 2 W1 J^(-2/3) F - (2/3) W1 I1b F^-T + K (J - 1) J F^-T,
 /// the same P as J sigma F^-T without forming B. `cbrt_j` is J^(1/3) (the caller needs it too).
-double CalcYeohPiolaAndEnergy(const YeohMaterial& m, const Eigen::Matrix3d& F, double j,
-                              double cbrt_j, const Eigen::Matrix3d& f_inv_t, Eigen::Matrix3d& P);
+/// Inline: the solver's element loop is compiled for two instruction sets and inlines it into
+/// each (explicit_solver.cc).
+inline double CalcYeohPiolaAndEnergy(const YeohMaterial& m, const Eigen::Matrix3d& F, double j,
+                                     double cbrt_j, const Eigen::Matrix3d& f_inv_t,
+                                     Eigen::Matrix3d& P) {
+  const double jm23 = 1.0 / (cbrt_j * cbrt_j);  // J^(-2/3)
+  const double i1b = jm23 * F.squaredNorm();
+  const double d = i1b - 3.0;
+  const double w1 = m.c10_Pa + 2.0 * m.c20_Pa * d + 3.0 * m.c30_Pa * d * d;
+  const double vol = m.bulk_modulus_Pa * (j - 1.0);
+  P.noalias() = (2.0 * w1 * jm23) * F + (vol * j - 2.0 / 3.0 * w1 * i1b) * f_inv_t;
+  return m.c10_Pa * d + m.c20_Pa * d * d + m.c30_Pa * d * d * d + 0.5 * vol * (j - 1.0);
+}
 
 }  // namespace hotlap::fe
