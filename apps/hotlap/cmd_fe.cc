@@ -82,8 +82,10 @@ class AbsTorque {
   /// Brake torque capacity at brake-step time t, N m.
   double operator()(double t, double vx, double spin) {
     while (t >= next_tick_ - 1e-12) {
+      const int cycles = state_.cycles;
       const brake::AbsCommand cmd =
           brake::StepAbsController(cp_, state_, {vx, spin, ac_.driver.PressureAt(next_tick_)});
+      if (state_.cycles > cycles) cycle_starts_.push_back(next_tick_);
       target_ = Push(cmd.pressure_target);
       next_tick_ += cp_.period_s;
     }
@@ -93,6 +95,9 @@ class AbsTorque {
     return brake::CalcBrakeTorqueCapacity(hyd, pressure_);
   }
   const brake::AbsControllerState& state() const { return state_; }
+  /// Brake-step times (s from the braking step's start) of the controller's ticks that began a
+  /// control cycle (a pressure release, as the lumped `hotlap abs` counts them).
+  const std::vector<double>& cycle_starts() const { return cycle_starts_; }
 
   void Save(fe::BinaryWriter& w) const {
     w.PutTag("ABS_");
@@ -108,6 +113,7 @@ class AbsTorque {
       w.PutDouble(d);
     }
     w.PutDoubles(std::vector<double>(pushed_.begin(), pushed_.end()));
+    w.PutDoubles(cycle_starts_);
   }
   void Load(fe::BinaryReader& r) {
     r.ExpectTag("ABS_");
@@ -139,6 +145,12 @@ class AbsTorque {
     }
     std::vector<double> pushed(n);
     for (double& d : pushed) d = r.GetFinite();
+    const size_t starts = r.GetCount(sizeof(double));
+    if (starts != static_cast<size_t>(s.cycles)) {
+      r.Damaged("the ABS controller's cycle start times do not match its cycle count");
+    }
+    std::vector<double> cycle_starts(starts);
+    for (double& d : cycle_starts) d = r.GetFinite();
     // Everything read: restore. The delay line is rebuilt by pushing the pending commands again.
     state_ = s;
     next_tick_ = next_tick;
@@ -148,6 +160,7 @@ class AbsTorque {
     delay_ = brake::PressureDelayLine(ac_.DelayTicks(), 0.0);
     pushed_.clear();
     for (double d : pushed) Push(d);
+    cycle_starts_ = std::move(cycle_starts);
   }
 
  private:
@@ -164,6 +177,7 @@ class AbsTorque {
   brake::AbsControllerState state_;
   brake::PressureDelayLine delay_;
   std::deque<double> pushed_;  // the last delay_ticks commands pushed, oldest first
+  std::vector<double> cycle_starts_;
   double next_tick_ = 0.0, target_ = 0.0, pressure_ = 0.0, t_prev_ = 0.0;
 };
 
@@ -431,8 +445,12 @@ int RunFeCommand(const FeArgs& a) {
     const fe::BrakeResult br = restarted ? run.ResumeBrake(config.abs_duration_s, torque, abs_hooks)
                                          : run.Brake(config.abs_duration_s, torque, abs_hooks);
     WriteHistoryCsv(out / "abs_history.csv", "abs", config, br.history, run.slip_radius_m());
-    const fe::BrakeSlipSummary slip = fe::SummarizeBrakeSlip(br.history);
-    WriteFeAbsReport(out / "abs_report.html", br.history, run.slip_radius_m(),
+    std::vector<double> cycle_starts;  // absolute simulated time, as the history's
+    for (double t : abs_torque->cycle_starts()) {
+      cycle_starts.push_back(RoundSignificant(run.brake_start_s() + t, 9));
+    }
+    const fe::BrakeSlipSummary slip = fe::SummarizeBrakeSlip(br.history, cycle_starts);
+    WriteFeAbsReport(out / "abs_report.html", br.history, slip, run.slip_radius_m(),
                      {{"configuration", config.file.string()},
                       {"mesh", fmt::format("{} elements, {} nodes", run.tyre().mesh.elements.size(),
                                            run.tyre().mesh.nodes.size())}});
@@ -443,6 +461,8 @@ int RunFeCommand(const FeArgs& a) {
                 {"max_slip", RoundSignificant(br.max_slip, 6)},
                 {"max_brake_torque_Nm", RoundSignificant(br.max_brake_torque_Nm, 6)},
                 {"control_cycles", abs_torque->state().cycles},
+                {"cycle_starts_s", cycle_starts},
+                {"cycles_per_s", RoundSignificant(slip.cycles_per_s, 6)},
                 {"first_cycle_end_s", NullIfNaN(slip.first_cycle_end_s, 6)},
                 {"max_slip_after_first_cycle", NullIfNaN(slip.max_slip_after_first_cycle, 6)},
                 {"fraction_time_slip_below_0_135_after_first_cycle",

@@ -26,7 +26,7 @@ report::LineChart TimeChart(const std::string& title, const std::string& label,
 }  // namespace
 
 void WriteFeAbsReport(const std::filesystem::path& path, const std::vector<fe::HistoryRow>& history,
-                      double loaded_radius_m,
+                      const fe::BrakeSlipSummary& summary, double loaded_radius_m,
                       const std::vector<std::pair<std::string, std::string>>& metadata) {
   if (history.empty()) throw std::invalid_argument("WriteFeAbsReport: empty history");
   const size_t n = history.size();
@@ -46,21 +46,21 @@ void WriteFeAbsReport(const std::filesystem::path& path, const std::vector<fe::H
     external[k] = r.energies.external_work;
     balance[k] = r.energies.BalanceError();
   }
-  const fe::BrakeSlipSummary summary = fe::SummarizeBrakeSlip(history);
-
   report::HtmlReport page("hotlap fe abs: finite-element tyre braking event");
   for (const auto& [key, value] : metadata) page.AddMetadata(key, value);
   page.AddText(fmt::format("{:.3f} s of braking from {:.3f} m/s to {:.3f} m/s; peak slip {:.3f}. ",
                            t.back() - t.front(), vx.front(), vx.back(), summary.max_slip));
   if (std::isfinite(summary.first_cycle_end_s)) {
     page.AddText(fmt::format(
-        "After the first control cycle (it ends at {:.3f} s, when the slip first falls back below "
-        "0.045) the slip stays below {:.3f} for {:.1f}% of the time, at most {:.3f}.",
-        summary.first_cycle_end_s, kPaperSlipTarget,
+        "{} control cycles ({:.2f} per second from the first). After the first cycle (it ends at "
+        "{:.3f} s, where the controller begins the second) the slip stays below {:.3f} for "
+        "{:.1f}% of the time, at most {:.3f}.",
+        summary.cycles, summary.cycles_per_s, summary.first_cycle_end_s, kPaperSlipTarget,
         100.0 * summary.fraction_time_below_0_135_after_first_cycle,
         summary.max_slip_after_first_cycle));
   } else {
-    page.AddText("The slip never exceeded 0.135 and fell back: no control cycle completed.");
+    page.AddText(
+        fmt::format("{} control cycle(s): no window after the first cycle.", summary.cycles));
   }
   page.AddText(
       "The charts follow the FE/ABS paper's Figures 8 to 11 (the paper's Figure 11 draws the "

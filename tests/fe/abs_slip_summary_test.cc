@@ -20,29 +20,34 @@ std::vector<HistoryRow> History(const std::vector<double>& slips) {
   return h;
 }
 
-TEST(BrakeSlipSummaryTest, FirstCycleEndsWhenTheSlipFallsBackBelowAThirdOfTheTarget) {
-  // Up past 0.135, back down to 0.04 at row 4 (t = 0.04 s), then 6 intervals of which 2 start
-  // above the target (0.15 at rows 6 and 7): 4 of 6 intervals below.
-  const BrakeSlipSummary s =
-      SummarizeBrakeSlip(History({0.0, 0.1, 0.2, 0.1, 0.04, 0.1, 0.15, 0.15, 0.1, 0.05, 0.12}));
-  EXPECT_DOUBLE_EQ(s.max_slip, 0.2);
-  EXPECT_NEAR(s.first_cycle_end_s, 0.04, 1e-15);
-  EXPECT_DOUBLE_EQ(s.max_slip_after_first_cycle, 0.15);
+TEST(BrakeSlipSummaryTest, WindowRunsFromTheSecondCycleStartToTheEnd) {
+  // Cycles begin at 0.015 s, 0.035 s and 0.075 s; the window starts at 0.035 s, i.e. with row 4
+  // (t = 0.04): rows 4..10, 6 intervals of which two start above the target (rows 6, 7).
+  const std::vector<double> starts = {0.015, 0.035, 0.075};
+  const BrakeSlipSummary s = SummarizeBrakeSlip(
+      History({0.0, 0.1, 0.2, 0.3, 0.04, 0.1, 0.15, 0.16, 0.1, 0.05, 0.12}), starts);
+  EXPECT_DOUBLE_EQ(s.max_slip, 0.3);  // in the first cycle: not counted after it
+  EXPECT_EQ(s.cycles, 3);
+  EXPECT_NEAR(s.cycles_per_s, 3.0 / (0.10 - 0.015), 1e-9);
+  EXPECT_DOUBLE_EQ(s.first_cycle_end_s, 0.035);
+  EXPECT_DOUBLE_EQ(s.max_slip_after_first_cycle, 0.16);
   EXPECT_NEAR(s.fraction_time_below_0_135_after_first_cycle, 4.0 / 6.0, 1e-12);
 }
 
-TEST(BrakeSlipSummaryTest, NoCycleWithoutExceedingTheTargetAndFallingBack) {
-  // Never above the target: no cycle, even though the slip dips below 0.045.
-  BrakeSlipSummary s = SummarizeBrakeSlip(History({0.0, 0.1, 0.02, 0.13}));
-  EXPECT_DOUBLE_EQ(s.max_slip, 0.13);
+TEST(BrakeSlipSummaryTest, FewerThanTwoCyclesLeaveTheWindowUndefined) {
+  const std::vector<HistoryRow> h = History({0.0, 0.1, 0.2, 0.13});
+  BrakeSlipSummary s = SummarizeBrakeSlip(h, {});
+  EXPECT_DOUBLE_EQ(s.max_slip, 0.2);
+  EXPECT_EQ(s.cycles, 0);
+  EXPECT_EQ(s.cycles_per_s, 0.0);
   EXPECT_TRUE(std::isnan(s.first_cycle_end_s));
-  EXPECT_TRUE(std::isnan(s.fraction_time_below_0_135_after_first_cycle));
-  // Above the target and never back below 0.045 (a locking wheel): no cycle either.
-  s = SummarizeBrakeSlip(History({0.0, 0.2, 0.5, 0.9}));
-  EXPECT_DOUBLE_EQ(s.max_slip, 0.9);
+  const std::vector<double> one = {0.01};
+  s = SummarizeBrakeSlip(h, one);
+  EXPECT_EQ(s.cycles, 1);
+  EXPECT_NEAR(s.cycles_per_s, 1.0 / 0.02, 1e-9);
   EXPECT_TRUE(std::isnan(s.max_slip_after_first_cycle));
-  // An empty history: nothing.
-  s = SummarizeBrakeSlip({});
+  EXPECT_TRUE(std::isnan(s.fraction_time_below_0_135_after_first_cycle));
+  s = SummarizeBrakeSlip({}, one);  // an empty history: nothing
   EXPECT_EQ(s.max_slip, 0.0);
   EXPECT_TRUE(std::isnan(s.first_cycle_end_s));
 }

@@ -94,6 +94,9 @@ TEST_F(FeCommandTest, AbsStepRunsEveryStepAndWritesTheOutputs) {
   EXPECT_GT(j["abs"]["max_brake_torque_Nm"].get<double>(), 0.0);
   EXPECT_GT(j["abs"]["initial_speed_mps"].get<double>(), 11.0);
   // 20 ms is shorter than a control cycle: the cycle figures are there, and null.
+  EXPECT_TRUE(j["abs"]["cycle_starts_s"].is_array());
+  EXPECT_EQ(j["abs"]["cycle_starts_s"].size(), 0u);
+  EXPECT_EQ(j["abs"]["cycles_per_s"].get<double>(), 0.0);
   for (const char* k : {"first_cycle_end_s", "max_slip_after_first_cycle",
                         "fraction_time_slip_below_0_135_after_first_cycle"}) {
     ASSERT_TRUE(j["abs"].contains(k)) << k;
