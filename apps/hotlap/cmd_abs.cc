@@ -39,28 +39,24 @@ struct AbsArgs {
   std::string json;
 };
 
-nlohmann::json Optional(const std::optional<double>& x) {
-  return x ? nlohmann::json(RoundSignificant(*x)) : nlohmann::json(nullptr);
-}
-
 /// The JSON keys of one run's figures (docs/abs.md).
 nlohmann::json MetricsJson(const sim::AbsMetrics& m) {
   const sim::AbsEnergy& e = m.energy;
   return {
       {"stopped", m.stopped},
-      {"stopping_distance_m", Optional(m.stopping_distance_m)},
-      {"stop_time_s", Optional(m.stop_time_s)},
+      {"stopping_distance_m", JsonOrNull(m.stopping_distance_m)},
+      {"stop_time_s", JsonOrNull(m.stop_time_s)},
       {"distance_m", RoundSignificant(m.distance_m)},
       {"end_time_s", RoundSignificant(m.end_time_s)},
       {"final_speed_mps", RoundSignificant(m.final_speed_mps)},
       {"mean_deceleration_mps2", RoundSignificant(m.mean_deceleration_mps2)},
       {"cycles", m.cycles},
       {"cycles_per_s", RoundSignificant(m.cycles_per_s)},
-      {"first_cycle_start_s", Optional(m.first_cycle_start_s)},
-      {"second_cycle_start_s", Optional(m.second_cycle_start_s)},
-      {"abs_exit_s", Optional(m.abs_exit_s)},
-      {"max_lambda_after_first_cycle", Optional(m.max_lambda_after_first_cycle)},
-      {"fraction_time_lambda_below_0_135", Optional(m.fraction_time_lambda_below_0_135)},
+      {"first_cycle_start_s", JsonOrNull(m.first_cycle_start_s)},
+      {"second_cycle_start_s", JsonOrNull(m.second_cycle_start_s)},
+      {"abs_exit_s", JsonOrNull(m.abs_exit_s)},
+      {"max_lambda_after_first_cycle", JsonOrNull(m.max_lambda_after_first_cycle)},
+      {"fraction_time_lambda_below_0_135", JsonOrNull(m.fraction_time_lambda_below_0_135)},
       {"max_lambda", RoundSignificant(m.max_lambda)},
       {"wheel_locked", m.wheel_locked},
       {"peak_disc_temp_C", RoundSignificant(KelvinToCelsius(m.peak_disc_temp_K))},

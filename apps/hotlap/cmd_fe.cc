@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,7 @@
 #include "hotlap/fe/tyre_steps.h"
 #include "hotlap/fe/vtu_writer.h"
 #include "hotlap/sim/abs_config.h"
+#include "hotlap/sim/abs_metrics.h"
 #include "output.h"
 
 namespace hotlap::app {
@@ -67,11 +69,6 @@ fe::CheckpointKey MakeCheckpointKey(const fe::TyreRun& run) {
   return key;
 }
 
-/// A number rounded to `digits` significant digits, or null where it is NaN.
-nlohmann::json NullIfNaN(double x, int digits) {
-  return std::isnan(x) ? nlohmann::json(nullptr) : nlohmann::json(RoundSignificant(x, digits));
-}
-
 /// The ABS controller, its hydraulic delay line and the wheel-cylinder pressure, stepped at the
 /// controller's period inside the FE braking step, with what a checkpoint needs.
 class AbsTorque {
@@ -86,6 +83,7 @@ class AbsTorque {
       const brake::AbsCommand cmd =
           brake::StepAbsController(cp_, state_, {vx, spin, ac_.driver.PressureAt(next_tick_)});
       if (state_.cycles > cycles) cycle_starts_.push_back(next_tick_);
+      if (state_.state == brake::AbsState::kExit && !abs_exit_) abs_exit_ = next_tick_;
       target_ = Push(cmd.pressure_target);
       next_tick_ += cp_.period_s;
     }
@@ -98,6 +96,8 @@ class AbsTorque {
   /// Brake-step times (s from the braking step's start) of the controller's ticks that began a
   /// control cycle (a pressure release, as the lumped `hotlap abs` counts them).
   const std::vector<double>& cycle_starts() const { return cycle_starts_; }
+  /// Brake-step time of the first tick in kExit (the ABS handing back to the driver), if any.
+  std::optional<double> abs_exit() const { return abs_exit_; }
 
   void Save(fe::BinaryWriter& w) const {
     w.PutTag("ABS_");
@@ -114,6 +114,7 @@ class AbsTorque {
     }
     w.PutDoubles(std::vector<double>(pushed_.begin(), pushed_.end()));
     w.PutDoubles(cycle_starts_);
+    w.PutDoubles(abs_exit_ ? std::vector<double>{*abs_exit_} : std::vector<double>{});
   }
   void Load(fe::BinaryReader& r) {
     r.ExpectTag("ABS_");
@@ -145,12 +146,17 @@ class AbsTorque {
     }
     std::vector<double> pushed(n);
     for (double& d : pushed) d = r.GetFinite();
+    // Every cycle begun has its start time (the controller's own count restarts after an exit).
     const size_t starts = r.GetCount(sizeof(double));
-    if (starts != static_cast<size_t>(s.cycles)) {
-      r.Damaged("the ABS controller's cycle start times do not match its cycle count");
+    if (starts < static_cast<size_t>(s.cycles)) {
+      r.Damaged("fewer ABS cycle start times than the controller's cycle count");
     }
     std::vector<double> cycle_starts(starts);
     for (double& d : cycle_starts) d = r.GetFinite();
+    const size_t exits = r.GetCount(sizeof(double));
+    if (exits > 1) r.Damaged("more than one ABS exit time");
+    std::optional<double> abs_exit;
+    if (exits == 1) abs_exit = r.GetFinite();
     // Everything read: restore. The delay line is rebuilt by pushing the pending commands again.
     state_ = s;
     next_tick_ = next_tick;
@@ -161,6 +167,7 @@ class AbsTorque {
     pushed_.clear();
     for (double d : pushed) Push(d);
     cycle_starts_ = std::move(cycle_starts);
+    abs_exit_ = abs_exit;
   }
 
  private:
@@ -178,6 +185,7 @@ class AbsTorque {
   brake::PressureDelayLine delay_;
   std::deque<double> pushed_;  // the last delay_ticks commands pushed, oldest first
   std::vector<double> cycle_starts_;
+  std::optional<double> abs_exit_;
   double next_tick_ = 0.0, target_ = 0.0, pressure_ = 0.0, t_prev_ = 0.0;
 };
 
@@ -304,12 +312,24 @@ int RunFeCommand(const FeArgs& a) {
     }
     r.ExpectTag("THRD");
     const std::uint64_t threads = r.GetU64();
+    r.ExpectTag("KERN");
+    const std::uint64_t kernel = r.GetU64();
     r.ExpectEnd();
+    if (kernel > static_cast<std::uint64_t>(fe::ElementKernel::kAvx2)) {
+      r.Damaged("an element kernel out of range");
+    }
     if (threads != static_cast<std::uint64_t>(solver.threads())) {
       std::fprintf(stderr,
                    "fe: the checkpoint was written on %llu threads, this run uses %d: it continues "
                    "to round-off, not bit for bit (the element forces are summed per thread)\n",
                    static_cast<unsigned long long>(threads), solver.threads());
+    }
+    if (const auto written = static_cast<fe::ElementKernel>(kernel);
+        written != solver.element_kernel()) {
+      std::fprintf(stderr,
+                   "fe: the checkpoint was written with the %s element kernel, this run uses %s: "
+                   "it continues to round-off, not bit for bit (HOTLAP_FE_KERNEL chooses)\n",
+                   fe::ElementKernelName(written), fe::ElementKernelName(solver.element_kernel()));
     }
     if (!j.is_object()) r.Damaged("its summary of the earlier steps is not a JSON object");
     std::fprintf(stderr, "fe: restarting from '%s' at t = %.6g s (%.6g s into the abs step)\n",
@@ -437,6 +457,8 @@ int RunFeCommand(const FeArgs& a) {
         w.PutString(summary);
         w.PutTag("THRD");
         w.PutU64(solver.threads());
+        w.PutTag("KERN");
+        w.PutU64(static_cast<std::uint64_t>(solver.element_kernel()));
         fe::WriteCheckpointFile(out / kCheckpointName, key, w.bytes());
       };
     }
@@ -445,12 +467,21 @@ int RunFeCommand(const FeArgs& a) {
     const fe::BrakeResult br = restarted ? run.ResumeBrake(config.abs_duration_s, torque, abs_hooks)
                                          : run.Brake(config.abs_duration_s, torque, abs_hooks);
     WriteHistoryCsv(out / "abs_history.csv", "abs", config, br.history, run.slip_radius_m());
-    std::vector<double> cycle_starts;  // absolute simulated time, as the history's
-    for (double t : abs_torque->cycle_starts()) {
-      cycle_starts.push_back(RoundSignificant(run.brake_start_s() + t, 9));
+    // The control cycles as the lumped `hotlap abs` counts them, on the histories' clock.
+    const double t0 = run.brake_start_s();
+    std::vector<double> cycle_starts, time, slip;
+    for (double t : abs_torque->cycle_starts()) cycle_starts.push_back(t0 + t);
+    for (const fe::HistoryRow& row : br.history) {
+      time.push_back(row.time_s);
+      slip.push_back(row.slip);
     }
-    const fe::BrakeSlipSummary slip = fe::SummarizeBrakeSlip(br.history, cycle_starts);
-    WriteFeAbsReport(out / "abs_report.html", br.history, slip, run.slip_radius_m(),
+    std::optional<double> abs_exit;
+    if (abs_torque->abs_exit()) abs_exit = t0 + *abs_torque->abs_exit();
+    nlohmann::json cycle_starts_json = nlohmann::json::array();
+    for (double t : cycle_starts) cycle_starts_json.push_back(RoundSignificant(t));
+    const sim::CycleWindow cycles = sim::CalcCycleWindow(
+        time, slip, cycle_starts, abs_exit, br.history.empty() ? t0 : br.history.back().time_s);
+    WriteFeAbsReport(out / "abs_report.html", br.history, cycles, run.slip_radius_m(),
                      {{"configuration", config.file.string()},
                       {"mesh", fmt::format("{} elements, {} nodes", run.tyre().mesh.elements.size(),
                                            run.tyre().mesh.nodes.size())}});
@@ -460,17 +491,19 @@ int RunFeCommand(const FeArgs& a) {
                 {"distance_m", RoundSignificant(br.distance_m, 6)},
                 {"max_slip", RoundSignificant(br.max_slip, 6)},
                 {"max_brake_torque_Nm", RoundSignificant(br.max_brake_torque_Nm, 6)},
-                {"control_cycles", abs_torque->state().cycles},
-                {"cycle_starts_s", cycle_starts},
-                {"cycles_per_s", RoundSignificant(slip.cycles_per_s, 6)},
-                {"first_cycle_end_s", NullIfNaN(slip.first_cycle_end_s, 6)},
-                {"max_slip_after_first_cycle", NullIfNaN(slip.max_slip_after_first_cycle, 6)},
-                {"fraction_time_slip_below_0_135_after_first_cycle",
-                 NullIfNaN(slip.fraction_time_below_0_135_after_first_cycle, 4)},
+                {"control_cycles", cycles.cycles},
+                {"cycle_starts_s", cycle_starts_json},
+                {"cycles_per_s", RoundSignificant(cycles.cycles_per_s)},
+                {"first_cycle_start_s", JsonOrNull(cycles.first_cycle_start_s)},
+                {"second_cycle_start_s", JsonOrNull(cycles.second_cycle_start_s)},
+                {"abs_exit_s", JsonOrNull(abs_exit)},
+                {"max_lambda_after_first_cycle", JsonOrNull(cycles.max_lambda_after_first_cycle)},
+                {"fraction_time_lambda_below_0_135",
+                 JsonOrNull(cycles.fraction_time_lambda_below_0_135, 4)},
                 {"energies", EnergiesJson(solver.energies())}};
     std::printf("abs: %.3f s, speed %.3f -> %.3f m/s over %.3f m, max slip %.3f, %d cycles\n",
                 config.abs_duration_s, br.initial_speed_mps, br.final_speed_mps, br.distance_m,
-                br.max_slip, abs_torque->state().cycles);
+                br.max_slip, cycles.cycles);
   }
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();

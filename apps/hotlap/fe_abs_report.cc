@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -13,7 +12,7 @@ namespace hotlap::app {
 
 namespace {
 
-using fe::kPaperSlipTarget;
+using sim::kPaperSlipLimit;
 
 report::LineChart TimeChart(const std::string& title, const std::string& label,
                             const std::string& unit) {
@@ -26,7 +25,7 @@ report::LineChart TimeChart(const std::string& title, const std::string& label,
 }  // namespace
 
 void WriteFeAbsReport(const std::filesystem::path& path, const std::vector<fe::HistoryRow>& history,
-                      const fe::BrakeSlipSummary& summary, double loaded_radius_m,
+                      const sim::CycleWindow& cycles, double loaded_radius_m,
                       const std::vector<std::pair<std::string, std::string>>& metadata) {
   if (history.empty()) throw std::invalid_argument("WriteFeAbsReport: empty history");
   const size_t n = history.size();
@@ -48,19 +47,20 @@ void WriteFeAbsReport(const std::filesystem::path& path, const std::vector<fe::H
   }
   report::HtmlReport page("hotlap fe abs: finite-element tyre braking event");
   for (const auto& [key, value] : metadata) page.AddMetadata(key, value);
-  page.AddText(fmt::format("{:.3f} s of braking from {:.3f} m/s to {:.3f} m/s; peak slip {:.3f}. ",
-                           t.back() - t.front(), vx.front(), vx.back(), summary.max_slip));
-  if (std::isfinite(summary.first_cycle_end_s)) {
+  page.AddText(fmt::format("{:.3f} s of braking from {:.3f} m/s to {:.3f} m/s; peak slip {:.3f}.",
+                           t.back() - t.front(), vx.front(), vx.back(),
+                           *std::max_element(slip.begin(), slip.end())));
+  if (cycles.second_cycle_start_s && cycles.fraction_time_lambda_below_0_135) {
     page.AddText(fmt::format(
         "{} control cycles ({:.2f} per second from the first). After the first cycle (it ends at "
         "{:.3f} s, where the controller begins the second) the slip stays below {:.3f} for "
         "{:.1f}% of the time, at most {:.3f}.",
-        summary.cycles, summary.cycles_per_s, summary.first_cycle_end_s, kPaperSlipTarget,
-        100.0 * summary.fraction_time_below_0_135_after_first_cycle,
-        summary.max_slip_after_first_cycle));
+        cycles.cycles, cycles.cycles_per_s, *cycles.second_cycle_start_s, kPaperSlipLimit,
+        100.0 * *cycles.fraction_time_lambda_below_0_135,
+        cycles.max_lambda_after_first_cycle.value_or(0.0)));
   } else {
     page.AddText(
-        fmt::format("{} control cycle(s): no window after the first cycle.", summary.cycles));
+        fmt::format("{} control cycle(s): no window after the first cycle.", cycles.cycles));
   }
   page.AddText(
       "The charts follow the FE/ABS paper's Figures 8 to 11 (the paper's Figure 11 draws the "
@@ -83,7 +83,7 @@ void WriteFeAbsReport(const std::filesystem::path& path, const std::vector<fe::H
   fig10.series.push_back({.label = "slip", .x = t, .y = slip});
   fig10.series.push_back({.label = "0.135 (002 Fig. 10)",
                           .x = {t.front(), t.back()},
-                          .y = {kPaperSlipTarget, kPaperSlipTarget},
+                          .y = {kPaperSlipLimit, kPaperSlipLimit},
                           .colour = "#e15759",
                           .style = report::LineStyle::kDashed});
   page.AddLineChart(fig10);

@@ -9,18 +9,18 @@
 #include <utility>
 #include <vector>
 
-#include "hotlap/fe/abs_slip_summary.h"
 #include "hotlap/fe/tyre_steps.h"
+#include "hotlap/sim/abs_metrics.h"
 
 namespace hotlap::app {
 
-/// Writes the report to `path` (atomically), with the slip figures `slip` (SummarizeBrakeSlip of
-/// the same history and the controller's cycle starts) in words. `loaded_radius_m` turns the rim
+/// Writes the report to `path` (atomically), with the control cycles `cycles` (sim::CalcCycleWindow
+/// of the same history) in words. `loaded_radius_m` turns the rim
 /// spin into the circumferential speed omega R_l (as the history CSV's omega_R_mps); `metadata`
 /// lines go under the title. Throws InputError if the file cannot be written, std::invalid_argument
 /// if the history is empty.
 void WriteFeAbsReport(const std::filesystem::path& path, const std::vector<fe::HistoryRow>& history,
-                      const fe::BrakeSlipSummary& slip, double loaded_radius_m,
+                      const sim::CycleWindow& cycles, double loaded_radius_m,
                       const std::vector<std::pair<std::string, std::string>>& metadata);
 
 }  // namespace hotlap::app

@@ -35,7 +35,9 @@ std::string Interval(const FitParameter& p, const ParameterEstimate& e) {
                      Short(e.ci_high + p.display_offset));
 }
 
+// The joint interval of a model parameter; nuisance parameters are not in the family: "".
 std::string JointInterval(const FitParameter& p, const ParameterEstimate& e) {
+  if (p.role != ParameterRole::kModel) return "";
   return fmt::format("[{}, {}]", Short(e.joint_low + p.display_offset),
                      Short(e.joint_high + p.display_offset));
 }
@@ -52,13 +54,17 @@ nlohmann::json ParameterJson(const FitParameter& p, const ParameterEstimate& e,
       {"value", Num(e.value + p.display_offset)},
       {"std_error", Num(e.std_error)},
       {"ci95", {Num(e.ci_low + p.display_offset), Num(e.ci_high + p.display_offset)}},
-      {"ci95_joint", {Num(e.joint_low + p.display_offset), Num(e.joint_high + p.display_offset)}},
       {"well_determined", e.well_determined},
       {"undetermined", e.undetermined},
       {"at_bound", e.at_bound},
       {"start", Num(e.start + p.display_offset)},
       {"unit", p.unit},
   };
+  // Only model parameters are in the joint family (nuisance ones get null).
+  j["ci95_joint"] = p.role == ParameterRole::kModel
+                        ? nlohmann::json{Num(e.joint_low + p.display_offset),
+                                         Num(e.joint_high + p.display_offset)}
+                        : nlohmann::json(nullptr);
   if (auto it = truth.find(p.key); it != truth.end()) {
     j["truth"] = Num(it->second);
     const double t = it->second - p.display_offset;

@@ -225,10 +225,14 @@ int RunOptimal(const OptimalArgs& a) {
   const bool f1 = vehicle::IsF1CarFile(car_file);
   for (const CLI::Option* o : f1 ? a.stock_car_only : a.f1_only) {
     if (o->count() > 0) {
-      throw InputError(fmt::format("{} does not apply to the car '{}' ({} model){}", o->get_name(),
-                                   a.car, f1 ? "the limebeer-2014-f1" : "the stock-car",
-                                   f1 ? ": its mesh is set by --mesh-points (docs/f1-peer.md)"
-                                      : ": its mesh is set by --step-m (docs/optimal-control.md)"));
+      const std::string name = o->get_name();
+      const bool mesh = name == "--step-m" || name == "--mesh-points" || name == "--mesh-check";
+      throw InputError(
+          fmt::format("{} does not apply to the car '{}' ({} model){}", name, a.car,
+                      f1 ? "the limebeer-2014-f1" : "the stock-car",
+                      !mesh ? ""
+                      : f1  ? ": its mesh is set by --mesh-points (docs/f1-peer.md)"
+                            : ": its mesh is set by --step-m (docs/optimal-control.md)"));
     }
   }
   if (f1) return RunF1Optimal(a, car_file);

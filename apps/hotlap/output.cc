@@ -32,4 +32,8 @@ double RoundSignificant(double x, int digits) {
   return std::strtod(buffer, nullptr);
 }
 
+nlohmann::json JsonOrNull(const std::optional<double>& x, int digits) {
+  return x ? nlohmann::json(RoundSignificant(*x, digits)) : nlohmann::json(nullptr);
+}
+
 }  // namespace hotlap::app

@@ -3,6 +3,7 @@
 /// Helpers the commands share for their outputs: JSON summaries and checks done before any work.
 
 #include <filesystem>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -17,5 +18,8 @@ void CheckOutputFolder(const std::filesystem::path& path, const char* option);
 
 /// Rounds to `digits` significant digits for JSON (keeps summaries readable, enough for checks).
 double RoundSignificant(double x, int digits = 9);
+
+/// The value rounded as RoundSignificant, or JSON null where there is none.
+nlohmann::json JsonOrNull(const std::optional<double>& x, int digits = 9);
 
 }  // namespace hotlap::app

@@ -96,9 +96,10 @@ TEST_F(FeCommandTest, AbsStepRunsEveryStepAndWritesTheOutputs) {
   // 20 ms is shorter than a control cycle: the cycle figures are there, and null.
   EXPECT_TRUE(j["abs"]["cycle_starts_s"].is_array());
   EXPECT_EQ(j["abs"]["cycle_starts_s"].size(), 0u);
+  EXPECT_EQ(j["abs"]["control_cycles"].get<int>(), 0);
   EXPECT_EQ(j["abs"]["cycles_per_s"].get<double>(), 0.0);
-  for (const char* k : {"first_cycle_end_s", "max_slip_after_first_cycle",
-                        "fraction_time_slip_below_0_135_after_first_cycle"}) {
+  for (const char* k : {"first_cycle_start_s", "second_cycle_start_s", "abs_exit_s",
+                        "max_lambda_after_first_cycle", "fraction_time_lambda_below_0_135"}) {
     ASSERT_TRUE(j["abs"].contains(k)) << k;
     EXPECT_TRUE(j["abs"][k].is_null()) << k;
   }

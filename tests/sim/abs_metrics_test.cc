@@ -22,6 +22,40 @@ TEST(AbsMetricsTest, FractionBelowInterpolatesBetweenSamples) {
   EXPECT_DOUBLE_EQ(hotlap::sim::FractionOfTimeBelow(t, v, 0.1, 1.0, 1.0), 1.0);  // empty
 }
 
+// The window after the first cycle alone (as the FE tyre's ABS stop uses it): from the second
+// cycle's start to the exit or the end, its edges interpolated; undefined with fewer than two
+// cycles or no time left after the second start.
+TEST(AbsMetricsTest, CycleWindowFromTheSecondStartToTheExitOrTheEnd) {
+  using hotlap::sim::CalcCycleWindow;
+  const std::vector<double> t = {0.0, 1.0, 2.0, 3.0, 4.0};
+  const std::vector<double> v = {0.0, 0.3, 0.1, 0.1, 0.2};
+  // Starts at 0.5 and 1.5 s, no exit, end 4 s: window [1.5, 4]. Lambda 0.2 at 1.5 s falling to
+  // 0.1 at 2, below 0.135 from 1.825 s to 3.35 s (rising 0.1 -> 0.2 over [3, 4]): 1.525 s of 2.5.
+  hotlap::sim::CycleWindow w = CalcCycleWindow(t, v, {0.5, 1.5}, std::nullopt, 4.0);
+  EXPECT_EQ(w.cycles, 2);
+  EXPECT_NEAR(w.cycles_per_s, 2.0 / 3.5, 1e-12);
+  EXPECT_DOUBLE_EQ(*w.first_cycle_start_s, 0.5);
+  EXPECT_DOUBLE_EQ(*w.second_cycle_start_s, 1.5);
+  EXPECT_DOUBLE_EQ(*w.max_lambda_after_first_cycle,
+                   0.1);  // the samples at 2 and 3 s (4 s is the end)
+  EXPECT_NEAR(*w.fraction_time_lambda_below_0_135, 1.525 / 2.5, 1e-12);
+  // An exit at 3 s closes the window there: [1.5, 3], below from 1.825 s: 1.175 s of 1.5.
+  w = CalcCycleWindow(t, v, {0.5, 1.5}, 3.0, 4.0);
+  EXPECT_NEAR(w.cycles_per_s, 2.0 / 2.5, 1e-12);
+  EXPECT_DOUBLE_EQ(*w.max_lambda_after_first_cycle, 0.1);
+  EXPECT_NEAR(*w.fraction_time_lambda_below_0_135, 1.175 / 1.5, 1e-12);
+  // One cycle: no window. A second start at the very end: no time and no sample in it.
+  w = CalcCycleWindow(t, v, {0.5}, std::nullopt, 4.0);
+  EXPECT_FALSE(w.second_cycle_start_s || w.max_lambda_after_first_cycle ||
+               w.fraction_time_lambda_below_0_135);
+  w = CalcCycleWindow(t, v, {0.5, 4.0}, std::nullopt, 4.0);
+  EXPECT_TRUE(w.second_cycle_start_s.has_value());
+  EXPECT_FALSE(w.max_lambda_after_first_cycle || w.fraction_time_lambda_below_0_135);
+  w = CalcCycleWindow(t, v, {}, std::nullopt, 4.0);
+  EXPECT_EQ(w.cycles, 0);
+  EXPECT_EQ(w.cycles_per_s, 0.0);
+}
+
 // A made-up run: lambda 0.2 on [1, 1.5), 0.05 elsewhere; cycles at 0.5, 1.0 and 1.5 s; the ABS
 // exits at 2 s below the exit speed, where the wheel locks.
 AbsRunResult MadeUpRun(const hotlap::sim::AbsConfig& c) {

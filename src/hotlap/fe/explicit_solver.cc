@@ -517,10 +517,9 @@ void ExplicitSolver::RunStep(bool advance) {
         f_dissip_bv_[a].setZero();
         f_dissip_hg_[a].setZero();
       }
-      // Elements of one colour share no node: they add to the nodes without a race. The
-      // implicit barrier at the end of each loop separates the colours.
-      // Each thread takes a contiguous share of each colour (as schedule(static)); the barrier
-      // after each colour separates the colours.
+      // Elements of one colour share no node: they add to the nodes without a race. Each thread
+      // takes a contiguous share of each colour (as schedule(static)); the barrier after each
+      // colour separates the colours.
       const int n_loops = direct ? 1 : colours();
 #ifdef _OPENMP
       const int team = omp_get_num_threads(), rank = omp_get_thread_num();

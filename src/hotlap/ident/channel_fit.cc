@@ -443,6 +443,8 @@ FitResult FitChannels(const ChannelModel& model, std::span<const FitParameter> p
 
   // 4. The intervals against the cost itself, along each parameter's profile direction.
   const double cost_best = cost_at(best);
+  // Each interval's level: the 95% one and the joint one (the same when the family is one).
+  const double z_joint = JointNormalQuantile(options.joint_family_size);
   for (int i = 0; i < n_par && std::isfinite(cost_best); ++i) {
     if (undetermined[i] || !(cov_u(i, i) > 0.0)) continue;
     const Eigen::VectorXd d = cov_u.col(i) / std::sqrt(cov_u(i, i));  // moves u_i by 1 sigma
@@ -451,8 +453,6 @@ FitResult FitChannels(const ChannelModel& model, std::span<const FitParameter> p
       for (int j = 0; j < n_par; ++j) at[j] = std::clamp(best[j] + t * d(j), lower[j], upper[j]);
       return cost_at(at) - cost_best;  // infinite where the model fails
     };
-    // Each interval's level: the 95% one and the joint one (the same when the family is one).
-    const double z_joint = JointNormalQuantile(options.joint_family_size);
     for (const bool joint : {false, true}) {
       ParameterEstimate& e = result.estimates[i];
       if (joint && options.joint_family_size <= 1) {

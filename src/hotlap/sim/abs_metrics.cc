@@ -29,6 +29,34 @@ double FractionOfTimeBelow(const std::vector<double>& times, const std::vector<d
   return std::clamp(below / (t_to - t_from), 0.0, 1.0);
 }
 
+CycleWindow CalcCycleWindow(const std::vector<double>& time, const std::vector<double>& lambda,
+                            const std::vector<double>& cycle_starts_s,
+                            std::optional<double> abs_exit_s, double end_time_s) {
+  CycleWindow w;
+  w.cycles = static_cast<int>(cycle_starts_s.size());
+  const double active_end = abs_exit_s ? *abs_exit_s : end_time_s;
+  if (w.cycles > 0) {
+    w.first_cycle_start_s = cycle_starts_s.front();
+    const double active = active_end - cycle_starts_s.front();
+    w.cycles_per_s = active > 0.0 ? w.cycles / active : 0.0;
+  }
+  if (w.cycles > 1) {
+    const double from = cycle_starts_s[1];
+    w.second_cycle_start_s = from;
+    for (size_t i = 0; i < time.size(); ++i) {
+      if (time[i] >= from && time[i] < active_end) {
+        w.max_lambda_after_first_cycle =
+            std::max(w.max_lambda_after_first_cycle.value_or(lambda[i]), lambda[i]);
+      }
+    }
+    if (active_end > from && time.size() >= 2) {
+      w.fraction_time_lambda_below_0_135 =
+          FractionOfTimeBelow(time, lambda, kPaperSlipLimit, from, active_end);
+    }
+  }
+  return w;
+}
+
 AbsMetrics CalcAbsMetrics(const AbsConfig& config, const AbsRunResult& run) {
   const AbsHistory& h = run.history;
   const double exit_speed = config.controller.exit_speed_mps;
@@ -46,25 +74,15 @@ AbsMetrics CalcAbsMetrics(const AbsConfig& config, const AbsRunResult& run) {
   }
 
   // Control cycles and the window after the first one.
-  m.cycles = static_cast<int>(run.cycle_starts_s.size());
+  const CycleWindow w =
+      CalcCycleWindow(h.time, h.lambda, run.cycle_starts_s, run.abs_exit_s, run.end_time_s);
+  m.cycles = w.cycles;
+  m.cycles_per_s = w.cycles_per_s;
+  m.first_cycle_start_s = w.first_cycle_start_s;
+  m.second_cycle_start_s = w.second_cycle_start_s;
+  m.max_lambda_after_first_cycle = w.max_lambda_after_first_cycle;
+  m.fraction_time_lambda_below_0_135 = w.fraction_time_lambda_below_0_135;
   m.abs_exit_s = run.abs_exit_s;
-  const double active_end = run.abs_exit_s ? *run.abs_exit_s : run.end_time_s;
-  if (m.cycles > 0) {
-    m.first_cycle_start_s = run.cycle_starts_s.front();
-    const double active = active_end - run.cycle_starts_s.front();
-    m.cycles_per_s = active > 0.0 ? m.cycles / active : 0.0;
-  }
-  if (m.cycles > 1) {
-    const double from = run.cycle_starts_s[1];
-    m.second_cycle_start_s = from;
-    double peak = 0.0;
-    for (size_t i = 0; i < h.size(); ++i) {
-      if (h.time[i] >= from && h.time[i] < active_end) peak = std::max(peak, h.lambda[i]);
-    }
-    m.max_lambda_after_first_cycle = peak;
-    m.fraction_time_lambda_below_0_135 =
-        FractionOfTimeBelow(h.time, h.lambda, kPaperSlipLimit, from, active_end);
-  }
 
   // Slip and locking above the exit speed (below it the ABS lets the wheel lock on purpose).
   for (size_t i = 0; i < h.size(); ++i) {

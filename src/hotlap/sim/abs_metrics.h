@@ -59,6 +59,29 @@ struct AbsMetrics {
   AbsEnergy energy;
 };
 
+/// The control cycles of a braking event and how well the slip was held after the first one.
+struct CycleWindow {
+  int cycles = 0;  ///< control cycles (pressure releases that begin one)
+  /// cycles / ABS-active time, from the first cycle's start to the ABS exit (or the end); 0
+  /// without cycles.
+  double cycles_per_s = 0.0;
+  std::optional<double> first_cycle_start_s;
+  std::optional<double> second_cycle_start_s;  ///< the first cycle ends here
+  /// Largest lambda sampled from the second cycle's start until the ABS exit (or the end); none
+  /// with fewer than two cycles or no sample there.
+  std::optional<double> max_lambda_after_first_cycle;
+  /// Share of that same window with lambda < kPaperSlipLimit (time-weighted, linear between
+  /// samples); none with fewer than two cycles or an empty window.
+  std::optional<double> fraction_time_lambda_below_0_135;
+};
+
+/// The window of CycleWindow from a history (`time` increasing, `lambda` the braking slip at
+/// each), the times at which the controller began each cycle, its exit (if it came) and the end
+/// of the event, all on the history's clock. Used by CalcAbsMetrics and by the FE tyre's ABS stop.
+CycleWindow CalcCycleWindow(const std::vector<double>& time, const std::vector<double>& lambda,
+                            const std::vector<double>& cycle_starts_s,
+                            std::optional<double> abs_exit_s, double end_time_s);
+
 /// The figures of `run`, made with `config` (its wheel for the energies, its controller's exit
 /// speed for the windows).
 AbsMetrics CalcAbsMetrics(const AbsConfig& config, const AbsRunResult& run);

@@ -169,15 +169,18 @@ TyreForces<T> CalcBrushForces(const BrushParams<T>& params, const TyreOperatingP
 
   // Torsional fixed point tan(alpha') = tan(alpha) - Mz(alpha') / c_ct: converge in double, then
   // Newton (chord) steps in T from the converged value with its slope. The first makes the first
-  // derivatives exact (implicit function: -dh / h'); each chord step multiplies the error's order
-  // in the perturbation, so a second one makes second derivatives exact too (the SecondOrder
-  // scalar of the optimal control carries Hessians). In double, the converged value is kept.
+  // derivatives exact (implicit function: -dh / h'); each chord step raises the order of the
+  // error in the perturbation by one, so a second one makes second derivatives exact too (the
+  // SecondOrder scalar of the optimal control carries Hessians). In double, the converged value
+  // is kept.
   const FixedPoint fp =
       SolveFixedPoint(ValueOf(mu_fz), ValueOf(theta), ValueOf(a), ValueOf(op.slip_ratio),
                       ValueOf(tan_alpha), ValueOf(inv_c_ct));
   T u(fp.u);
   if constexpr (!std::is_same_v<T, double>) {
-    for (int step = 0; step < 2; ++step) {
+    // Jets need first derivatives only: one step; SecondOrder carries Hessians: two.
+    constexpr int kSteps = IsSecondOrder<T>::value ? 2 : 1;
+    for (int step = 0; step < kSteps; ++step) {
       u -= FixedPointResidual(mu_fz, theta, a, op.slip_ratio, tan_alpha, inv_c_ct, u) / fp.slope;
     }
   }

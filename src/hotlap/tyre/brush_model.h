@@ -41,10 +41,10 @@
 /// forces below it) and (4) at a locked or reversing wheel, 1 + kappa <= 0, taken as full sliding.
 ///
 /// Torsional fixed point: solved in double by safeguarded Newton iteration inside the bracket
-/// [0, tan(alpha)] (Mz has the sign of tan(alpha')), then two chord steps (the converged slope)
-/// are taken in the scalar type T from the converged value. The first carries the
-/// implicit-function derivative d(tan alpha') = -dh / h' exactly, the second makes second
-/// derivatives exact too, so Jets and SecondOrder differentiate through the solve. If
+/// [0, tan(alpha)] (Mz has the sign of tan(alpha')), then chord steps (the converged slope) are
+/// taken in the scalar type T from the converged value: one for Jets, which carries the
+/// implicit-function derivative d(tan alpha') = -dh / h' exactly, and a second for SecondOrder,
+/// which makes second derivatives exact too. If
 /// `C_Fa t0 / c_ct >= 4` the fixed point may have several roots (h' can change sign); the
 /// bracketed iteration returns one of them. Realistic tyres have C_Fa t0 / c_ct of order 1.
 
