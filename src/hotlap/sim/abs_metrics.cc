@@ -74,14 +74,8 @@ AbsMetrics CalcAbsMetrics(const AbsConfig& config, const AbsRunResult& run) {
   }
 
   // Control cycles and the window after the first one.
-  const CycleWindow w =
+  static_cast<CycleWindow&>(m) =
       CalcCycleWindow(h.time, h.lambda, run.cycle_starts_s, run.abs_exit_s, run.end_time_s);
-  m.cycles = w.cycles;
-  m.cycles_per_s = w.cycles_per_s;
-  m.first_cycle_start_s = w.first_cycle_start_s;
-  m.second_cycle_start_s = w.second_cycle_start_s;
-  m.max_lambda_after_first_cycle = w.max_lambda_after_first_cycle;
-  m.fraction_time_lambda_below_0_135 = w.fraction_time_lambda_below_0_135;
   m.abs_exit_s = run.abs_exit_s;
 
   // Slip and locking above the exit speed (below it the ABS lets the wheel lock on purpose).

@@ -27,38 +27,6 @@ struct AbsEnergy {
   double closure_error = 0.0;         ///< relative, see above
 };
 
-/// The figures of one run.
-struct AbsMetrics {
-  bool stopped = false;
-  std::optional<double> stop_time_s;          ///< when Vx reached the stop speed
-  std::optional<double> stopping_distance_m;  ///< distance travelled by then
-  double distance_m = 0.0;                    ///< distance travelled in the run
-  double end_time_s = 0.0;
-  double final_speed_mps = 0.0;
-  double mean_deceleration_mps2 = 0.0;  ///< (Vx(0) - Vx(end)) / end time
-
-  int cycles = 0;  ///< control cycles (pressure releases that begin one)
-  /// cycles / ABS-active time, the active time running from the first cycle's start to the ABS
-  /// exit (or the end of the run); 0 without cycles.
-  double cycles_per_s = 0.0;
-  std::optional<double> first_cycle_start_s;
-  std::optional<double> second_cycle_start_s;  ///< the first cycle ends here
-  std::optional<double> abs_exit_s;
-  /// Largest lambda from the second cycle's start until the ABS exit (or the end); none with fewer
-  /// than two cycles.
-  std::optional<double> max_lambda_after_first_cycle;
-  /// Share of that same window with lambda < kPaperSlipLimit (time-weighted).
-  std::optional<double> fraction_time_lambda_below_0_135;
-  double max_lambda = 0.0;  ///< largest lambda while Vx >= the exit speed
-  /// lambda >= kLockedSlip, or the wheel held stopped, while Vx >= the exit speed.
-  bool wheel_locked = false;
-
-  double peak_disc_temp_K = 0.0;
-  double peak_calliper_temp_K = 0.0;
-  double final_disc_temp_K = 0.0;
-  AbsEnergy energy;
-};
-
 /// The control cycles of a braking event and how well the slip was held after the first one.
 struct CycleWindow {
   int cycles = 0;  ///< control cycles (pressure releases that begin one)
@@ -73,6 +41,28 @@ struct CycleWindow {
   /// Share of that same window with lambda < kPaperSlipLimit (time-weighted, linear between
   /// samples); none with fewer than two cycles or an empty window.
   std::optional<double> fraction_time_lambda_below_0_135;
+};
+
+/// The figures of one run: its control cycles and the window after the first (CycleWindow),
+/// and the rest below.
+struct AbsMetrics : CycleWindow {
+  bool stopped = false;
+  std::optional<double> stop_time_s;          ///< when Vx reached the stop speed
+  std::optional<double> stopping_distance_m;  ///< distance travelled by then
+  double distance_m = 0.0;                    ///< distance travelled in the run
+  double end_time_s = 0.0;
+  double final_speed_mps = 0.0;
+  double mean_deceleration_mps2 = 0.0;  ///< (Vx(0) - Vx(end)) / end time
+
+  std::optional<double> abs_exit_s;  ///< first tick in kExit after braking began
+  double max_lambda = 0.0;           ///< largest lambda while Vx >= the exit speed
+  /// lambda >= kLockedSlip, or the wheel held stopped, while Vx >= the exit speed.
+  bool wheel_locked = false;
+
+  double peak_disc_temp_K = 0.0;
+  double peak_calliper_temp_K = 0.0;
+  double final_disc_temp_K = 0.0;
+  AbsEnergy energy;
 };
 
 /// The window of CycleWindow from a history (`time` increasing, `lambda` the braking slip at
