@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "report/chromium.h"
 #include "test_util.h"
 
 namespace {
@@ -108,6 +109,10 @@ TEST_F(FeCommandTest, AbsStepRunsEveryStepAndWritesTheOutputs) {
                             "cf. 002 Fig. 11", "Energy balance error"}) {
     EXPECT_TRUE(Contains(html, title)) << title;
   }
+  // The page draws its six charts without a script error.
+  fs::create_directories(dir_ / "chromium");
+  const auto status = hotlap::test::RenderInChromium(out / "abs_report.html", dir_ / "chromium");
+  EXPECT_TRUE(hotlap::test::RenderedCleanly(status, 6));
 }
 
 // A braking step run straight through and one stopped at a checkpoint and continued from it (all
