@@ -29,13 +29,7 @@ struct Result {
 
 Result RunBlock(ElementKernel kernel, int threads) {
   Mesh mesh = MakeBlockMesh(kNx * kH, kNy * kH, kNz * kH, kNx, kNy, kNz);
-  const auto id = [](int i, int j, int k) { return i + (kNx + 1) * (j + (kNy + 1) * k); };
-  for (int j = 0; j < kNy; ++j) {
-    for (int i = 0; i < kNx; ++i) {
-      mesh.pressure_faces.push_back(
-          {id(i, j, 0), id(i, j + 1, 0), id(i + 1, j + 1, 0), id(i + 1, j, 0)});
-    }
-  }
+  testing::AddBlockPressureFaces(mesh, kNx, kNy, kNz, /*top=*/false);
   // Two crossed cord layers in every element, one tension-only, one linear.
   const double c = std::cos(0.4), s = std::sin(0.4);
   for (int e = 0; e < static_cast<int>(mesh.elements.size()); ++e) {

@@ -25,15 +25,7 @@ constexpr double kH = 0.002;
 
 Mesh Block() {
   Mesh mesh = MakeBlockMesh(kNx * kH, kNy * kH, kNz * kH, kNx, kNy, kNz);
-  const auto id = [](int i, int j, int k) { return i + (kNx + 1) * (j + (kNy + 1) * k); };
-  for (int j = 0; j < kNy; ++j) {
-    for (int i = 0; i < kNx; ++i) {
-      mesh.pressure_faces.push_back(
-          {id(i, j, 0), id(i, j + 1, 0), id(i + 1, j + 1, 0), id(i + 1, j, 0)});
-      mesh.pressure_faces.push_back(
-          {id(i, j, kNz), id(i + 1, j, kNz), id(i + 1, j + 1, kNz), id(i, j + 1, kNz)});
-    }
-  }
+  testing::AddBlockPressureFaces(mesh, kNx, kNy, kNz, /*top=*/true);
   return mesh;
 }
 

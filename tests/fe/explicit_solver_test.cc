@@ -83,16 +83,7 @@ struct BlockRun {
 BlockRun RunBlock(bool pulse) {
   const double h = 0.005;
   Mesh mesh = MakeBlockMesh(4 * h, 3 * h, 2 * h, 4, 3, 2);
-  const auto id = [](int i, int j, int k) { return i + 5 * (j + 4 * k); };
-  for (int j = 0; j < 3; ++j) {
-    for (int i = 0; i < 4; ++i) {
-      // Right-hand normals out of the block: -z at the bottom, +z at the top.
-      mesh.pressure_faces.push_back(
-          {id(i, j, 0), id(i, j + 1, 0), id(i + 1, j + 1, 0), id(i + 1, j, 0)});
-      mesh.pressure_faces.push_back(
-          {id(i, j, 2), id(i + 1, j, 2), id(i + 1, j + 1, 2), id(i, j + 1, 2)});
-    }
-  }
+  testing::AddBlockPressureFaces(mesh, 4, 3, 2, /*top=*/true);
   ExplicitSolver s(mesh, {testing::Tread()}, {}, SolverOptions{});
   s.SetInitialVelocity(
       testing::SpinStretchNoiseVelocities(mesh.nodes, Eigen::Vector3d(2 * h, 1.5 * h, h), 11));

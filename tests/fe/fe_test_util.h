@@ -8,12 +8,29 @@
 
 #include <Eigen/Geometry>
 
+#include "hotlap/fe/mesh.h"
 #include "hotlap/fe/yeoh.h"
 
 namespace hotlap::fe::testing {
 
 // 002 Table 1, tread: C1, C2, C3 (N/m^2) and density (kg/m^3).
 inline constexpr double kC10 = 7.77561e5, kC20 = -2.76138e5, kC30 = 9.5427e4, kRho = 1178.0;
+
+/// Adds the pressure faces of a MakeBlockMesh(.., nx, ny, nz) block: per cell of the bottom
+/// (normal -z) and, with `top`, of the top (normal +z), right-hand normals out of the block.
+inline void AddBlockPressureFaces(Mesh& mesh, int nx, int ny, int nz, bool top) {
+  const auto id = [&](int i, int j, int k) { return i + (nx + 1) * (j + (ny + 1) * k); };
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i < nx; ++i) {
+      mesh.pressure_faces.push_back(
+          {id(i, j, 0), id(i, j + 1, 0), id(i + 1, j + 1, 0), id(i + 1, j, 0)});
+      if (top) {
+        mesh.pressure_faces.push_back(
+            {id(i, j, nz), id(i + 1, j, nz), id(i + 1, j + 1, nz), id(i, j + 1, nz)});
+      }
+    }
+  }
+}
 
 inline YeohMaterial Tread() { return MakeYeohMaterial(kC10, kC20, kC30, kRho, 20.0); }
 
