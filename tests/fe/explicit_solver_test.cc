@@ -21,32 +21,80 @@ namespace {
 using testing::kC10;
 using testing::kRho;
 
-// For a cube of edge L: the bound omega_max^2 = 8 c^2 sum|B|^2 = 12 c^2 / L^2, so 2 / omega =
-// L / (c sqrt 3); the linear bulk viscosity b1 reduces it by sqrt(1 + b1^2) - b1 (Abaqus/Explicit).
+// For a cube of edge L: the bound omega_max^2 = 8 c^2 sum|B|^2 = 12 c^2 / L^2, and the linear bulk
+// viscosity's damping rate mu = 8 b1 c L sum|B|^2 = 12 b1 c / L, i.e. xi = mu / (2 omega) =
+// sqrt(3) b1; the step is (2 / omega)(sqrt(1 + xi^2) - xi).
 TEST(FeStableStep, EstimateMatchesTheDilatationalWaveSpeed) {
   const double l = 0.004;
-  const double c = std::sqrt((40.0 * kC10 + 4.0 / 3.0 * 2.0 * kC10) / kRho);  // K + 4/3 mu
+  const double c = std::sqrt((40.0 * kC10 + 4.0 / 3.0 * 2.0 * kC10) / kRho);  // K + 4/3 mu0
   SolverOptions opt;
   ExplicitSolver s(MakeBlockMesh(l, l, l, 1, 1, 1), {testing::Tread()}, {}, opt);
-  const double expected = l / (c * std::sqrt(3.0)) * (std::sqrt(1.0 + 0.06 * 0.06) - 0.06);
+  const double xi = std::sqrt(3.0) * 0.06;
+  const double expected = l / (c * std::sqrt(3.0)) * (std::sqrt(1.0 + xi * xi) - xi);
   EXPECT_NEAR(s.StableStepEstimate(), expected, 1e-12 * expected);
   EXPECT_NEAR(s.time_step(), 0.9 * expected, 1e-12 * expected);
 }
 
-// Total energy of a free element with random small velocities, run at `factor` times the
-// undamped stable step; returns the largest energy seen over the initial one (infinity if the
-// element inverted).
-double EnergyGrowth(double factor) {
-  const double l = 0.004;
-  SolverOptions opt;
-  opt.bulk_viscosity_linear = 0.0;
-  opt.bulk_viscosity_quadratic = 0.0;
-  ExplicitSolver probe(MakeBlockMesh(l, l, l, 1, 1, 1), {testing::Tread()}, {}, opt);
+// A flat element (8 x 8 x 2 mm) with one cord layer in its plane, 23.3 deg from x (the paper's
+// belt angle from the circumference), phi E = `stiffening` times the rubber's K + 4/3 mu0.
+struct Probe {
+  Mesh mesh;
+  std::vector<RebarMaterial> cords;
+};
+
+constexpr double kLx = 0.008, kLy = 0.008, kLz = 0.002, kPhi = 0.02, kCordRho = 7618.0;
+const double kAngle = 23.3 * M_PI / 180.0;
+
+Probe CordElement(double stiffening, FibreResponse response) {
+  Probe p{MakeBlockMesh(kLx, kLy, kLz, 1, 1, 1), {}};
+  p.mesh.fibres.push_back({0, 0, Eigen::Vector3d(std::cos(kAngle), std::sin(kAngle), 0.0), kPhi});
+  RebarMaterial cord;
+  cord.youngs_modulus_Pa = stiffening * (40.0 + 8.0 / 3.0) * kC10 / kPhi;
+  cord.density_kg_per_m3 = kCordRho;
+  cord.area_m2 = 1e-7;
+  cord.spacing_m = 1e-3;
+  cord.response = response;
+  p.cords = {cord};
+  return p;
+}
+
+// By hand for a box of edges (lx, ly, lz): B0_a = (+-1/(4 lx), +-1/(4 ly), +-1/(4 lz)), so
+// sum|B0|^2 = (1/lx^2 + 1/ly^2 + 1/lz^2) / 2 and, along a0 = (c, s, 0), sum (B0_a . a0)^2 =
+// (c^2/lx^2 + s^2/ly^2) / 2 (the cross terms cancel over the eight sign patterns). The cord
+// makes the element stiff only along its plane, so the step is several times the one of the
+// isotropic bound c^2 = (K + 4/3 mu0 + phi E) / rho that the solver used before.
+TEST(FeStableStep, CordTermUsesTheGradientAlongTheCord) {
+  const Probe p = CordElement(100.0, FibreResponse::kTensionOnly);
+  ExplicitSolver s(p.mesh, {testing::Tread()}, p.cords, SolverOptions{});
+  const double rubber = (40.0 + 8.0 / 3.0) * kC10;
+  const double phi_e = kPhi * p.cords[0].youngs_modulus_Pa;
+  const double rho = kRho + kPhi * kCordRho;
+  const double grad2 = 0.5 * (1.0 / (kLx * kLx) + 1.0 / (kLy * kLy) + 1.0 / (kLz * kLz));
+  const double c = std::cos(kAngle), sn = std::sin(kAngle);
+  const double g2 = 0.5 * (c * c / (kLx * kLx) + sn * sn / (kLy * kLy));
+  const double omega2 =
+      8.0 * (rubber * grad2 + phi_e * (1.0 + 3.0 * kCordStrainAllowance) * g2) / rho;
+  const double le = std::sqrt(1.5 / grad2);
+  const double mu = 8.0 * 0.06 * std::sqrt(rubber / rho) * le * grad2;
+  const double expected = 2.0 / omega2 * (std::sqrt(omega2 + mu * mu / 4.0) - mu / 2.0);
+  EXPECT_NEAR(s.StableStepEstimate(), expected, 1e-12 * expected);
+  const double isotropic = 2.0 / std::sqrt(8.0 * (rubber + phi_e) * grad2 / rho);
+  std::printf("cord element: step %.4g us, isotropic bound %.4g us (x%.2f)\n", expected * 1e6,
+              isotropic * 1e6, expected / isotropic);
+  EXPECT_GT(s.StableStepEstimate(), 3.0 * isotropic);
+}
+
+// Total energy of a free probe with random small velocities, run at `factor` times its estimated
+// stable step; returns the largest energy seen over the initial one (infinity if an element
+// inverted). The kinetic energy at t(n), m v(n-1/2) . v(n+1/2) / 2, is negative when the
+// velocities flip sign every step (how a damped mode beyond its limit diverges): its size counts.
+double EnergyGrowth(const Probe& p, SolverOptions opt, double factor) {
+  ExplicitSolver probe(p.mesh, {testing::Tread()}, p.cords, opt);
   opt.time_step_s = factor * probe.StableStepEstimate();
-  ExplicitSolver s(MakeBlockMesh(l, l, l, 1, 1, 1), {testing::Tread()}, {}, opt);
+  ExplicitSolver s(p.mesh, {testing::Tread()}, p.cords, opt);
   std::mt19937 rng(3);
   std::normal_distribution<double> n(0.0, 1e-3);
-  std::vector<Eigen::Vector3d> v(8);
+  std::vector<Eigen::Vector3d> v(p.mesh.nodes.size());
   for (auto& vi : v) vi = Eigen::Vector3d(n(rng), n(rng), n(rng));
   s.SetInitialVelocity(v);
   const double e0 = s.energies().initial_kinetic;
@@ -55,7 +103,7 @@ double EnergyGrowth(double factor) {
     for (int k = 0; k < 2000; ++k) {
       s.Step();
       const Energies& e = s.energies();
-      worst = std::max(worst, (e.kinetic + e.internal + e.hourglass_stored) / e0);
+      worst = std::max(worst, (std::abs(e.kinetic) + e.internal + e.hourglass_stored) / e0);
     }
   } catch (const std::exception&) {
     return INFINITY;
@@ -63,11 +111,46 @@ double EnergyGrowth(double factor) {
   return worst;
 }
 
+SolverOptions Undamped() {
+  SolverOptions opt;
+  opt.bulk_viscosity_linear = 0.0;
+  opt.bulk_viscosity_quadratic = 0.0;
+  return opt;
+}
+
+Probe Cube() {
+  const double l = 0.004;
+  return {MakeBlockMesh(l, l, l, 1, 1, 1), {}};
+}
+
 // The cube's highest mode is volumetric, omega^2 = 12 K / (rho L^2): its true critical step is
 // sqrt((K + 4/3 mu0) / K) = 1.033 times the estimate, so 1.1 times the estimate must diverge.
 TEST(FeStableStep, RunAboveTheStableStepBlowsUpAndBelowDoesNot) {
-  EXPECT_LT(EnergyGrowth(0.95), 2.0);
-  EXPECT_GT(EnergyGrowth(1.1), 1e6);
+  EXPECT_LT(EnergyGrowth(Cube(), Undamped(), 0.95), 2.0);
+  EXPECT_GT(EnergyGrowth(Cube(), Undamped(), 1.1), 1e6);
+}
+
+// The cord element with a cord 1000 times as stiff as the rubber (in tension and compression):
+// its highest mode is the cord's, u_a = g_a a0, omega^2 = 8 phi E |g|^2 / rho plus a little
+// rubber, against the estimate's 1.09 phi E (the strain allowance) plus all the rubber: the true
+// critical step is within 6% of the estimate, so 1.15 times it diverges, and 0.95 does not
+// (the isotropic bound would have been far below both).
+TEST(FeStableStep, CordElementAboveItsStableStepBlowsUpAndBelowDoesNot) {
+  const Probe p = CordElement(1000.0, FibreResponse::kLinear);
+  EXPECT_LT(EnergyGrowth(p, Undamped(), 0.95), 2.0);
+  EXPECT_GT(EnergyGrowth(p, Undamped(), 1.15), 1e6);
+}
+
+// Heavy linear bulk viscosity (b1 = 1, xi = sqrt(3)) shortens the stable step of the cube to
+// 0.27 of the undamped 2 / omega: its volumetric mode is damped at exactly the rate mu the
+// estimate uses, so its true critical step is within 0.5% of the estimate. 1.1 times it
+// diverges (the undamped-style factor sqrt(1 + b1^2) - b1 = 0.41 would have been 1.5 times too
+// long), 0.95 does not.
+TEST(FeStableStep, BulkViscosityShortensTheStableStepAsEstimated) {
+  SolverOptions opt = Undamped();
+  opt.bulk_viscosity_linear = 1.0;
+  EXPECT_LT(EnergyGrowth(Cube(), opt, 0.95), 2.0);
+  EXPECT_GT(EnergyGrowth(Cube(), opt, 1.1), 1e6);
 }
 
 // A 4x3x2 block of 5 mm elements: spinning, stretching, with small random nodal velocities (which

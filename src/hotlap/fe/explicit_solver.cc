@@ -28,6 +28,14 @@ using Mat83 = Eigen::Matrix<double, 8, 3>;
 // then the blocks in order), so that they do not depend on the thread count.
 constexpr long kSumBlock = 512;
 
+// Central differences with the damping force lagged half a step are stable for a mode of
+// frequency omega and damping rate mu = 2 xi omega while (omega dt)^2 / 4 + mu dt / 2 <= 1, i.e.
+// dt <= (2 / omega^2)(sqrt(omega^2 + mu^2 / 4) - mu / 2) = (2 / omega)(sqrt(1 + xi^2) - xi).
+// Decreasing in both, so the largest frequency and the largest damping rate give a safe step.
+double DampedStableStep(double omega2, double mu) {
+  return 2.0 / omega2 * (std::sqrt(omega2 + 0.25 * mu * mu) - 0.5 * mu);
+}
+
 Eigen::Vector3d Vec3Zero() { return Eigen::Vector3d::Zero(); }
 
 long Blocks(size_t n) { return (static_cast<long>(n) + kSumBlock - 1) / kSumBlock; }
@@ -80,7 +88,6 @@ ExplicitSolver::ExplicitSolver(Mesh mesh, std::vector<YeohMaterial> materials,
   hg_stiffness_.resize(ne);
   hg_viscous_.resize(ne);
   const double b1 = options_.bulk_viscosity_linear;
-  const double damping_factor = std::sqrt(1.0 + b1 * b1) - b1;
   double stable = std::numeric_limits<double>::infinity();
   double stable_unscaled = stable;
   for (size_t e = 0; e < ne; ++e) {
@@ -88,17 +95,32 @@ ExplicitSolver::ExplicitSolver(Mesh mesh, std::vector<YeohMaterial> materials,
     for (int a = 0; a < 8; ++a) xe.row(a) = X_[mesh_.elements[e][a]].transpose();
     refs_[e] = CalcHex8Reference(xe);
     const YeohMaterial& m = materials_.at(mesh_.element_material[e]);
+    const double rubber_modulus = m.bulk_modulus_Pa + 4.0 / 3.0 * InitialShearModulus(m);
+    const double grad2 = refs_[e].grad.squaredNorm();
+    // Highest frequency with lumped mass, bounded term by term (the largest eigenvalue of a sum
+    // is at most the sum of the largest): rubber omega^2 <= 8 (K + 4/3 mu0) / rho sum_a |B0_a|^2
+    // (Flanagan & Belytschko 1981); each cord's stiffness phi E V0 (g g^T) (x) (F a0)(F a0)^T,
+    // g_a = B0_a . a0, has the single eigenvalue phi E V0 |g|^2 lambda^2 (plus its stress
+    // stiffness phi E E_f V0 |g|^2), so omega^2 <= 8 phi E |g|^2 (lambda^2 + E_f) / rho.
     double rho = m.density_kg_per_m3;
-    double modulus = m.bulk_modulus_Pa + 4.0 / 3.0 * InitialShearModulus(m);
+    double cord_stiffness = 0.0;  // sum phi E (1 + 3 E_max) |g|^2
     for (int k = fibre_start_[e]; k < fibre_start_[e + 1]; ++k) {
       const FibreLayer& f = fibres_sorted_[k];
-      rho += f.volume_fraction * rebars_.at(f.rebar).density_kg_per_m3;
-      modulus += f.volume_fraction * rebars_.at(f.rebar).youngs_modulus_Pa;
+      const RebarMaterial& r = rebars_.at(f.rebar);
+      rho += f.volume_fraction * r.density_kg_per_m3;
+      const double g2 = (refs_[e].grad * f.direction).squaredNorm();
+      cord_stiffness +=
+          f.volume_fraction * r.youngs_modulus_Pa * (1.0 + 3.0 * kCordStrainAllowance) * g2;
     }
     mass_report_.physical_mass_kg += rho * refs_[e].volume_m3;
-    const double grad2 = refs_[e].grad.squaredNorm();
-    // omega_e^2 <= 8 c_d^2 sum_a |B0_a|^2 (Flanagan & Belytschko 1981); dt_e = 2 / omega_e.
-    double dt_e = damping_factor / (std::sqrt(modulus / rho) * std::sqrt(2.0 * grad2));
+    // Bulk viscosity and viscous hourglass act on the rubber's volumetric and hourglass modes,
+    // which the cords do not stiffen: they use the rubber's dilatational wave speed.
+    const double c_rubber = std::sqrt(rubber_modulus / rho);
+    const double omega2 = 8.0 * (rubber_modulus * grad2 + cord_stiffness) / rho;
+    // The linear bulk viscosity is the rank-one damping b1 rho c L_e V0 B0 B0^T, whose damping
+    // rate (eigenvalue over the lumped mass) is mu = 8 b1 c L_e sum_a |B0_a|^2.
+    const double mu = 8.0 * b1 * c_rubber * refs_[e].length_m * grad2;
+    double dt_e = DampedStableStep(omega2, mu);
     stable_unscaled = std::min(stable_unscaled, dt_e);
     if (options_.mass_scaling_min_step_s > 0.0 && dt_e < options_.mass_scaling_min_step_s) {
       const double scale = std::pow(options_.mass_scaling_min_step_s / dt_e, 2);
@@ -109,7 +131,7 @@ ExplicitSolver::ExplicitSolver(Mesh mesh, std::vector<YeohMaterial> materials,
     }
     stable = std::min(stable, dt_e);
     elem_density_[e] = rho;
-    elem_wave_speed_[e] = std::sqrt(modulus / rho);
+    elem_wave_speed_[e] = std::sqrt(rubber_modulus / rho);
     const double v0 = refs_[e].volume_m3;
     hg_stiffness_[e] = options_.hourglass_stiffness * InitialShearModulus(m) * v0 * grad2 / 8.0;
     hg_viscous_[e] =

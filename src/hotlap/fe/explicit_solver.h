@@ -19,11 +19,21 @@
 ///   v(n+1/2) = v(n-1/2) + dt M^-1 f(x(n), v(n-1/2)),  x(n+1) = x(n) + dt v(n+1/2).
 /// Velocity-dependent forces (bulk viscosity, viscous hourglass, damping, friction) use v(n-1/2).
 /// The time step is fixed: SolverOptions::time_step_safety times the smallest element's stable step
-///   dt_e = (2 / omega_e) (sqrt(1 + b1^2) - b1),  omega_e^2 = 8 c_d^2 sum_a |B0_a|^2
-/// (the Flanagan-Belytschko bound for the one-point hexahedron with lumped mass; for a cube of
-/// edge L, 2 / omega_e = L / (sqrt(3) c_d) = 0.577 L / c_d, and the cube's true highest
-/// frequency, its volumetric mode, is sqrt(12 K / rho) / L, within 3.3% of the bound when
-/// K = 20 mu0), c_d^2 = (K + 4/3 mu0 + phi E_cord) / rho.
+///   dt_e = (2 / omega^2)(sqrt(omega^2 + mu^2 / 4) - mu / 2)   [= (2 / omega)(sqrt(1 + xi^2) -
+///   xi)], omega^2 = 8 [(K + 4/3 mu0) sum_a |B0_a|^2 + sum_cords phi E (1 + 3 E_max) sum_a (B0_a .
+///   a0)^2]
+///             / rho,
+///   mu = 8 b1 c_d L_e sum_a |B0_a|^2,  c_d^2 = (K + 4/3 mu0) / rho,
+/// rho including the cords' mass. The rubber term is the Flanagan-Belytschko bound for the
+/// one-point hexahedron with lumped mass (for a cube of edge L, omega = sqrt(12) c_d / L, and the
+/// cube's true highest frequency, its volumetric mode, is sqrt(12 K / rho) / L, within 3.3% of it
+/// when K = 20 mu0). A cord is stiff only along itself, so its term uses the gradient along the
+/// cord, B0_a . a0, not |B0_a|: for the cord mode it is exact (lambda^2 + E_f = 1 + 3 E_f, taken at
+/// the cord strain E_max = kCordStrainAllowance); in a thin belt element whose cords run along its
+/// long sides it is several times below the isotropic c^2 = (K + 4/3 mu0 + phi E) / rho bound used
+/// before. mu is the damping rate of the linear bulk viscosity (a rank-one damping along B0: its
+/// exact largest rate); for a cube, xi = sqrt(3) b1. The bulk viscosity uses the rubber's c_d: it
+/// damps volumetric motion, which the cords hardly resist.
 ///
 /// Energies: the strain energy (rubber and cords) and the stored hourglass and contact energies
 /// are state functions evaluated from the positions (and the stick springs' extensions); the
@@ -90,6 +100,11 @@ bool ElementKernelSupported(ElementKernel kernel);
 ElementKernel DefaultElementKernel();
 /// "portable" or "avx2".
 const char* ElementKernelName(ElementKernel kernel);
+
+/// The cord strain (Green-Lagrange) up to which the stable step accounts for a stretched cord's
+/// stiffness, 1 + 3 E_f: 3%, several times a tyre cord's working strain. The step's safety factor
+/// (0.9) leaves room for far more (a cord-dominated element stays stable up to E_f of about 11%).
+inline constexpr double kCordStrainAllowance = 0.03;
 
 /// Solver settings. The defaults are Abaqus/Explicit's where it has one.
 struct SolverOptions {
