@@ -3,6 +3,7 @@
 // per step, the footprint pressure map (CSV and SVG), deformed shapes as .vtu, a JSON summary.
 // The abs step can write checkpoints (--checkpoint-every-s) and continue from one (--restart).
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -346,10 +347,12 @@ int RunFeCommand(const FeArgs& a) {
   hooks.progress = [&](const std::string& step, double t, double t_end) {
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - step_wall0).count();
-    const double done = (t - step_t0) / std::max(1e-12, t_end - step_t0);
+    const double done = std::clamp((t - step_t0) / std::max(1e-12, t_end - step_t0), 0.0, 1.0);
     const double left = done > 0 ? wall * (1.0 - done) / done : 0.0;
-    std::fprintf(stderr, "fe %s: t = %.5f s (%.0f%%), about %.0f s left\n", step.c_str(), t,
-                 100.0 * done, left);
+    const std::string eta =
+        left < 120.0 ? fmt::format("{:.0f} s", left) : fmt::format("{:.0f} min", left / 60.0);
+    std::fprintf(stderr, "fe %s: t = %.5f s (%.0f%%), about %s left\n", step.c_str(), t,
+                 100.0 * done, eta.c_str());
   };
   hooks.frame = [&](const std::string& step, int frame) {
     fe::WriteVtu(out / fmt::format("{}_{:03d}.vtu", step, frame), solver);
@@ -370,6 +373,17 @@ int RunFeCommand(const FeArgs& a) {
                {"mass_scaling_added_kg", RoundSignificant(ms.added_mass_kg, 6)},
                {"mass_scaled_elements", ms.scaled_elements}};
 
+  // The stable step counts each cord's stiffness up to kCordStrainAllowance (explicit_solver.h).
+  const auto cord_strain = [](const char* step, double strain) {
+    if (strain > fe::kCordStrainAllowance) {
+      std::fprintf(stderr,
+                   "fe %s: warning: a cord reached a strain of %.1f%%, above the %.0f%% the stable "
+                   "step allows for (the safety factor covers some more; a smaller "
+                   "solver.time_step_safety covers more still)\n",
+                   step, 100.0 * strain, 100.0 * fe::kCordStrainAllowance);
+    }
+    return RoundSignificant(strain, 4);
+  };
   if (!restarted) {
     begin();
     const fe::InflateResult inf = run.Inflate(hooks);
@@ -381,6 +395,7 @@ int RunFeCommand(const FeArgs& a) {
         {"section_width_before_mm", RoundSignificant(1e3 * inf.section_width_before_m, 6)},
         {"section_width_after_mm", RoundSignificant(1e3 * inf.section_width_after_m, 6)},
         {"roundness_error_mm", RoundSignificant(1e3 * inf.max_roundness_error_m, 3)},
+        {"max_cord_strain", cord_strain("inflate", inf.max_cord_strain)},
         {"energies", EnergiesJson(solver.energies())}};
     std::printf("inflate: %.0f kPa, outer radius %.2f -> %.2f mm, section width %.1f -> %.1f mm\n",
                 1e-3 * inf.pressure_Pa, 1e3 * inf.outer_radius_before_m,
@@ -412,6 +427,7 @@ int RunFeCommand(const FeArgs& a) {
                         {"contact_width_mm", RoundSignificant(1e3 * fp.contact_width_m, 6)},
                         {"peak_pressure_kPa", RoundSignificant(1e-3 * fp.peak_pressure_Pa, 6)},
                         {"mean_pressure_kPa", RoundSignificant(1e-3 * fp.mean_pressure_Pa, 6)},
+                        {"max_cord_strain", cord_strain("footprint", fp.max_cord_strain)},
                         {"energies", EnergiesJson(solver.energies())}};
       std::printf(
           "footprint: %.0f N, loaded radius %.2f mm, deflection %.2f mm, %.0f kN/m, "
@@ -432,6 +448,7 @@ int RunFeCommand(const FeArgs& a) {
                    {"road_fz_N", RoundSignificant(rr.road_fz_N, 6)},
                    {"paper_spin_rad_per_s", 28.268},
                    {"paper_effective_radius_mm", 394.2},
+                   {"max_cord_strain", cord_strain("roll", rr.max_cord_strain)},
                    {"energies", EnergiesJson(solver.energies())}};
       std::printf(
           "roll: %.3f m/s, spin %.3f rad/s, effective radius %.2f mm (paper: 28.268 rad/s, "
@@ -500,6 +517,7 @@ int RunFeCommand(const FeArgs& a) {
                 {"max_lambda_after_first_cycle", JsonOrNull(cycles.max_lambda_after_first_cycle)},
                 {"fraction_time_lambda_below_0_135",
                  JsonOrNull(cycles.fraction_time_lambda_below_0_135, 4)},
+                {"max_cord_strain", cord_strain("abs", br.max_cord_strain)},
                 {"energies", EnergiesJson(solver.energies())}};
     std::printf("abs: %.3f s, speed %.3f -> %.3f m/s over %.3f m, max slip %.3f, %d cycles\n",
                 config.abs_duration_s, br.initial_speed_mps, br.final_speed_mps, br.distance_m,
@@ -532,7 +550,8 @@ CommandRunner RegisterFeCommand(CLI::App& app) {
       ->required()
       ->check(CLI::IsMember({"inflate", "footprint", "roll", "abs"}));
   sub->add_option("--config", args->config, "FE tyre configuration (data/fe/*.yaml)")->required();
-  sub->add_option("--out", args->out, "Output folder: histories, footprint map, .vtu shapes")
+  sub->add_option("--out", args->out,
+                  "Output folder: histories, footprint map, .vtu shapes, abs_report.html (abs)")
       ->required();
   sub->add_option("--json", args->json, "Write the summary as JSON (docs/fe-tyre.md)");
   sub->add_option("--duration-s", args->duration_s,

@@ -204,11 +204,12 @@ TEST_F(FeCheckpointFile, AnotherMeshConfigurationOrVersionIsRefused) {
   other = key_;
   other.config_hash ^= 1;
   EXPECT_NE(Refusal(p, other).find("another configuration"), std::string::npos);
-  // A file of version 1 (before the stick anchors) and of a future version (the checksum made
-  // right again): refused by version.
-  ASSERT_EQ(kCheckpointVersion, 2u);
+  // Files of versions 1 (before the stick anchors) and 2 (before the cord strain and the
+  // directional cord step) and of a future version (the checksum made right again): refused by
+  // version.
+  ASSERT_EQ(kCheckpointVersion, 3u);
   const std::string good = ReadBytes(p);
-  for (const char version : {1, 3}) {
+  for (const char version : {1, 2, 4}) {
     std::string s = good;
     s[8] = version;
     s.resize(s.size() - 8);
@@ -216,7 +217,7 @@ TEST_F(FeCheckpointFile, AnotherMeshConfigurationOrVersionIsRefused) {
     s.append(reinterpret_cast<const char*>(&h), 8);
     WriteBytes(p, s);
     EXPECT_NE(Refusal(p, key_).find("has format version " + std::to_string(version) +
-                                    "; this build reads version 2"),
+                                    "; this build reads version 3"),
               std::string::npos)
         << Refusal(p, key_);
   }

@@ -21,18 +21,44 @@ namespace {
 using testing::kC10;
 using testing::kRho;
 
-// For a cube of edge L: the bound omega_max^2 = 8 c^2 sum|B|^2 = 12 c^2 / L^2, and the linear bulk
-// viscosity's damping rate mu = 8 b1 c L sum|B|^2 = 12 b1 c / L, i.e. xi = mu / (2 omega) =
-// sqrt(3) b1; the step is (2 / omega)(sqrt(1 + xi^2) - xi).
+// The hand-written step of a box element of edges (lx, ly, lz): B0_a = (+-1/(4 lx), +-1/(4 ly),
+// +-1/(4 lz)), so sum|B0|^2 = (1/lx^2 + 1/ly^2 + 1/lz^2) / 2; along a0 = (c, s, 0),
+// sum (B0_a . a0)^2 = (c^2/lx^2 + s^2/ly^2) / 2 (the cross terms cancel over the eight sign
+// patterns); the four hourglass vectors are the +-1 patterns, orthogonal with |gamma|^2 = 8, so
+// lambda_max(Gamma Gamma^T) = 8 and the hourglass stiffness k = c_hg mu0 V sum|B0|^2 / 8 adds
+// 8 k 8 / (rho V) to omega^2. Tread rubber, a cord of phi E = `phi_e` and density `cord_rho` at
+// fraction `phi`, the solver's default options.
+double HandBoxStep(double lx, double ly, double lz, double angle, double phi, double phi_e,
+                   double cord_rho) {
+  const double mu0 = 2.0 * kC10, rubber = 40.0 * kC10 + 4.0 / 3.0 * mu0;
+  const double rho = kRho + phi * cord_rho, v = lx * ly * lz;
+  const double grad2 = 0.5 * (1.0 / (lx * lx) + 1.0 / (ly * ly) + 1.0 / (lz * lz));
+  const double c = std::cos(angle), s = std::sin(angle);
+  const double g2 = 0.5 * (c * c / (lx * lx) + s * s / (ly * ly));
+  const double khg = 0.05 * mu0 * v * grad2 / 8.0;
+  const double omega2 =
+      8.0 * (rubber * grad2 + phi_e * (1.0 + 3.0 * kCordStrainAllowance) * g2) / rho +
+      64.0 * khg / (rho * v);
+  const double le = std::sqrt(1.5 / grad2);
+  const double mu = 8.0 * 0.06 * std::sqrt(rubber / rho) * le * grad2;
+  return 2.0 / omega2 * (std::sqrt(omega2 + mu * mu / 4.0) - mu / 2.0);
+}
+
+// For a cube of edge L: omega^2 = 8 c^2 sum|B|^2 = 12 c^2 / L^2 (plus 0.23% of hourglass
+// stiffness), and the linear bulk viscosity's damping rate mu = 8 b1 c L sum|B|^2 = 12 b1 c / L,
+// i.e. xi = mu / (2 omega) = sqrt(3) b1; the step is about (2 / omega)(sqrt(1 + xi^2) - xi).
 TEST(FeStableStep, EstimateMatchesTheDilatationalWaveSpeed) {
   const double l = 0.004;
-  const double c = std::sqrt((40.0 * kC10 + 4.0 / 3.0 * 2.0 * kC10) / kRho);  // K + 4/3 mu0
   SolverOptions opt;
   ExplicitSolver s(MakeBlockMesh(l, l, l, 1, 1, 1), {testing::Tread()}, {}, opt);
-  const double xi = std::sqrt(3.0) * 0.06;
-  const double expected = l / (c * std::sqrt(3.0)) * (std::sqrt(1.0 + xi * xi) - xi);
+  const double expected = HandBoxStep(l, l, l, 0.0, 0.0, 0.0, 0.0);
   EXPECT_NEAR(s.StableStepEstimate(), expected, 1e-12 * expected);
   EXPECT_NEAR(s.time_step(), 0.9 * expected, 1e-12 * expected);
+  // Without the hourglass term, the textbook form.
+  const double c = std::sqrt((40.0 * kC10 + 4.0 / 3.0 * 2.0 * kC10) / kRho);  // K + 4/3 mu0
+  const double xi = std::sqrt(3.0) * 0.06;
+  const double textbook = l / (c * std::sqrt(3.0)) * (std::sqrt(1.0 + xi * xi) - xi);
+  EXPECT_NEAR(s.StableStepEstimate(), textbook, 2e-3 * textbook);
 }
 
 // A flat element (8 x 8 x 2 mm) with one cord layer in its plane, 23.3 deg from x (the paper's
@@ -58,30 +84,58 @@ Probe CordElement(double stiffening, FibreResponse response) {
   return p;
 }
 
-// By hand for a box of edges (lx, ly, lz): B0_a = (+-1/(4 lx), +-1/(4 ly), +-1/(4 lz)), so
-// sum|B0|^2 = (1/lx^2 + 1/ly^2 + 1/lz^2) / 2 and, along a0 = (c, s, 0), sum (B0_a . a0)^2 =
-// (c^2/lx^2 + s^2/ly^2) / 2 (the cross terms cancel over the eight sign patterns). The cord
-// makes the element stiff only along its plane, so the step is several times the one of the
-// isotropic bound c^2 = (K + 4/3 mu0 + phi E) / rho that the solver used before.
+// The cord makes the element stiff only along its plane, so the step is several times the one
+// of the isotropic bound c^2 = (K + 4/3 mu0 + phi E) / rho that the solver used before.
 TEST(FeStableStep, CordTermUsesTheGradientAlongTheCord) {
   const Probe p = CordElement(100.0, FibreResponse::kTensionOnly);
   ExplicitSolver s(p.mesh, {testing::Tread()}, p.cords, SolverOptions{});
-  const double rubber = (40.0 + 8.0 / 3.0) * kC10;
   const double phi_e = kPhi * p.cords[0].youngs_modulus_Pa;
-  const double rho = kRho + kPhi * kCordRho;
-  const double grad2 = 0.5 * (1.0 / (kLx * kLx) + 1.0 / (kLy * kLy) + 1.0 / (kLz * kLz));
-  const double c = std::cos(kAngle), sn = std::sin(kAngle);
-  const double g2 = 0.5 * (c * c / (kLx * kLx) + sn * sn / (kLy * kLy));
-  const double omega2 =
-      8.0 * (rubber * grad2 + phi_e * (1.0 + 3.0 * kCordStrainAllowance) * g2) / rho;
-  const double le = std::sqrt(1.5 / grad2);
-  const double mu = 8.0 * 0.06 * std::sqrt(rubber / rho) * le * grad2;
-  const double expected = 2.0 / omega2 * (std::sqrt(omega2 + mu * mu / 4.0) - mu / 2.0);
+  const double expected = HandBoxStep(kLx, kLy, kLz, kAngle, kPhi, phi_e, kCordRho);
   EXPECT_NEAR(s.StableStepEstimate(), expected, 1e-12 * expected);
+  const double rubber = (40.0 + 8.0 / 3.0) * kC10, rho = kRho + kPhi * kCordRho;
+  const double grad2 = 0.5 * (1.0 / (kLx * kLx) + 1.0 / (kLy * kLy) + 1.0 / (kLz * kLz));
   const double isotropic = 2.0 / std::sqrt(8.0 * (rubber + phi_e) * grad2 / rho);
   std::printf("cord element: step %.4g us, isotropic bound %.4g us (x%.2f)\n", expected * 1e6,
               isotropic * 1e6, expected / isotropic);
   EXPECT_GT(s.StableStepEstimate(), 3.0 * isotropic);
+}
+
+// Mass scaling raises the density of an element whose step is below the minimum so that its
+// step is the minimum: rho -> s rho scales omega and the damping rate by 1/sqrt(s), so
+// s = (minimum / step)^2 exactly, and the added mass (s - 1) rho V is reported.
+TEST(FeStableStep, MassScalingReachesTheMinimumStepAndReportsTheMass) {
+  const Probe p = CordElement(100.0, FibreResponse::kTensionOnly);
+  const double unscaled =
+      ExplicitSolver(p.mesh, {testing::Tread()}, p.cords, {}).StableStepEstimate();
+  SolverOptions opt;
+  opt.mass_scaling_min_step_s = 2.0 * unscaled;
+  ExplicitSolver s(p.mesh, {testing::Tread()}, p.cords, opt);
+  EXPECT_NEAR(s.StableStepEstimate(), 2.0 * unscaled, 1e-12 * unscaled);
+  const double mass = (kRho + kPhi * kCordRho) * kLx * kLy * kLz;
+  EXPECT_NEAR(s.mass_scaling().added_mass_kg, 3.0 * mass, 1e-12 * mass);
+  EXPECT_EQ(s.mass_scaling().scaled_elements, 1);
+  EXPECT_NEAR(s.mass_scaling().stable_step_unscaled_s, unscaled, 1e-15);
+  // The nodes carry the scaled mass.
+  double total = 0.0;
+  for (double m : s.node_masses()) total += m;
+  EXPECT_NEAR(total, 4.0 * mass, 1e-12 * mass);
+}
+
+// The largest cord strain: the element stretched 2% along x, its cord 23.3 deg off x:
+// lambda^2 = 1.02^2 c^2 + s^2, E_f = (lambda^2 - 1) / 2.
+TEST(FeStableStep, MaxCordStrainIsTheGreenLagrangeStrainAlongTheCord) {
+  const Probe p = CordElement(100.0, FibreResponse::kTensionOnly);
+  ExplicitSolver s(p.mesh, {testing::Tread()}, p.cords, SolverOptions{});
+  EXPECT_EQ(s.MaxCordStrain(), 0.0);
+  std::vector<Eigen::Vector3d> x = p.mesh.nodes;
+  for (auto& xi : x) xi.x() *= 1.02;
+  s.SetPositions(x);
+  const double c = std::cos(kAngle), sn = std::sin(kAngle);
+  const double expected = 0.5 * (1.02 * 1.02 * c * c + sn * sn - 1.0);
+  EXPECT_NEAR(s.MaxCordStrain(), expected, 1e-12);
+  for (auto& xi : x) xi.x() *= 0.9;  // shortened: no stretched cord
+  s.SetPositions(x);
+  EXPECT_EQ(s.MaxCordStrain(), 0.0);
 }
 
 // Total energy of a free probe with random small velocities, run at `factor` times its estimated
@@ -139,6 +193,16 @@ TEST(FeStableStep, CordElementAboveItsStableStepBlowsUpAndBelowDoesNot) {
   const Probe p = CordElement(1000.0, FibreResponse::kLinear);
   EXPECT_LT(EnergyGrowth(p, Undamped(), 0.95), 2.0);
   EXPECT_GT(EnergyGrowth(p, Undamped(), 1.15), 1e6);
+}
+
+// The kernel's bulk viscosity uses the rubber's wave speed, as the step does: on the cord
+// element (phi E = 100 (K + 4/3 mu0)) with b1 = 0.5, 0.95 times the estimate stays bounded.
+// Were the kernel to use the cord-stiffened c_d (10 times the rubber's here), its damping rate
+// would be 10 times the estimate's and mu dt = 9 > 2: it would diverge.
+TEST(FeStableStep, CordElementWithHeavyBulkViscosityIsStableBelowItsStep) {
+  SolverOptions opt = Undamped();
+  opt.bulk_viscosity_linear = 0.5;
+  EXPECT_LT(EnergyGrowth(CordElement(100.0, FibreResponse::kLinear), opt, 0.95), 2.0);
 }
 
 // Heavy linear bulk viscosity (b1 = 1, xi = sqrt(3)) shortens the stable step of the cube to

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "hotlap/fe/explicit_solver.h"
 #include "report/chromium.h"
 #include "test_util.h"
 
@@ -83,6 +84,11 @@ TEST_F(FeCommandTest, AbsStepRunsEveryStepAndWritesTheOutputs) {
   for (const char* k : {"mesh", "inflate", "footprint", "roll", "abs", "performance"}) {
     EXPECT_TRUE(j.contains(k)) << k;
   }
+  // Every step reports its largest cord strain, within what the stable step allows for.
+  for (const char* k : {"inflate", "footprint", "roll", "abs"}) {
+    EXPECT_GT(j[k]["max_cord_strain"].get<double>(), 0.0) << k;
+    EXPECT_LT(j[k]["max_cord_strain"].get<double>(), hotlap::fe::kCordStrainAllowance) << k;
+  }
   EXPECT_GT(j["mesh"]["mass_scaling_added_kg"].get<double>(), 0.0);
   // Coarse and short: the reaction is near the load (FeTyre checks it tightly).
   EXPECT_NEAR(j["footprint"]["road_force_z_N"].get<double>(), 4314.0, 0.05 * 4314.0);
@@ -148,6 +154,11 @@ TEST_F(FeCommandTest, RunStoppedAtACheckpointAndRestartedEqualsAStraightRun) {
   const nlohmann::json j = nlohmann::json::parse(ReadTextFile(dir_ / "c.json"));
   for (const char* k : {"mesh", "inflate", "footprint", "roll", "abs", "performance"}) {
     EXPECT_TRUE(j.contains(k)) << k;
+  }
+  // Every step reports its largest cord strain, within what the stable step allows for.
+  for (const char* k : {"inflate", "footprint", "roll", "abs"}) {
+    EXPECT_GT(j[k]["max_cord_strain"].get<double>(), 0.0) << k;
+    EXPECT_LT(j[k]["max_cord_strain"].get<double>(), hotlap::fe::kCordStrainAllowance) << k;
   }
   EXPECT_GT(j["abs"]["max_brake_torque_Nm"].get<double>(), 0.0);
   EXPECT_EQ(j["performance"]["threads"].get<int>(), 2);

@@ -110,6 +110,11 @@ TEST(FeTyre, InflateAndFootprintOnACoarseMesh) {
   EXPECT_LT(growth, 5e-3);
   EXPECT_GT(inf.section_width_after_m, inf.section_width_before_m);       // the flanks bulge
   EXPECT_LT(inf.max_roundness_error_m, 1e-3 * inf.outer_radius_after_m);  // stays round
+  // The stable step counts the cords' stiffness up to kCordStrainAllowance (3%): inflated, the
+  // steel belt and the textile ply stretch far less.
+  std::printf("largest cord strain: inflated %.4f%%\n", 100.0 * inf.max_cord_strain);
+  EXPECT_GT(inf.max_cord_strain, 0.0);
+  EXPECT_LT(inf.max_cord_strain, kCordStrainAllowance);
   const Energies& e1 = run.solver().energies();
   EXPECT_LT(std::abs(e1.BalanceError()), 1e-4 * e1.external_work);
   EXPECT_LT(e1.Hourglass(), 0.10 * e1.internal);
@@ -130,6 +135,8 @@ TEST(FeTyre, InflateAndFootprintOnACoarseMesh) {
   const Energies& e2 = run.solver().energies();
   EXPECT_LT(std::abs(e2.BalanceError()), 1e-4 * e2.external_work);
   EXPECT_LT(e2.Hourglass(), 0.10 * e2.internal);
+  std::printf("largest cord strain: footprint %.4f%%\n", 100.0 * fp.max_cord_strain);
+  EXPECT_LT(fp.max_cord_strain, kCordStrainAllowance);
 }
 
 }  // namespace

@@ -37,7 +37,9 @@ namespace hotlap::fe {
 
 /// The format version written and accepted. 2: the road's stick springs (tangential penalty
 /// factor, stick model, each contact node's anchor) and the friction dissipated by their slips.
-inline constexpr std::uint32_t kCheckpointVersion = 2;
+/// 3: the braking step's largest cord strain so far (and the stable step of the directional cord
+/// bound, so a version-2 file's time step would not match anyway).
+inline constexpr std::uint32_t kCheckpointVersion = 3;
 
 /// FNV-1a, 64 bit, of `data`, continuing from `hash` (the offset basis by default).
 std::uint64_t Fnv1a64(std::string_view data, std::uint64_t hash = 0xcbf29ce484222325ULL);

@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
@@ -95,13 +96,17 @@ ExplicitSolver::ExplicitSolver(Mesh mesh, std::vector<YeohMaterial> materials,
     for (int a = 0; a < 8; ++a) xe.row(a) = X_[mesh_.elements[e][a]].transpose();
     refs_[e] = CalcHex8Reference(xe);
     const YeohMaterial& m = materials_.at(mesh_.element_material[e]);
-    const double rubber_modulus = m.bulk_modulus_Pa + 4.0 / 3.0 * InitialShearModulus(m);
+    const double mu0 = InitialShearModulus(m);
+    const double rubber_modulus = m.bulk_modulus_Pa + 4.0 / 3.0 * mu0;
     const double grad2 = refs_[e].grad.squaredNorm();
-    // Highest frequency with lumped mass, bounded term by term (the largest eigenvalue of a sum
-    // is at most the sum of the largest): rubber omega^2 <= 8 (K + 4/3 mu0) / rho sum_a |B0_a|^2
-    // (Flanagan & Belytschko 1981); each cord's stiffness phi E V0 (g g^T) (x) (F a0)(F a0)^T,
-    // g_a = B0_a . a0, has the single eigenvalue phi E V0 |g|^2 lambda^2 (plus its stress
-    // stiffness phi E E_f V0 |g|^2), so omega^2 <= 8 phi E |g|^2 (lambda^2 + E_f) / rho.
+    const double v0 = refs_[e].volume_m3;
+    // Highest frequency with lumped mass (rho V0 / 8 per node), bounded term by term (the
+    // largest eigenvalue of a sum is at most the sum of the largest): rubber omega^2 <=
+    // 8 (K + 4/3 mu0) / rho sum_a |B0_a|^2 (Flanagan & Belytschko 1981); each cord's tangent
+    // V0 phi E (g g^T) (x) (F a0 (F a0)^T + E_f I), g_a = B0_a . a0, has the largest eigenvalue
+    // V0 phi E |g|^2 (lambda^2 + E_f) = V0 phi E |g|^2 (1 + 3 E_f); the hourglass stiffness
+    // k Gamma^T Gamma (x) I, Gamma the 4 x 8 matrix of the vectors gamma_alpha, has k
+    // lambda_max(Gamma Gamma^T).
     double rho = m.density_kg_per_m3;
     double cord_stiffness = 0.0;  // sum phi E (1 + 3 E_max) |g|^2
     for (int k = fibre_start_[e]; k < fibre_start_[e + 1]; ++k) {
@@ -112,30 +117,40 @@ ExplicitSolver::ExplicitSolver(Mesh mesh, std::vector<YeohMaterial> materials,
       cord_stiffness +=
           f.volume_fraction * r.youngs_modulus_Pa * (1.0 + 3.0 * kCordStrainAllowance) * g2;
     }
-    mass_report_.physical_mass_kg += rho * refs_[e].volume_m3;
-    // Bulk viscosity and viscous hourglass act on the rubber's volumetric and hourglass modes,
-    // which the cords do not stiffen: they use the rubber's dilatational wave speed.
-    const double c_rubber = std::sqrt(rubber_modulus / rho);
-    const double omega2 = 8.0 * (rubber_modulus * grad2 + cord_stiffness) / rho;
-    // The linear bulk viscosity is the rank-one damping b1 rho c L_e V0 B0 B0^T, whose damping
-    // rate (eigenvalue over the lumped mass) is mu = 8 b1 c L_e sum_a |B0_a|^2.
-    const double mu = 8.0 * b1 * c_rubber * refs_[e].length_m * grad2;
+    mass_report_.physical_mass_kg += rho * v0;
+    const Eigen::Matrix4d gg = refs_[e].hourglass * refs_[e].hourglass.transpose();
+    const double hg_eig = Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d>(gg, Eigen::EigenvaluesOnly)
+                              .eigenvalues()
+                              .maxCoeff();
+    const double khg = options_.hourglass_stiffness * mu0 * v0 * grad2 / 8.0;
+    // Bulk viscosity and viscous hourglass act on the rubber's volumetric and hourglass modes:
+    // they use the rubber's dilatational wave speed (with the cords' mass).
+    const auto wave_speed = [&](double density) { return std::sqrt(rubber_modulus / density); };
+    const auto viscous_hg = [&](double density) {
+      return options_.hourglass_viscous * density * wave_speed(density) * std::pow(v0, 2.0 / 3.0) /
+             4.0;
+    };
+    const double omega2 = 8.0 * (rubber_modulus * grad2 + cord_stiffness + khg * hg_eig / v0) / rho;
+    // Damping rates (largest eigenvalue over the lumped mass): the linear bulk viscosity is the
+    // rank-one b1 rho c L_e V0 B0 B0^T at the reference state, rate 8 b1 c L_e sum_a |B0_a|^2;
+    // the viscous hourglass c_hg Gamma^T Gamma (x) I, rate 8 c_hg lambda_max / (rho V0).
+    const double mu = 8.0 * b1 * wave_speed(rho) * refs_[e].length_m * grad2 +
+                      8.0 * viscous_hg(rho) * hg_eig / (rho * v0);
+    // Scaling rho by s scales omega and mu by 1/sqrt(s), so the step by sqrt(s).
     double dt_e = DampedStableStep(omega2, mu);
     stable_unscaled = std::min(stable_unscaled, dt_e);
     if (options_.mass_scaling_min_step_s > 0.0 && dt_e < options_.mass_scaling_min_step_s) {
       const double scale = std::pow(options_.mass_scaling_min_step_s / dt_e, 2);
-      mass_report_.added_mass_kg += (scale - 1.0) * rho * refs_[e].volume_m3;
+      mass_report_.added_mass_kg += (scale - 1.0) * rho * v0;
       ++mass_report_.scaled_elements;
       rho *= scale;
       dt_e = options_.mass_scaling_min_step_s;
     }
     stable = std::min(stable, dt_e);
     elem_density_[e] = rho;
-    elem_wave_speed_[e] = std::sqrt(rubber_modulus / rho);
-    const double v0 = refs_[e].volume_m3;
-    hg_stiffness_[e] = options_.hourglass_stiffness * InitialShearModulus(m) * v0 * grad2 / 8.0;
-    hg_viscous_[e] =
-        options_.hourglass_viscous * rho * elem_wave_speed_[e] * std::pow(v0, 2.0 / 3.0) / 4.0;
+    elem_wave_speed_[e] = wave_speed(rho);
+    hg_stiffness_[e] = khg;
+    hg_viscous_[e] = viscous_hg(rho);
     for (int a = 0; a < 8; ++a) mass_[mesh_.elements[e][a]] += rho * v0 / 8.0;
   }
   // Element colours, greedy: each element takes the lowest colour that no element sharing one of
@@ -182,6 +197,19 @@ ExplicitSolver::ExplicitSolver(Mesh mesh, std::vector<YeohMaterial> materials,
   stable_step_ = stable;
   dt_ = options_.time_step_s > 0.0 ? options_.time_step_s : options_.time_step_safety * stable;
   if (!(dt_ > 0.0) || !std::isfinite(dt_)) throw NumericalError("fe: no valid time step");
+}
+
+double ExplicitSolver::MaxCordStrain() const {
+  double worst = 0.0;
+  for (size_t e = 0; e < mesh_.elements.size(); ++e) {
+    if (fibre_start_[e] == fibre_start_[e + 1]) continue;
+    Eigen::Matrix3d F = Eigen::Matrix3d::Zero();
+    for (int a = 0; a < 8; ++a) F.noalias() += x_[mesh_.elements[e][a]] * refs_[e].grad.row(a);
+    for (int k = fibre_start_[e]; k < fibre_start_[e + 1]; ++k) {
+      worst = std::max(worst, 0.5 * ((F * fibres_sorted_[k].direction).squaredNorm() - 1.0));
+    }
+  }
+  return worst;
 }
 
 void ExplicitSolver::SetRoad(const RoadContact& road) {

@@ -18,22 +18,30 @@
 /// Central difference (velocities at half steps, positions at whole steps):
 ///   v(n+1/2) = v(n-1/2) + dt M^-1 f(x(n), v(n-1/2)),  x(n+1) = x(n) + dt v(n+1/2).
 /// Velocity-dependent forces (bulk viscosity, viscous hourglass, damping, friction) use v(n-1/2).
-/// The time step is fixed: SolverOptions::time_step_safety times the smallest element's stable step
-///   dt_e = (2 / omega^2)(sqrt(omega^2 + mu^2 / 4) - mu / 2)   [= (2 / omega)(sqrt(1 + xi^2) -
-///   xi)], omega^2 = 8 [(K + 4/3 mu0) sum_a |B0_a|^2 + sum_cords phi E (1 + 3 E_max) sum_a (B0_a .
-///   a0)^2]
-///             / rho,
-///   mu = 8 b1 c_d L_e sum_a |B0_a|^2,  c_d^2 = (K + 4/3 mu0) / rho,
-/// rho including the cords' mass. The rubber term is the Flanagan-Belytschko bound for the
-/// one-point hexahedron with lumped mass (for a cube of edge L, omega = sqrt(12) c_d / L, and the
-/// cube's true highest frequency, its volumetric mode, is sqrt(12 K / rho) / L, within 3.3% of it
-/// when K = 20 mu0). A cord is stiff only along itself, so its term uses the gradient along the
-/// cord, B0_a . a0, not |B0_a|: for the cord mode it is exact (lambda^2 + E_f = 1 + 3 E_f, taken at
-/// the cord strain E_max = kCordStrainAllowance); in a thin belt element whose cords run along its
-/// long sides it is several times below the isotropic c^2 = (K + 4/3 mu0 + phi E) / rho bound used
-/// before. mu is the damping rate of the linear bulk viscosity (a rank-one damping along B0: its
-/// exact largest rate); for a cube, xi = sqrt(3) b1. The bulk viscosity uses the rubber's c_d: it
-/// damps volumetric motion, which the cords hardly resist.
+/// The time step is fixed: SolverOptions::time_step_safety times the smallest element's stable
+/// step, the central-difference limit (omega dt)^2 / 4 + mu dt / 2 <= 1 of a mode of frequency
+/// omega damped at the rate mu = 2 xi omega with the damping force lagged half a step:
+///   dt_e = (2 / omega^2) (sqrt(omega^2 + mu^2 / 4) - mu / 2) = (2 / omega) (sqrt(1 + xi^2) - xi),
+/// taken with the element's largest frequency and largest damping rate (the limit decreases in
+/// both, so this is safe whatever the modes). With lumped mass rho V0 / 8 per node (rho with the
+/// cords' mass):
+///   omega^2 = 8 / rho [(K + 4/3 mu0) sum_a |B0_a|^2
+///                      + sum_cords phi E (1 + 3 E_max) sum_a (B0_a . a0)^2 + k_hg lambda_hg / V0],
+///   mu = 8 b1 c_d L_e sum_a |B0_a|^2 + 8 c_hg lambda_hg / (rho V0),  c_d^2 = (K + 4/3 mu0) / rho,
+/// lambda_hg the largest eigenvalue of Gamma Gamma^T (Gamma: the four hourglass vectors), k_hg and
+/// c_hg the hourglass stiffness and viscosity. The rubber term is the Flanagan-Belytschko bound
+/// for the one-point hexahedron (for a cube of edge L, omega = sqrt(12) c_d / L; the cube's true
+/// highest frequency, its volumetric mode, is within 3.3% of it when K = 20 mu0). A cord is stiff
+/// only along itself: its term uses the gradient along the cord, B0_a . a0, and is exact for its
+/// mode at the cord strain E_max = kCordStrainAllowance (MaxCordStrain() reports the strain
+/// reached). In a thin belt element whose cords run along its long sides it is several times
+/// below the isotropic c^2 = (K + 4/3 mu0 + phi E) / rho used before. The bulk viscosity's rate
+/// is exact at the reference state (it is rank one along B0); not counted: its quadratic term
+/// (compression only), the growth of its rate as an element is squeezed thin, and mass damping
+/// (set per step, a few hundred per second against some 1e4 per second), all left to the safety
+/// factor. The bulk viscosity and the viscous hourglass use the rubber's c_d: the cords do not
+/// stiffen the hourglass modes, nor the volumetric mode of a thin element (which squeezes its
+/// thickness, across the cords).
 ///
 /// Energies: the strain energy (rubber and cords) and the stored hourglass and contact energies
 /// are state functions evaluated from the positions (and the stick springs' extensions); the
@@ -291,6 +299,10 @@ class ExplicitSolver {
   double element_updates() const { return double(steps_) * mesh_.elements.size(); }
   /// The stable step of the current (reference) mesh before the safety factor, s.
   double StableStepEstimate() const { return stable_step_; }
+  /// The largest Green-Lagrange strain of any cord now (0 without cords or if none is
+  /// stretched). The stable step counts a cord's stiffness at kCordStrainAllowance; the safety
+  /// factor covers a cord-dominated element to about 11%.
+  double MaxCordStrain() const;
 
  private:
   // Per-node sums of a step: work terms back (0-4) and ahead (5-9), kinetic, contact energy

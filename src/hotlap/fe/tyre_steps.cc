@@ -73,6 +73,7 @@ void TyreRun::RunUntil(const std::string& step, double t_end, const StepHooks& h
     cursor_ = StepCursor{};
     cursor_.t0 = cursor_.next_history = solver_.time();
     history.push_back(Row(torque ? *torque : 0.0));
+    cursor_.max_cord_strain = solver_.MaxCordStrain();
   }
   const double t0 = cursor_.t0;
   const int frames = std::max(1, hooks.frames);
@@ -89,6 +90,7 @@ void TyreRun::RunUntil(const std::string& step, double t_end, const StepHooks& h
     if (solver_.time() >= cursor_.next_history + hooks.history_interval_s - 0.5 * dt) {
       cursor_.next_history = solver_.time();
       history.push_back(Row(torque ? *torque : 0.0));
+      cursor_.max_cord_strain = std::max(cursor_.max_cord_strain, solver_.MaxCordStrain());
     }
     const double frame_time = t0 + (t_end - t0) * (cursor_.next_frame + 1) / frames;
     if (cursor_.next_frame < frames - 1 && solver_.time() >= frame_time - 0.5 * dt) {
@@ -127,6 +129,7 @@ InflateResult TyreRun::Inflate(const StepHooks& hooks) {
                              std::min(1.0, (solver_.time() - t0) / ramp));
       },
       r.history, nullptr);
+  r.max_cord_strain = cursor_.max_cord_strain;
   r.outer_radius_after_m = OuterRadiusMean();
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
   for (int n : tyre_.crown_centre_nodes) {
@@ -167,6 +170,7 @@ FootprintResult TyreRun::Footprint(const StepHooks& hooks) {
             -config_.vertical_load_N * std::min(1.0, (solver_.time() - t0) / ramp);
       },
       r.history, nullptr);
+  r.max_cord_strain = cursor_.max_cord_strain;
   r.road_force_z_N = solver_.RoadForce().z();
   r.loaded_radius_m = solver_.rim_state().centre.z() - road_z_;
   loaded_radius_ = r.loaded_radius_m;
@@ -221,6 +225,7 @@ RollResult TyreRun::Roll(const StepHooks& hooks) {
   RunUntil(
       "roll", t0 + config_.roll_duration_s, hooks,
       [&] { solver_.rim_loads().force_z_N = -config_.vertical_load_N; }, r.history, nullptr);
+  r.max_cord_strain = cursor_.max_cord_strain;
   // Means over the second half.
   const double t_half = t0 + 0.5 * config_.roll_duration_s;
   int n = 0;
@@ -280,6 +285,7 @@ BrakeResult TyreRun::RunBrake(double duration_s, const BrakeTorqueFn& torque,
       brake_.history, &brake_.applied, resume);
   BrakeResult r;
   r.history = brake_.history;
+  r.max_cord_strain = cursor_.max_cord_strain;
   r.initial_speed_mps = r.history.front().rim_vx_mps;
   for (const HistoryRow& h : r.history) {
     r.max_slip = std::max(r.max_slip, h.slip);
@@ -322,8 +328,9 @@ HistoryRow GetRow(BinaryReader& in) {
 void TyreRun::SaveState(BinaryWriter& out) const {
   if (!brake_.active) throw InputError("fe: a checkpoint needs a braking step");
   out.PutTag("TYRE");
-  for (double d : {road_z_, inflated_radius_, loaded_radius_, rolling_radius_, cursor_.t0,
-                   cursor_.next_history, brake_.t0, brake_.x0, brake_.applied}) {
+  for (double d :
+       {road_z_, inflated_radius_, loaded_radius_, rolling_radius_, cursor_.t0,
+        cursor_.next_history, cursor_.max_cord_strain, brake_.t0, brake_.x0, brake_.applied}) {
     out.PutDouble(d);
   }
   out.PutI64(cursor_.next_frame);
@@ -335,7 +342,7 @@ void TyreRun::SaveState(BinaryWriter& out) const {
 
 void TyreRun::LoadState(BinaryReader& in) {
   in.ExpectTag("TYRE");
-  double d[9];
+  double d[10];
   for (double& v : d) v = in.GetFinite();
   const std::int64_t next_frame = in.GetI64(), calls = in.GetI64();
   if (next_frame < 0 || next_frame > 1000000 || calls < 0)
@@ -352,12 +359,13 @@ void TyreRun::LoadState(BinaryReader& in) {
   rolling_radius_ = d[3];
   cursor_.t0 = d[4];
   cursor_.next_history = d[5];
+  cursor_.max_cord_strain = d[6];
   cursor_.next_frame = static_cast<int>(next_frame);
   cursor_.calls = calls;
   brake_.active = true;
-  brake_.t0 = d[6];
-  brake_.x0 = d[7];
-  brake_.applied = d[8];
+  brake_.t0 = d[7];
+  brake_.x0 = d[8];
+  brake_.applied = d[9];
   brake_.history = std::move(history);
 }
 

@@ -64,6 +64,9 @@ struct InflateResult {
   double outer_radius_before_m = 0.0, outer_radius_after_m = 0.0;
   double section_width_before_m = 0.0, section_width_after_m = 0.0;
   double max_roundness_error_m = 0.0;  ///< spread of the crown radius round the circle
+  /// The largest cord strain (Green-Lagrange) at the step's history rows
+  /// (ExplicitSolver::MaxCordStrain; the stable step assumes at most kCordStrainAllowance).
+  double max_cord_strain = 0.0;
   std::vector<HistoryRow> history;
 };
 
@@ -83,6 +86,9 @@ struct FootprintResult {
   double contact_area_m2 = 0.0;
   double contact_length_m = 0.0, contact_width_m = 0.0;
   double peak_pressure_Pa = 0.0, mean_pressure_Pa = 0.0;
+  /// The largest cord strain (Green-Lagrange) at the step's history rows
+  /// (ExplicitSolver::MaxCordStrain; the stable step assumes at most kCordStrainAllowance).
+  double max_cord_strain = 0.0;
   std::vector<ContactPoint> contact;
   std::vector<HistoryRow> history;
 };
@@ -93,6 +99,9 @@ struct RollResult {
   double effective_radius_m = 0.0;          ///< speed / spin
   double loaded_radius_m = 0.0;             ///< mean rim height over the road, second half
   double road_fx_N = 0.0, road_fz_N = 0.0;  ///< means over the second half
+  /// The largest cord strain (Green-Lagrange) at the step's history rows
+  /// (ExplicitSolver::MaxCordStrain; the stable step assumes at most kCordStrainAllowance).
+  double max_cord_strain = 0.0;
   std::vector<HistoryRow> history;
 };
 
@@ -104,6 +113,9 @@ struct BrakeResult {
   double max_slip = 0.0;
   double max_brake_torque_Nm = 0.0;  ///< largest torque magnitude applied
   double distance_m = 0.0;
+  /// The largest cord strain (Green-Lagrange) at the step's history rows
+  /// (ExplicitSolver::MaxCordStrain; the stable step assumes at most kCordStrainAllowance).
+  double max_cord_strain = 0.0;
   std::vector<HistoryRow> history;
 };
 
@@ -149,7 +161,8 @@ class TyreRun {
     double t0 = 0.0;            // the step's start, s
     double next_history = 0.0;  // time of the last history row, s
     int next_frame = 0;
-    std::int64_t calls = 0;  // steps taken in this step (progress lines every 2000)
+    std::int64_t calls = 0;        // steps taken in this step (progress lines every 2000)
+    double max_cord_strain = 0.0;  // the largest at the history rows so far
   };
   /// The braking step's own state.
   struct BrakeStep {

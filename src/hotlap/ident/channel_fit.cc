@@ -14,6 +14,7 @@
 #include <Eigen/Dense>
 
 #include "hotlap/common/error.h"
+#include "hotlap/common/median.h"
 #include "hotlap/ident/channel_fit_internal.h"
 
 namespace hotlap::ident {
@@ -103,15 +104,6 @@ class SampleResidual final : public ceres::CostFunction {
   double sqrt_weight_;
   const double* inv_sigma_;
 };
-
-double Median(std::vector<double> v) {
-  if (v.empty()) return kNaN;
-  const size_t mid = v.size() / 2;
-  std::nth_element(v.begin(), v.begin() + mid, v.end());
-  double m = v[mid];
-  if (v.size() % 2 == 0) m = 0.5 * (m + *std::max_element(v.begin(), v.begin() + mid));
-  return m;
-}
 
 // Robust noise level: 1.4826 times the median absolute deviation (the standard deviation for
 // Gaussian noise, unmoved by a few outliers).

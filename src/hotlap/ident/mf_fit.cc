@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
+#include "hotlap/common/median.h"
 #include "hotlap/ident/rig_fit_common.h"
 #include "hotlap/tyre/magic_formula.h"
 
@@ -430,8 +431,8 @@ MagicFormulaFitResult FitMagicFormula(std::span<const RigSample> samples,
     p = *options.base;
   } else {
     p = tyre::MagicFormulaDefaults();
-    p.FNOMIN = internal::Median(loads);
-    p.LONGVL = std::max(internal::Median(speeds), 1.0);
+    p.FNOMIN = Median(loads);
+    p.LONGVL = std::max(Median(speeds), 1.0);
     p.FZMIN = 0.0;
     p.FZMAX = 3.0 * *std::max_element(loads.begin(), loads.end());
   }

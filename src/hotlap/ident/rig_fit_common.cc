@@ -41,10 +41,4 @@ std::pair<double, double> LineFit(const std::vector<double>& x, const std::vecto
   return {my - c1 * mx, c1};
 }
 
-double Median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 }  // namespace hotlap::ident::internal

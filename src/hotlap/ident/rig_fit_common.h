@@ -32,7 +32,4 @@ void CheckRigSamples(std::span<const RigSample> samples);
 /// Least squares y = c0 + c1 x; c1 = 0 with fewer than two distinct x. Returns (c0, c1).
 std::pair<double, double> LineFit(const std::vector<double>& x, const std::vector<double>& y);
 
-/// The median of `v` (not empty).
-double Median(std::vector<double> v);
-
 }  // namespace hotlap::ident::internal

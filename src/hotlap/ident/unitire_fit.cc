@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
+#include "hotlap/common/median.h"
 #include "hotlap/ident/rig_fit_common.h"
 
 namespace hotlap::ident {
@@ -273,7 +274,7 @@ double NominalLoad(const std::vector<const RigSample*>& fit, const UniTireFitOpt
   if (options.nominal_load) return *options.nominal_load;
   std::vector<double> loads;
   for (const RigSample* s : fit) loads.push_back(s->fz);
-  return internal::Median(loads);
+  return Median(loads);
 }
 
 double ReferenceTemp(const UniTireFitOptions& options) {
