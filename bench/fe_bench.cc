@@ -13,8 +13,8 @@
 //
 // Run: ./build/fe_bench [--threads N] [google-benchmark flags]
 //   --threads N: the multi-threaded runs use N threads (default: all cores, OpenMP's default).
-// The element kernel is the solver's default: AVX2 where the CPU has it, the portable one with
-// HOTLAP_FE_KERNEL=portable (counter avx2: 1 or 0).
+// The element kernel is the solver's default, AVX2 where the CPU has it; HOTLAP_FE_KERNEL=portable
+// (or avx2, auto) chooses, as for `hotlap fe` without --kernel (counter avx2: 1 or 0).
 
 #include <benchmark/benchmark.h>
 
@@ -85,6 +85,9 @@ void BM_FeTyreSteps(benchmark::State& state, bool paper_mesh, BenchState bench_s
   fe::ExplicitSolver& solver = run.mutable_solver();
   solver.set_threads(threads);
   solver.set_assembly(assembly);
+  if (const char* kernel = std::getenv("HOTLAP_FE_KERNEL"); kernel != nullptr && *kernel != '\0') {
+    solver.set_element_kernel(fe::ParseElementKernel(kernel, "HOTLAP_FE_KERNEL"));
+  }
   const double elements = static_cast<double>(run.tyre().mesh.elements.size());
   long steps = 0;
   const auto t0 = std::chrono::steady_clock::now();

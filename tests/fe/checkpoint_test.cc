@@ -204,12 +204,12 @@ TEST_F(FeCheckpointFile, AnotherMeshConfigurationOrVersionIsRefused) {
   other = key_;
   other.config_hash ^= 1;
   EXPECT_NE(Refusal(p, other).find("another configuration"), std::string::npos);
-  // Files of versions 1 (before the stick anchors) and 2 (before the cord strain and the
-  // directional cord step) and of a future version (the checksum made right again): refused by
-  // version.
-  ASSERT_EQ(kCheckpointVersion, 3u);
+  // Files of versions 1 (before the stick anchors), 2 (before the cord strain and the
+  // directional cord step) and 3 (before the state saved whole) and of a future version (the
+  // checksum made right again): refused by version.
+  ASSERT_EQ(kCheckpointVersion, 4u);
   const std::string good = ReadBytes(p);
-  for (const char version : {1, 2, 4}) {
+  for (const char version : {1, 2, 3, 5}) {
     std::string s = good;
     s[8] = version;
     s.resize(s.size() - 8);
@@ -217,7 +217,7 @@ TEST_F(FeCheckpointFile, AnotherMeshConfigurationOrVersionIsRefused) {
     s.append(reinterpret_cast<const char*>(&h), 8);
     WriteBytes(p, s);
     EXPECT_NE(Refusal(p, key_).find("has format version " + std::to_string(version) +
-                                    "; this build reads version 3"),
+                                    "; this build reads version 4"),
               std::string::npos)
         << Refusal(p, key_);
   }

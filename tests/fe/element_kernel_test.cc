@@ -2,10 +2,11 @@
 // fused multiply-adds. A tumbling, struck, pressurised block with crossed cords in every element
 // (rubber, cords in tension and compression, hourglass, bulk viscosity) run for 400 steps on each:
 // the same motion and energies to round-off (FMA rounds once, so not bit for bit); each kernel is
-// deterministic; HOTLAP_FE_KERNEL picks the default.
+// deterministic; the kernel is chosen by name (ParseElementKernel), by default the best.
 
 #include <cmath>
 #include <cstdlib>
+#include <string>
 
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
@@ -97,35 +98,30 @@ TEST(FeElementKernel, Avx2AndPortableAgreeToRoundOff) {
   }
 }
 
-TEST(FeElementKernel, EnvironmentVariableChoosesTheDefault) {
-  const char* old = std::getenv("HOTLAP_FE_KERNEL");
-  const std::string saved = old != nullptr ? old : "";
-  const auto restore = [&] {
-    if (old != nullptr) {
-      setenv("HOTLAP_FE_KERNEL", saved.c_str(), 1);
-    } else {
-      unsetenv("HOTLAP_FE_KERNEL");
-    }
-  };
+// The kernel is an option (StepOptions::kernel), chosen by name: the library reads no
+// environment variable (the command does: `hotlap fe --kernel`, else HOTLAP_FE_KERNEL).
+TEST(FeElementKernel, ParseNamesTheKernelAndTheDefaultIsTheBest) {
   const bool avx2 = ElementKernelSupported(ElementKernel::kAvx2);
-  unsetenv("HOTLAP_FE_KERNEL");
-  EXPECT_EQ(DefaultElementKernel(), avx2 ? ElementKernel::kAvx2 : ElementKernel::kPortable);
-  setenv("HOTLAP_FE_KERNEL", "auto", 1);
-  EXPECT_EQ(DefaultElementKernel(), avx2 ? ElementKernel::kAvx2 : ElementKernel::kPortable);
-  setenv("HOTLAP_FE_KERNEL", "portable", 1);
-  EXPECT_EQ(DefaultElementKernel(), ElementKernel::kPortable);
+  const ElementKernel best = avx2 ? ElementKernel::kAvx2 : ElementKernel::kPortable;
+  EXPECT_EQ(BestElementKernel(), best);
+  EXPECT_EQ(StepOptions{}.kernel, best);
+  EXPECT_EQ(ParseElementKernel("auto", "--kernel"), best);
+  EXPECT_EQ(ParseElementKernel("portable", "--kernel"), ElementKernel::kPortable);
   const Mesh mesh = MakeBlockMesh(0.01, 0.01, 0.01, 1, 1, 1);
-  EXPECT_EQ(ExplicitSolver(mesh, {testing::Tread()}, {}, SolverOptions{}).element_kernel(),
-            ElementKernel::kPortable);
-  setenv("HOTLAP_FE_KERNEL", "avx2", 1);
+  EXPECT_EQ(ExplicitSolver(mesh, {testing::Tread()}, {}, SolverOptions{}).element_kernel(), best);
   if (avx2) {
-    EXPECT_EQ(DefaultElementKernel(), ElementKernel::kAvx2);
+    EXPECT_EQ(ParseElementKernel("avx2", "--kernel"), ElementKernel::kAvx2);
   } else {
-    EXPECT_THROW(DefaultElementKernel(), InputError);
+    EXPECT_THROW(ParseElementKernel("avx2", "--kernel"), InputError);
   }
-  setenv("HOTLAP_FE_KERNEL", "sse9", 1);
-  EXPECT_THROW(DefaultElementKernel(), InputError);
-  restore();
+  try {
+    ParseElementKernel("sse9", "--kernel");
+    ADD_FAILURE() << "sse9 accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--kernel 'sse9': use portable, avx2 or auto"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

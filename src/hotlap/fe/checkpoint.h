@@ -5,8 +5,8 @@
 ///
 /// How to use:
 ///
-///   fe::BinaryWriter w;                  // the caller writes its state, field by field
-///   solver.SaveState(w);
+///   fe::BinaryWriter w;                  // the caller writes its state
+///   solver.SaveState(w);                 // (explicit_checkpoint.h: the solver's, whole)
 ///   fe::WriteCheckpointFile(path, key, w.bytes());  // temporary file + rename
 ///   ...
 ///   const std::string payload = fe::ReadCheckpointFile(path, key);  // throws InputError
@@ -38,8 +38,9 @@ namespace hotlap::fe {
 /// The format version written and accepted. 2: the road's stick springs (tangential penalty
 /// factor, stick model, each contact node's anchor) and the friction dissipated by their slips.
 /// 3: the braking step's largest cord strain so far (and the stable step of the directional cord
-/// bound, so a version-2 file's time step would not match anyway).
-inline constexpr std::uint32_t kCheckpointVersion = 3;
+/// bound, so a version-2 file's time step would not match anyway). 4: the solver's state whole,
+/// each field behind its name (explicit_checkpoint.h), the rim's settings with it.
+inline constexpr std::uint32_t kCheckpointVersion = 4;
 
 /// FNV-1a, 64 bit, of `data`, continuing from `hash` (the offset basis by default).
 std::uint64_t Fnv1a64(std::string_view data, std::uint64_t hash = 0xcbf29ce484222325ULL);

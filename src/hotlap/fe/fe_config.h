@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "hotlap/fe/explicit_solver.h"
+#include "hotlap/fe/explicit_model.h"
 #include "hotlap/fe/rebar.h"
 #include "hotlap/fe/road_contact.h"
 #include "hotlap/fe/tyre_mesh.h"

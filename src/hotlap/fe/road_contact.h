@@ -38,6 +38,8 @@
 
 #include <Eigen/Core>
 
+#include "hotlap/fe/visit_fields.h"
+
 namespace hotlap::fe {
 
 /// The exponential-decay friction law (002:1) with its regularisation.
@@ -88,5 +90,25 @@ struct RoadContact {
   StickModel stick = StickModel::kElasticSpring;
   FrictionLaw friction;
 };
+
+/// The fields of a FrictionLaw (visit_fields.h; the FE checkpoint saves them).
+template <SameOrConst<FrictionLaw> S, typename Visitor>
+void VisitFields(S& f, Visitor&& visit) {
+  visit("static_coefficient", f.static_coefficient);
+  visit("kinetic_coefficient", f.kinetic_coefficient);
+  visit("decay_s_per_m", f.decay_s_per_m);
+}
+
+/// The fields of a RoadContact (visit_fields.h; the FE checkpoint saves them).
+template <SameOrConst<RoadContact> S, typename Visitor>
+void VisitFields(S& r, Visitor&& visit) {
+  visit("enabled", r.enabled);
+  visit("height_m", r.height_m);
+  visit("penalty_factor", r.penalty_factor);
+  visit("tangential_penalty_factor", r.tangential_penalty_factor);
+  visit("road_speed_x_mps", r.road_speed_x_mps);
+  visit("stick", r.stick);
+  visit("friction", r.friction);
+}
 
 }  // namespace hotlap::fe

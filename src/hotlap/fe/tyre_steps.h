@@ -2,7 +2,7 @@
 /// @file
 /// The FE/ABS paper's steps on the generated tyre (002 §2.1): inflation, the static footprint,
 /// free rolling and a braking event whose torque a callback sets (the ABS controller lives above
-/// this layer, in the app). One TyreRun carries the state from each step into the next.
+/// this layer, in sim/fe_abs_stop.h). One TyreRun carries the state from each step into the next.
 ///
 ///   fe::TyreRun run(config);
 ///   const fe::InflateResult inf = run.Inflate(hooks);
@@ -65,7 +65,7 @@ struct InflateResult {
   double section_width_before_m = 0.0, section_width_after_m = 0.0;
   double max_roundness_error_m = 0.0;  ///< spread of the crown radius round the circle
   /// The largest cord strain (Green-Lagrange) at the step's history rows
-  /// (ExplicitSolver::MaxCordStrain; the stable step assumes at most kCordStrainAllowance).
+  /// (CalcMaxCordStrain; the stable step assumes at most kCordStrainAllowance).
   double max_cord_strain = 0.0;
   std::vector<HistoryRow> history;
 };
@@ -87,7 +87,7 @@ struct FootprintResult {
   double contact_length_m = 0.0, contact_width_m = 0.0;
   double peak_pressure_Pa = 0.0, mean_pressure_Pa = 0.0;
   /// The largest cord strain (Green-Lagrange) at the step's history rows
-  /// (ExplicitSolver::MaxCordStrain; the stable step assumes at most kCordStrainAllowance).
+  /// (CalcMaxCordStrain; the stable step assumes at most kCordStrainAllowance).
   double max_cord_strain = 0.0;
   std::vector<ContactPoint> contact;
   std::vector<HistoryRow> history;
@@ -100,7 +100,7 @@ struct RollResult {
   double loaded_radius_m = 0.0;             ///< mean rim height over the road, second half
   double road_fx_N = 0.0, road_fz_N = 0.0;  ///< means over the second half
   /// The largest cord strain (Green-Lagrange) at the step's history rows
-  /// (ExplicitSolver::MaxCordStrain; the stable step assumes at most kCordStrainAllowance).
+  /// (CalcMaxCordStrain; the stable step assumes at most kCordStrainAllowance).
   double max_cord_strain = 0.0;
   std::vector<HistoryRow> history;
 };
@@ -114,7 +114,7 @@ struct BrakeResult {
   double max_brake_torque_Nm = 0.0;  ///< largest torque magnitude applied
   double distance_m = 0.0;
   /// The largest cord strain (Green-Lagrange) at the step's history rows
-  /// (ExplicitSolver::MaxCordStrain; the stable step assumes at most kCordStrainAllowance).
+  /// (CalcMaxCordStrain; the stable step assumes at most kCordStrainAllowance).
   double max_cord_strain = 0.0;
   std::vector<HistoryRow> history;
 };
