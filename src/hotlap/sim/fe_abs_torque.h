@@ -1,0 +1,62 @@
+#pragma once
+/// @file
+/// The brake torque of the FE tyre's ABS stop (docs/fe-tyre.md): the ABS controller of
+/// `hotlap abs` (brake/abs_controller.h), its hydraulic delay line and the wheel-cylinder
+/// pressure, stepped at the controller's period inside the FE braking step
+/// (fe::TyreRun::Brake calls it before every FE step), with what a checkpoint needs.
+///
+///   sim::FeAbsTorque torque(abs_config, controller_params);  // wheel_radius_m: R_l
+///   run.Brake(duration, [&](double t, double vx, double spin) { return torque(t, vx, spin); },
+///             hooks);
+
+#include <deque>
+#include <optional>
+#include <vector>
+
+#include "hotlap/brake/abs_controller.h"
+#include "hotlap/brake/brake_hydraulics.h"
+#include "hotlap/fe/checkpoint.h"
+#include "hotlap/sim/abs_config.h"
+
+namespace hotlap::sim {
+
+/// The ABS controller, its hydraulic delay line and the wheel-cylinder pressure.
+class FeAbsTorque {
+ public:
+  /// Keeps a reference to `config`. `params` is config.controller with the wheel radius the
+  /// slip uses (the FE tyre's free-rolling radius, (002:2)).
+  FeAbsTorque(const AbsConfig& config, const brake::AbsControllerParams& params)
+      : config_(config), params_(params), delay_(config.DelayTicks(), 0.0) {}
+
+  /// Brake torque capacity at brake-step time t (s from the braking step's start), given the
+  /// rim's forward speed vx (m/s) and spin (rad/s), N m. Calls must not go back in time.
+  double operator()(double t, double vx, double spin);
+
+  const brake::AbsControllerState& state() const { return state_; }
+  /// Brake-step times (s from the braking step's start) of the controller's ticks that began a
+  /// control cycle (a pressure release, as the lumped `hotlap abs` counts them).
+  const std::vector<double>& cycle_starts() const { return cycle_starts_; }
+  /// Brake-step time of the first tick in kExit (the ABS handing back to the driver), if any.
+  std::optional<double> abs_exit() const { return abs_exit_; }
+
+  /// Writes the controller's state, the pending commands, the pressure, the next tick, the cycle
+  /// starts and the exit (section "ABS_").
+  void Save(fe::BinaryWriter& w) const;
+  /// Reads what Save wrote; InputError (via the reader) if it is damaged or does not fit the
+  /// configuration's delay line. Nothing changes unless everything was read.
+  void Load(fe::BinaryReader& r);
+
+ private:
+  double Push(double command);
+
+  const AbsConfig& config_;
+  brake::AbsControllerParams params_;
+  brake::AbsControllerState state_;
+  brake::PressureDelayLine delay_;
+  std::deque<double> pushed_;  // the last delay_ticks commands pushed, oldest first
+  std::vector<double> cycle_starts_;
+  std::optional<double> abs_exit_;
+  double next_tick_ = 0.0, target_ = 0.0, pressure_ = 0.0, t_prev_ = 0.0;
+};
+
+}  // namespace hotlap::sim

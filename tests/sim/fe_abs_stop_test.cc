@@ -1,0 +1,148 @@
+// The FE tyre's ABS stop as a library call (sim::FeAbsStop), on a very coarse, mass-scaled copy
+// of the shipped tyre: a stop checkpointed part way, restored into a new TyreRun and continued
+// equals the stop run straight through bit for bit (histories, controller, end checkpoint); the
+// checkpoint key sees the configuration files; a checkpoint of another configuration is refused.
+
+#include "hotlap/sim/fe_abs_stop.h"
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "hotlap/common/error.h"
+#include "hotlap/fe/fe_config.h"
+#include "test_util.h"
+
+namespace hotlap::sim {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string Replace(std::string text, const std::string& from, const std::string& to) {
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+class FeAbsStopTest : public ::testing::Test {
+ protected:
+  // The shipped file with a coarse mesh, mass scaling and short steps (as FeCommandTest).
+  fs::path CoarseConfig(const std::string& name, const std::string& pressure = "220") {
+    std::string y = test::ReadTextFile(test::SourcePath("data/fe/paper_235_75r15.yaml"));
+    y = Replace(y, "meridional_elements_half: 10", "meridional_elements_half: 5");
+    y = Replace(y, "circumferential_elements_contact: 24", "circumferential_elements_contact: 8");
+    y = Replace(y, "circumferential_elements_rest: 60", "circumferential_elements_rest: 16");
+    y = Replace(y, "mass_scaling_min_step_s: 0", "mass_scaling_min_step_s: 1.2e-5");
+    y = Replace(y, "config_file: ../abs/paper.yaml",
+                "config_file: " + test::SourcePath("data/abs/paper.yaml").string());
+    y = Replace(y, "damping_per_s: 250", "damping_per_s: 150");
+    y = Replace(y, "duration_s: 0.1 ", "duration_s: 0.01 ");
+    y = Replace(y, "history_interval_s: 1.0e-4", "history_interval_s: 1.0e-3");
+    y = Replace(y, "pressure_kPa: 220 ", "pressure_kPa: " + pressure + " ");
+    const fs::path p = dir_ / name;
+    std::ofstream(p) << y;
+    return p;
+  }
+  static fe::StepHooks Hooks(const fe::FeConfig& c) {
+    fe::StepHooks hooks;
+    hooks.history_interval_s = c.history_interval_s;
+    return hooks;
+  }
+  static void RunUpToRoll(fe::TyreRun& run) {
+    const fe::StepHooks hooks = Hooks(run.config());
+    run.Inflate(hooks);
+    run.Footprint(hooks);
+    run.Roll(hooks);
+  }
+  static std::string Bytes(const fs::path& p) { return test::ReadTextFile(p); }
+
+  const test::TempDir tmp_;
+  const fs::path dir_ = tmp_.path();
+};
+
+TEST_F(FeAbsStopTest, RestartFromACheckpointEqualsTheStraightRunBitForBit) {
+  fe::FeConfig config = fe::LoadFeConfig(CoarseConfig("coarse.yaml"));
+  const AbsConfig abs = LoadAbsConfig(config.abs_config);
+  const auto options = [&](double duration, double every, const fs::path& file,
+                           const fe::CheckpointKey& key) {
+    FeAbsStopOptions o;
+    o.duration_s = duration;
+    o.hooks = Hooks(config);
+    o.checkpoint_every_s = every;
+    o.checkpoint_file = file;
+    o.checkpoint_key = key;
+    o.summary = "{\"earlier\": 1}";
+    return o;
+  };
+  // Straight through, 25 ms, a checkpoint at its end.
+  fe::TyreRun straight(config);
+  straight.mutable_solver().set_threads(1);
+  RunUpToRoll(straight);
+  const fe::CheckpointKey key = MakeFeCheckpointKey(straight);
+  FeAbsStop stop(straight, abs);
+  const FeAbsStopResult a = stop.Run(options(0.025, 1.0, dir_ / "a.bin", key));
+  ASSERT_GT(a.brake.history.size(), 20u);
+  EXPECT_GT(a.brake.max_brake_torque_Nm, 0.0);
+
+  // Stopped at 12 ms (checkpoints at 5 and 10 ms and at the end), continued in a new run.
+  fe::TyreRun first(config);
+  first.mutable_solver().set_threads(1);
+  RunUpToRoll(first);
+  FeAbsStop(first, abs).Run(options(0.012, 0.005, dir_ / "b.bin", key));
+  fe::TyreRun second(config);  // not stepped: the checkpoint brings every step's state
+  second.mutable_solver().set_threads(1);
+  FeAbsStop resumed(second, abs);
+  const FeAbsCheckpointInfo info = resumed.Restore(dir_ / "b.bin", key);
+  EXPECT_EQ(info.summary, "{\"earlier\": 1}");
+  EXPECT_EQ(info.threads, 1u);
+  EXPECT_EQ(info.kernel, second.solver().element_kernel());
+  EXPECT_NEAR(second.solver().time() - second.brake_start_s(), 0.012, 1e-4);
+  const FeAbsStopResult c = resumed.Run(options(0.025, 1.0, dir_ / "c.bin", key));
+
+  EXPECT_TRUE(Bytes(dir_ / "a.bin") == Bytes(dir_ / "c.bin"));
+  ASSERT_EQ(c.brake.history.size(), a.brake.history.size());
+  for (size_t k = 0; k < a.brake.history.size(); ++k) {
+    EXPECT_EQ(c.brake.history[k].rim_vx_mps, a.brake.history[k].rim_vx_mps) << k;
+    EXPECT_EQ(c.brake.history[k].brake_torque_Nm, a.brake.history[k].brake_torque_Nm) << k;
+    EXPECT_EQ(c.brake.history[k].energies.BalanceError(),
+              a.brake.history[k].energies.BalanceError())
+        << k;
+  }
+  EXPECT_EQ(c.cycle_starts_s, a.cycle_starts_s);
+  EXPECT_EQ(c.brake.final_speed_mps, a.brake.final_speed_mps);
+  EXPECT_EQ(c.brake.distance_m, a.brake.distance_m);
+  EXPECT_EQ(c.cycles.cycles, a.cycles.cycles);
+}
+
+TEST_F(FeAbsStopTest, CheckpointOfAnotherConfigurationIsRefused) {
+  const fe::FeConfig config = fe::LoadFeConfig(CoarseConfig("coarse.yaml"));
+  const fe::FeConfig other = fe::LoadFeConfig(CoarseConfig("other.yaml", "200"));
+  const AbsConfig abs = LoadAbsConfig(config.abs_config);
+  fe::TyreRun run(config), run_other(other);
+  const fe::CheckpointKey key = MakeFeCheckpointKey(run);
+  EXPECT_EQ(key.nodes, run.tyre().mesh.nodes.size());
+  EXPECT_EQ(key.mesh_hash, MakeFeCheckpointKey(run_other).mesh_hash);
+  EXPECT_NE(key.config_hash, MakeFeCheckpointKey(run_other).config_hash);
+  RunUpToRoll(run);
+  FeAbsStopOptions o;
+  o.duration_s = 0.001;
+  o.hooks = Hooks(config);
+  o.checkpoint_every_s = 1.0;
+  o.checkpoint_file = dir_ / "a.bin";
+  o.checkpoint_key = key;
+  FeAbsStop(run, abs).Run(o);
+  FeAbsStop stop(run_other, abs);
+  try {
+    stop.Restore(dir_ / "a.bin", MakeFeCheckpointKey(run_other));
+    ADD_FAILURE() << "a checkpoint of another configuration was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("written for another configuration"), std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace hotlap::sim
