@@ -20,6 +20,7 @@
 #include "hotlap/fe/explicit_model.h"
 #include "hotlap/fe/explicit_solver.h"
 #include "hotlap/fe/explicit_step.h"
+#include "hotlap/fe/tyre_steps.h"
 
 namespace hotlap::fe {
 namespace {
@@ -61,6 +62,10 @@ TEST(FeExplicitState, VisitFieldsCoversEveryMember) {
   ExpectFieldsCoverStruct<RimLoads>("RimLoads");
   ExpectFieldsCoverStruct<RoadContact>("RoadContact");
   ExpectFieldsCoverStruct<FrictionLaw>("FrictionLaw");
+  ExpectFieldsCoverStruct<TyreRunState>("TyreRunState");
+  ExpectFieldsCoverStruct<StepCursor>("StepCursor");
+  ExpectFieldsCoverStruct<BrakeStep>("BrakeStep");
+  ExpectFieldsCoverStruct<HistoryRow>("HistoryRow");
 }
 
 // A 3 x 2 x 2 block on a road, its top nodes tied to a free rim pushed down and spun, random

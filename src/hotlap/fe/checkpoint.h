@@ -38,8 +38,8 @@ namespace hotlap::fe {
 /// The format version written and accepted. 2: the road's stick springs (tangential penalty
 /// factor, stick model, each contact node's anchor) and the friction dissipated by their slips.
 /// 3: the braking step's largest cord strain so far (and the stable step of the directional cord
-/// bound, so a version-2 file's time step would not match anyway). 4: the solver's state whole,
-/// each field behind its name (explicit_checkpoint.h), the rim's settings with it.
+/// bound, so a version-2 file's time step would not match anyway). 4: the solver's state and the
+/// TyreRun's whole, each field behind its name (field_io.h), the rim's settings with them.
 inline constexpr std::uint32_t kCheckpointVersion = 4;
 
 /// FNV-1a, 64 bit, of `data`, continuing from `hash` (the offset basis by default).

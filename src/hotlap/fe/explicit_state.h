@@ -64,6 +64,10 @@ struct Energies {
 
 /// What can move the rim along one of its three planar degrees of freedom.
 enum class RimDofMode : std::uint8_t { kFree, kPrescribedVelocity };
+/// The largest RimDofMode (checkpoint readers refuse anything above; field_io.h).
+constexpr std::uint64_t EnumMax(RimDofMode) {
+  return std::uint64_t(RimDofMode::kPrescribedVelocity);
+}
 
 /// The rigid rim: mesh.rim_nodes move with a rigid body that translates in x and z and turns
 /// about the axle (+y). Positive spin about +y rolls the tyre towards +x on a road below it.

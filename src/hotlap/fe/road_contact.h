@@ -78,6 +78,8 @@ enum class StickModel : std::uint8_t {
   kElasticSpring,  ///< penalty spring to an anchor, returned to the Coulomb limit (default)
   kViscous,        ///< the old viscous stick, -min(mu f_n / s, m / dt) v_t: creeps
 };
+/// The largest StickModel (checkpoint readers refuse anything above; field_io.h).
+constexpr std::uint64_t EnumMax(StickModel) { return std::uint64_t(StickModel::kViscous); }
 
 /// The road. Its normal is +z.
 struct RoadContact {

@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include "hotlap/common/error.h"
+#include "hotlap/fe/field_io.h"
 
 namespace hotlap::fe {
 
@@ -70,12 +71,12 @@ void TyreRun::RunUntil(const std::string& step, double t_end, const StepHooks& h
                        const double* torque, bool resume) {
   const double dt = solver_.time_step();
   if (!resume) {
-    cursor_ = StepCursor{};
-    cursor_.t0 = cursor_.next_history = solver_.time();
+    state_.cursor = StepCursor{};
+    state_.cursor.t0 = state_.cursor.next_history = solver_.time();
     history.push_back(Row(torque ? *torque : 0.0));
-    cursor_.max_cord_strain = solver_.MaxCordStrain();
+    state_.cursor.max_cord_strain = solver_.MaxCordStrain();
   }
-  const double t0 = cursor_.t0;
+  const double t0 = state_.cursor.t0;
   const int frames = std::max(1, hooks.frames);
   // Checkpoints at t0 + m * interval (the first one after now), and at the end.
   const double interval = hooks.checkpoint ? hooks.checkpoint_interval_s : 0.0;
@@ -87,17 +88,18 @@ void TyreRun::RunUntil(const std::string& step, double t_end, const StepHooks& h
   while (solver_.time() < t_end - 0.5 * dt) {
     if (each) each();
     solver_.Step();
-    if (solver_.time() >= cursor_.next_history + hooks.history_interval_s - 0.5 * dt) {
-      cursor_.next_history = solver_.time();
+    if (solver_.time() >= state_.cursor.next_history + hooks.history_interval_s - 0.5 * dt) {
+      state_.cursor.next_history = solver_.time();
       history.push_back(Row(torque ? *torque : 0.0));
-      cursor_.max_cord_strain = std::max(cursor_.max_cord_strain, solver_.MaxCordStrain());
+      state_.cursor.max_cord_strain =
+          std::max(state_.cursor.max_cord_strain, solver_.MaxCordStrain());
     }
-    const double frame_time = t0 + (t_end - t0) * (cursor_.next_frame + 1) / frames;
-    if (cursor_.next_frame < frames - 1 && solver_.time() >= frame_time - 0.5 * dt) {
-      if (hooks.frame) hooks.frame(step, cursor_.next_frame);
-      ++cursor_.next_frame;
+    const double frame_time = t0 + (t_end - t0) * (state_.cursor.next_frame + 1) / frames;
+    if (state_.cursor.next_frame < frames - 1 && solver_.time() >= frame_time - 0.5 * dt) {
+      if (hooks.frame) hooks.frame(step, static_cast<int>(state_.cursor.next_frame));
+      ++state_.cursor.next_frame;
     }
-    if (hooks.progress && (++cursor_.calls % 2000 == 0)) {
+    if (hooks.progress && (++state_.cursor.calls % 2000 == 0)) {
       hooks.progress(step, solver_.time(), t_end);
     }
     checkpoint_now = solver_.time() >= next_checkpoint - 0.5 * dt;
@@ -129,7 +131,7 @@ InflateResult TyreRun::Inflate(const StepHooks& hooks) {
                              std::min(1.0, (solver_.time() - t0) / ramp));
       },
       r.history, nullptr);
-  r.max_cord_strain = cursor_.max_cord_strain;
+  r.max_cord_strain = state_.cursor.max_cord_strain;
   r.outer_radius_after_m = OuterRadiusMean();
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
   for (int n : tyre_.crown_centre_nodes) {
@@ -143,20 +145,24 @@ InflateResult TyreRun::Inflate(const StepHooks& hooks) {
     w1 = std::max(w1, std::abs(solver_.positions()[a].y()));
   }
   r.section_width_after_m = 2.0 * w1;
-  inflated_radius_ = r.outer_radius_after_m;
+  state_.inflated_radius_m = r.outer_radius_after_m;
   return r;
 }
 
 FootprintResult TyreRun::Footprint(const StepHooks& hooks) {
-  if (inflated_radius_ <= 0.0) throw InputError("fe: footprint needs the inflation step first");
+  if (state_.inflated_radius_m <= 0.0) {
+    throw InputError("fe: footprint needs the inflation step first");
+  }
   FootprintResult r;
   r.vertical_load_N = config_.vertical_load_N;
   // The road touches the lowest tread node.
-  road_z_ = std::numeric_limits<double>::infinity();
-  for (int a : tyre_.mesh.contact_nodes) road_z_ = std::min(road_z_, solver_.positions()[a].z());
+  state_.road_z_m = std::numeric_limits<double>::infinity();
+  for (int a : tyre_.mesh.contact_nodes) {
+    state_.road_z_m = std::min(state_.road_z_m, solver_.positions()[a].z());
+  }
   RoadContact road = config_.road;
   road.enabled = true;
-  road.height_m = road_z_;
+  road.height_m = state_.road_z_m;
   solver_.SetRoad(road);
   solver_.SetRimModes(RimDofMode::kPrescribedVelocity, RimDofMode::kFree,
                       RimDofMode::kPrescribedVelocity);
@@ -170,11 +176,11 @@ FootprintResult TyreRun::Footprint(const StepHooks& hooks) {
             -config_.vertical_load_N * std::min(1.0, (solver_.time() - t0) / ramp);
       },
       r.history, nullptr);
-  r.max_cord_strain = cursor_.max_cord_strain;
+  r.max_cord_strain = state_.cursor.max_cord_strain;
   r.road_force_z_N = solver_.RoadForce().z();
-  r.loaded_radius_m = solver_.rim_state().centre.z() - road_z_;
-  loaded_radius_ = r.loaded_radius_m;
-  r.deflection_m = inflated_radius_ - r.loaded_radius_m;
+  r.loaded_radius_m = solver_.rim_state().centre.z() - state_.road_z_m;
+  state_.loaded_radius_m = r.loaded_radius_m;
+  r.deflection_m = state_.inflated_radius_m - r.loaded_radius_m;
   r.vertical_stiffness_N_per_m = r.deflection_m > 0 ? config_.vertical_load_N / r.deflection_m : 0;
 
   // Each node's share of the outer surface, for the pressure map.
@@ -206,13 +212,13 @@ FootprintResult TyreRun::Footprint(const StepHooks& hooks) {
 }
 
 RollResult TyreRun::Roll(const StepHooks& hooks) {
-  if (loaded_radius_ <= 0.0) throw InputError("fe: roll needs the footprint step first");
+  if (state_.loaded_radius_m <= 0.0) throw InputError("fe: roll needs the footprint step first");
   RollResult r;
   r.speed_mps = config_.roll_speed_mps;
   solver_.set_mass_damping(0.0);
   solver_.SetRimModes(RimDofMode::kPrescribedVelocity, RimDofMode::kFree, RimDofMode::kFree);
   // Start from rigid rolling about the rim centre at the loaded radius.
-  const double spin0 = r.speed_mps / loaded_radius_;
+  const double spin0 = r.speed_mps / state_.loaded_radius_m;
   const Eigen::Vector3d c = solver_.rim_state().centre;
   std::vector<Eigen::Vector3d> v(solver_.positions().size());
   for (size_t a = 0; a < v.size(); ++a) {
@@ -225,14 +231,14 @@ RollResult TyreRun::Roll(const StepHooks& hooks) {
   RunUntil(
       "roll", t0 + config_.roll_duration_s, hooks,
       [&] { solver_.rim_loads().force_z_N = -config_.vertical_load_N; }, r.history, nullptr);
-  r.max_cord_strain = cursor_.max_cord_strain;
+  r.max_cord_strain = state_.cursor.max_cord_strain;
   // Means over the second half.
   const double t_half = t0 + 0.5 * config_.roll_duration_s;
   int n = 0;
   for (const HistoryRow& h : r.history) {
     if (h.time_s < t_half) continue;
     r.spin_rad_per_s += h.spin_rad_per_s;
-    r.loaded_radius_m += h.rim_z_m - road_z_;
+    r.loaded_radius_m += h.rim_z_m - state_.road_z_m;
     r.road_fx_N += h.road_fx_N;
     r.road_fz_N += h.road_fz_N;
     ++n;
@@ -244,129 +250,73 @@ RollResult TyreRun::Roll(const StepHooks& hooks) {
     r.road_fz_N /= n;
   }
   r.effective_radius_m = r.spin_rad_per_s > 0 ? r.speed_mps / r.spin_rad_per_s : 0.0;
-  rolling_radius_ = r.effective_radius_m;
+  state_.rolling_radius_m = r.effective_radius_m;
   return r;
 }
 
 BrakeResult TyreRun::Brake(double duration_s, const BrakeTorqueFn& torque, const StepHooks& hooks) {
-  if (loaded_radius_ <= 0.0) throw InputError("fe: braking needs the roll step first");
+  if (state_.loaded_radius_m <= 0.0) throw InputError("fe: braking needs the roll step first");
   // Quarter car: the translating mass is load / g (spec section 8), the tyre's included.
   const double quarter = config_.vertical_load_N / kGravity;
   double tyre_mass = 0.0;
   for (size_t a = 0; a < solver_.node_masses().size(); ++a) tyre_mass += solver_.node_masses()[a];
   solver_.AddRimTranslationalMass(std::max(0.0, quarter - tyre_mass - config_.rim_mass_kg));
   solver_.SetRimModes(RimDofMode::kFree, RimDofMode::kFree, RimDofMode::kFree);
-  brake_ = BrakeStep{};
-  brake_.active = true;
-  brake_.t0 = solver_.time();
-  brake_.x0 = solver_.rim_state().centre.x();
+  state_.brake = BrakeStep{};
+  state_.brake.active = true;
+  state_.brake.t0 = solver_.time();
+  state_.brake.x0 = solver_.rim_state().centre.x();
   return RunBrake(duration_s, torque, hooks, /*resume=*/false);
 }
 
 BrakeResult TyreRun::ResumeBrake(double duration_s, const BrakeTorqueFn& torque,
                                  const StepHooks& hooks) {
-  if (!brake_.active) throw InputError("fe: no braking step to resume");
+  if (!state_.brake.active) throw InputError("fe: no braking step to resume");
   return RunBrake(duration_s, torque, hooks, /*resume=*/true);
 }
 
 BrakeResult TyreRun::RunBrake(double duration_s, const BrakeTorqueFn& torque,
                               const StepHooks& hooks, bool resume) {
-  const double t0 = brake_.t0;
+  const double t0 = state_.brake.t0;
   RunUntil(
       "abs", t0 + duration_s, hooks,
       [&] {
         const RimState& rim = solver_.rim_state();
         const double capacity =
             std::max(0.0, torque(solver_.time() - t0, rim.velocity.x(), rim.spin_rad_per_s));
-        brake_.applied = -capacity * std::tanh(rim.spin_rad_per_s / kBrakeSpinRegularisation);
-        solver_.rim_loads().torque_Nm = brake_.applied;
+        state_.brake.applied = -capacity * std::tanh(rim.spin_rad_per_s / kBrakeSpinRegularisation);
+        solver_.rim_loads().torque_Nm = state_.brake.applied;
         solver_.rim_loads().force_z_N = -config_.vertical_load_N;
       },
-      brake_.history, &brake_.applied, resume);
+      state_.brake.history, &state_.brake.applied, resume);
   BrakeResult r;
-  r.history = brake_.history;
-  r.max_cord_strain = cursor_.max_cord_strain;
+  r.history = state_.brake.history;
+  r.max_cord_strain = state_.cursor.max_cord_strain;
   r.initial_speed_mps = r.history.front().rim_vx_mps;
   for (const HistoryRow& h : r.history) {
     r.max_slip = std::max(r.max_slip, h.slip);
     r.max_brake_torque_Nm = std::max(r.max_brake_torque_Nm, std::abs(h.brake_torque_Nm));
   }
   r.final_speed_mps = solver_.rim_state().velocity.x();
-  r.distance_m = solver_.rim_state().centre.x() - brake_.x0;
+  r.distance_m = solver_.rim_state().centre.x() - state_.brake.x0;
   return r;
 }
 
-namespace {
-
-void PutRow(BinaryWriter& out, const HistoryRow& h) {
-  const Energies& e = h.energies;
-  for (double d : {h.time_s, h.rim_x_m, h.rim_z_m, h.rim_vx_mps, h.spin_rad_per_s,
-                   h.brake_torque_Nm, h.road_fx_N, h.road_fz_N, h.slip, e.kinetic, e.internal,
-                   e.hourglass_stored, e.hourglass_dissipated, e.bulk_viscous, e.damping,
-                   e.contact_stored, e.friction, e.external_work, e.initial_kinetic}) {
-    out.PutDouble(d);
-  }
-}
-
-constexpr size_t kRowDoubles = 19;
-
-HistoryRow GetRow(BinaryReader& in) {
-  HistoryRow h;
-  Energies& e = h.energies;
-  for (double* d :
-       {&h.time_s, &h.rim_x_m, &h.rim_z_m, &h.rim_vx_mps, &h.spin_rad_per_s, &h.brake_torque_Nm,
-        &h.road_fx_N, &h.road_fz_N, &h.slip, &e.kinetic, &e.internal, &e.hourglass_stored,
-        &e.hourglass_dissipated, &e.bulk_viscous, &e.damping, &e.contact_stored, &e.friction,
-        &e.external_work, &e.initial_kinetic}) {
-    *d = in.GetDouble();
-  }
-  return h;
-}
-
-}  // namespace
-
 void TyreRun::SaveState(BinaryWriter& out) const {
-  if (!brake_.active) throw InputError("fe: a checkpoint needs a braking step");
+  if (!state_.brake.active) throw InputError("fe: a checkpoint needs a braking step");
   out.PutTag("TYRE");
-  for (double d :
-       {road_z_, inflated_radius_, loaded_radius_, rolling_radius_, cursor_.t0,
-        cursor_.next_history, cursor_.max_cord_strain, brake_.t0, brake_.x0, brake_.applied}) {
-    out.PutDouble(d);
-  }
-  out.PutI64(cursor_.next_frame);
-  out.PutI64(cursor_.calls);
-  out.PutU64(brake_.history.size());
-  for (const HistoryRow& h : brake_.history) PutRow(out, h);
+  PutFields(out, state_);
   solver_.SaveState(out);
 }
 
 void TyreRun::LoadState(BinaryReader& in) {
   in.ExpectTag("TYRE");
-  double d[10];
-  for (double& v : d) v = in.GetFinite();
-  const std::int64_t next_frame = in.GetI64(), calls = in.GetI64();
-  if (next_frame < 0 || next_frame > 1000000 || calls < 0)
-    in.Damaged("a step position out of range");
-  const size_t rows = in.GetCount(kRowDoubles * sizeof(double));
-  if (rows == 0) in.Damaged("an empty braking history");
-  std::vector<HistoryRow> history;
-  history.reserve(rows);
-  for (size_t k = 0; k < rows; ++k) history.push_back(GetRow(in));
+  TyreRunState read;  // its history empty: it takes the file's length
+  GetFields(in, read);
+  if (!read.brake.active) in.Damaged("no braking step");
+  if (read.brake.history.empty()) in.Damaged("an empty braking history");
   solver_.LoadState(in);
-  road_z_ = d[0];
-  inflated_radius_ = d[1];
-  loaded_radius_ = d[2];
-  rolling_radius_ = d[3];
-  cursor_.t0 = d[4];
-  cursor_.next_history = d[5];
-  cursor_.max_cord_strain = d[6];
-  cursor_.next_frame = static_cast<int>(next_frame);
-  cursor_.calls = calls;
-  brake_.active = true;
-  brake_.t0 = d[7];
-  brake_.x0 = d[8];
-  brake_.applied = d[9];
-  brake_.history = std::move(history);
+  state_ = std::move(read);
 }
 
 }  // namespace hotlap::fe

@@ -119,6 +119,76 @@ struct BrakeResult {
   std::vector<HistoryRow> history;
 };
 
+/// Where TyreRun::RunUntil is within a step.
+struct StepCursor {
+  double t0 = 0.0;               ///< the step's start, s
+  double next_history = 0.0;     ///< time of the last history row, s
+  std::int64_t next_frame = 0;   ///< the next deformed-shape frame
+  std::int64_t calls = 0;        ///< steps taken in this step (progress lines every 2000)
+  double max_cord_strain = 0.0;  ///< the largest at the history rows so far
+};
+
+/// The braking step's own state.
+struct BrakeStep {
+  bool active = false;
+  double t0 = 0.0;       ///< start time, s
+  double x0 = 0.0;       ///< rim position at the start, m
+  double applied = 0.0;  ///< torque of the last step, N m
+  std::vector<HistoryRow> history;
+};
+
+/// A TyreRun's state besides the solver's: what its checkpoint saves with it, whole.
+struct TyreRunState {
+  double road_z_m = 0.0;  ///< the road's height (set by the footprint step)
+  double inflated_radius_m = 0.0, loaded_radius_m = 0.0, rolling_radius_m = 0.0;
+  StepCursor cursor;
+  BrakeStep brake;
+};
+
+// The fields of each struct, in checkpoint order (visit_fields.h).
+
+template <SameOrConst<HistoryRow> S, typename Visitor>
+void VisitFields(S& h, Visitor&& visit) {
+  visit("time_s", h.time_s);
+  visit("rim_x_m", h.rim_x_m);
+  visit("rim_z_m", h.rim_z_m);
+  visit("rim_vx_mps", h.rim_vx_mps);
+  visit("spin_rad_per_s", h.spin_rad_per_s);
+  visit("brake_torque_Nm", h.brake_torque_Nm);
+  visit("road_fx_N", h.road_fx_N);
+  visit("road_fz_N", h.road_fz_N);
+  visit("slip", h.slip);
+  visit("energies", h.energies);
+}
+
+template <SameOrConst<StepCursor> S, typename Visitor>
+void VisitFields(S& c, Visitor&& visit) {
+  visit("t0", c.t0);
+  visit("next_history", c.next_history);
+  visit("next_frame", c.next_frame);
+  visit("calls", c.calls);
+  visit("max_cord_strain", c.max_cord_strain);
+}
+
+template <SameOrConst<BrakeStep> S, typename Visitor>
+void VisitFields(S& b, Visitor&& visit) {
+  visit("active", b.active);
+  visit("t0", b.t0);
+  visit("x0", b.x0);
+  visit("applied", b.applied);
+  visit("history", b.history);
+}
+
+template <SameOrConst<TyreRunState> S, typename Visitor>
+void VisitFields(S& s, Visitor&& visit) {
+  visit("road_z_m", s.road_z_m);
+  visit("inflated_radius_m", s.inflated_radius_m);
+  visit("loaded_radius_m", s.loaded_radius_m);
+  visit("rolling_radius_m", s.rolling_radius_m);
+  visit("cursor", s.cursor);
+  visit("brake", s.brake);
+}
+
 /// The tyre model and its state across the steps.
 class TyreRun {
  public:
@@ -136,45 +206,34 @@ class TyreRun {
   /// result covers the whole step (its history from the start).
   BrakeResult ResumeBrake(double duration_s, const BrakeTorqueFn& torque, const StepHooks& hooks);
 
-  /// Writes the state of a braking step in progress (or just ended): the solver's, the step's
-  /// history and position, and the radii of the earlier steps. Throws if no braking step ran.
+  /// Writes the state of a braking step in progress (or just ended): the run's (TyreRunState:
+  /// the radii of the earlier steps, the step's position and history) and the solver's, each
+  /// whole (field_io.h). Throws if no braking step ran.
   void SaveState(BinaryWriter& out) const;
   /// Reads what SaveState wrote (InputError via the reader if it does not fit).
   void LoadState(BinaryReader& in);
   /// The braking step's start time, s (once Brake ran or LoadState read one).
-  double brake_start_s() const { return brake_.t0; }
+  double brake_start_s() const { return state_.brake.t0; }
 
   const FeConfig& config() const { return config_; }
   const TyreMesh& tyre() const { return tyre_; }
   const ExplicitSolver& solver() const { return solver_; }
   /// For benchmarks and tools that step the solver themselves.
   ExplicitSolver& mutable_solver() { return solver_; }
-  double loaded_radius_m() const { return loaded_radius_; }
+  double loaded_radius_m() const { return state_.loaded_radius_m; }
   /// The R_l of the slip (002:2): the free-rolling radius V / omega once Roll has run (the paper's
   /// "loaded radius from step four" is that ratio: 11.165 / 28.268 = 395 mm), else the loaded
   /// radius from the footprint.
-  double slip_radius_m() const { return rolling_radius_ > 0.0 ? rolling_radius_ : loaded_radius_; }
+  double slip_radius_m() const {
+    return state_.rolling_radius_m > 0.0 ? state_.rolling_radius_m : state_.loaded_radius_m;
+  }
+  /// The run's own state (the solver's is solver().state()).
+  const TyreRunState& state() const { return state_; }
 
  private:
-  /// Where RunUntil is within a step.
-  struct StepCursor {
-    double t0 = 0.0;            // the step's start, s
-    double next_history = 0.0;  // time of the last history row, s
-    int next_frame = 0;
-    std::int64_t calls = 0;        // steps taken in this step (progress lines every 2000)
-    double max_cord_strain = 0.0;  // the largest at the history rows so far
-  };
-  /// The braking step's own state.
-  struct BrakeStep {
-    bool active = false;
-    double t0 = 0.0, x0 = 0.0;  // start time and rim position
-    double applied = 0.0;       // torque of the last step, N m
-    std::vector<HistoryRow> history;
-  };
-
   HistoryRow Row(double torque) const;
   /// Steps until `t_end`, calling `each` before every step, recording history and hooks. With
-  /// `resume`, continues from cursor_ (no new first history row).
+  /// `resume`, continues from state_.cursor (no new first history row).
   void RunUntil(const std::string& step, double t_end, const StepHooks& hooks,
                 const std::function<void()>& each, std::vector<HistoryRow>& history,
                 const double* torque, bool resume = false);
@@ -185,12 +244,7 @@ class TyreRun {
   FeConfig config_;
   TyreMesh tyre_;
   ExplicitSolver solver_;
-  double road_z_ = 0.0;
-  double inflated_radius_ = 0.0;
-  double loaded_radius_ = 0.0;
-  double rolling_radius_ = 0.0;
-  StepCursor cursor_;
-  BrakeStep brake_;
+  TyreRunState state_;
 };
 
 }  // namespace hotlap::fe
