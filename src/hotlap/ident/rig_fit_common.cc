@@ -41,4 +41,28 @@ std::pair<double, double> LineFit(const std::vector<double>& x, const std::vecto
   return {my - c1 * mx, c1};
 }
 
+ValueGroups GroupValues(const std::vector<double>& values, double tolerance, GroupTolerance kind) {
+  std::vector<size_t> order(values.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return values[a] < values[b]; });
+  ValueGroups g;
+  g.index.assign(values.size(), -1);
+  std::vector<int> count;
+  double last = 0.0;
+  for (size_t k = 0; k < order.size(); ++k) {
+    const double v = values[order[k]];
+    const double tol = kind == GroupTolerance::kRelative ? tolerance * std::abs(v) : tolerance;
+    if (k == 0 || v - last > tol) {
+      g.mean.push_back(0.0);
+      count.push_back(0);
+    }
+    g.index[order[k]] = static_cast<int>(g.mean.size()) - 1;
+    g.mean.back() += v;
+    ++count.back();
+    last = v;
+  }
+  for (size_t i = 0; i < g.mean.size(); ++i) g.mean[i] /= count[i];
+  return g;
+}
+
 }  // namespace hotlap::ident::internal

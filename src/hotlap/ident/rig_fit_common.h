@@ -32,4 +32,23 @@ void CheckRigSamples(std::span<const RigSample> samples);
 /// Least squares y = c0 + c1 x; c1 = 0 with fewer than two distinct x. Returns (c0, c1).
 std::pair<double, double> LineFit(const std::vector<double>& x, const std::vector<double>& y);
 
+/// Whether GroupValues' tolerance is in the values' unit or a fraction of each value.
+enum class GroupTolerance {
+  kAbsolute,  ///< a value joins the group when it is within `tolerance` of the previous one
+  kRelative,  ///< ... within `tolerance` times its own magnitude (loads: 0.02 is 2 %)
+};
+
+/// Groups of values: sorted, a new group starts wherever a value lies more than the tolerance
+/// above the previous one. The rig fits group loads (2 %) and temperatures (kelvin) this way.
+struct ValueGroups {
+  std::vector<int> index;    ///< group of each value, in the input order
+  std::vector<double> mean;  ///< mean of each group, ascending
+};
+
+/// Relative tolerance within which rig loads are one load (GroupTolerance::kRelative).
+inline constexpr double kLoadGroupTolerance = 0.02;
+
+/// Groups `values` (see ValueGroups).
+ValueGroups GroupValues(const std::vector<double>& values, double tolerance, GroupTolerance kind);
+
 }  // namespace hotlap::ident::internal
