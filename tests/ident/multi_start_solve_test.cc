@@ -1,15 +1,12 @@
 // The rig fits' multi-start solve on a one-parameter problem with two minima: residuals x^2 - 1
 // and 0.3 (x - 1) have their global minimum at x = 1 (cost 0) and a local one near x = -1. The
-// starts decide which is found; the lowest cost is kept, iterations add up, bounds hold. And the
-// value groups the rig fits share.
+// starts decide which is found; the lowest cost is kept, iterations add up, bounds hold.
 
 #include "hotlap/ident/multi_start_solve.h"
 
 #include <vector>
 
 #include <gtest/gtest.h>
-
-#include "hotlap/ident/rig_fit_common.h"
 
 namespace hotlap::ident::internal {
 namespace {
@@ -64,20 +61,6 @@ TEST(MultiStartSolve, BoundsHoldAndStartsAreMovedInside) {
   EXPECT_DOUBLE_EQ(StartInsideBounds(7.0, {0.0, 2.0}), 2.0 - 2e-6);
   EXPECT_DOUBLE_EQ(StartInsideBounds(-1.0, {0.0, 2.0}), 2e-6);
   EXPECT_EQ(StartInsideBounds(1.25, {0.0, 2.0}), 1.25);
-}
-
-TEST(RigFitCommon, GroupValuesAbsoluteAndRelative) {
-  const ValueGroups t =
-      GroupValues({300.0, 273.5, 301.0, 274.0, 305.0}, 1.5, GroupTolerance::kAbsolute);
-  EXPECT_EQ(t.index, (std::vector<int>{1, 0, 1, 0, 2}));
-  ASSERT_EQ(t.mean.size(), 3u);
-  EXPECT_DOUBLE_EQ(t.mean[0], 273.75);
-  EXPECT_DOUBLE_EQ(t.mean[1], 300.5);
-  const ValueGroups f =
-      GroupValues({4000.0, 2000.0, 4050.0, 2030.0}, kLoadGroupTolerance, GroupTolerance::kRelative);
-  EXPECT_EQ(f.index, (std::vector<int>{1, 0, 1, 0}));
-  EXPECT_DOUBLE_EQ(f.mean[1], 4025.0);
-  EXPECT_TRUE(GroupValues({}, 1.0, GroupTolerance::kAbsolute).mean.empty());
 }
 
 }  // namespace

@@ -99,40 +99,16 @@ std::vector<CurveEstimate> EstimateCurves(const std::vector<const RigSample*>& s
   const internal::ValueGroups groups = GroupLoads(flat);
   std::vector<CurveEstimate> out;
   for (size_t g = 0; g < groups.mean.size(); ++g) {
-    std::vector<std::pair<double, double>> pts;  // (slip, force)
+    std::vector<double> slip, force;
     double peak = 0.0;
     for (size_t i = 0; i < flat.size(); ++i) {
       if (groups.index[i] != static_cast<int>(g)) continue;
-      pts.emplace_back(Slip(*flat[i], channel), Measured(*flat[i], channel));
-      peak = std::max(peak, std::abs(pts.back().second));
+      slip.push_back(Slip(*flat[i], channel));
+      force.push_back(Measured(*flat[i], channel));
+      peak = std::max(peak, std::abs(force.back()));
     }
-    std::vector<double> levels;
-    for (const auto& [x, y] : pts) {
-      if (std::abs(x) > 1e-9) levels.push_back(std::abs(x));
-    }
-    if (levels.empty() || !(peak > 0.0)) continue;
-    std::sort(levels.begin(), levels.end());
-    levels.erase(std::unique(levels.begin(), levels.end(),
-                             [](double a, double b) { return b <= a * (1.0 + 1e-6); }),
-                 levels.end());
-    const auto secant = [&](double level) {
-      double sxy = 0.0, sxx = 0.0;
-      for (const auto& [x, y] : pts) {
-        if (std::abs(std::abs(x) - level) <= 1e-6 * level) {
-          sxy += x * y;
-          sxx += x * x;
-        }
-      }
-      return sxy / sxx;
-    };
-    double slope = secant(levels[0]);
-    if (levels.size() >= 2) {
-      const double k2 = secant(levels[1]);
-      const double w = levels[0] / (levels[1] - levels[0]);
-      const double extrapolated = slope - (k2 - slope) * w;
-      // Keep the extrapolation modest and on the same side.
-      slope = std::clamp(extrapolated, std::min(slope, 1.5 * slope), std::max(slope, 1.5 * slope));
-    }
+    if (!(peak > 0.0)) continue;
+    const double slope = internal::ZeroSlipSlope(slip, force);
     if (slope == 0.0 || !std::isfinite(slope)) continue;
     out.push_back({groups.mean[g], slope, peak});
   }

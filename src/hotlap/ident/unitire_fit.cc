@@ -67,47 +67,21 @@ struct Curve {
   double peak = 0.0;          // largest |F|, N
 };
 
-// Slopes through the origin of y(x) and m(x) at the two smallest |x| levels, extrapolated
-// linearly to x = 0 (the secant slope of 1 - exp(-g) falls linearly with slip at first).
+// Slopes of y(x) and m(x) at x = 0 (ZeroSlipSlope), the force's times `sign`, and the peak |y|.
 struct Point {
   double x, y, m;
 };
 
-std::optional<Curve> EstimateCurve(std::vector<Point> pts, double sign) {
-  std::vector<double> levels;
+std::optional<Curve> EstimateCurve(const std::vector<Point>& pts, double sign) {
+  std::vector<double> x, y, m;
   for (const Point& p : pts) {
-    if (std::abs(p.x) > 1e-9) levels.push_back(std::abs(p.x));
+    x.push_back(p.x);
+    y.push_back(p.y);
+    m.push_back(p.m);
   }
-  if (levels.empty()) return std::nullopt;
-  std::sort(levels.begin(), levels.end());
-  std::vector<double> distinct;
-  for (double l : levels) {
-    if (distinct.empty() || l > distinct.back() * (1.0 + 1e-6)) distinct.push_back(l);
-  }
-  auto secant = [&](double level, double* ky, double* km) {
-    double sxy = 0.0, sxm = 0.0, sxx = 0.0;
-    for (const Point& p : pts) {
-      if (std::abs(std::abs(p.x) - level) <= 1e-6 * level) {
-        sxy += p.x * p.y;
-        sxm += p.x * p.m;
-        sxx += p.x * p.x;
-      }
-    }
-    *ky = sign * sxy / sxx;
-    *km = sxm / sxx;
-  };
   Curve c;
-  double k1 = 0.0, m1 = 0.0;
-  secant(distinct[0], &k1, &m1);
-  c.stiffness = k1;
-  c.moment_slope = m1;
-  if (distinct.size() >= 2) {
-    double k2 = 0.0, m2 = 0.0;
-    secant(distinct[1], &k2, &m2);
-    const double w = distinct[0] / (distinct[1] - distinct[0]);
-    c.stiffness = std::clamp(k1 - (k2 - k1) * w, std::min(k1, 1.5 * k1), std::max(k1, 1.5 * k1));
-    c.moment_slope = std::clamp(m1 - (m2 - m1) * w, std::min(m1, 1.5 * m1), std::max(m1, 1.5 * m1));
-  }
+  c.stiffness = sign * internal::ZeroSlipSlope(x, y);
+  c.moment_slope = internal::ZeroSlipSlope(x, m);
   for (const Point& p : pts) c.peak = std::max(c.peak, std::abs(p.y));
   if (!(c.stiffness > 0.0) || !(c.peak > 0.0)) return std::nullopt;
   return c;
@@ -143,7 +117,7 @@ std::vector<Curve> PureSlipCurves(std::span<const RigSample> samples,
   }
   std::vector<Curve> curves;
   for (auto& [key, pts] : points) {
-    std::optional<Curve> c = EstimateCurve(std::move(pts), lateral ? -1.0 : 1.0);
+    std::optional<Curve> c = EstimateCurve(pts, lateral ? -1.0 : 1.0);
     if (!c) continue;
     c->temp = tg.mean[key.first];
     c->fz = lg.mean[key.second];
