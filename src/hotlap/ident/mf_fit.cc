@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <random>
 #include <stdexcept>
 #include <string_view>
 
@@ -424,52 +423,6 @@ MagicFormulaFitResult FitMagicFormula(std::span<const RigSample> samples,
     result.metrics.insert(result.metrics.end(), rows.begin(), rows.end());
   }
   return result;
-}
-
-std::vector<RigSample> SynthesizeMagicFormulaRigData(const tyre::MagicFormulaParams<double>& truth,
-                                                     std::span<const double> loads,
-                                                     std::span<const double> cambers,
-                                                     std::span<const double> slip_angles,
-                                                     std::span<const double> slip_ratios,
-                                                     double speed, double tread_temp,
-                                                     double noise_fraction, std::uint32_t seed) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  std::vector<RigSample> out;
-  const auto curve = [&](double fz, double camber, bool lateral) {
-    std::vector<RigSample> rows;
-    double fy_peak = 0.0, mz_peak = 0.0, fx_peak = 0.0;
-    for (double x : lateral ? slip_angles : slip_ratios) {
-      RigSample s;
-      s.fz = fz;
-      s.camber = camber;
-      s.speed = speed;
-      s.tread_temp = tread_temp;
-      (lateral ? s.slip_angle : s.slip_ratio) = x;
-      const tyre::TyreForces<double> f =
-          tyre::CalcMagicFormula(truth, internal::RigOperatingPoint<double>(s), {});
-      s.fy = f.fy;
-      s.mz = f.mz;
-      s.fx = f.fx;
-      fy_peak = std::max(fy_peak, std::abs(f.fy));
-      mz_peak = std::max(mz_peak, std::abs(f.mz));
-      fx_peak = std::max(fx_peak, std::abs(f.fx));
-      rows.push_back(s);
-    }
-    for (RigSample& s : rows) {
-      s.fy += noise_fraction * fy_peak * normal(rng);
-      s.mz += noise_fraction * mz_peak * normal(rng);
-      *s.fx += noise_fraction * fx_peak * normal(rng);
-      out.push_back(s);
-    }
-  };
-  for (double fz : loads) {
-    for (double camber : cambers) {
-      curve(fz, camber, /*lateral=*/true);
-      curve(fz, camber, /*lateral=*/false);
-    }
-  }
-  return out;
 }
 
 }  // namespace hotlap::ident

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <map>
 #include <numeric>
-#include <random>
 #include <string_view>
 #include <tuple>
 
@@ -506,42 +505,6 @@ UniTireFitResult FitUniTire(std::span<const RigSample> samples, const UniTireFit
   result.metrics =
       EvaluateUniTire(result.params, samples, options.fit_temps, options.temp_tolerance);
   return result;
-}
-
-std::vector<RigSample> SynthesizeRigData(const tyre::UniTireParams<double>& truth,
-                                         std::span<const double> temps,
-                                         std::span<const double> loads,
-                                         std::span<const double> slip_angles, double noise_fraction,
-                                         std::uint32_t seed) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  std::vector<RigSample> out;
-  for (double temp : temps) {
-    for (double fz : loads) {
-      std::vector<RigSample> curve;
-      double fy_peak = 0.0, mz_peak = 0.0;
-      for (double alpha : slip_angles) {
-        RigSample s;
-        s.slip_angle = alpha;
-        s.fz = fz;
-        s.speed = kRigSpeed;
-        s.tread_temp = temp;
-        const tyre::TyreForces<double> f =
-            tyre::CalcUniTireForces(truth, internal::RigOperatingPoint<double>(s));
-        s.fy = f.fy;
-        s.mz = f.mz;
-        fy_peak = std::max(fy_peak, std::abs(f.fy));
-        mz_peak = std::max(mz_peak, std::abs(f.mz));
-        curve.push_back(s);
-      }
-      for (RigSample& s : curve) {
-        s.fy += noise_fraction * fy_peak * normal(rng);
-        s.mz += noise_fraction * mz_peak * normal(rng);
-        out.push_back(s);
-      }
-    }
-  }
-  return out;
 }
 
 }  // namespace hotlap::ident
