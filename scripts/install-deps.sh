@@ -20,6 +20,7 @@ packages=(
   libceres-dev           # least squares and Jet automatic differentiation (fitting, model AD)
   coinor-libipopt-dev    # Ipopt: the optimal-control lap's sparse nonlinear programme
   libyaml-cpp-dev        # parameter files
+  libpugixml-dev         # XML input (fastest-lap circuits and car): a kept library, not a hand-written parser
   libcli11-dev           # command-line parsing
   libfmt-dev             # formatted terminal output
   nlohmann-json3-dev     # --json summaries

@@ -10,7 +10,7 @@
 
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
-#include "hotlap/track/mini_xml.h"
+#include "hotlap/common/xml_file.h"
 #include "hotlap/track/tum_csv.h"
 #include "test_util.h"
 
@@ -23,11 +23,11 @@ const std::filesystem::path kCircuit = test::SourcePath("data/tracks/catalunya-f
 
 // One comma-separated array of the file, e.g. Array({"data", "yaw"}).
 std::vector<double> Array(const std::vector<std::string>& path) {
-  const internal::XmlElement root = internal::ParseXml(test::ReadTextFile(kCircuit), kCircuit);
-  const internal::XmlElement* e = &root;
-  for (const std::string& name : path) e = e->Child(name);
+  const XmlFile xml = XmlFile::Load(kCircuit);
+  pugi::xml_node e = xml.root();
+  for (const std::string& name : path) e = e.child(name.c_str());
   std::vector<double> out;
-  std::stringstream in(e->text);
+  std::stringstream in(e.child_value());
   std::string cell;
   while (std::getline(in, cell, ',')) out.push_back(std::stod(cell));
   return out;
@@ -163,8 +163,18 @@ TEST_F(FastestLapErrorTest, NegativeWidth) {
               {"<nr>", "value 1 (-1) must be > 0 m"});
 }
 
+// Malformed XML (pugixml's errors): the file and the line, and what is wrong there.
 TEST_F(FastestLapErrorTest, MalformedXml) {
-  ExpectError("</header>", "</headr>", {"XML:", "</headr> closes <header>"});
+  ExpectError("</header>", "</headr>",
+              {":8: XML: start-end tags mismatch: </headr> does not close the element"});
+  ExpectError("<data number_of_points=\"500\">", "<data number_of_points=500>",
+              {":25: XML: error parsing element attribute at '500>'"});
+  ExpectError("</circuit>", "", {":55: XML: start-end tags mismatch: an element is not closed"});
+}
+
+TEST_F(FastestLapErrorTest, WrongElementNamesItsLine) {
+  ExpectError("<yaw units=\"rad\">2.1417907364643334", "<yaw units=\"rad\">x",
+              {":47: <yaw> value 1: 'x' is not a finite number"});
 }
 
 }  // namespace

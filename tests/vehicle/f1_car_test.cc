@@ -10,7 +10,7 @@
 
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
-#include "hotlap/track/mini_xml.h"
+#include "hotlap/common/xml_file.h"
 #include "test_util.h"
 
 namespace hotlap::vehicle {
@@ -22,25 +22,17 @@ using test::SourcePath;
 std::filesystem::path CarFile() { return SourcePath("data/cars/f1-2014/car.yaml"); }
 
 // A value of the copied fastest-lap XML, by element path.
-double XmlValue(const track::internal::XmlElement& root, const std::string& path) {
-  const track::internal::XmlElement* e = &root;
-  size_t start = 0;
-  while (start < path.size()) {
-    const size_t slash = path.find('/', start);
-    const std::string part =
-        path.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
-    e = e->Child(part);
-    if (e == nullptr) throw std::runtime_error("no element " + path);
-    if (slash == std::string::npos) break;
-    start = slash + 1;
-  }
-  return std::stod(e->text);
+double XmlValue(const pugi::xml_node& root, const std::string& path) {
+  const pugi::xml_node e = root.first_element_by_path(path.c_str());
+  if (!e) throw std::runtime_error("no element " + path);
+  return std::stod(e.child_value());
 }
 
 TEST(F1Car, ShippedYamlMatchesFastestLapXml) {
   const F1CarParams p = LoadF1Car(CarFile());
   const auto xml_path = SourcePath("data/cars/f1-2014/limebeer-2014-f1.xml");
-  const auto root = track::internal::ParseXml(test::ReadTextFile(xml_path), xml_path);
+  const XmlFile xml = XmlFile::Load(xml_path);
+  const pugi::xml_node root = xml.root();
   EXPECT_EQ(p.name, "f1-2014");
   EXPECT_EQ(p.mass_kg, XmlValue(root, "chassis/mass"));
   EXPECT_EQ(p.yaw_inertia_kgm2, XmlValue(root, "chassis/inertia/Izz"));

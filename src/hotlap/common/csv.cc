@@ -1,18 +1,15 @@
 #include "hotlap/common/csv.h"
 
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
-#include <system_error>
 
 #include <fmt/format.h>
 
 #include "hotlap/common/atomic_file.h"
 #include "hotlap/common/error.h"
+#include "hotlap/common/read_file.h"
 
 namespace hotlap {
 namespace {
@@ -39,25 +36,6 @@ std::vector<std::string_view> SplitCells(std::string_view line) {
     cells.push_back(Trim(line.substr(start, comma - start)));
     start = comma + 1;
   }
-}
-
-// The whole file as text, or InputError "cannot read 'FILE': <reason>".
-std::string ReadWholeFile(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    throw InputError("cannot read '" + path.string() + "': it is a folder, not a file");
-  }
-  errno = 0;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    const int error = errno != 0 ? errno : ENOENT;
-    throw InputError("cannot read '" + path.string() +
-                     "': " + std::generic_category().message(error));
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError("cannot read '" + path.string() + "': read failed");
-  return std::move(text).str();
 }
 
 // A `#` line before the header: "key: value", or a comment kept whole as the key.

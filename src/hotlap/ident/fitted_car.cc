@@ -4,15 +4,14 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include "hotlap/common/atomic_file.h"
 #include "hotlap/common/error.h"
+#include "hotlap/common/read_file.h"
 #include "hotlap/ident/yaml_text_edit.h"
 
 namespace hotlap::ident {
@@ -20,14 +19,6 @@ namespace hotlap::ident {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string ReadFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(fmt::format("cannot read {}", path.string()));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 void WriteText(const fs::path& path, const std::string& text, std::vector<fs::path>* written) {
   std::error_code ec;
@@ -42,7 +33,7 @@ void WriteText(const fs::path& path, const std::string& text, std::vector<fs::pa
 
 // Copies `source` to `target` unless an identical copy is there (corners share files).
 void CopyFile(const fs::path& source, const fs::path& target, std::vector<fs::path>* written) {
-  const std::string text = ReadFile(source);
+  const std::string text = ReadWholeFile(source);
   if (std::find(written->begin(), written->end(), target) != written->end()) return;
   WriteText(target, text, written);
 }
@@ -126,7 +117,7 @@ std::vector<fs::path> WriteFittedCar(const vehicle::Car& car, const fs::path& ca
   std::vector<fs::path> written;
   const std::string stem = car_path.stem().string();
   const fs::path parts = car_path.parent_path() / stem;
-  const std::string car_text = ReadFile(car.path);
+  const std::string car_text = ReadWholeFile(car.path);
   YamlTextEditor car_edit(car_text, car.path.string());
   CopyNames tyre_names({"fl.yaml", "fr.yaml", "rl.yaml", "rr.yaml"});
 
@@ -135,7 +126,7 @@ std::vector<fs::path> WriteFittedCar(const vehicle::Car& car, const fs::path& ca
     const std::string corner(CornerName(c));
     // Tyre file: the fitted values, and its compound beside it.
     const tyre::TyreFile& t = car.tyres[i];
-    YamlTextEditor tyre_edit(ReadFile(t.path), t.path.string());
+    YamlTextEditor tyre_edit(ReadWholeFile(t.path), t.path.string());
     const std::string compound = tyre_names.For(t.compound_path);
     tyre_edit.SetValue("compound", compound);
     for (const FileEdit& e : edits.tyres[i]) {
@@ -150,7 +141,7 @@ std::vector<fs::path> WriteFittedCar(const vehicle::Car& car, const fs::path& ca
 
     // Brake file, one per corner now that each corner has its own values.
     const brake::BrakeFile& b = car.brakes[i];
-    YamlTextEditor brake_edit(ReadFile(b.path), b.path.string());
+    YamlTextEditor brake_edit(ReadWholeFile(b.path), b.path.string());
     for (const FileEdit& e : edits.brakes[i]) {
       brake_edit.SetValue(e.key, FormatFileNumber(e.value), e.comment);
     }

@@ -2,17 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
-#include <random>
+#include <limits>
 #include <stdexcept>
 #include <string_view>
 
-#include <ceres/ceres.h>
-#include <ceres/dynamic_autodiff_cost_function.h>
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
 #include "hotlap/common/median.h"
+#include "hotlap/ident/multi_start_solve.h"
 #include "hotlap/ident/rig_fit_common.h"
 #include "hotlap/tyre/magic_formula.h"
 
@@ -76,33 +74,11 @@ double Slip(const RigSample& s, Channel c) {
 }
 
 // Load groups: sorted loads no more than 2% apart.
-struct LoadGroups {
-  std::vector<int> index;  // per sample
-  std::vector<double> mean;
-};
-
-LoadGroups GroupLoads(const std::vector<const RigSample*>& samples) {
-  std::vector<size_t> order(samples.size());
-  std::iota(order.begin(), order.end(), size_t{0});
-  std::sort(order.begin(), order.end(),
-            [&](size_t a, size_t b) { return samples[a]->fz < samples[b]->fz; });
-  LoadGroups g;
-  g.index.assign(samples.size(), -1);
-  std::vector<int> count;
-  double last = 0.0;
-  for (size_t k = 0; k < order.size(); ++k) {
-    const double fz = samples[order[k]]->fz;
-    if (k == 0 || fz - last > 0.02 * fz) {
-      g.mean.push_back(0.0);
-      count.push_back(0);
-    }
-    g.index[order[k]] = static_cast<int>(g.mean.size()) - 1;
-    g.mean.back() += fz;
-    ++count.back();
-    last = fz;
-  }
-  for (size_t i = 0; i < g.mean.size(); ++i) g.mean[i] /= count[i];
-  return g;
+internal::ValueGroups GroupLoads(const std::vector<const RigSample*>& samples) {
+  std::vector<double> loads;
+  for (const RigSample* s : samples) loads.push_back(s->fz);
+  return internal::GroupValues(loads, internal::kLoadGroupTolerance,
+                               internal::GroupTolerance::kRelative);
 }
 
 // Per load group of zero-camber samples: slope of F against slip at zero slip (secant through
@@ -119,43 +95,19 @@ std::vector<CurveEstimate> EstimateCurves(const std::vector<const RigSample*>& s
   for (const RigSample* s : samples) {
     if (std::abs(s->camber) <= 1e-4) flat.push_back(s);
   }
-  const LoadGroups groups = GroupLoads(flat);
+  const internal::ValueGroups groups = GroupLoads(flat);
   std::vector<CurveEstimate> out;
   for (size_t g = 0; g < groups.mean.size(); ++g) {
-    std::vector<std::pair<double, double>> pts;  // (slip, force)
+    std::vector<double> slip, force;
     double peak = 0.0;
     for (size_t i = 0; i < flat.size(); ++i) {
       if (groups.index[i] != static_cast<int>(g)) continue;
-      pts.emplace_back(Slip(*flat[i], channel), Measured(*flat[i], channel));
-      peak = std::max(peak, std::abs(pts.back().second));
+      slip.push_back(Slip(*flat[i], channel));
+      force.push_back(Measured(*flat[i], channel));
+      peak = std::max(peak, std::abs(force.back()));
     }
-    std::vector<double> levels;
-    for (const auto& [x, y] : pts) {
-      if (std::abs(x) > 1e-9) levels.push_back(std::abs(x));
-    }
-    if (levels.empty() || !(peak > 0.0)) continue;
-    std::sort(levels.begin(), levels.end());
-    levels.erase(std::unique(levels.begin(), levels.end(),
-                             [](double a, double b) { return b <= a * (1.0 + 1e-6); }),
-                 levels.end());
-    const auto secant = [&](double level) {
-      double sxy = 0.0, sxx = 0.0;
-      for (const auto& [x, y] : pts) {
-        if (std::abs(std::abs(x) - level) <= 1e-6 * level) {
-          sxy += x * y;
-          sxx += x * x;
-        }
-      }
-      return sxy / sxx;
-    };
-    double slope = secant(levels[0]);
-    if (levels.size() >= 2) {
-      const double k2 = secant(levels[1]);
-      const double w = levels[0] / (levels[1] - levels[0]);
-      const double extrapolated = slope - (k2 - slope) * w;
-      // Keep the extrapolation modest and on the same side.
-      slope = std::clamp(extrapolated, std::min(slope, 1.5 * slope), std::max(slope, 1.5 * slope));
-    }
+    if (!(peak > 0.0)) continue;
+    const double slope = internal::ZeroSlipSlope(slip, force);
     if (slope == 0.0 || !std::isfinite(slope)) continue;
     out.push_back({groups.mean[g], slope, peak});
   }
@@ -311,63 +263,42 @@ ChannelFit FitChannel(const std::vector<const RigSample*>& samples, Channel chan
   for (const RigSample* s : samples) scale = std::max(scale, std::abs(Measured(*s, channel)));
   if (!(scale > 0.0)) scale = 1.0;
   const int n = static_cast<int>(free.size());
+  const Coef curvature = channel == Channel::kLateral ? Coef::PEY1 : Coef::PEX1;
   std::vector<double> x0;
-  for (const Free& f : free) {
-    const double margin = 1e-6 * (f.upper - f.lower);
-    x0.push_back(std::clamp(Field(params, f.coef), f.lower + margin, f.upper - margin));
+  std::vector<internal::ParameterBounds> bounds;
+  internal::MultiStartOptions solve;
+  solve.max_iterations = max_iterations;
+  for (int i = 0; i < n; ++i) {
+    bounds.push_back({free[i].lower, free[i].upper});
+    x0.push_back(internal::StartInsideBounds(Field(params, free[i].coef), bounds.back()));
+    if (free[i].coef == curvature) solve.start_indices.push_back(i);
   }
   const MagicFormulaParams<double> base = params;
-  const Coef curvature = channel == Channel::kLateral ? Coef::PEY1 : Coef::PEX1;
-  ChannelFit out;
-  double best_cost = std::numeric_limits<double>::infinity();
-  std::vector<double> best;
   // The starting curvature as given (the base's, or 0 for a generic start), then others.
-  std::vector<double> starts = {Field(params, curvature)};
+  solve.start_values = {Field(params, curvature)};
   for (double e : {0.0, -1.0, 0.5, -3.0}) {
-    if (std::find(starts.begin(), starts.end(), e) == starts.end()) starts.push_back(e);
-  }
-  for (double e : starts) {
-    std::vector<double> x = x0;
-    for (int i = 0; i < n; ++i) {
-      if (free[i].coef == curvature) x[i] = e;
-    }
-    ceres::Problem problem;
-    for (const RigSample* s : samples) {
-      auto* cost = new ceres::DynamicAutoDiffCostFunction<Residual, 14>(
-          new Residual{&base, &free, *s, channel, scale});
-      cost->AddParameterBlock(n);
-      cost->SetNumResiduals(1);
-      problem.AddResidualBlock(cost, nullptr, x.data());
-    }
-    for (int i = 0; i < n; ++i) {
-      problem.SetParameterLowerBound(x.data(), i, free[i].lower);
-      problem.SetParameterUpperBound(x.data(), i, free[i].upper);
-    }
-    ceres::Solver::Options options;
-    options.linear_solver_type = ceres::DENSE_QR;
-    options.max_num_iterations = max_iterations;
-    options.function_tolerance = 1e-12;
-    options.gradient_tolerance = 1e-14;
-    options.parameter_tolerance = 1e-12;
-    options.logging_type = ceres::SILENT;
-    options.num_threads = 1;
-    ceres::Solver::Summary summary;
-    ceres::Solve(options, &problem, &summary);
-    out.iterations += static_cast<int>(summary.iterations.size());
-    if (summary.final_cost < best_cost) {
-      best_cost = summary.final_cost;
-      best = x;
-      out.converged = summary.termination_type == ceres::CONVERGENCE;
+    if (std::find(solve.start_values.begin(), solve.start_values.end(), e) ==
+        solve.start_values.end()) {
+      solve.start_values.push_back(e);
     }
   }
-  for (int i = 0; i < n; ++i) Field(params, free[i].coef) = best[i];
-  return out;
+  const internal::MultiStartResult best = internal::SolveMultiStart(
+      x0, bounds,
+      [&](ceres::Problem& problem, double* x) {
+        for (const RigSample* s : samples) {
+          internal::AddDynamicAutoDiffResidual(
+              problem, new Residual{&base, &free, *s, channel, scale}, n, 1, x);
+        }
+      },
+      solve);
+  for (int i = 0; i < n; ++i) Field(params, free[i].coef) = best.x[i];
+  return {best.converged, best.iterations};
 }
 
 std::vector<MagicFormulaFitMetrics> Metrics(const MagicFormulaParams<double>& params,
                                             const std::vector<const RigSample*>& samples,
                                             Channel channel) {
-  const LoadGroups groups = GroupLoads(samples);
+  const internal::ValueGroups groups = GroupLoads(samples);
   std::vector<MagicFormulaFitMetrics> rows(groups.mean.size());
   std::vector<double> sum2(rows.size(), 0.0);
   for (size_t i = 0; i < samples.size(); ++i) {
@@ -492,52 +423,6 @@ MagicFormulaFitResult FitMagicFormula(std::span<const RigSample> samples,
     result.metrics.insert(result.metrics.end(), rows.begin(), rows.end());
   }
   return result;
-}
-
-std::vector<RigSample> SynthesizeMagicFormulaRigData(const tyre::MagicFormulaParams<double>& truth,
-                                                     std::span<const double> loads,
-                                                     std::span<const double> cambers,
-                                                     std::span<const double> slip_angles,
-                                                     std::span<const double> slip_ratios,
-                                                     double speed, double tread_temp,
-                                                     double noise_fraction, std::uint32_t seed) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  std::vector<RigSample> out;
-  const auto curve = [&](double fz, double camber, bool lateral) {
-    std::vector<RigSample> rows;
-    double fy_peak = 0.0, mz_peak = 0.0, fx_peak = 0.0;
-    for (double x : lateral ? slip_angles : slip_ratios) {
-      RigSample s;
-      s.fz = fz;
-      s.camber = camber;
-      s.speed = speed;
-      s.tread_temp = tread_temp;
-      (lateral ? s.slip_angle : s.slip_ratio) = x;
-      const tyre::TyreForces<double> f =
-          tyre::CalcMagicFormula(truth, internal::RigOperatingPoint<double>(s), {});
-      s.fy = f.fy;
-      s.mz = f.mz;
-      s.fx = f.fx;
-      fy_peak = std::max(fy_peak, std::abs(f.fy));
-      mz_peak = std::max(mz_peak, std::abs(f.mz));
-      fx_peak = std::max(fx_peak, std::abs(f.fx));
-      rows.push_back(s);
-    }
-    for (RigSample& s : rows) {
-      s.fy += noise_fraction * fy_peak * normal(rng);
-      s.mz += noise_fraction * mz_peak * normal(rng);
-      *s.fx += noise_fraction * fx_peak * normal(rng);
-      out.push_back(s);
-    }
-  };
-  for (double fz : loads) {
-    for (double camber : cambers) {
-      curve(fz, camber, /*lateral=*/true);
-      curve(fz, camber, /*lateral=*/false);
-    }
-  }
-  return out;
 }
 
 }  // namespace hotlap::ident

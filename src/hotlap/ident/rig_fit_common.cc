@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include <fmt/format.h>
@@ -39,6 +40,58 @@ std::pair<double, double> LineFit(const std::vector<double>& x, const std::vecto
   }
   const double c1 = sxx > 0.0 ? sxy / sxx : 0.0;
   return {my - c1 * mx, c1};
+}
+
+double ZeroSlipSlope(std::span<const double> x, std::span<const double> y) {
+  std::vector<double> levels;
+  for (double v : x) {
+    if (std::abs(v) > 1e-9) levels.push_back(std::abs(v));
+  }
+  std::sort(levels.begin(), levels.end());
+  std::vector<double> distinct;
+  for (double l : levels) {
+    if (distinct.empty() || l > distinct.back() * (1.0 + 1e-6)) distinct.push_back(l);
+  }
+  if (distinct.empty()) return std::numeric_limits<double>::quiet_NaN();
+  const auto secant = [&](double level) {
+    double sxy = 0.0, sxx = 0.0;
+    for (size_t i = 0; i < x.size(); ++i) {
+      if (std::abs(std::abs(x[i]) - level) <= 1e-6 * level) {
+        sxy += x[i] * y[i];
+        sxx += x[i] * x[i];
+      }
+    }
+    return sxy / sxx;
+  };
+  const double k1 = secant(distinct[0]);
+  if (distinct.size() < 2) return k1;
+  const double k2 = secant(distinct[1]);
+  const double w = distinct[0] / (distinct[1] - distinct[0]);
+  return std::clamp(k1 - (k2 - k1) * w, std::min(k1, 1.5 * k1), std::max(k1, 1.5 * k1));
+}
+
+ValueGroups GroupValues(const std::vector<double>& values, double tolerance, GroupTolerance kind) {
+  std::vector<size_t> order(values.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return values[a] < values[b]; });
+  ValueGroups g;
+  g.index.assign(values.size(), -1);
+  std::vector<int> count;
+  double last = 0.0;
+  for (size_t k = 0; k < order.size(); ++k) {
+    const double v = values[order[k]];
+    const double tol = kind == GroupTolerance::kRelative ? tolerance * std::abs(v) : tolerance;
+    if (k == 0 || v - last > tol) {
+      g.mean.push_back(0.0);
+      count.push_back(0);
+    }
+    g.index[order[k]] = static_cast<int>(g.mean.size()) - 1;
+    g.mean.back() += v;
+    ++count.back();
+    last = v;
+  }
+  for (size_t i = 0; i < g.mean.size(); ++i) g.mean[i] /= count[i];
+  return g;
 }
 
 }  // namespace hotlap::ident::internal

@@ -5,16 +5,14 @@
 #include <cmath>
 #include <map>
 #include <numeric>
-#include <random>
 #include <string_view>
 #include <tuple>
 
-#include <ceres/ceres.h>
-#include <ceres/dynamic_autodiff_cost_function.h>
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
 #include "hotlap/common/median.h"
+#include "hotlap/ident/multi_start_solve.h"
 #include "hotlap/ident/rig_fit_common.h"
 
 namespace hotlap::ident {
@@ -47,38 +45,10 @@ struct FreeField {
   double upper;
 };
 
-// --- Grouping -----------------------------------------------------------------------------------
-
-// Groups of sorted values no more than `tolerance` apart (absolute, or relative to the value when
-// `relative`); returns the group index of each value and the group means.
-struct Groups {
-  std::vector<int> index;
-  std::vector<double> mean;
-};
-
-Groups GroupValues(const std::vector<double>& values, double tolerance, bool relative) {
-  std::vector<size_t> order(values.size());
-  std::iota(order.begin(), order.end(), size_t{0});
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return values[a] < values[b]; });
-  Groups g;
-  g.index.assign(values.size(), -1);
-  std::vector<int> count;
-  double last = 0.0;
-  for (size_t k = 0; k < order.size(); ++k) {
-    const double v = values[order[k]];
-    const double tol = relative ? tolerance * std::abs(v) : tolerance;
-    if (k == 0 || v - last > tol) {
-      g.mean.push_back(0.0);
-      count.push_back(0);
-    }
-    g.index[order[k]] = static_cast<int>(g.mean.size()) - 1;
-    g.mean.back() += v;
-    ++count.back();
-    last = v;
-  }
-  for (size_t i = 0; i < g.mean.size(); ++i) g.mean[i] /= count[i];
-  return g;
-}
+using internal::GroupTolerance;
+using internal::GroupValues;
+using internal::kLoadGroupTolerance;
+using internal::ValueGroups;
 
 bool IsFitTemp(double temp, std::span<const double> fit_temps, double tolerance) {
   return std::any_of(fit_temps.begin(), fit_temps.end(),
@@ -96,47 +66,21 @@ struct Curve {
   double peak = 0.0;          // largest |F|, N
 };
 
-// Slopes through the origin of y(x) and m(x) at the two smallest |x| levels, extrapolated
-// linearly to x = 0 (the secant slope of 1 - exp(-g) falls linearly with slip at first).
+// Slopes of y(x) and m(x) at x = 0 (ZeroSlipSlope), the force's times `sign`, and the peak |y|.
 struct Point {
   double x, y, m;
 };
 
-std::optional<Curve> EstimateCurve(std::vector<Point> pts, double sign) {
-  std::vector<double> levels;
+std::optional<Curve> EstimateCurve(const std::vector<Point>& pts, double sign) {
+  std::vector<double> x, y, m;
   for (const Point& p : pts) {
-    if (std::abs(p.x) > 1e-9) levels.push_back(std::abs(p.x));
+    x.push_back(p.x);
+    y.push_back(p.y);
+    m.push_back(p.m);
   }
-  if (levels.empty()) return std::nullopt;
-  std::sort(levels.begin(), levels.end());
-  std::vector<double> distinct;
-  for (double l : levels) {
-    if (distinct.empty() || l > distinct.back() * (1.0 + 1e-6)) distinct.push_back(l);
-  }
-  auto secant = [&](double level, double* ky, double* km) {
-    double sxy = 0.0, sxm = 0.0, sxx = 0.0;
-    for (const Point& p : pts) {
-      if (std::abs(std::abs(p.x) - level) <= 1e-6 * level) {
-        sxy += p.x * p.y;
-        sxm += p.x * p.m;
-        sxx += p.x * p.x;
-      }
-    }
-    *ky = sign * sxy / sxx;
-    *km = sxm / sxx;
-  };
   Curve c;
-  double k1 = 0.0, m1 = 0.0;
-  secant(distinct[0], &k1, &m1);
-  c.stiffness = k1;
-  c.moment_slope = m1;
-  if (distinct.size() >= 2) {
-    double k2 = 0.0, m2 = 0.0;
-    secant(distinct[1], &k2, &m2);
-    const double w = distinct[0] / (distinct[1] - distinct[0]);
-    c.stiffness = std::clamp(k1 - (k2 - k1) * w, std::min(k1, 1.5 * k1), std::max(k1, 1.5 * k1));
-    c.moment_slope = std::clamp(m1 - (m2 - m1) * w, std::min(m1, 1.5 * m1), std::max(m1, 1.5 * m1));
-  }
+  c.stiffness = sign * internal::ZeroSlipSlope(x, y);
+  c.moment_slope = internal::ZeroSlipSlope(x, m);
   for (const Point& p : pts) c.peak = std::max(c.peak, std::abs(p.y));
   if (!(c.stiffness > 0.0) || !(c.peak > 0.0)) return std::nullopt;
   return c;
@@ -160,8 +104,8 @@ std::vector<Curve> PureSlipCurves(std::span<const RigSample> samples,
     temps.push_back(s->tread_temp);
     loads.push_back(s->fz);
   }
-  const Groups tg = GroupValues(temps, options.temp_tolerance, false);
-  const Groups lg = GroupValues(loads, 0.02, true);
+  const ValueGroups tg = GroupValues(temps, options.temp_tolerance, GroupTolerance::kAbsolute);
+  const ValueGroups lg = GroupValues(loads, kLoadGroupTolerance, GroupTolerance::kRelative);
   std::map<std::pair<int, int>, std::vector<Point>> points;
   for (size_t i = 0; i < chosen.size(); ++i) {
     const RigSample& s = *chosen[i];
@@ -172,7 +116,7 @@ std::vector<Curve> PureSlipCurves(std::span<const RigSample> samples,
   }
   std::vector<Curve> curves;
   for (auto& [key, pts] : points) {
-    std::optional<Curve> c = EstimateCurve(std::move(pts), lateral ? -1.0 : 1.0);
+    std::optional<Curve> c = EstimateCurve(pts, lateral ? -1.0 : 1.0);
     if (!c) continue;
     c->temp = tg.mean[key.first];
     c->fz = lg.mean[key.second];
@@ -193,7 +137,7 @@ LoadLaw TemperatureRegression(const std::vector<Curve>& curves, double (*value)(
                               double reference_temp) {
   std::vector<double> loads;
   for (const Curve& c : curves) loads.push_back(c.fz);
-  const Groups lg = GroupValues(loads, 0.02, true);
+  const ValueGroups lg = GroupValues(loads, kLoadGroupTolerance, GroupTolerance::kRelative);
   const size_t n_loads = lg.mean.size();
   std::vector<double> mean_t(n_loads, 0.0), mean_l(n_loads, 0.0);
   std::vector<int> count(n_loads, 0);
@@ -393,7 +337,7 @@ tyre::UniTireParams<double> CalcUniTireInitialGuess(std::span<const RigSample> s
     {
       std::vector<double> loads;
       for (const Curve& c : at_ref) loads.push_back(c.fz);
-      const Groups lg = GroupValues(loads, 0.02, true);
+      const ValueGroups lg = GroupValues(loads, kLoadGroupTolerance, GroupTolerance::kRelative);
       law.loads = lg.mean;
       law.ref_value.assign(lg.mean.size(), 0.0);
       std::vector<int> count(lg.mean.size(), 0);
@@ -425,7 +369,7 @@ std::vector<UniTireTempMetrics> EvaluateUniTire(const tyre::UniTireParams<double
                                                 double temp_tolerance) {
   std::vector<double> temps;
   for (const RigSample& s : samples) temps.push_back(s.tread_temp);
-  const Groups tg = GroupValues(temps, temp_tolerance, false);
+  const ValueGroups tg = GroupValues(temps, temp_tolerance, GroupTolerance::kAbsolute);
   std::vector<UniTireTempMetrics> rows(tg.mean.size());
   std::vector<double> fy2(rows.size(), 0.0), mz2(rows.size(), 0.0), fx2(rows.size(), 0.0);
   std::vector<int> fx_count(rows.size(), 0);
@@ -475,8 +419,10 @@ UniTireFitResult FitUniTire(std::span<const RigSample> samples, const UniTireFit
     mz_scale = std::max(mz_scale, std::abs(s->mz));
     if (s->fx) fx_scale = std::max(fx_scale, std::abs(*s->fx));
   }
-  const bool several_loads = GroupValues(loads, 0.02, true).mean.size() >= 2;
-  const bool several_temps = GroupValues(temps, options.temp_tolerance, false).mean.size() >= 2;
+  const bool several_loads =
+      GroupValues(loads, kLoadGroupTolerance, GroupTolerance::kRelative).mean.size() >= 2;
+  const bool several_temps =
+      GroupValues(temps, options.temp_tolerance, GroupTolerance::kAbsolute).mean.size() >= 2;
   if (!(fy_scale > 0.0)) fy_scale = 1.0;
   if (!(mz_scale > 0.0)) mz_scale = 1.0;
   if (!(fx_scale > 0.0)) fx_scale = 1.0;
@@ -516,112 +462,49 @@ UniTireFitResult FitUniTire(std::span<const RigSample> samples, const UniTireFit
   UniTireParams<double> base = result.initial_guess;
   std::vector<int> free_index;
   std::vector<double> x0;
+  std::vector<internal::ParameterBounds> bounds;
+  internal::MultiStartOptions solve;
+  solve.max_iterations = options.max_iterations;
   {
     const auto fields = FieldPointers(base);
     for (const FreeField& f : free) {
-      free_index.push_back(FieldIndex(f.name));
       // Start inside the bounds, away from them so the first step can go either way.
-      const double margin = 1e-6 * (f.upper - f.lower);
-      x0.push_back(std::clamp(*fields[free_index.back()], f.lower + margin, f.upper - margin));
+      free_index.push_back(FieldIndex(f.name));
+      bounds.push_back({f.lower, f.upper});
+      x0.push_back(internal::StartInsideBounds(*fields[free_index.back()], bounds.back()));
       result.fitted_fields.emplace_back(f.name);
+      // The curvature E shapes Fbar's knee and can sit in a local minimum far from its start:
+      // start it at 0, -1, 1 and -2 and keep the best solution.
+      if (f.name == "curvature_y" || f.name == "curvature_x") {
+        solve.start_indices.push_back(static_cast<int>(x0.size()) - 1);
+      }
     }
   }
+  solve.start_values = {0.0, -1.0, 1.0, -2.0};
   const int n_free = static_cast<int>(x0.size());
-
-  // One least-squares solve from `x` (overwritten with the solution).
-  auto solve = [&](std::vector<double>& x) {
-    ceres::Problem problem;
-    for (const RigSample* s : fit) {
-      auto* cost = new ceres::DynamicAutoDiffCostFunction<SampleResidual, 14>(
-          new SampleResidual{&base, &free_index, *s, fy_scale, mz_scale, fx_scale});
-      cost->AddParameterBlock(n_free);
-      cost->SetNumResiduals(s->fx ? 3 : 2);
-      problem.AddResidualBlock(cost, nullptr, x.data());
-    }
-    for (int i = 0; i < n_free; ++i) {
-      problem.SetParameterLowerBound(x.data(), i, free[i].lower);
-      problem.SetParameterUpperBound(x.data(), i, free[i].upper);
-    }
-    ceres::Solver::Options solver;
-    solver.linear_solver_type = ceres::DENSE_QR;
-    solver.max_num_iterations = options.max_iterations;
-    solver.function_tolerance = 1e-12;
-    solver.gradient_tolerance = 1e-14;
-    solver.parameter_tolerance = 1e-12;
-    solver.logging_type = ceres::SILENT;
-    solver.num_threads = 1;
-    ceres::Solver::Summary summary;
-    ceres::Solve(solver, &problem, &summary);
-    return summary;
-  };
-
-  // The curvature E shapes Fbar's knee and can sit in a local minimum far from its start:
-  // start it at 0, -1, 1 and -2 and keep the best solution.
-  std::vector<double> x;
-  ceres::Solver::Summary best;
-  bool have_best = false;
-  for (double e : {0.0, -1.0, 1.0, -2.0}) {
-    std::vector<double> xs = x0;
-    for (int i = 0; i < n_free; ++i) {
-      if (free[i].name == "curvature_y" || free[i].name == "curvature_x") xs[i] = e;
-    }
-    const ceres::Solver::Summary summary = solve(xs);
-    if (!have_best || summary.final_cost < best.final_cost) {
-      best = summary;
-      x = xs;
-      have_best = true;
-    }
-    result.iterations += static_cast<int>(summary.iterations.size());
-  }
-  const ceres::Solver::Summary& summary = best;
+  const internal::MultiStartResult best = internal::SolveMultiStart(
+      x0, bounds,
+      [&](ceres::Problem& problem, double* x) {
+        for (const RigSample* s : fit) {
+          internal::AddDynamicAutoDiffResidual(
+              problem, new SampleResidual{&base, &free_index, *s, fy_scale, mz_scale, fx_scale},
+              n_free, s->fx ? 3 : 2, x);
+        }
+      },
+      solve);
 
   result.params = base;
   {
     const auto fields = FieldPointers(result.params);
-    for (int i = 0; i < n_free; ++i) *fields[free_index[i]] = x[i];
+    for (int i = 0; i < n_free; ++i) *fields[free_index[i]] = best.x[i];
   }
-  result.converged = summary.termination_type == ceres::CONVERGENCE;
-  result.final_cost = summary.final_cost;
-  result.report = summary.BriefReport();
+  result.converged = best.converged;
+  result.iterations = best.iterations;
+  result.final_cost = best.final_cost;
+  result.report = best.brief_report;
   result.metrics =
       EvaluateUniTire(result.params, samples, options.fit_temps, options.temp_tolerance);
   return result;
-}
-
-std::vector<RigSample> SynthesizeRigData(const tyre::UniTireParams<double>& truth,
-                                         std::span<const double> temps,
-                                         std::span<const double> loads,
-                                         std::span<const double> slip_angles, double noise_fraction,
-                                         std::uint32_t seed) {
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  std::vector<RigSample> out;
-  for (double temp : temps) {
-    for (double fz : loads) {
-      std::vector<RigSample> curve;
-      double fy_peak = 0.0, mz_peak = 0.0;
-      for (double alpha : slip_angles) {
-        RigSample s;
-        s.slip_angle = alpha;
-        s.fz = fz;
-        s.speed = kRigSpeed;
-        s.tread_temp = temp;
-        const tyre::TyreForces<double> f =
-            tyre::CalcUniTireForces(truth, internal::RigOperatingPoint<double>(s));
-        s.fy = f.fy;
-        s.mz = f.mz;
-        fy_peak = std::max(fy_peak, std::abs(f.fy));
-        mz_peak = std::max(mz_peak, std::abs(f.mz));
-        curve.push_back(s);
-      }
-      for (RigSample& s : curve) {
-        s.fy += noise_fraction * fy_peak * normal(rng);
-        s.mz += noise_fraction * mz_peak * normal(rng);
-        out.push_back(s);
-      }
-    }
-  }
-  return out;
 }
 
 }  // namespace hotlap::ident

@@ -3,8 +3,6 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -12,34 +10,33 @@
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
-#include "hotlap/track/mini_xml.h"
+#include "hotlap/common/xml_file.h"
 #include "hotlap/track/sampled_track.h"
 
 namespace hotlap::track {
 
 namespace {
 
-using internal::XmlElement;
+using pugi::xml_node;
 
+// Reads values of the circuit's elements; every error names the file and the element's line.
 class CircuitReader {
  public:
-  explicit CircuitReader(const std::filesystem::path& path) : path_(path) {}
+  explicit CircuitReader(const XmlFile& xml) : xml_(xml) {}
 
-  [[noreturn]] void Fail(const XmlElement& at, const std::string& what,
+  [[noreturn]] void Fail(const xml_node& at, const std::string& what,
                          const std::string& message) const {
-    throw InputError(fmt::format("{}:{}: {}: {}", path_.string(), at.line, what, message));
+    throw InputError(
+        fmt::format("{}:{}: {}: {}", xml_.file().string(), xml_.Line(at), what, message));
   }
 
-  const XmlElement& Child(const XmlElement& parent, const std::string& name,
-                          const std::string& where) const {
-    const XmlElement* child = parent.Child(name);
-    if (child == nullptr) {
-      Fail(parent, where, fmt::format("missing element <{}>", name));
-    }
-    return *child;
+  xml_node Child(const xml_node& parent, const std::string& name, const std::string& where) const {
+    const xml_node child = parent.child(name.c_str());
+    if (!child) Fail(parent, where, fmt::format("missing element <{}>", name));
+    return child;
   }
 
-  double Number(const XmlElement& e, const std::string& text, const std::string& what) const {
+  double Number(const xml_node& e, std::string_view text, const std::string& what) const {
     std::string_view t = text;
     while (!t.empty() && std::isspace(static_cast<unsigned char>(t.front()))) t.remove_prefix(1);
     while (!t.empty() && std::isspace(static_cast<unsigned char>(t.back()))) t.remove_suffix(1);
@@ -52,9 +49,9 @@ class CircuitReader {
   }
 
   // A comma-separated list of exactly `count` numbers.
-  std::vector<double> List(const XmlElement& e, const std::string& what, size_t count) const {
+  std::vector<double> List(const xml_node& e, const std::string& what, size_t count) const {
     std::vector<double> values;
-    std::stringstream in(e.text);
+    std::stringstream in(e.child_value());
     std::string cell;
     while (std::getline(in, cell, ',')) {
       values.push_back(Number(e, cell, fmt::format("{} value {}", what, values.size() + 1)));
@@ -66,62 +63,57 @@ class CircuitReader {
     return values;
   }
 
-  std::string Attribute(const XmlElement& e, const std::string& key,
-                        const std::string& expected) const {
-    const std::optional<std::string> value = e.Attribute(key);
-    if (value != expected) {
-      Fail(e, fmt::format("<{}>", e.name),
+  void Attribute(const xml_node& e, const std::string& key, const std::string& expected) const {
+    const pugi::xml_attribute value = e.attribute(key.c_str());
+    if (!value || value.value() != expected) {
+      Fail(e, fmt::format("<{}>", e.name()),
            fmt::format("attribute {}=\"{}\" is not supported: expected {}=\"{}\"", key,
-                       value.value_or("(missing)"), key, expected));
+                       value ? value.value() : "(missing)", key, expected));
     }
-    return *value;
   }
 
  private:
-  const std::filesystem::path& path_;
+  const XmlFile& xml_;
 };
 
 }  // namespace
 
 Track LoadFastestLapCircuit(const std::filesystem::path& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw InputError(fmt::format("cannot read '{}'", path.string()));
-  std::stringstream buffer;
-  buffer << file.rdbuf();
-  const XmlElement root = internal::ParseXml(buffer.str(), path);
-  const CircuitReader r(path);
-  if (root.name != "circuit") {
-    r.Fail(root, "root element", fmt::format("<{}> is not a fastest-lap <circuit>", root.name));
+  const XmlFile xml = XmlFile::Load(path);
+  const CircuitReader r(xml);
+  const xml_node root = xml.root();
+  if (std::string_view(root.name()) != "circuit") {
+    r.Fail(root, "root element", fmt::format("<{}> is not a fastest-lap <circuit>", root.name()));
   }
   r.Attribute(root, "format", "discrete");
   r.Attribute(root, "type", "closed");
 
-  const XmlElement& length_element =
+  const xml_node length_element =
       r.Child(r.Child(root, "header", "<circuit>"), "track_length", "<header>");
-  const double length = r.Number(length_element, length_element.text, "<track_length>");
+  const double length = r.Number(length_element, length_element.child_value(), "<track_length>");
   if (!(length > 0.0)) r.Fail(length_element, "<track_length>", "must be > 0 m");
 
-  const XmlElement& data = r.Child(root, "data", "<circuit>");
-  const std::optional<std::string> count_text = data.Attribute("number_of_points");
+  const xml_node data = r.Child(root, "data", "<circuit>");
+  const pugi::xml_attribute count_text = data.attribute("number_of_points");
   if (!count_text) r.Fail(data, "<data>", "missing attribute number_of_points");
-  const double count_value = r.Number(data, *count_text, "<data number_of_points>");
+  const double count_value = r.Number(data, count_text.value(), "<data number_of_points>");
   if (!(count_value >= 20.0) || count_value != std::floor(count_value) || count_value > 1e6) {
     r.Fail(data, "<data number_of_points>", "must be a whole number of at least 20");
   }
   const size_t n = static_cast<size_t>(count_value);
-  const XmlElement& centre = r.Child(data, "centerline", "<data>");
-  const std::vector<double> s = r.List(r.Child(data, "arclength", "<data>"), "<arclength>", n);
+  const xml_node centre = r.Child(data, "centerline", "<data>");
+  const xml_node s_element = r.Child(data, "arclength", "<data>");
+  const std::vector<double> s = r.List(s_element, "<arclength>", n);
   const std::vector<double> x = r.List(r.Child(centre, "x", "<centerline>"), "<centerline>/<x>", n);
   const std::vector<double> y = r.List(r.Child(centre, "y", "<centerline>"), "<centerline>/<y>", n);
   const std::vector<double> yaw = r.List(r.Child(data, "yaw", "<data>"), "<yaw>", n);
-  const XmlElement& kappa_element = r.Child(data, "yaw_dot", "<data>");
+  const xml_node kappa_element = r.Child(data, "yaw_dot", "<data>");
   const std::vector<double> kappa = r.List(kappa_element, "<yaw_dot>", n);
-  const XmlElement& nl_element = r.Child(data, "nl", "<data>");
-  const XmlElement& nr_element = r.Child(data, "nr", "<data>");
+  const xml_node nl_element = r.Child(data, "nl", "<data>");
+  const xml_node nr_element = r.Child(data, "nr", "<data>");
   const std::vector<double> nl = r.List(nl_element, "<nl>", n);
   const std::vector<double> nr = r.List(nr_element, "<nr>", n);
 
-  const XmlElement& s_element = *data.Child("arclength");
   if (s[0] != 0.0) r.Fail(s_element, "<arclength>", fmt::format("starts at {:g}, not 0", s[0]));
   for (size_t i = 1; i < n; ++i) {
     if (!(s[i] > s[i - 1])) {

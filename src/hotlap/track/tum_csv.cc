@@ -4,7 +4,6 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -12,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
+#include "hotlap/common/read_file.h"
 
 namespace hotlap::track {
 
@@ -40,16 +40,17 @@ std::vector<std::string_view> Split(std::string_view line) {
 }  // namespace
 
 CentreLinePoints ReadTumCentreLine(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(fmt::format("cannot read '{}'", path.string()));
+  const std::string text = ReadWholeFile(path);
   const std::string file = path.string();
   const std::vector<std::string> columns = {"x_m", "y_m", "w_tr_right_m", "w_tr_left_m"};
   CentreLinePoints p;
   std::vector<int> lines;
   bool header_seen = false;
-  std::string raw;
-  for (int line_number = 1; std::getline(in, raw); ++line_number) {
-    std::string_view line = raw;
+  size_t next = 0;  // start of the next line in `text`
+  for (int line_number = 1; next < text.size(); ++line_number) {
+    const size_t end = std::min(text.find('\n', next), text.size());
+    std::string_view line = std::string_view(text).substr(next, end - next);
+    next = end + 1;
     if (line_number == 1 && line.substr(0, 3) == "\xEF\xBB\xBF") line.remove_prefix(3);  // BOM
     line = Trim(line);
     if (line.empty()) continue;

@@ -2,12 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <charconv>
-#include <fstream>
 #include <optional>
 #include <sstream>
-#include <system_error>
 #include <unordered_map>
 #include <utility>
 
@@ -15,6 +12,7 @@
 
 #include "hotlap/common/atomic_file.h"
 #include "hotlap/common/error.h"
+#include "hotlap/common/read_file.h"
 #include "hotlap/common/units.h"
 
 namespace hotlap::tyre {
@@ -82,24 +80,6 @@ bool IsKey(std::string_view key) {
   return !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
   });
-}
-
-std::string ReadWholeFile(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    throw InputError("cannot read '" + path.string() + "': it is a folder, not a file");
-  }
-  errno = 0;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    const int error = errno != 0 ? errno : ENOENT;
-    throw InputError("cannot read '" + path.string() +
-                     "': " + std::generic_category().message(error));
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError("cannot read '" + path.string() + "': read failed");
-  return std::move(text).str();
 }
 
 struct UnitName {
