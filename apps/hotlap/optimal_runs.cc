@@ -33,11 +33,13 @@ namespace fs = std::filesystem;
 ocp::ThermalStart ParseStart(const std::string& s) {
   if (s == "car") return ocp::ThermalStart::kCar;
   if (s == "periodic") return ocp::ThermalStart::kPeriodic;
-  return ocp::ThermalStart::kWarm;
+  if (s == "warm") return ocp::ThermalStart::kWarm;
+  return ocp::ThermalStart::kRacing;
 }
 
 struct Solved {
   std::string label;
+  std::string thermal_start;
   std::optional<double> limit_C;
   ocp::OptimalLapRun run;
   ocp::OptimalLapFigures figures;
@@ -77,9 +79,10 @@ Solved Solve(const OptimalArgs& a, const vehicle::Car& car, const track::Track& 
   std::fflush(stdout);
   Solved s;
   s.label = label;
+  s.thermal_start = a.thermal_start;
   s.limit_C = limit_C;
   s.run = ocp::RunOptimalLap(car, track, o);
-  s.figures = ocp::CalcOptimalLapFigures(s.run);
+  s.figures = ocp::CalcOptimalLapFigures(s.run, car.vehicle->powertrain.WheelPower());
   s.approaches =
       ocp::FindTurnApproaches(s.run.solution, track, car.vehicle->powertrain.WheelPower());
   const ocp::SolveResult& r = s.run.solution.solve;
@@ -101,6 +104,26 @@ nlohmann::json RunJson(const Solved& s) {
         {"peak_disc_temp_C", RoundSignificant(f.peak_disc_temp_C[i])},
         {"peak_tread_temp_C", RoundSignificant(f.peak_tread_temp_C[i])},
         {"wear_mm", RoundSignificant(f.wear_mm[i])}};
+  }
+  nlohmann::json start = {{"mode", s.thermal_start}, {"qss_laps", s.run.start_laps}};
+  if (s.thermal_start == "racing") {
+    start["carcass_rise_K"] = RoundSignificant(s.run.start_carcass_rise_K);
+  }
+  for (Corner c : kAllCorners) {
+    const int i = CornerIndex(c);
+    // The state at the start line (periodic: the solution's own first node).
+    const ocp::CornerTrace& t = s.run.solution.corners[i];
+    const bool own = !t.tread_temp.empty();
+    start["corners"][std::string(CornerName(c))] = {
+        {"tread_temp_C", RoundSignificant(KelvinToCelsius(own ? t.tread_temp.front()
+                                                              : s.run.start.tyres[i].tread_temp))},
+        {"carcass_temp_C", RoundSignificant(KelvinToCelsius(
+                               own ? t.carcass_temp.front() : s.run.start.tyres[i].carcass_temp))},
+        {"disc_temp_C", RoundSignificant(KelvinToCelsius(own ? t.disc_temp.front()
+                                                             : s.run.start.brakes[i].disc_temp))},
+        {"calliper_temp_C",
+         RoundSignificant(KelvinToCelsius(own ? t.calliper_temp.front()
+                                              : s.run.start.brakes[i].calliper_temp))}};
   }
   nlohmann::json turns = nlohmann::json::array();
   for (const ocp::TurnApproach& t : s.approaches) {
@@ -125,6 +148,11 @@ nlohmann::json RunJson(const Solved& s) {
           {"min_speed_mps", RoundSignificant(f.min_speed_mps)},
           {"corners", corners},
           {"turns", turns},
+          {"thermal_start", start},
+          {"brake_energy_J", RoundSignificant(f.brake_energy_J)},
+          {"brake_energy_under_drive_J", RoundSignificant(f.brake_energy_under_drive_J)},
+          {"max_pedal_rate_per_s", RoundSignificant(f.max_pedal_rate_per_s)},
+          {"max_steer_rate_radps", RoundSignificant(f.max_steer_rate_radps)},
           {"smoothing_effect_tread_K", RoundSignificant(s.run.max_tread_difference_K)},
           {"smoothing_effect_disc_K", RoundSignificant(s.run.max_disc_difference_K)},
           {"variables", s.run.solution.variables},
@@ -141,6 +169,19 @@ void PrintRun(const Solved& s) {
       "  lap {:.3f} s, top speed {:.2f} m/s, slowest {:.2f} m/s, front discs peak {:.1f} "
       "degC\n",
       f.lap_time_s, f.top_speed_mps, f.min_speed_mps, f.max_front_disc_temp_C);
+  {
+    const ocp::LapSolution& sol = s.run.solution;
+    std::string carcass, disc;
+    for (int i = 0; i < 4 && !sol.corners[i].carcass_temp.empty(); ++i) {
+      carcass +=
+          fmt::format("{}{:.0f}", i ? "/" : "", KelvinToCelsius(sol.corners[i].carcass_temp[0]));
+      disc += fmt::format("{}{:.0f}", i ? "/" : "", KelvinToCelsius(sol.corners[i].disc_temp[0]));
+    }
+    fmt::print("  thermal start {} ({} QSS laps): carcass fl/fr/rl/rr {} degC, discs {} degC\n",
+               s.thermal_start, s.run.start_laps, carcass, disc);
+  }
+  fmt::print("  brake work {:.0f} kJ, of it against the engine (drive above 2%) {:.2f} kJ\n",
+             1e-3 * f.brake_energy_J, 1e-3 * f.brake_energy_under_drive_J);
   for (const ocp::TurnApproach& t : s.approaches) {
     fmt::print("  {}: lift at {} m, brake at {} m, slowest {:.2f} m/s at {:.0f} m\n", t.turn,
                Opt(t.lift_m, "{:.0f}"), Opt(t.brake_m, "{:.0f}"), t.min_speed_mps,
@@ -184,10 +225,12 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
           ->check(CLI::Range(0.5, 50.0)));
   a.stock_car_only.push_back(
       sub->add_option("--thermal-start", a.thermal_start,
-                      "Thermal states at the start: warm (after a QSS out-lap), car (the car "
-                      "file's initial_state) or periodic (temperatures end where they start)")
+                      "Thermal states at the start: racing (QSS laps until no carcass rises over "
+                      "15 degC a lap), "
+                      "warm (after one QSS out-lap), car (the car file's initial_state) or "
+                      "periodic (temperatures end where they start)")
           ->capture_default_str()
-          ->check(CLI::IsMember({"warm", "car", "periodic"})));
+          ->check(CLI::IsMember({"racing", "warm", "car", "periodic"})));
   a.stock_car_only.push_back(
       sub->add_option("--ambient-temp-C", a.ambient_C, "Air temperature")->capture_default_str());
   a.stock_car_only.push_back(

@@ -19,7 +19,7 @@ struct OptimalArgs {
   double step_m = 3.0;
   std::optional<double> disc_limit_C;          ///< one solve with this front-disc limit
   std::optional<double> compare_disc_limit_C;  ///< two solves: without, and with this limit
-  std::string thermal_start = "warm";
+  std::string thermal_start = "racing";
   double ambient_C = 25.0;
   double track_C = 40.0;
   int max_iterations = 1000;

@@ -40,30 +40,71 @@ TEST(OptimalLapCommandTest, DarlingtonDiscLimitComparisonMeetsTheAcceptance) {
   EXPECT_EQ(free["status"], "converged");
   EXPECT_EQ(limited["status"], "converged");
 
-  // Without the limit: within 3% of the paper's 29.82 s.
+  // Without the limit: within 3% of the paper's 29.82 s. (Issue 18 asks for 1.5%, 80-82 m/s and
+  // braking into both ends: not met yet, docs/optimal-control.md, "Calibration".)
   const double t_free = free["lap_time_s"].get<double>();
   const double t_limited = limited["lap_time_s"].get<double>();
   EXPECT_NEAR(t_free, 29.82, 0.03 * 29.82);
+  ASSERT_EQ(free["turns"].size(), 2u);
+  EXPECT_FALSE(free["turns"][1]["brake_m"].is_null()) << free["turns"][1].dump();
+
+  // The racing thermal start: carcasses a few laps into a run, each rising at most 15 degC over
+  // the last QSS lap before the start.
+  EXPECT_EQ(free["thermal_start"]["mode"], "racing");
+  EXPECT_GT(free["thermal_start"]["qss_laps"].get<int>(), 1);
+  EXPECT_LE(free["thermal_start"]["carcass_rise_K"].get<double>(), 15.0);
+  EXPECT_GT(free["thermal_start"]["corners"]["fl"]["carcass_temp_C"].get<double>(), 90.0);
+
+  // No braking against the engine: the brake work done while the drive power is above 2% of its
+  // maximum is below 0.5% of the lap's brake work, in both laps.
+  for (const nlohmann::json* run : {&free, &limited}) {
+    const double work = (*run)["brake_energy_J"].get<double>();
+    EXPECT_GT(work, 1e5);
+    EXPECT_LT((*run)["brake_energy_under_drive_J"].get<double>(), 0.005 * work);
+  }
   EXPECT_NEAR(j["lap_time_s"].get<double>(), t_free, 1e-9);
 
-  // The limit binds: the free lap takes the front-left disc above 500 degC.
-  EXPECT_GT(free["corners"]["fl"]["peak_disc_temp_C"].get<double>(), 520.0);
+  // The limit binds: the free lap takes the front-left disc above 500 degC (without braking
+  // against the engine: the check below).
+  EXPECT_GT(free["corners"]["fl"]["peak_disc_temp_C"].get<double>(), 510.0);
 
   // With it: slower by a small positive margin (the paper: 40 ms; an optimiser that lost the
   // global picture would show a large or negative one).
   const double delta = j["delta_s"].get<double>();
   EXPECT_NEAR(delta, t_limited - t_free, 1e-6);  // 9 significant digits each
-  EXPECT_GT(delta, 0.0);
+  // The comparison keeps the better of two local optima of the free lap, so the limit never shows
+  // a gain.
+  EXPECT_GE(delta, 0.0);
   EXPECT_LT(delta, 0.2);
 
   // The limit holds at every node of the channels, and the front-left disc is the one at it.
   const CsvTable c = ReadCsv(out / "constrained.csv");
+  const CsvTable u = ReadCsv(out / "unconstrained.csv");
   const double fl = Max(c.Column("disc_temp_fl_C")), fr = Max(c.Column("disc_temp_fr_C"));
   EXPECT_LE(fl, 500.0 + 1e-3);
   EXPECT_LE(fr, 500.0 + 1e-3);
   EXPECT_GT(fl, 499.5);
   EXPECT_LT(fr, fl - 5.0);
   EXPECT_NEAR(limited["corners"]["fl"]["peak_disc_temp_C"].get<double>(), fl, 1e-5);
+
+  // The driver's limits hold between every pair of nodes (LapProblemOptions: pedal rate 4/s, so a
+  // 1 g brake application or release takes at least an eighth of a second; steer rate 0.5 rad/s
+  // at the road wheel): no brake stab or steering flick faster than a driver's hands and feet.
+  for (const CsvTable* t : {&c, &u}) {
+    const std::vector<double>& time_s = t->Column("time_s");
+    const std::vector<double>& pedal = t->Column("pedal");
+    const std::vector<double>& brake = t->Column("brake_force_N");
+    const std::vector<double>& steer = t->Column("steer_deg");
+    for (size_t k = 0; k + 1 < time_s.size(); ++k) {
+      const double dt = time_s[k + 1] - time_s[k];
+      ASSERT_GT(dt, 0.0);
+      EXPECT_LE(std::abs(pedal[k + 1] - pedal[k]), 4.0 * dt * (1.0 + 1e-4) + 1e-6) << k;
+      EXPECT_LE(std::abs(brake[k + 1] - brake[k]), 4.0 * 2.0 * 1542.0 * 9.81 * dt * 1.01 + 1.0)
+          << k;
+      EXPECT_LE(std::abs(steer[k + 1] - steer[k]) * M_PI / 180.0, 0.5 * dt * (1.0 + 1e-4) + 1e-6)
+          << k;
+    }
+  }
 
   // The channels are a lap of the track whose time is the reported lap time.
   const std::vector<double>& distance = c.Column("distance_m");

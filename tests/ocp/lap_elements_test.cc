@@ -49,7 +49,8 @@ void CheckElement(const Element& e, std::vector<double> x, const std::vector<dou
     e.Jacobian(xm.data(), dummy.data(), jm.data());
     for (int o = 0; o < m; ++o) {
       const double fd = (op[o] - om[o]) / (2 * step[i]);
-      EXPECT_NEAR(jac[o * n + i], fd, 1e-5 * (1 + std::abs(fd))) << what << " d out" << o << "/d in" << i;
+      EXPECT_NEAR(jac[o * n + i], fd, 1e-5 * (1 + std::abs(fd)))
+          << what << " d out" << o << "/d in" << i;
     }
     for (int j = 0; j < n; ++j) {
       double fd = 0.0;
@@ -84,10 +85,32 @@ TEST(LapElementsTest, ChassisElements) {
   CheckElement(*MakeElement<10, 1>(internal::LongitudinalFn{&p, kTurn, {0.01, 0.01, 0.01, 0.01}}),
                {0.0134, 4000.0, 75.0, 0.4, 0.41, 0.01, 5000.0, 11000.0, 6000.0, 10000.0},
                {1e-7, 1, 1e-3, 1e-4, 1e-5, 1e-6, 1, 1, 1, 1}, "longitudinal");
-  CheckElement(*MakeElement<5, 1>(internal::LateralFn{&p, kTurn}), {0.0134, 30000.0, 75.0, 0.41, 0.01},
-               {1e-7, 1, 1e-3, 1e-5, 1e-6}, "lateral");
+  CheckElement(*MakeElement<5, 1>(internal::LateralFn{&p, kTurn}),
+               {0.0134, 30000.0, 75.0, 0.41, 0.01}, {1e-7, 1, 1e-3, 1e-5, 1e-6}, "lateral");
   CheckElement(*MakeElement<4, 1>(internal::OffsetFn{}), {0.0134, 75.0, 0.4, 0.01},
                {1e-7, 1e-3, 1e-4, 1e-6}, "offset");
+}
+
+// The pedal: drive and brake never on together beyond the smoothing's eps^2 / (4 |p|), the
+// split's values by hand, and its derivatives on both sides and at the switch.
+TEST(LapElementsTest, PedalSplitsIntoDriveOrBrake) {
+  const internal::PedalSplitFn split{450e3, 30e3, 5e-3};
+  for (const double pedal : {-0.7, -0.02, 0.0, 0.02, 0.9}) {
+    CheckElement(*MakeElement<3, 2>(split), {pedal, 1e5, 1e4}, {1e-5, 1.0, 1.0}, "pedal split");
+  }
+  double out[2];
+  const double at_zero[3] = {0.0, 0.0, 0.0};
+  split(at_zero, out);
+  EXPECT_NEAR(-out[0], 450e3 * 2.5e-3, 1e-6);  // P = P_max eps / 2 at p = 0
+  EXPECT_NEAR(-out[1], 30e3 * 2.5e-3, 1e-6);
+  const double drive[3] = {0.5, 0.0, 0.0};
+  split(drive, out);
+  EXPECT_NEAR(-out[0], 450e3 * 0.5 * (0.5 + std::sqrt(0.25 + 25e-6)), 1e-6);
+  EXPECT_LT(-out[1], 30e3 * 25e-6 / (4 * 0.5) * 1.001);  // brake at most B_max eps^2 / (4 p)
+  EXPECT_GT(-out[1], 0.0);
+  const double brake[3] = {-0.02, 0.0, 0.0};
+  split(brake, out);
+  EXPECT_LT(-out[0], 450e3 * 25e-6 / (4 * 0.02) * 1.001);  // 141 W of drive at 0.02 braking
 }
 
 TEST(LapElementsTest, ThermalAndTyreForceElements) {
@@ -97,9 +120,8 @@ TEST(LapElementsTest, ThermalAndTyreForceElements) {
   params.smoothing = {10.0, 1e-3};
   const auto so = params.Cast<SecondOrder<10>>();
   const auto jet = params.Cast<Jet10>();
-  CheckElement(*MakeElement<10, 3>(internal::TyreThermalFn{&params, &so, &jet,
-                                                           car.tyres[fr].compound.get(), 298.15,
-                                                           313.15}),
+  CheckElement(*MakeElement<10, 3>(internal::TyreThermalFn{
+                   &params, &so, &jet, car.tyres[fr].compound.get(), 298.15, 313.15}),
                {0.0134, 370.0, 340.0, 0.01, 76.0, -500.0, 9000.0, 11000.0, -0.05, -0.01},
                {1e-7, 1e-3, 1e-3, 1e-6, 1e-3, 1e-2, 1e-2, 1e-2, 1e-6, 1e-6}, "tyre thermal");
   const brake::BrakeThermalParams<double>& bp = car.brakes[fr].params;
@@ -107,8 +129,8 @@ TEST(LapElementsTest, ThermalAndTyreForceElements) {
   const auto bjet = bp.Cast<Jet5>();
   CheckElement(*MakeElement<5, 2>(internal::BrakeFn{&bp, &bso, &bjet, 0.3, 298.15}),
                {0.0134, 700.0, 400.0, 76.0, 8000.0}, {1e-7, 1e-3, 1e-3, 1e-3, 1e-1}, "brake");
-  const TyreForceElement tyre(car.vehicle->corner(Corner::kFrontRight),
-                              *car.tyres[fr].compound, 50.0);
+  const TyreForceElement tyre(car.vehicle->corner(Corner::kFrontRight), *car.tyres[fr].compound,
+                              50.0);
   CheckElement(tyre, {11000.0, -0.02, -0.05, 370.0, 0.01, -1000.0, 10000.0},
                {1e-1, 1e-7, 1e-7, 1e-3, 1e-6, 1.0, 1.0}, "tyre forces");
 }

@@ -225,6 +225,27 @@ struct BrakeFn {
   }
 };
 
+/// The driver's one signed longitudinal control, the pedal p in [-1, 1]: drive when positive,
+/// brake when negative, never both (the paper's bang-bang drive power, 000 section 4). in (p, P, B)
+/// -> (P - P_max pos(p), B - B_max pos(-p)) with the smooth positive part
+/// pos(x) = (x + sqrt(x^2 + eps^2)) / 2: exact derivatives, and where one side is on the other
+/// is at most B_max eps^2 / (4 |p|) (below a newton past |p| = 0.02 with eps = 5e-3).
+struct PedalSplitFn {
+  double max_power;        ///< W at p = 1
+  double max_brake_force;  ///< N at p = -1
+  double eps;
+  template <class T>
+  static T Pos(const T& x, double eps) {
+    using std::sqrt;
+    return 0.5 * (x + sqrt(x * x + eps * eps));
+  }
+  template <class T>
+  void operator()(const T* in, T* out) const {
+    out[0] = in[1] - max_power * Pos(in[0], eps);
+    out[1] = in[2] - max_brake_force * Pos(T(-in[0]), eps);
+  }
+};
+
 /// A control's smoothness penalty: in (a, b) -> weight (b - a)^2.
 struct RateFn {
   double weight;

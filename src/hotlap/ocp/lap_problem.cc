@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -25,7 +26,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 struct NodeVars {
   int u, v, r, n, xi;
   std::array<int, 4> tread, carcass, wear, disc, calliper;
-  int steer, power, brake;
+  int steer, pedal, power, brake;
   std::array<int, 4> kappa, alpha, vx, fz, fx, fy;
   int kappa_axle;
   int sum_fx, sum_fy, yaw_moment, w;
@@ -61,6 +62,7 @@ struct Builder {
   std::vector<NodeRoad> roads;
   int intervals = 0;
   double ds = 0.0;
+  double max_brake_force = 0.0;  // N at pedal -1
   // Parameters (with the smooth |x| of tyre::TyreThermalSmoothing) cast once for the thermal
   // elements' scalars.
   std::array<tyre::TyreThermalParams<double>, 4> tyre_d;
@@ -95,8 +97,8 @@ struct Builder {
   void AddNodes() {
     intervals = std::max(16, static_cast<int>(std::round(track.length_m() / options.step_m)));
     ds = track.length_m() / intervals;
-    const double m = p.chassis.mass;
     const double wheel_power = p.powertrain.WheelPower();
+    max_brake_force = options.max_brake_force > 0.0 ? options.max_brake_force : 2.0 * p.Weight();
     for (int k = 0; k <= intervals; ++k) {
       const double s = std::min(k * ds, track.length_m());
       const track::TrackPoint tp = track.At(k == intervals ? 0.0 : s);
@@ -157,9 +159,19 @@ struct Builder {
       double total_fx = 0.0;
       for (int c = 0; c < 4; ++c) total_fx += at(guess.corners[c].fx);
       nv.steer = nlp.AddVariable(at(guess.steer), -0.5, 0.5, 0.05);
-      nv.power =
-          nlp.AddVariable(std::clamp(total_fx * speed, 0.0, wheel_power), 0.0, wheel_power, 2e5);
-      nv.brake = nlp.AddVariable(std::max(-total_fx, 0.0), 0.0, 4.0 * m * kGravity, 1e4);
+      // The pedal: the QSS lap's drive power or braking force as a fraction of its range.
+      const double power0 = std::clamp(total_fx * speed, 0.0, wheel_power);
+      const double brake0 = std::clamp(-total_fx, 0.0, max_brake_force);
+      const double pedal0 = power0 > 0.0 ? power0 / wheel_power : -brake0 / max_brake_force;
+      const bool pedal = !options.independent_drive_and_brake;
+      nv.pedal = nlp.AddVariable(pedal ? pedal0 : 0.0, pedal ? -1.0 : 0.0, pedal ? 1.0 : 0.0, 0.5);
+      const internal::PedalSplitFn split{wheel_power, max_brake_force, options.pedal_smoothing};
+      // Their range is the pedal's: bounds of their own would nearly coincide with the pedal's
+      // and leave Ipopt two almost parallel active constraints.
+      nv.power = nlp.AddVariable(wheel_power * split.Pos(pedal0, split.eps), 0.0,
+                                 pedal ? kInf : wheel_power, 2e5);
+      nv.brake = nlp.AddVariable(max_brake_force * split.Pos(-pedal0, split.eps), 0.0,
+                                 pedal ? kInf : max_brake_force, 1e4);
       // Algebraic variables.
       const double r_mean = 0.5 * (p.corner(Corner::kRearLeft).rolling_radius +
                                    p.corner(Corner::kRearRight).rolling_radius);
@@ -222,6 +234,13 @@ struct Builder {
         nlp.AddElement(MakeElement<4, 1>(internal::SpoolFn{p.corners[i].rolling_radius / r_mean}),
                        {nv.kappa[i], nv.vx[i], nv.kappa_axle, nv.u}, {{{rs, 1.0}}});
       }
+    }
+    if (!options.independent_drive_and_brake) {
+      // Drive power and brake force from the one pedal.
+      const int rp = nlp.AddConstraint(0, 0, 2e5), rb = nlp.AddConstraint(0, 0, 1e4);
+      nlp.AddElement(MakeElement<3, 2>(internal::PedalSplitFn{
+                         p.powertrain.WheelPower(), max_brake_force, options.pedal_smoothing}),
+                     {nv.pedal, nv.power, nv.brake}, {{{rp, 1.0}}, {{rb, 1.0}}});
     }
     {
       const int rd = nlp.AddConstraint(0, 0, 1e5);
@@ -315,6 +334,23 @@ struct Builder {
     }
   }
 
+  // |c_{k+1} - c_k| <= rate ds (w_k + w_{k+1}) / 2 for the control `c` (no limit if rate <= 0).
+  void AddRateLimit(int NodeVars::*control, double rate, double row_scale) {
+    if (!(rate > 0.0)) return;
+    const double c = 0.5 * ds * rate;
+    for (int k = 0; k < intervals; ++k) {
+      const int up = nlp.AddConstraint(-kInf, 0.0, row_scale),
+                down = nlp.AddConstraint(0.0, kInf, row_scale);
+      for (const int row : {up, down}) {
+        const double sign = row == up ? -1.0 : 1.0;
+        nlp.AddLinear(row, nodes[k + 1].*control, 1.0);
+        nlp.AddLinear(row, nodes[k].*control, -1.0);
+        nlp.AddLinear(row, nodes[k].w, sign * c);
+        nlp.AddLinear(row, nodes[k + 1].w, sign * c);
+      }
+    }
+  }
+
   void AddPeriodicityAndObjective() {
     // The lap closes: mechanical states (and thermal ones on request) end where they start.
     std::vector<int> periodic = {0, 1, 2, 3, 4};
@@ -327,35 +363,30 @@ struct Builder {
       nlp.AddLinear(row, b[j], 1.0);
       nlp.AddLinear(row, a[j], -1.0);
     }
-    // The driver's steering rate: |steer_{k+1} - steer_k| <= rate * dt, dt = ds (w_k + w_k+1) / 2.
-    if (options.max_steer_rate > 0.0) {
-      for (int k = 0; k < intervals; ++k) {
-        const double c = 0.5 * ds * options.max_steer_rate;
-        const int up = nlp.AddConstraint(-kInf, 0.0, 0.01),
-                  down = nlp.AddConstraint(0.0, kInf, 0.01);
-        for (const int row : {up, down}) {
-          const double sign = row == up ? -1.0 : 1.0;
-          nlp.AddLinear(row, nodes[k + 1].steer, 1.0);
-          nlp.AddLinear(row, nodes[k].steer, -1.0);
-          nlp.AddLinear(row, nodes[k].w, sign * c);
-          nlp.AddLinear(row, nodes[k + 1].w, sign * c);
-        }
-      }
+    // The driver's hands and feet: |c_{k+1} - c_k| <= rate * dt, dt = ds (w_k + w_k+1) / 2.
+    AddRateLimit(&NodeVars::steer, options.max_steer_rate, 0.01);
+    if (!options.independent_drive_and_brake) {
+      AddRateLimit(&NodeVars::pedal, options.max_pedal_rate, 0.1);
     }
     // Lap time: the trapezoid of dt/ds.
     for (int k = 0; k <= intervals; ++k) {
       nlp.AddObjectiveLinear(nodes[k].w, (k == 0 || k == intervals ? 0.5 : 1.0) * ds);
     }
     // Smooth controls: weight * sum ((c_{k+1} - c_k) / scale)^2 per control.
-    if (options.smoothing > 0.0) {
-      for (int k = 0; k < intervals; ++k) {
-        for (const auto& [a_var, b_var] : {std::pair{nodes[k].steer, nodes[k + 1].steer},
-                                           std::pair{nodes[k].power, nodes[k + 1].power},
-                                           std::pair{nodes[k].brake, nodes[k + 1].brake}}) {
-          const double s = nlp.scale(a_var);
-          nlp.AddElement(MakeElement<2, 1>(internal::RateFn{options.smoothing / (s * s)}),
-                         {a_var, b_var}, {{{Target::kObjective, 1.0}}});
-        }
+    const double pedal_weight =
+        options.pedal_smoothing_weight >= 0.0 ? options.pedal_smoothing_weight : options.smoothing;
+    for (int k = 0; k < intervals; ++k) {
+      for (const auto& [a_var, b_var, weight] :
+           {std::tuple{nodes[k].steer, nodes[k + 1].steer, options.smoothing},
+            std::tuple{nodes[k].pedal, nodes[k + 1].pedal, pedal_weight},
+            std::tuple{nodes[k].power, nodes[k + 1].power,
+                       options.independent_drive_and_brake ? options.smoothing : 0.0},
+            std::tuple{nodes[k].brake, nodes[k + 1].brake,
+                       options.independent_drive_and_brake ? options.smoothing : 0.0}}) {
+        if (!(weight > 0.0)) continue;
+        const double s = nlp.scale(a_var);
+        nlp.AddElement(MakeElement<2, 1>(internal::RateFn{weight / (s * s)}), {a_var, b_var},
+                       {{{Target::kObjective, 1.0}}});
       }
     }
     nlp.SetObjectiveScale(1.0);
@@ -403,6 +434,20 @@ LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& tra
     for (int i = 0; i < b.nlp.variables(); ++i) {
       b.nlp.set_initial(i, std::clamp(options.start_point[i], b.nlp.lower(i), b.nlp.upper(i)));
     }
+    if (!options.independent_drive_and_brake) {
+      // The pedal of the start's drive power and brake force (p = P / P_max - B / B_max, exact for
+      // a pedal solution, since pos(p) - pos(-p) = p; a start with both on gets the net of them).
+      const internal::PedalSplitFn split{p.powertrain.WheelPower(), b.max_brake_force,
+                                         options.pedal_smoothing};
+      for (const NodeVars& nv : b.nodes) {
+        const double pedal = std::clamp(b.nlp.initial(nv.power) / split.max_power -
+                                            b.nlp.initial(nv.brake) / split.max_brake_force,
+                                        -1.0, 1.0);
+        b.nlp.set_initial(nv.pedal, pedal);
+        b.nlp.set_initial(nv.power, split.max_power * split.Pos(pedal, split.eps));
+        b.nlp.set_initial(nv.brake, split.max_brake_force * split.Pos(-pedal, split.eps));
+      }
+    }
   }
   LapSolution out;
   out.variables = b.nlp.variables();
@@ -422,6 +467,7 @@ LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& tra
     out.n.push_back(x[nv.n]);
     out.xi.push_back(x[nv.xi]);
     out.steer.push_back(x[nv.steer]);
+    out.pedal.push_back(x[nv.pedal]);
     out.drive_power.push_back(x[nv.power]);
     out.brake_force.push_back(x[nv.brake]);
     for (int c = 0; c < 4; ++c) {
@@ -443,6 +489,7 @@ LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& tra
     }
   }
   out.lap_time = time;
+  out.max_brake_force = b.max_brake_force;
   return out;
 }
 

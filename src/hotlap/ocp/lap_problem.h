@@ -14,9 +14,10 @@
 /// forward-mode AD (ocp/element.h). Ipopt solves it with exact first and second derivatives.
 ///
 /// Node variables: states u, v, r (body speeds, yaw rate), n (lateral offset, left +), xi
-/// (heading error), and per corner T_tread, T_carcass, wear, T_disc, T_calliper; controls steer,
-/// drive power P (at the rear contact patches, 0..P_wheel) and brake force B (>= 0, split by the
-/// brake balance: front wheels beta B / 2 each, the rear axle (1 - beta) B); algebraic slip
+/// (heading error), and per corner T_tread, T_carcass, wear, T_disc, T_calliper; controls steer
+/// and the signed pedal p (drive when positive, brake when negative, never both), which sets the
+/// drive power P (at the rear contact patches, 0..P_wheel) and the brake force B (>= 0, split by
+/// the brake balance: front wheels beta B / 2 each, the rear axle (1 - beta) B); algebraic slip
 /// ratios (front wheels, the rear axle's spool and each rear wheel), slip angles, wheel speeds,
 /// normal loads, tyre forces, the body-axis totals X, Y, Mz, and w = dt/ds.
 
@@ -43,11 +44,27 @@ struct LapProblemOptions {
   /// The driver's steering: road-wheel steer rate at most this, rad/s (0: no limit). Without it the
   /// optimiser finds "flicks" at huge slip angles that heat a cold tyre by sliding it.
   double max_steer_rate = 0.5;
+  /// The old formulation, for comparison: drive power and brake force as two independent
+  /// non-negative controls (nothing stops both being on; the pedal is then fixed at 0 and the
+  /// smoothing penalty and rate limit act on nothing but the steer).
+  bool independent_drive_and_brake = false;
+  /// The pedal (internal::PedalSplitFn): brake force at p = -1, N (0: twice the car's weight).
+  double max_brake_force = 0.0;
+  /// The pedal's smooth positive part: its eps (dimensionless; where both sides are on at once the
+  /// weaker is at most max_brake_force eps^2 / (4 |p|)).
+  double pedal_smoothing = 5e-3;
+  /// The driver's feet: |dp/dt| at most this, 1/s (0: no limit). With 4/s a lift from full power
+  /// takes 0.25 s and the braking force rises or falls at most 4 max_brake_force per second (8 g
+  /// per second with the default: a 1 g brake application takes an eighth of a second).
+  double max_pedal_rate = 4.0;
   /// Slip angles are kept within this, rad: the tyres' useful range (their peaks are near 0.1).
   double max_slip_angle = 0.25;
   /// Weight of the control-smoothness penalty: weight * sum over intervals of the squared change
   /// of each scaled control.
   double smoothing = 1e-4;
+  /// The same penalty's weight for the pedal (< 0: `smoothing`). A weight of 1e-2 took the
+  /// brake application into turn 1 away altogether on a test car (docs/optimal-control.md).
+  double pedal_smoothing_weight = -1.0;
   /// The tyre thermal model's |x| made smooth for the optimiser (tyre_thermal.h); the solution is
   /// replayed through the exact model to report the difference.
   tyre::TyreThermalSmoothing thermal_smoothing{10.0, 1e-3};
@@ -69,7 +86,8 @@ struct LapSolution {
   std::vector<double> distance;  ///< m
   std::vector<double> time;      ///< s (trapezoid of w)
   std::vector<double> u, v, r, n, xi;
-  std::vector<double> steer, drive_power, brake_force;
+  std::vector<double> steer, pedal, drive_power, brake_force;
+  double max_brake_force = 0.0;  ///< N, the pedal's brake force at p = -1
   std::array<CornerTrace, 4> corners;
   double lap_time = 0.0;  ///< s
   int variables = 0;

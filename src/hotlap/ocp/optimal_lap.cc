@@ -31,8 +31,9 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
                             const OptimalLapOptions& options) {
   vehicle::RequireVehicle(car, "the optimal lap");
   OptimalLapRun run;
-  // The warm-up: two QSS laps on the minimum-curvature line from the car's starting state; the
-  // second is the flying lap that seeds the solve.
+  // The warm-up on the minimum-curvature line from the car's starting state: one out-lap (the
+  // warm start), or laps until the carcasses rise slowly (the racing start); the flying lap after
+  // it seeds the solve.
   const track::RacingLine line =
       MinimumCurvatureLine(track, {.step_m = 2.0, .margin_m = options.line_margin_m});
   const std::vector<sim::RoadPoint> road = sim::SampleRoadAlongLine(track, line, 1.0);
@@ -42,7 +43,40 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
   qss.track_temp = options.track_temp;
   qss.initial = CarStart(car);
   qss.track_length = track.length_m();
-  const sim::QssResult warm = sim::RunQssLap(car, road, qss);
+  sim::QssResult warm = sim::RunQssLap(car, road, qss);
+  const auto end_of = [](const sim::QssLap& lap) {
+    sim::ReplayInitialState e;
+    for (int k = 0; k < 4; ++k) {
+      const sim::CornerHistory& h = lap.thermal.corners[k];
+      e.tyres[k] = {h.tread_temp.back(), h.carcass_temp.back(), 0.0};
+      e.brakes[k] = {h.disc_temp.back(), h.calliper_temp.back()};
+    }
+    return e;
+  };
+  sim::ReplayInitialState settled = end_of(warm.laps[0]);
+  run.start_laps = 1;
+  if (options.thermal_start == ThermalStart::kRacing) {
+    // Lap after lap (each from the last one's end, wear kept at zero) until the carcasses rise
+    // slowly enough.
+    sim::QssOptions one = qss;
+    one.laps = 1;
+    for (sim::QssLap last = warm.laps[1]; run.start_laps < options.racing_max_laps;) {
+      const sim::ReplayInitialState next = end_of(last);
+      double change = 0.0;
+      for (int k = 0; k < 4; ++k) {
+        change = std::max(change, next.tyres[k].carcass_temp - settled.tyres[k].carcass_temp);
+      }
+      settled = next;
+      ++run.start_laps;
+      run.start_carcass_rise_K = change;
+      if (change <= options.racing_carcass_rise_K) break;
+      one.initial = settled;
+      last = std::move(sim::RunQssLap(car, road, one).laps[0]);
+    }
+    one.initial = settled;
+    one.laps = 1;
+    warm.laps[1] = std::move(sim::RunQssLap(car, road, one).laps[0]);
+  }
   run.qss_lap_time = warm.laps[1].lap_time;
 
   LapProblemOptions lap;
@@ -51,20 +85,8 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
   lap.ambient_temp = options.ambient_temp;
   lap.track_temp = options.track_temp;
   lap.car_half_width = options.car_half_width_m;
-  switch (options.thermal_start) {
-    case ThermalStart::kCar:
-      run.start = CarStart(car);
-      break;
-    case ThermalStart::kWarm:
-    case ThermalStart::kPeriodic: {
-      for (int k = 0; k < 4; ++k) {
-        const sim::CornerHistory& h = warm.laps[0].thermal.corners[k];
-        run.start.tyres[k] = {h.tread_temp.back(), h.carcass_temp.back(), 0.0};
-        run.start.brakes[k] = {h.disc_temp.back(), h.calliper_temp.back()};
-      }
-      break;
-    }
-  }
+  run.start = options.thermal_start == ThermalStart::kCar ? CarStart(car) : settled;
+  if (options.thermal_start == ThermalStart::kCar) run.start_laps = 0;
   lap.periodic_thermal = options.thermal_start == ThermalStart::kPeriodic;
   lap.initial = run.start;
   lap.start_point = options.start_point;

@@ -16,7 +16,14 @@ namespace hotlap::ocp {
 
 /// Where the thermal states start.
 enum class ThermalStart {
-  kWarm,      ///< where a QSS out-lap from the car's initial_state leaves them (default)
+  /// A car some laps into a run (default): QSS laps from the car's initial_state, lap after lap,
+  /// until no carcass temperature rises more than OptimalLapOptions::racing_carcass_rise_K over a
+  /// lap (at most racing_max_laps). The NASCAR paper starts its laps "at values representative of
+  /// racing conditions", from which the carcasses rise 5-15 degC over a lap (000 section 4); the
+  /// carcasses take several minutes to settle, so a run's lap starts on that slow rise, not at its
+  /// end. Wear starts at zero.
+  kRacing,
+  kWarm,      ///< where one QSS out-lap from the car's initial_state leaves them
   kCar,       ///< the car file's initial_state (tyres and brakes as from the pits)
   kPeriodic,  ///< temperatures end the lap where they start (wear still starts at zero)
 };
@@ -31,11 +38,13 @@ inline IpoptOptions LapIpoptOptions() {
 struct OptimalLapOptions {
   double step_m = 3.0;                     ///< mesh spacing along the centre line
   std::optional<double> front_disc_limit;  ///< K
-  ThermalStart thermal_start = ThermalStart::kWarm;
-  double ambient_temp = 0.0;      ///< K
-  double track_temp = 0.0;        ///< K
-  double line_margin_m = 1.5;     ///< the QSS guess's racing line keeps this from the edges
-  double car_half_width_m = 1.0;  ///< the optimal line keeps the car's centre this far in
+  ThermalStart thermal_start = ThermalStart::kRacing;
+  double racing_carcass_rise_K = 15.0;  ///< kRacing: the largest carcass rise over a lap, K
+  int racing_max_laps = 40;             ///< kRacing: QSS laps at most
+  double ambient_temp = 0.0;            ///< K
+  double track_temp = 0.0;              ///< K
+  double line_margin_m = 1.5;           ///< the QSS guess's racing line keeps this from the edges
+  double car_half_width_m = 1.0;        ///< the optimal line keeps the car's centre this far in
   /// Start the solve here instead of the QSS guess: another solution's SolveResult::x on the same
   /// track, car and mesh (LapProblemOptions::start_point).
   std::vector<double> start_point;
@@ -51,6 +60,9 @@ struct OptimalLapRun {
   /// is the dynamics the QSS leaves out), s; 0 if the solve gave no solution.
   double qss_on_line_lap_time = 0.0;
   sim::ReplayInitialState start;  ///< the thermal state at the start line
+  int start_laps = 0;  ///< QSS laps run before the start (kRacing: until settled; else 1 or 0)
+  /// kRacing: the largest carcass rise over the last of those laps, K (0 otherwise).
+  double start_carcass_rise_K = 0.0;
   /// The solution's channels replayed through the exact thermal models, at the mesh nodes.
   sim::ReplayResult exact;
   double max_tread_difference_K = 0.0;  ///< |exact - optimiser| over corners and nodes

@@ -1,6 +1,7 @@
 #include "hotlap/ocp/optimal_output.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -44,6 +45,7 @@ sim::ColumnSet OptimalLapColumns(const OptimalLapRun& run, const track::Track& t
   add("offset_m", s.n);
   add("heading_error_deg", Scaled(s.xi, 180.0 / kPi));
   add("steer_deg", Scaled(s.steer, 180.0 / kPi));
+  if (!s.pedal.empty()) add("pedal", s.pedal);
   add("drive_power_W", s.drive_power);
   add("brake_force_N", s.brake_force);
   add("x_m", x);
@@ -72,7 +74,7 @@ sim::ColumnSet OptimalLapColumns(const OptimalLapRun& run, const track::Track& t
   return out;
 }
 
-OptimalLapFigures CalcOptimalLapFigures(const OptimalLapRun& run) {
+OptimalLapFigures CalcOptimalLapFigures(const OptimalLapRun& run, double wheel_power) {
   const LapSolution& s = run.solution;
   OptimalLapFigures f;
   f.lap_time_s = s.lap_time;
@@ -88,6 +90,29 @@ OptimalLapFigures CalcOptimalLapFigures(const OptimalLapRun& run) {
     f.wear_mm[c] = t.wear.back() - t.wear.front();
   }
   f.max_front_disc_temp_C = std::max(f.peak_disc_temp_C[0], f.peak_disc_temp_C[1]);
+  // Brake work, and the part of it done against the engine.
+  const size_t n = std::min(s.time.size(), s.drive_power.size());
+  const auto brake_power = [&](size_t k) {
+    double sum = 0.0;
+    for (const CornerTrace& t : s.corners) sum += t.brake_power[k];
+    return sum;
+  };
+  for (size_t k = 0; k + 1 < n; ++k) {
+    const double dt = s.time[k + 1] - s.time[k];
+    for (const size_t j : {k, k + 1}) {
+      const double e = 0.5 * dt * brake_power(j);
+      f.brake_energy_J += e;
+      if (s.drive_power[j] > 0.02 * wheel_power) f.brake_energy_under_drive_J += e;
+    }
+    if (dt > 0.0) {
+      if (k + 1 < s.pedal.size()) {
+        f.max_pedal_rate_per_s =
+            std::max(f.max_pedal_rate_per_s, std::abs(s.pedal[k + 1] - s.pedal[k]) / dt);
+      }
+      f.max_steer_rate_radps =
+          std::max(f.max_steer_rate_radps, std::abs(s.steer[k + 1] - s.steer[k]) / dt);
+    }
+  }
   return f;
 }
 
@@ -143,16 +168,20 @@ void AddOptimalLapCharts(report::HtmlReport& page, const std::vector<const Optim
         [](const LapSolution& s) { return Scaled(s.brake_force, 1e-3); });
   chart("Lateral offset (left +)", "offset", "m", [](const LapSolution& s) { return s.n; });
   chart("Steer", "steer", "deg", [](const LapSolution& s) { return Scaled(s.steer, 180.0 / kPi); });
+  chart("Pedal (drive +, brake -)", "pedal", "", [](const LapSolution& s) { return s.pedal; });
+  // The paper's Figures 14 and 15: the front and the rear tyres apart, each run overlaid.
   page.AddHeading("Tyres and brakes");
+  const std::vector<Corner> front = {Corner::kFrontLeft, Corner::kFrontRight};
+  const std::vector<Corner> rear = {Corner::kRearLeft, Corner::kRearRight};
   const auto corner_chart = [&](const std::string& title, const std::string& label,
                                 const std::string& unit, std::vector<double> CornerTrace::*field,
-                                bool celsius) {
+                                bool celsius, const std::vector<Corner>& corners) {
     report::LineChart c{.title = title,
                         .x_axis = {.label = "distance", .unit = "m"},
                         .y_axis = {.label = label, .unit = unit},
                         .x_link = "distance"};
     for (size_t r = 0; r < runs.size(); ++r) {
-      for (Corner corner : kAllCorners) {
+      for (Corner corner : corners) {
         std::vector<double> v = runs[r]->solution.corners[CornerIndex(corner)].*field;
         if (celsius) v = Celsius(v);
         c.series.push_back({.label = fmt::format("{} {}", CornerName(corner), labels[r]),
@@ -164,12 +193,19 @@ void AddOptimalLapCharts(report::HtmlReport& page, const std::vector<const Optim
     }
     page.AddLineChart(c);
   };
-  corner_chart("Disc temperature", "disc", "\u00b0C", &CornerTrace::disc_temp, true);
-  corner_chart("Tread temperature", "tread", "\u00b0C", &CornerTrace::tread_temp, true);
-  corner_chart("Carcass temperature", "carcass", "\u00b0C", &CornerTrace::carcass_temp, true);
-  corner_chart("Wear", "wear", "mm", &CornerTrace::wear, false);
-  corner_chart("Normal load", "Fz", "N", &CornerTrace::fz, false);
-  corner_chart("Slip angle", "slip angle", "rad", &CornerTrace::slip_angle, false);
+  const std::vector<Corner> all(kAllCorners.begin(), kAllCorners.end());
+  corner_chart("Front tread temperature", "tread", "\u00b0C", &CornerTrace::tread_temp, true,
+               front);
+  corner_chart("Rear tread temperature", "tread", "\u00b0C", &CornerTrace::tread_temp, true, rear);
+  corner_chart("Front carcass temperature", "carcass", "\u00b0C", &CornerTrace::carcass_temp, true,
+               front);
+  corner_chart("Rear carcass temperature", "carcass", "\u00b0C", &CornerTrace::carcass_temp, true,
+               rear);
+  corner_chart("Front disc temperature", "disc", "\u00b0C", &CornerTrace::disc_temp, true, front);
+  corner_chart("Rear disc temperature", "disc", "\u00b0C", &CornerTrace::disc_temp, true, rear);
+  corner_chart("Wear", "wear", "mm", &CornerTrace::wear, false, all);
+  corner_chart("Normal load", "Fz", "N", &CornerTrace::fz, false, all);
+  corner_chart("Slip angle", "slip angle", "rad", &CornerTrace::slip_angle, false, all);
 }
 
 }  // namespace hotlap::ocp
