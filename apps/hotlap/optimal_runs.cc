@@ -16,12 +16,14 @@
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
+#include "hotlap/ocp/disc_limit_comparison.h"
 #include "hotlap/ocp/optimal_lap.h"
 #include "hotlap/ocp/optimal_output.h"
 #include "hotlap/ocp/solver_memory.h"
 #include "hotlap/report/html_report.h"
 #include "hotlap/track/track_io.h"
 #include "hotlap/vehicle/f1_car.h"
+#include "optimal_summary.h"
 #include "output.h"
 
 namespace hotlap::app {
@@ -37,178 +39,32 @@ ocp::ThermalStart ParseStart(const std::string& s) {
   return ocp::ThermalStart::kRacing;
 }
 
-struct Solved {
-  std::string label;
-  std::string thermal_start;
-  std::optional<double> limit_C;
-  ocp::OptimalLapRun run;
-  ocp::OptimalLapFigures figures;
-  std::vector<ocp::TurnApproach> approaches;
-};
-
-Solved Solve(const OptimalArgs& a, const vehicle::Car& car, const track::Track& track,
-             std::optional<double> limit_C, double step_m, const std::string& label,
-             const ocp::SolveResult* from = nullptr) {
+// The command's options as the library's.
+ocp::OptimalLapOptions LapOptions(const OptimalArgs& a, double step_m) {
   ocp::OptimalLapOptions o;
-  if (from != nullptr) {
-    // Warm start: the other solution's point and multipliers (same variables and rows).
-    o.start_point = from->x;
-    o.ipopt.warm_z_lower = from->z_lower;
-    o.ipopt.warm_z_upper = from->z_upper;
-    o.ipopt.warm_lambda = from->lambda;
-  }
   o.step_m = step_m;
-  if (limit_C) o.front_disc_limit = CelsiusToKelvin(*limit_C);
   o.thermal_start = ParseStart(a.thermal_start);
   o.ambient_temp = CelsiusToKelvin(a.ambient_C);
   o.track_temp = CelsiusToKelvin(a.track_C);
   o.ipopt.max_iterations = a.max_iterations;
   o.ipopt.extra = IpoptOptionPairs(a);
   o.ipopt.print_level = a.ipopt_output ? 5 : 0;
-  o.ipopt.on_iteration = [&](int it, double obj, double pr, double du) {
-    if (it % 10 == 0) {
-      fmt::print("  [{}] iteration {:4d}: lap {:.4f} s, infeasibility {:.1e}, optimality {:.1e}\n",
-                 label, it, obj, pr, du);
-      std::fflush(stdout);
-    }
-    return true;
-  };
-  fmt::print("{}: solving ({:.1f} m mesh{}{})...\n", label, step_m,
-             limit_C ? fmt::format(", front discs <= {:g} degC", *limit_C) : "",
-             from == nullptr ? "" : ", from the other solution");
+  return o;
+}
+
+// Progress on the terminal: every tenth iteration, and the library's own lines.
+bool PrintProgress(const std::string& label, int it, double obj, double pr, double du) {
+  if (it % 10 == 0) {
+    fmt::print("  [{}] iteration {:4d}: lap {:.4f} s, infeasibility {:.1e}, optimality {:.1e}\n",
+               label, it, obj, pr, du);
+    std::fflush(stdout);
+  }
+  return true;
+}
+
+void PrintLine(const std::string& line) {
+  fmt::print("{}\n", line);
   std::fflush(stdout);
-  Solved s;
-  s.label = label;
-  s.thermal_start = a.thermal_start;
-  s.limit_C = limit_C;
-  s.run = ocp::RunOptimalLap(car, track, o);
-  s.figures = ocp::CalcOptimalLapFigures(s.run, car.vehicle->powertrain.WheelPower());
-  s.approaches =
-      ocp::FindTurnApproaches(s.run.solution, track, car.vehicle->powertrain.WheelPower());
-  const ocp::SolveResult& r = s.run.solution.solve;
-  fmt::print(
-      "{}: {} after {} iterations in {:.1f} s: lap {:.3f} s (QSS {:.3f} s on the minimum-curvature "
-      "line, {:.3f} s on this lap's line)\n",
-      label, r.message, r.iterations, r.solve_seconds, s.figures.lap_time_s, s.run.qss_lap_time,
-      s.run.qss_on_line_lap_time);
-  return s;
-}
-
-nlohmann::json RunJson(const Solved& s) {
-  const ocp::SolveResult& r = s.run.solution.solve;
-  const ocp::OptimalLapFigures& f = s.figures;
-  nlohmann::json corners;
-  for (Corner c : kAllCorners) {
-    const int i = CornerIndex(c);
-    corners[std::string(CornerName(c))] = {
-        {"peak_disc_temp_C", RoundSignificant(f.peak_disc_temp_C[i])},
-        {"peak_tread_temp_C", RoundSignificant(f.peak_tread_temp_C[i])},
-        {"wear_mm", RoundSignificant(f.wear_mm[i])}};
-  }
-  nlohmann::json start = {{"mode", s.thermal_start}, {"qss_laps", s.run.start_laps}};
-  if (s.thermal_start == "racing") {
-    start["carcass_rise_K"] = RoundSignificant(s.run.start_carcass_rise_K);
-  }
-  for (Corner c : kAllCorners) {
-    const int i = CornerIndex(c);
-    // The state at the start line (periodic: the solution's own first node).
-    const ocp::CornerTrace& t = s.run.solution.corners[i];
-    const bool own = !t.tread_temp.empty();
-    start["corners"][std::string(CornerName(c))] = {
-        {"tread_temp_C", RoundSignificant(KelvinToCelsius(own ? t.tread_temp.front()
-                                                              : s.run.start.tyres[i].tread_temp))},
-        {"carcass_temp_C", RoundSignificant(KelvinToCelsius(
-                               own ? t.carcass_temp.front() : s.run.start.tyres[i].carcass_temp))},
-        {"disc_temp_C", RoundSignificant(KelvinToCelsius(own ? t.disc_temp.front()
-                                                             : s.run.start.brakes[i].disc_temp))},
-        {"calliper_temp_C",
-         RoundSignificant(KelvinToCelsius(own ? t.calliper_temp.front()
-                                              : s.run.start.brakes[i].calliper_temp))}};
-  }
-  nlohmann::json turns = nlohmann::json::array();
-  for (const ocp::TurnApproach& t : s.approaches) {
-    nlohmann::json j = {{"turn", t.turn},
-                        {"entry_m", RoundSignificant(t.entry_m)},
-                        {"min_speed_mps", RoundSignificant(t.min_speed_mps)},
-                        {"min_speed_at_m", RoundSignificant(t.min_speed_at_m)}};
-    j["lift_m"] = t.lift_m ? nlohmann::json(RoundSignificant(*t.lift_m)) : nlohmann::json();
-    j["brake_m"] = t.brake_m ? nlohmann::json(RoundSignificant(*t.brake_m)) : nlohmann::json();
-    turns.push_back(j);
-  }
-  return {{"lap_time_s", RoundSignificant(f.lap_time_s)},
-          {"qss_lap_time_s", RoundSignificant(s.run.qss_lap_time)},
-          {"qss_on_optimal_line_lap_time_s", RoundSignificant(s.run.qss_on_line_lap_time)},
-          {"solve_time_s", RoundSignificant(r.solve_seconds)},
-          {"ipopt_iterations", r.iterations},
-          {"status", r.ok() ? "converged" : "failed"},
-          {"message", r.message},
-          {"front_disc_limit_C", s.limit_C ? nlohmann::json(*s.limit_C) : nlohmann::json()},
-          {"max_front_disc_temp_C", RoundSignificant(f.max_front_disc_temp_C)},
-          {"top_speed_mps", RoundSignificant(f.top_speed_mps)},
-          {"min_speed_mps", RoundSignificant(f.min_speed_mps)},
-          {"corners", corners},
-          {"turns", turns},
-          {"thermal_start", start},
-          {"brake_energy_J", RoundSignificant(f.brake_energy_J)},
-          {"brake_energy_under_drive_J", RoundSignificant(f.brake_energy_under_drive_J)},
-          {"max_pedal_rate_per_s", RoundSignificant(f.max_pedal_rate_per_s)},
-          {"max_steer_rate_radps", RoundSignificant(f.max_steer_rate_radps)},
-          {"smoothing_effect_tread_K", RoundSignificant(s.run.max_tread_difference_K)},
-          {"smoothing_effect_disc_K", RoundSignificant(s.run.max_disc_difference_K)},
-          {"variables", s.run.solution.variables},
-          {"constraints", s.run.solution.constraints}};
-}
-
-std::string Opt(const std::optional<double>& v, const char* fmtstr) {
-  return v ? fmt::format(fmt::runtime(fmtstr), *v) : std::string("-");
-}
-
-void PrintRun(const Solved& s) {
-  const ocp::OptimalLapFigures& f = s.figures;
-  fmt::print(
-      "  lap {:.3f} s, top speed {:.2f} m/s, slowest {:.2f} m/s, front discs peak {:.1f} "
-      "degC\n",
-      f.lap_time_s, f.top_speed_mps, f.min_speed_mps, f.max_front_disc_temp_C);
-  {
-    const ocp::LapSolution& sol = s.run.solution;
-    std::string carcass, disc;
-    for (int i = 0; i < 4 && !sol.corners[i].carcass_temp.empty(); ++i) {
-      carcass +=
-          fmt::format("{}{:.0f}", i ? "/" : "", KelvinToCelsius(sol.corners[i].carcass_temp[0]));
-      disc += fmt::format("{}{:.0f}", i ? "/" : "", KelvinToCelsius(sol.corners[i].disc_temp[0]));
-    }
-    fmt::print("  thermal start {} ({} QSS laps): carcass fl/fr/rl/rr {} degC, discs {} degC\n",
-               s.thermal_start, s.run.start_laps, carcass, disc);
-  }
-  fmt::print("  brake work {:.0f} kJ, of it against the engine (drive above 2%) {:.2f} kJ\n",
-             1e-3 * f.brake_energy_J, 1e-3 * f.brake_energy_under_drive_J);
-  for (const ocp::TurnApproach& t : s.approaches) {
-    fmt::print("  {}: lift at {} m, brake at {} m, slowest {:.2f} m/s at {:.0f} m\n", t.turn,
-               Opt(t.lift_m, "{:.0f}"), Opt(t.brake_m, "{:.0f}"), t.min_speed_mps,
-               t.min_speed_at_m);
-  }
-  fmt::print("  {:<6} {:>12} {:>12} {:>10}\n", "corner", "disc pk C", "tread pk C", "wear mm");
-  for (Corner c : kAllCorners) {
-    const int i = CornerIndex(c);
-    fmt::print("  {:<6} {:>12.1f} {:>12.1f} {:>10.5f}\n", CornerName(c), f.peak_disc_temp_C[i],
-               f.peak_tread_temp_C[i], f.wear_mm[i]);
-  }
-  fmt::print(
-      "  smooth-model effect on the temperatures (exact replay): tread {:.2f} K, disc {:.2f} "
-      "K\n",
-      s.run.max_tread_difference_K, s.run.max_disc_difference_K);
-}
-
-void WriteRunCsv(const fs::path& path, const Solved& s, const track::Track& track,
-                 const vehicle::Car& car) {
-  const sim::ColumnSet columns = ocp::OptimalLapColumns(s.run, track);
-  WriteCsv(path,
-           {{"source", fmt::format("hotlap {} optimal lap", HOTLAP_VERSION)},
-            {"track", track.name()},
-            {"car", car.path.string()},
-            {"front_disc_limit_C", s.limit_C ? fmt::format("{:g}", *s.limit_C) : "none"},
-            {"status", s.run.solution.solve.message}},
-           columns.names, columns.values);
 }
 
 }  // namespace
@@ -298,46 +154,32 @@ int RunOptimal(const OptimalArgs& a) {
   ocp::KeepSolverMemory();
   fmt::print("hotlap optimal lap: car '{}' on {} ({:.1f} m)\n", car.name, track.name(),
              track.length_m());
-  std::vector<Solved> runs;
+  std::vector<ocp::SolvedLap> runs;
   if (a.compare_disc_limit_C) {
-    runs.push_back(Solve(a, car, track, std::nullopt, a.step_m, "no limit"));
-    // The limited lap from the free one (continuation): the same neighbourhood, fewer iterations.
-    const ocp::SolveResult& free = runs[0].run.solution.solve;
-    runs.push_back(Solve(a, car, track, a.compare_disc_limit_C, a.step_m,
-                         fmt::format("discs <= {:g} degC", *a.compare_disc_limit_C),
-                         free.ok() ? &free : nullptr));
-    // The problem is not convex, so each solve finds a local optimum. The limited lap is a
-    // feasible point of the free problem: if it is faster, the free solve stopped at a worse
-    // local optimum, and is solved again from the limited lap (then the better of the two kept).
-    const Solved& first = runs[0];
-    const Solved& limited = runs[1];
-    if (limited.run.solution.solve.ok() && limited.figures.lap_time_s < first.figures.lap_time_s) {
-      fmt::print(
-          "no limit: the limited lap is {:.1f} ms faster, so the free solve stopped at a "
-          "local optimum; solving it again from the limited lap\n",
-          1e3 * (first.figures.lap_time_s - limited.figures.lap_time_s));
-      Solved again =
-          Solve(a, car, track, std::nullopt, a.step_m, "no limit", &limited.run.solution.solve);
-      if (again.run.solution.solve.ok() &&
-          (!first.run.solution.solve.ok() || again.figures.lap_time_s < first.figures.lap_time_s)) {
-        again.run.solution.solve.iterations += first.run.solution.solve.iterations;
-        again.run.solution.solve.solve_seconds += first.run.solution.solve.solve_seconds;
-        runs[0] = std::move(again);
-      }
-    }
+    ocp::DiscLimitComparison c =
+        ocp::CompareDiscLimit(car, track, LapOptions(a, a.step_m),
+                              CelsiusToKelvin(*a.compare_disc_limit_C), PrintProgress, PrintLine);
+    runs.push_back(std::move(c.free));
+    runs.push_back(std::move(c.limited));
   } else {
-    runs.push_back(
-        Solve(a, car, track, a.disc_limit_C, a.step_m,
-              a.disc_limit_C ? fmt::format("discs <= {:g} degC", *a.disc_limit_C) : "optimal lap"));
+    ocp::OptimalLapOptions o = LapOptions(a, a.step_m);
+    if (a.disc_limit_C) o.front_disc_limit = CelsiusToKelvin(*a.disc_limit_C);
+    runs.push_back(ocp::SolveLap(
+        car, track, o,
+        a.disc_limit_C ? fmt::format("discs <= {:g} degC", *a.disc_limit_C) : "optimal lap",
+        nullptr, PrintProgress, PrintLine));
   }
   std::optional<double> mesh_delta;
   if (a.mesh_check) {
-    const Solved fine = Solve(a, car, track, runs.front().limit_C, 0.5 * a.step_m, "half mesh");
+    ocp::OptimalLapOptions o = LapOptions(a, 0.5 * a.step_m);
+    o.front_disc_limit = runs.front().front_disc_limit;
+    const ocp::SolvedLap fine =
+        ocp::SolveLap(car, track, o, "half mesh", nullptr, PrintProgress, PrintLine);
     mesh_delta = fine.figures.lap_time_s - runs.front().figures.lap_time_s;
   }
-  for (const Solved& s : runs) {
+  for (const ocp::SolvedLap& s : runs) {
     fmt::print("{}:\n", s.label);
-    PrintRun(s);
+    PrintRun(s, a.thermal_start);
   }
   if (runs.size() == 2) {
     const double delta = runs[1].figures.lap_time_s - runs[0].figures.lap_time_s;
@@ -376,7 +218,7 @@ int RunOptimal(const OptimalArgs& a) {
     page.AddMetadata("version", HOTLAP_VERSION);
     page.AddHeading("Summary");
     std::vector<std::vector<std::string>> rows;
-    for (const Solved& s : runs) {
+    for (const ocp::SolvedLap& s : runs) {
       rows.push_back({s.label, fmt::format("{:.3f}", s.figures.lap_time_s),
                       fmt::format("{:.2f}", s.figures.top_speed_mps),
                       fmt::format("{:.1f}", s.figures.max_front_disc_temp_C),
@@ -390,7 +232,7 @@ int RunOptimal(const OptimalArgs& a) {
                    .rows = rows});
     std::vector<const ocp::OptimalLapRun*> ptrs;
     std::vector<std::string> labels;
-    for (const Solved& s : runs) {
+    for (const ocp::SolvedLap& s : runs) {
       ptrs.push_back(&s.run);
       labels.push_back(s.label);
     }
@@ -404,13 +246,13 @@ int RunOptimal(const OptimalArgs& a) {
   fmt::print("done in {:.1f} s\n", elapsed);
 
   bool ok = true;
-  for (const Solved& s : runs) ok = ok && s.run.solution.solve.ok();
+  for (const ocp::SolvedLap& s : runs) ok = ok && s.run.solution.solve.ok();
   if (!a.json.empty()) {
     nlohmann::json j;
     if (runs.size() == 2) {
       j = {{"command", "lap --method ocp"},
-           {"unconstrained", RunJson(runs[0])},
-           {"constrained", RunJson(runs[1])},
+           {"unconstrained", RunJson(runs[0], a.thermal_start)},
+           {"constrained", RunJson(runs[1], a.thermal_start)},
            {"delta_s", RoundSignificant(runs[1].figures.lap_time_s - runs[0].figures.lap_time_s)}};
       // The headline keys of the unconstrained run at the top level too.
       for (const char* k : {"lap_time_s", "solve_time_s", "ipopt_iterations", "status",
@@ -418,7 +260,7 @@ int RunOptimal(const OptimalArgs& a) {
         j[k] = j["unconstrained"][k];
       }
     } else {
-      j = RunJson(runs[0]);
+      j = RunJson(runs[0], a.thermal_start);
       j["command"] = "optimise";
     }
     j["track"] = track.name();

@@ -1,0 +1,88 @@
+#include "hotlap/ocp/disc_limit_comparison.h"
+
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "hotlap/common/units.h"
+
+namespace hotlap::ocp {
+
+SolvedLap SolveLap(const vehicle::Car& car, const track::Track& track, OptimalLapOptions options,
+                   const std::string& label, const SolveResult* from, const LapProgress& progress,
+                   const LapLog& log) {
+  if (from != nullptr) {
+    // Warm start: the other solution's point and multipliers (same variables and rows).
+    options.start_point = from->x;
+    options.ipopt.warm_z_lower = from->z_lower;
+    options.ipopt.warm_z_upper = from->z_upper;
+    options.ipopt.warm_lambda = from->lambda;
+  }
+  if (progress) {
+    options.ipopt.on_iteration = [&](int it, double obj, double pr, double du) {
+      return progress(label, it, obj, pr, du);
+    };
+  }
+  if (log) {
+    log(fmt::format(
+        "{}: solving ({:.1f} m mesh{}{})...", label, options.step_m,
+        options.front_disc_limit
+            ? fmt::format(", front discs <= {:g} degC", KelvinToCelsius(*options.front_disc_limit))
+            : "",
+        from == nullptr ? "" : ", from the other solution"));
+  }
+  SolvedLap s;
+  s.label = label;
+  s.front_disc_limit = options.front_disc_limit;
+  s.run = RunOptimalLap(car, track, options);
+  const double wheel_power = car.vehicle->powertrain.WheelPower();
+  s.figures = CalcOptimalLapFigures(s.run, wheel_power);
+  s.approaches = FindTurnApproaches(s.run.solution, track, wheel_power);
+  if (log) {
+    const SolveResult& r = s.run.solution.solve;
+    log(
+        fmt::format("{}: {} after {} iterations in {:.1f} s: lap {:.3f} s (QSS {:.3f} s on the "
+                    "minimum-curvature line, {:.3f} s on this lap's line)",
+                    label, r.message, r.iterations, r.solve_seconds, s.figures.lap_time_s,
+                    s.run.qss_lap_time, s.run.qss_on_line_lap_time));
+  }
+  return s;
+}
+
+DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track& track,
+                                     const OptimalLapOptions& options, double front_disc_limit,
+                                     const LapProgress& progress, const LapLog& log) {
+  OptimalLapOptions free_options = options;
+  free_options.front_disc_limit.reset();
+  free_options.start_point.clear();
+  OptimalLapOptions limited_options = free_options;
+  limited_options.front_disc_limit = front_disc_limit;
+  const std::string limited_label =
+      fmt::format("discs <= {:g} degC", KelvinToCelsius(front_disc_limit));
+
+  DiscLimitComparison c;
+  c.free = SolveLap(car, track, free_options, "no limit", nullptr, progress, log);
+  const SolveResult& free = c.free.run.solution.solve;
+  c.limited = SolveLap(car, track, limited_options, limited_label, free.ok() ? &free : nullptr,
+                       progress, log);
+  const SolveResult& limited = c.limited.run.solution.solve;
+  if (limited.ok() && c.limited.figures.lap_time_s < c.free.figures.lap_time_s) {
+    if (log) {
+      log(fmt::format(
+          "no limit: the limited lap is {:.1f} ms faster, so the free solve stopped at a local "
+          "optimum; solving it again from the limited lap",
+          1e3 * (c.free.figures.lap_time_s - c.limited.figures.lap_time_s)));
+    }
+    SolvedLap again = SolveLap(car, track, free_options, "no limit", &limited, progress, log);
+    if (again.run.solution.solve.ok() &&
+        (!free.ok() || again.figures.lap_time_s < c.free.figures.lap_time_s)) {
+      again.run.solution.solve.iterations += free.iterations;
+      again.run.solution.solve.solve_seconds += free.solve_seconds;
+      c.free = std::move(again);
+      c.free_solved_again = true;
+    }
+  }
+  return c;
+}
+
+}  // namespace hotlap::ocp

@@ -1,0 +1,96 @@
+// The disc-limit comparison as a library call (ocp/disc_limit_comparison.h), on Darlington with a
+// coarse 20 m mesh (two solves of about 3,000 variables, a few seconds each): the limit holds,
+// binds, costs a non-negative time, and the limited lap starts from the free one.
+
+#include "hotlap/ocp/disc_limit_comparison.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "hotlap/common/error.h"
+#include "hotlap/common/units.h"
+#include "hotlap/track/track_io.h"
+#include "test_util.h"
+
+namespace hotlap::ocp {
+namespace {
+
+OptimalLapOptions Coarse() {
+  OptimalLapOptions o;
+  o.step_m = 20.0;
+  o.ambient_temp = CelsiusToKelvin(25.0);
+  o.track_temp = CelsiusToKelvin(40.0);
+  return o;
+}
+
+double PeakFrontLeftDisc(const SolvedLap& s) {
+  const std::vector<double>& t = s.run.solution.corners[CornerIndex(Corner::kFrontLeft)].disc_temp;
+  return *std::max_element(t.begin(), t.end());
+}
+
+TEST(DiscLimitComparisonTest, LimitHoldsBindsAndCostsTime) {
+  const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
+  const track::Track track = track::LoadTrack("darlington");
+  const double limit = CelsiusToKelvin(480.0);
+  std::vector<std::string> lines;
+  int iterations = 0;
+  const DiscLimitComparison c = CompareDiscLimit(
+      car, track, Coarse(), limit,
+      [&](const std::string&, int, double, double, double) {
+        ++iterations;
+        return true;
+      },
+      [&](const std::string& line) { lines.push_back(line); });
+  ASSERT_TRUE(c.converged()) << c.free.run.solution.solve.message << " / "
+                             << c.limited.run.solution.solve.message;
+  // The free lap's front-left disc goes above the limit (it binds), the limited one's does not.
+  EXPECT_GT(PeakFrontLeftDisc(c.free), limit + 5.0);
+  EXPECT_LE(PeakFrontLeftDisc(c.limited), limit + 1e-3);
+  EXPECT_FALSE(c.free.front_disc_limit.has_value());
+  ASSERT_TRUE(c.limited.front_disc_limit.has_value());
+  EXPECT_DOUBLE_EQ(*c.limited.front_disc_limit, limit);
+  // The better free lap is kept, so the limit never shows a gain.
+  EXPECT_GE(c.delta_s(), 0.0);
+  EXPECT_NEAR(c.delta_s(), c.limited.run.solution.lap_time - c.free.run.solution.lap_time, 1e-12);
+  // Warm-started from the free lap, the limited one takes fewer iterations than the free did.
+  EXPECT_LT(c.limited.run.solution.solve.iterations, c.free.run.solution.solve.iterations);
+  // Progress came for every iteration of every solve; the log names both solves.
+  EXPECT_GE(iterations, c.free.run.solution.solve.iterations +
+                            c.limited.run.solution.solve.iterations);
+  ASSERT_GE(lines.size(), 4u);
+  EXPECT_TRUE(test::Contains(lines[0], "no limit: solving (20.0 m mesh)"));
+  EXPECT_TRUE(test::Contains(lines[2], "discs <= 480 degC: solving"));
+  EXPECT_TRUE(test::Contains(lines[2], "from the other solution"));
+  // Figures and turn approaches come with each lap: no brake work against the engine.
+  for (const SolvedLap* s : {&c.free, &c.limited}) {
+    EXPECT_GT(s->figures.brake_energy_J, 1e5);
+    EXPECT_LT(s->figures.brake_energy_under_drive_J, 0.005 * s->figures.brake_energy_J);
+    EXPECT_EQ(s->approaches.size(), 2u);
+  }
+}
+
+TEST(DiscLimitComparisonTest, ProgressCanStopASolve) {
+  const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
+  const track::Track track = track::LoadTrack("darlington");
+  const SolvedLap s = SolveLap(car, track, Coarse(), "stopped", nullptr,
+                               [](const std::string& label, int it, double, double, double) {
+                                 EXPECT_EQ(label, "stopped");
+                                 return it < 3;
+                               });
+  EXPECT_FALSE(s.run.solution.solve.ok());
+  EXPECT_TRUE(test::Contains(s.run.solution.solve.message, "stopped on request"));
+  EXPECT_LE(s.run.solution.solve.iterations, 4);
+}
+
+TEST(DiscLimitComparisonTest, LimitBelowTheStartingDiscIsBadInput) {
+  const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
+  const track::Track track = track::LoadTrack("darlington");
+  // The racing start carries the front-left disc at about 400 degC into the lap.
+  EXPECT_THROW(CompareDiscLimit(car, track, Coarse(), CelsiusToKelvin(300.0)), InputError);
+}
+
+}  // namespace
+}  // namespace hotlap::ocp
