@@ -53,7 +53,7 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
     }
     return e;
   };
-  sim::ReplayInitialState settled = end_of(warm.laps[0]);
+  sim::ReplayInitialState start_state = end_of(warm.laps[0]);
   run.start_laps = 1;
   if (options.thermal_start == ThermalStart::kRacing) {
     // Lap after lap (each from the last one's end, wear kept at zero) until the carcasses rise
@@ -64,16 +64,16 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
       const sim::ReplayInitialState next = end_of(last);
       double change = 0.0;
       for (int k = 0; k < 4; ++k) {
-        change = std::max(change, next.tyres[k].carcass_temp - settled.tyres[k].carcass_temp);
+        change = std::max(change, next.tyres[k].carcass_temp - start_state.tyres[k].carcass_temp);
       }
-      settled = next;
+      start_state = next;
       ++run.start_laps;
       run.start_carcass_rise_K = change;
       if (change <= options.racing_carcass_rise_K) break;
-      one.initial = settled;
+      one.initial = start_state;
       last = std::move(sim::RunQssLap(car, road, one).laps[0]);
     }
-    one.initial = settled;
+    one.initial = start_state;
     one.laps = 1;
     warm.laps[1] = std::move(sim::RunQssLap(car, road, one).laps[0]);
   }
@@ -85,7 +85,7 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
   lap.ambient_temp = options.ambient_temp;
   lap.track_temp = options.track_temp;
   lap.car_half_width = options.car_half_width_m;
-  run.start = options.thermal_start == ThermalStart::kCar ? CarStart(car) : settled;
+  run.start = options.thermal_start == ThermalStart::kCar ? CarStart(car) : start_state;
   if (options.thermal_start == ThermalStart::kCar) run.start_laps = 0;
   lap.periodic_thermal = options.thermal_start == ThermalStart::kPeriodic;
   lap.initial = run.start;
