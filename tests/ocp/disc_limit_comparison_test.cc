@@ -58,8 +58,8 @@ TEST(DiscLimitComparisonTest, LimitHoldsBindsAndCostsTime) {
   // Warm-started from the free lap, the limited one takes fewer iterations than the free did.
   EXPECT_LT(c.limited.run.solution.solve.iterations, c.free.run.solution.solve.iterations);
   // Progress came for every iteration of every solve; the log names both solves.
-  EXPECT_GE(iterations, c.free.run.solution.solve.iterations +
-                            c.limited.run.solution.solve.iterations);
+  EXPECT_GE(iterations,
+            c.free.run.solution.solve.iterations + c.limited.run.solution.solve.iterations);
   ASSERT_GE(lines.size(), 4u);
   EXPECT_TRUE(test::Contains(lines[0], "no limit: solving (20.0 m mesh)"));
   EXPECT_TRUE(test::Contains(lines[2], "discs <= 480 degC: solving"));
@@ -88,8 +88,18 @@ TEST(DiscLimitComparisonTest, ProgressCanStopASolve) {
 TEST(DiscLimitComparisonTest, LimitBelowTheStartingDiscIsBadInput) {
   const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
   const track::Track track = track::LoadTrack("darlington");
-  // The racing start carries the front-left disc at about 400 degC into the lap.
-  EXPECT_THROW(CompareDiscLimit(car, track, Coarse(), CelsiusToKelvin(300.0)), InputError);
+  // The racing start carries the front-left disc at about 400 degC into the lap: refused before
+  // any solve starts (nothing logged), naming the disc and both temperatures.
+  std::vector<std::string> lines;
+  try {
+    CompareDiscLimit(car, track, Coarse(), CelsiusToKelvin(300.0), {},
+                     [&](const std::string& line) { lines.push_back(line); });
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(test::Contains(e.what(), "the fl disc starts at"));
+    EXPECT_TRUE(test::Contains(e.what(), "above the 300 degC limit"));
+  }
+  EXPECT_TRUE(lines.empty());
 }
 
 }  // namespace

@@ -4,13 +4,14 @@
 
 #include <fmt/format.h>
 
+#include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
 
 namespace hotlap::ocp {
 
 SolvedLap SolveLap(const vehicle::Car& car, const track::Track& track, OptimalLapOptions options,
                    const std::string& label, const SolveResult* from, const LapProgress& progress,
-                   const LapLog& log) {
+                   const LapLog& log, const LapWarmUp* warm_up) {
   if (from != nullptr) {
     // Warm start: the other solution's point and multipliers (same variables and rows).
     options.start_point = from->x;
@@ -34,7 +35,7 @@ SolvedLap SolveLap(const vehicle::Car& car, const track::Track& track, OptimalLa
   SolvedLap s;
   s.label = label;
   s.front_disc_limit = options.front_disc_limit;
-  s.run = RunOptimalLap(car, track, options);
+  s.run = RunOptimalLap(car, track, options, warm_up);
   const double wheel_power = car.vehicle->powertrain.WheelPower();
   s.figures = CalcOptimalLapFigures(s.run, wheel_power);
   s.approaches = FindTurnApproaches(s.run.solution, track, wheel_power);
@@ -60,11 +61,24 @@ DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track
   const std::string limited_label =
       fmt::format("discs <= {:g} degC", KelvinToCelsius(front_disc_limit));
 
+  // The warm-up once for all solves; a limit the discs start above is refused before any.
+  const LapWarmUp warm_up = RunLapWarmUp(car, track, free_options);
+  if (options.thermal_start != ThermalStart::kPeriodic) {
+    for (const Corner corner : {Corner::kFrontLeft, Corner::kFrontRight}) {
+      const double start = warm_up.start.brakes[CornerIndex(corner)].disc_temp;
+      if (start > front_disc_limit) {
+        throw InputError(fmt::format(
+            "optimal lap: the {} disc starts at {:.0f} degC, above the {:.0f} degC limit",
+            CornerName(corner), KelvinToCelsius(start), KelvinToCelsius(front_disc_limit)));
+      }
+    }
+  }
+
   DiscLimitComparison c;
-  c.free = SolveLap(car, track, free_options, "no limit", nullptr, progress, log);
+  c.free = SolveLap(car, track, free_options, "no limit", nullptr, progress, log, &warm_up);
   const SolveResult& free = c.free.run.solution.solve;
   c.limited = SolveLap(car, track, limited_options, limited_label, free.ok() ? &free : nullptr,
-                       progress, log);
+                       progress, log, &warm_up);
   const SolveResult& limited = c.limited.run.solution.solve;
   if (limited.ok() && c.limited.figures.lap_time_s < c.free.figures.lap_time_s) {
     if (log) {
@@ -73,7 +87,8 @@ DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track
           "optimum; solving it again from the limited lap",
           1e3 * (c.free.figures.lap_time_s - c.limited.figures.lap_time_s)));
     }
-    SolvedLap again = SolveLap(car, track, free_options, "no limit", &limited, progress, log);
+    SolvedLap again =
+        SolveLap(car, track, free_options, "no limit", &limited, progress, log, &warm_up);
     if (again.run.solution.solve.ok() &&
         (!free.ok() || again.figures.lap_time_s < c.free.figures.lap_time_s)) {
       again.run.solution.solve.iterations += free.iterations;

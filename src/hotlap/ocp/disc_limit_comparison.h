@@ -44,10 +44,12 @@ using LapLog = std::function<void(const std::string& line)>;
 
 /// Solves one lap (RunOptimalLap) and computes its figures and turn approaches. `from`, if not
 /// null, is another solve of the same problem size (same track, car and mesh) whose point and
-/// multipliers start this one. InputError as RunOptimalLap.
+/// multipliers start this one; `warm_up`, if not null, the warm-up to use (RunLapWarmUp of the
+/// same car, track and options). InputError as RunOptimalLap.
 SolvedLap SolveLap(const vehicle::Car& car, const track::Track& track, OptimalLapOptions options,
                    const std::string& label, const SolveResult* from = nullptr,
-                   const LapProgress& progress = {}, const LapLog& log = {});
+                   const LapProgress& progress = {}, const LapLog& log = {},
+                   const LapWarmUp* warm_up = nullptr);
 
 /// The free lap and the limited one.
 struct DiscLimitComparison {
@@ -65,8 +67,9 @@ struct DiscLimitComparison {
 /// fewer iterations). The problem is not convex, and the limited lap is a feasible point of the
 /// free problem: if it is faster, the free solve stopped at a worse local optimum, and the free
 /// lap is solved again from the limited one, keeping the better of the two. `options`'
-/// front_disc_limit and start_point are ignored. InputError for bad input (a limit below the
-/// discs' starting temperature, ...).
+/// front_disc_limit and start_point are ignored. The warm-up runs once, for all the solves.
+/// InputError for bad input, before any solve for a limit below a front disc's temperature at
+/// the start line (except with a periodic thermal start, where the start is free).
 DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track& track,
                                      const OptimalLapOptions& options, double front_disc_limit,
                                      const LapProgress& progress = {}, const LapLog& log = {});

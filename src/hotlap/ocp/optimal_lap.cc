@@ -25,24 +25,30 @@ sim::ReplayInitialState CarStart(const vehicle::Car& car) {
   return s;
 }
 
-}  // namespace
-
-OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
-                            const OptimalLapOptions& options) {
-  vehicle::RequireVehicle(car, "the optimal lap");
-  OptimalLapRun run;
-  // The warm-up on the minimum-curvature line from the car's starting state: one out-lap (the
-  // warm start), or laps until the carcasses rise slowly (the racing start); the flying lap after
-  // it seeds the solve.
-  const track::RacingLine line =
-      MinimumCurvatureLine(track, {.step_m = 2.0, .margin_m = options.line_margin_m});
-  const std::vector<sim::RoadPoint> road = sim::SampleRoadAlongLine(track, line, 1.0);
+// The QSS options of the warm-up's first two laps (and of the QSS lap on the optimal line).
+sim::QssOptions WarmUpQss(const vehicle::Car& car, const track::Track& track,
+                          const OptimalLapOptions& options) {
   sim::QssOptions qss;
   qss.laps = 2;
   qss.ambient_temp = options.ambient_temp;
   qss.track_temp = options.track_temp;
   qss.initial = CarStart(car);
   qss.track_length = track.length_m();
+  return qss;
+}
+
+}  // namespace
+
+LapWarmUp RunLapWarmUp(const vehicle::Car& car, const track::Track& track,
+                       const OptimalLapOptions& options) {
+  vehicle::RequireVehicle(car, "the optimal lap");
+  // On the minimum-curvature line from the car's starting state: one out-lap (the warm start),
+  // or laps until the carcasses rise slowly (the racing start); the flying lap after it seeds the
+  // solve.
+  const track::RacingLine line =
+      MinimumCurvatureLine(track, {.step_m = 2.0, .margin_m = options.line_margin_m});
+  const std::vector<sim::RoadPoint> road = sim::SampleRoadAlongLine(track, line, 1.0);
+  const sim::QssOptions qss = WarmUpQss(car, track, options);
   sim::QssResult warm = sim::RunQssLap(car, road, qss);
   const auto end_of = [](const sim::QssLap& lap) {
     sim::ReplayInitialState e;
@@ -53,31 +59,49 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
     }
     return e;
   };
-  sim::ReplayInitialState start_state = end_of(warm.laps[0]);
-  run.start_laps = 1;
+  LapWarmUp w;
+  w.start = end_of(warm.laps[0]);
+  w.start_laps = 1;
   if (options.thermal_start == ThermalStart::kRacing) {
     // Lap after lap (each from the last one's end, wear kept at zero) until the carcasses rise
     // slowly enough.
     sim::QssOptions one = qss;
     one.laps = 1;
-    for (sim::QssLap last = warm.laps[1]; run.start_laps < options.racing_max_laps;) {
+    for (sim::QssLap last = warm.laps[1]; w.start_laps < options.racing_max_laps;) {
       const sim::ReplayInitialState next = end_of(last);
       double change = 0.0;
       for (int k = 0; k < 4; ++k) {
-        change = std::max(change, next.tyres[k].carcass_temp - start_state.tyres[k].carcass_temp);
+        change = std::max(change, next.tyres[k].carcass_temp - w.start.tyres[k].carcass_temp);
       }
-      start_state = next;
-      ++run.start_laps;
-      run.start_carcass_rise_K = change;
+      w.start = next;
+      ++w.start_laps;
+      w.start_carcass_rise_K = change;
       if (change <= options.racing_carcass_rise_K) break;
-      one.initial = start_state;
+      one.initial = w.start;
       last = std::move(sim::RunQssLap(car, road, one).laps[0]);
     }
-    one.initial = start_state;
-    one.laps = 1;
+    one.initial = w.start;
     warm.laps[1] = std::move(sim::RunQssLap(car, road, one).laps[0]);
   }
-  run.qss_lap_time = warm.laps[1].lap_time;
+  if (options.thermal_start == ThermalStart::kCar) {
+    w.start = CarStart(car);
+    w.start_laps = 0;
+  }
+  w.guess = std::move(warm.laps[1]);
+  return w;
+}
+
+OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
+                            const OptimalLapOptions& options, const LapWarmUp* warm_up) {
+  vehicle::RequireVehicle(car, "the optimal lap");
+  const LapWarmUp own_warm_up = warm_up ? LapWarmUp{} : RunLapWarmUp(car, track, options);
+  const LapWarmUp& w = warm_up ? *warm_up : own_warm_up;
+  const sim::QssOptions qss = WarmUpQss(car, track, options);
+  OptimalLapRun run;
+  run.start = w.start;
+  run.start_laps = w.start_laps;
+  run.start_carcass_rise_K = w.start_carcass_rise_K;
+  run.qss_lap_time = w.guess.lap_time;
 
   LapProblemOptions lap;
   lap.step_m = options.step_m;
@@ -85,12 +109,10 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
   lap.ambient_temp = options.ambient_temp;
   lap.track_temp = options.track_temp;
   lap.car_half_width = options.car_half_width_m;
-  run.start = options.thermal_start == ThermalStart::kCar ? CarStart(car) : start_state;
-  if (options.thermal_start == ThermalStart::kCar) run.start_laps = 0;
   lap.periodic_thermal = options.thermal_start == ThermalStart::kPeriodic;
   lap.initial = run.start;
   lap.start_point = options.start_point;
-  run.solution = SolveMinimumTimeLap(car, track, lap, warm.laps[1], options.ipopt);
+  run.solution = SolveMinimumTimeLap(car, track, lap, w.guess, options.ipopt);
 
   // The QSS lap on the optimal line: the same warm-up on the path the optimiser chose.
   const LapSolution& s = run.solution;

@@ -69,11 +69,26 @@ struct OptimalLapRun {
   double max_disc_difference_K = 0.0;
 };
 
-/// Runs the warm-up, the solve and the exact replay. InputError for bad input (no vehicle
+/// The warm-up before a solve (RunOptimalLap's first step): the thermal state at the start line
+/// (OptimalLapOptions::thermal_start) and the QSS flying lap on the minimum-curvature line that
+/// seeds the solve.
+struct LapWarmUp {
+  sim::ReplayInitialState start;
+  int start_laps = 0;                 ///< as OptimalLapRun::start_laps
+  double start_carcass_rise_K = 0.0;  ///< as OptimalLapRun::start_carcass_rise_K
+  sim::QssLap guess;
+};
+
+/// Runs the warm-up for `options` (its thermal start, temperatures and line margin).
+LapWarmUp RunLapWarmUp(const vehicle::Car& car, const track::Track& track,
+                       const OptimalLapOptions& options);
+
+/// Runs the warm-up (or takes `warm_up`, one of RunLapWarmUp for the same car, track and
+/// options), the solve and the exact replay. InputError for bad input (no vehicle
 /// sections, a disc limit below the starting disc temperature); the solve's failures are reported
 /// in solution.solve, never thrown.
 OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
-                            const OptimalLapOptions& options);
+                            const OptimalLapOptions& options, const LapWarmUp* warm_up = nullptr);
 
 /// A lift or brake point into a turn.
 struct TurnApproach {
