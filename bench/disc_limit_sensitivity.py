@@ -87,7 +87,7 @@ def main():
     ap.add_argument("--step-m", type=float, default=3.0)
     ap.add_argument("--limit-C", type=float, default=500.0)
     ap.add_argument("--json", default="")
-    ap.add_argument("--extra-limits-C", default="450,400",
+    ap.add_argument("--extra-limits-C", default="450,425",
                     help="limits to run the shipped car at besides --limit-C (comma-separated)")
     args = ap.parse_args()
     cases = [("shipped", {}, None)]
