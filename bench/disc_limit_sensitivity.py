@@ -81,6 +81,10 @@ def run(hotlap, car, args, limit_C=None):
     }
 
 
+def metres(value):
+    return "-" if value is None else f"{value:.0f}"
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--hotlap", default=str(ROOT / "build" / "hotlap"))
@@ -107,7 +111,7 @@ def main():
             print(f"| {name} | failed | | | {r['error'][-120:]!r} |")
         else:
             print(f"| {name} | {r['delta_ms']:.1f} | {r['free_lap_s']:.3f} | "
-                  f"{r['lift_m'][-1]} -> {r['limited_lift_m'][-1]} | "
+                  f"{metres(r['lift_m'][-1])} -> {metres(r['limited_lift_m'][-1])} | "
                   f"{r['free_fl_disc_peak_C']:.0f} | {'yes' if r['both_converged'] else 'no'} |")
         sys.stdout.flush()
     if args.json:
