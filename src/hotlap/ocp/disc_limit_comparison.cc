@@ -4,7 +4,6 @@
 
 #include <fmt/format.h>
 
-#include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
 
 namespace hotlap::ocp {
@@ -64,14 +63,7 @@ DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track
   // The warm-up once for all solves; a limit the discs start above is refused before any.
   const LapWarmUp warm_up = RunLapWarmUp(car, track, free_options);
   if (options.thermal_start != ThermalStart::kPeriodic) {
-    for (const Corner corner : {Corner::kFrontLeft, Corner::kFrontRight}) {
-      const double start = warm_up.start.brakes[CornerIndex(corner)].disc_temp;
-      if (start > front_disc_limit) {
-        throw InputError(fmt::format(
-            "optimal lap: the {} disc starts at {:.0f} degC, above the {:.0f} degC limit",
-            CornerName(corner), KelvinToCelsius(start), KelvinToCelsius(front_disc_limit)));
-      }
-    }
+    RequireFrontDiscsWithinLimit(warm_up.start, front_disc_limit);
   }
 
   DiscLimitComparison c;

@@ -94,6 +94,11 @@ struct Builder {
     }
   }
 
+  // The pedal's split into drive power and brake force.
+  internal::PedalSplitFn Split() const {
+    return {p.powertrain.WheelPower(), max_brake_force, options.pedal_smoothing};
+  }
+
   void AddNodes() {
     intervals = std::max(16, static_cast<int>(std::round(track.length_m() / options.step_m)));
     ds = track.length_m() / intervals;
@@ -145,12 +150,6 @@ struct Builder {
         if (options.front_disc_limit && IsFront(kAllCorners[c]))
           disc_hi = *options.front_disc_limit;
         nv.disc[c] = state(h.disc_temp, options.initial.brakes[c].disc_temp, 200.0, disc_hi, 100.0);
-        if (fix && options.initial.brakes[c].disc_temp > disc_hi) {
-          throw InputError(fmt::format(
-              "optimal lap: the {} disc starts at {:.0f} degC, above the {:.0f} degC limit",
-              CornerName(kAllCorners[c]), KelvinToCelsius(options.initial.brakes[c].disc_temp),
-              KelvinToCelsius(disc_hi)));
-        }
         if (!fix) nlp.set_initial(nv.disc[c], std::min(nlp.initial(nv.disc[c]), disc_hi - 1.0));
         nv.calliper[c] =
             state(h.calliper_temp, options.initial.brakes[c].calliper_temp, 200.0, 2000.0, 100.0);
@@ -165,7 +164,7 @@ struct Builder {
       const double pedal0 = power0 > 0.0 ? power0 / wheel_power : -brake0 / max_brake_force;
       const bool pedal = !options.independent_drive_and_brake;
       nv.pedal = nlp.AddVariable(pedal ? pedal0 : 0.0, pedal ? -1.0 : 0.0, pedal ? 1.0 : 0.0, 0.5);
-      const internal::PedalSplitFn split{wheel_power, max_brake_force, options.pedal_smoothing};
+      const internal::PedalSplitFn split = Split();
       // Their range is the pedal's: bounds of their own would nearly coincide with the pedal's
       // and leave Ipopt two almost parallel active constraints.
       nv.power = nlp.AddVariable(wheel_power * split.Pos(pedal0, split.eps), 0.0,
@@ -238,9 +237,8 @@ struct Builder {
     if (!options.independent_drive_and_brake) {
       // Drive power and brake force from the one pedal.
       const int rp = nlp.AddConstraint(0, 0, 2e5), rb = nlp.AddConstraint(0, 0, 1e4);
-      nlp.AddElement(MakeElement<3, 2>(internal::PedalSplitFn{
-                         p.powertrain.WheelPower(), max_brake_force, options.pedal_smoothing}),
-                     {nv.pedal, nv.power, nv.brake}, {{{rp, 1.0}}, {{rb, 1.0}}});
+      nlp.AddElement(MakeElement<3, 2>(Split()), {nv.pedal, nv.power, nv.brake},
+                     {{{rp, 1.0}}, {{rb, 1.0}}});
     }
     {
       const int rd = nlp.AddConstraint(0, 0, 1e5);
@@ -419,11 +417,25 @@ struct Builder {
 
 }  // namespace
 
+void RequireFrontDiscsWithinLimit(const sim::ReplayInitialState& start, double front_disc_limit) {
+  for (const Corner corner : {Corner::kFrontLeft, Corner::kFrontRight}) {
+    const double t = start.brakes[CornerIndex(corner)].disc_temp;
+    if (t > front_disc_limit) {
+      throw InputError(
+          fmt::format("optimal lap: the {} disc starts at {:.0f} degC, above the {:.0f} degC limit",
+                      CornerName(corner), KelvinToCelsius(t), KelvinToCelsius(front_disc_limit)));
+    }
+  }
+}
+
 LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& track,
                                 const LapProblemOptions& options, const sim::QssLap& guess,
                                 const IpoptOptions& ipopt) {
   const VehicleParams& p = vehicle::RequireVehicle(car, "the optimal lap");
   if (!(options.step_m > 0.0)) throw InputError("optimal lap: the mesh step must be > 0 m");
+  if (options.front_disc_limit && !options.periodic_thermal) {
+    RequireFrontDiscsWithinLimit(options.initial, *options.front_disc_limit);
+  }
   Builder b(car, p, track, options, guess);
   b.Build();
   if (!options.start_point.empty()) {
@@ -437,8 +449,7 @@ LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& tra
     if (!options.independent_drive_and_brake) {
       // The pedal of the start's drive power and brake force (p = P / P_max - B / B_max, exact for
       // a pedal solution, since pos(p) - pos(-p) = p; a start with both on gets the net of them).
-      const internal::PedalSplitFn split{p.powertrain.WheelPower(), b.max_brake_force,
-                                         options.pedal_smoothing};
+      const internal::PedalSplitFn split = b.Split();
       for (const NodeVars& nv : b.nodes) {
         const double pedal = std::clamp(b.nlp.initial(nv.power) / split.max_power -
                                             b.nlp.initial(nv.brake) / split.max_brake_force,

@@ -94,6 +94,10 @@ struct LapSolution {
   int constraints = 0;
 };
 
+/// InputError naming the disc if a front disc of `start` is above `front_disc_limit` (K): a lap
+/// that starts there cannot hold the limit.
+void RequireFrontDiscsWithinLimit(const sim::ReplayInitialState& start, double front_disc_limit);
+
 /// Builds and solves the lap. `guess` (a QSS lap of the same car and track, e.g. from
 /// sim::RunQssLap) gives the starting point. InputError if the car has no vehicle sections;
 /// failures of the solve are reported in the result's `solve` (never thrown).
