@@ -43,6 +43,9 @@ ocp::ThermalStart ParseStart(const std::string& s) {
 ocp::OptimalLapOptions LapOptions(const OptimalArgs& a, double step_m) {
   ocp::OptimalLapOptions o;
   o.step_m = step_m;
+  o.coarse_step_m = a.coarse_step_m;
+  o.steer_smoothing_weight = a.steer_smoothing;
+  o.pedal_smoothing_weight = a.pedal_smoothing;
   o.thermal_start = ParseStart(a.thermal_start);
   o.ambient_temp = CelsiusToKelvin(a.ambient_C);
   o.track_temp = CelsiusToKelvin(a.track_C);
@@ -79,6 +82,19 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
       sub->add_option("--step-m", a.step_m, "Mesh spacing along the centre line, m")
           ->capture_default_str()
           ->check(CLI::Range(0.5, 50.0)));
+  a.stock_car_only.push_back(
+      sub->add_option("--coarse-step-m", a.coarse_step_m,
+                      "Coarse to fine: solve first on a mesh of this spacing, m, and start the "
+                      "--step-m solve from it (0: off; docs/optimal-control.md)")
+          ->capture_default_str()
+          ->check(CLI::Range(0.0, 100.0)));
+  a.stock_car_only.push_back(
+      sub->add_option("--steer-smoothing", a.steer_smoothing,
+                      "Weight of the steer's smoothness penalty, s per squared scaled change "
+                      "between nodes (default: the library's; docs/optimal-control.md)"));
+  a.stock_car_only.push_back(
+      sub->add_option("--pedal-smoothing", a.pedal_smoothing,
+                      "Weight of the pedal's smoothness penalty (as --steer-smoothing)"));
   a.stock_car_only.push_back(
       sub->add_option("--thermal-start", a.thermal_start,
                       "Thermal states at the start: racing (QSS laps until no carcass rises over "
@@ -173,6 +189,12 @@ int RunOptimal(const OptimalArgs& a) {
   if (a.mesh_check) {
     ocp::OptimalLapOptions o = LapOptions(a, 0.5 * a.step_m);
     o.front_disc_limit = runs.front().front_disc_limit;
+    // From the solution itself, taken onto the finer mesh.
+    const ocp::LapSolution& first = runs.front().run.solution;
+    if (first.solve.ok()) {
+      o.start_point = ocp::ResampleLapPoint(first.solve.x, static_cast<int>(first.distance.size()),
+                                            ocp::LapNodeCount(track, o.step_m));
+    }
     const ocp::SolvedLap fine =
         ocp::SolveLap(car, track, o, "half mesh", nullptr, PrintProgress, PrintLine);
     mesh_delta = fine.figures.lap_time_s - runs.front().figures.lap_time_s;

@@ -59,6 +59,13 @@ nlohmann::json RunJson(const ocp::SolvedLap& s, const std::string& thermal_start
       {"qss_on_optimal_line_lap_time_s", RoundSignificant(s.run.qss_on_line_lap_time)},
       {"solve_time_s", RoundSignificant(r.solve_seconds)},
       {"ipopt_iterations", r.iterations},
+      {"coarse_solve",
+       s.run.coarse.iterations > 0
+           ? nlohmann::json{{"ipopt_iterations", s.run.coarse.iterations},
+                            {"solve_time_s", RoundSignificant(s.run.coarse.solve_seconds)},
+                            {"lap_time_s", RoundSignificant(s.run.coarse_lap_time)},
+                            {"status", s.run.coarse.ok() ? "converged" : "failed"}}
+           : nlohmann::json()},
       {"status", r.ok() ? "converged" : "failed"},
       {"message", r.message},
       {"front_disc_limit_C",

@@ -40,6 +40,12 @@ SolvedLap SolveLap(const vehicle::Car& car, const track::Track& track, OptimalLa
   s.approaches = FindTurnApproaches(s.run.solution, track, wheel_power);
   if (log) {
     const SolveResult& r = s.run.solution.solve;
+    if (s.run.coarse.iterations > 0) {
+      log(fmt::format("{}: coarse solve ({:g} m mesh) {} after {} iterations in {:.1f} s: lap "
+                      "{:.3f} s; the fine solve starts from it",
+                      label, options.coarse_step_m, s.run.coarse.message, s.run.coarse.iterations,
+                      s.run.coarse.solve_seconds, s.run.coarse_lap_time));
+    }
     log(
         fmt::format("{}: {} after {} iterations in {:.1f} s: lap {:.3f} s (QSS {:.3f} s on the "
                     "minimum-curvature line, {:.3f} s on this lap's line)",

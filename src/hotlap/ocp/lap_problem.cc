@@ -100,7 +100,7 @@ struct Builder {
   }
 
   void AddNodes() {
-    intervals = std::max(16, static_cast<int>(std::round(track.length_m() / options.step_m)));
+    intervals = LapNodeCount(track, options.step_m) - 1;
     ds = track.length_m() / intervals;
     const double wheel_power = p.powertrain.WheelPower();
     max_brake_force = options.max_brake_force > 0.0 ? options.max_brake_force : 2.0 * p.Weight();
@@ -373,9 +373,11 @@ struct Builder {
     // Smooth controls: weight * sum ((c_{k+1} - c_k) / scale)^2 per control.
     const double pedal_weight =
         options.pedal_smoothing_weight >= 0.0 ? options.pedal_smoothing_weight : options.smoothing;
+    const double steer_weight =
+        options.steer_smoothing_weight >= 0.0 ? options.steer_smoothing_weight : options.smoothing;
     for (int k = 0; k < intervals; ++k) {
       for (const auto& [a_var, b_var, weight] :
-           {std::tuple{nodes[k].steer, nodes[k + 1].steer, options.smoothing},
+           {std::tuple{nodes[k].steer, nodes[k + 1].steer, steer_weight},
             std::tuple{nodes[k].pedal, nodes[k + 1].pedal, pedal_weight},
             std::tuple{nodes[k].power, nodes[k + 1].power,
                        options.independent_drive_and_brake ? options.smoothing : 0.0},
@@ -426,6 +428,29 @@ void RequireFrontDiscsWithinLimit(const sim::ReplayInitialState& start, double f
                       CornerName(corner), KelvinToCelsius(t), KelvinToCelsius(front_disc_limit)));
     }
   }
+}
+
+int LapNodeCount(const track::Track& track, double step_m) {
+  return std::max(16, static_cast<int>(std::round(track.length_m() / step_m))) + 1;
+}
+
+std::vector<double> ResampleLapPoint(const std::vector<double>& x, int from_nodes, int to_nodes) {
+  if (from_nodes < 2 || to_nodes < 2 || x.empty() || x.size() % from_nodes != 0) {
+    throw InputError(fmt::format("optimal lap: {} values are not {} nodes of a lap", x.size(),
+                                 from_nodes));
+  }
+  const size_t per_node = x.size() / static_cast<size_t>(from_nodes);
+  std::vector<double> out(per_node * static_cast<size_t>(to_nodes));
+  for (int k = 0; k < to_nodes; ++k) {
+    // The fine node's place on the coarse mesh, in coarse intervals.
+    const double at = static_cast<double>(k) * (from_nodes - 1) / (to_nodes - 1);
+    const int j = std::min(static_cast<int>(at), from_nodes - 2);
+    const double w = at - j;
+    for (size_t i = 0; i < per_node; ++i) {
+      out[k * per_node + i] = (1.0 - w) * x[j * per_node + i] + w * x[(j + 1) * per_node + i];
+    }
+  }
+  return out;
 }
 
 LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& track,

@@ -65,6 +65,8 @@ struct LapProblemOptions {
   /// The same penalty's weight for the pedal (< 0: `smoothing`). A weight of 1e-2 took the
   /// brake application into turn 1 away altogether on a test car (docs/optimal-control.md).
   double pedal_smoothing_weight = -1.0;
+  /// The same penalty's weight for the steer (< 0: `smoothing`).
+  double steer_smoothing_weight = -1.0;
   /// The tyre thermal model's |x| made smooth for the optimiser (tyre_thermal.h); the solution is
   /// replayed through the exact model to report the difference.
   tyre::TyreThermalSmoothing thermal_smoothing{10.0, 1e-3};
@@ -97,6 +99,16 @@ struct LapSolution {
 /// InputError naming the disc if a front disc of `start` is above `front_disc_limit` (K): a lap
 /// that starts there cannot hold the limit.
 void RequireFrontDiscsWithinLimit(const sim::ReplayInitialState& start, double front_disc_limit);
+
+/// The mesh nodes of the lap problem on `track` with spacing about `step_m` (the intervals plus
+/// the closing node).
+int LapNodeCount(const track::Track& track, double step_m);
+
+/// A point of the lap problem (a SolveResult::x) on a mesh of `from_nodes` nodes, taken onto a
+/// mesh of `to_nodes` nodes of the same track, car and options: every node variable linearly
+/// interpolated in centre-line distance (both meshes are uniform and close the lap). The start of
+/// a fine solve from a coarse one. InputError if x is not from_nodes whole nodes.
+std::vector<double> ResampleLapPoint(const std::vector<double>& x, int from_nodes, int to_nodes);
 
 /// Builds and solves the lap. `guess` (a QSS lap of the same car and track, e.g. from
 /// sim::RunQssLap) gives the starting point. InputError if the car has no vehicle sections;

@@ -112,6 +112,22 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
   lap.periodic_thermal = options.thermal_start == ThermalStart::kPeriodic;
   lap.initial = run.start;
   lap.start_point = options.start_point;
+  lap.steer_smoothing_weight = options.steer_smoothing_weight;
+  lap.pedal_smoothing_weight = options.pedal_smoothing_weight;
+  if (options.start_point.empty() && options.coarse_step_m > options.step_m) {
+    // Coarse to fine: the same problem on the coarse mesh from the guess, then its solution on
+    // the fine mesh as the fine solve's start.
+    LapProblemOptions coarse = lap;
+    coarse.step_m = options.coarse_step_m;
+    const LapSolution c = SolveMinimumTimeLap(car, track, coarse, w.guess, options.ipopt);
+    run.coarse = c.solve;
+    run.coarse_lap_time = c.lap_time;
+    if (c.solve.ok()) {
+      const int fine_nodes = LapNodeCount(track, options.step_m);
+      lap.start_point =
+          ResampleLapPoint(c.solve.x, static_cast<int>(c.distance.size()), fine_nodes);
+    }
+  }
   run.solution = SolveMinimumTimeLap(car, track, lap, w.guess, options.ipopt);
 
   // The QSS lap on the optimal line: the same warm-up on the path the optimiser chose.

@@ -45,6 +45,16 @@ struct OptimalLapOptions {
   double track_temp = 0.0;              ///< K
   double line_margin_m = 1.5;           ///< the QSS guess's racing line keeps this from the edges
   double car_half_width_m = 1.0;        ///< the optimal line keeps the car's centre this far in
+  /// Coarse-to-fine: if above step_m, the lap is solved first on a mesh this coarse (from the QSS
+  /// guess) and the fine solve starts from that solution, interpolated (ResampleLapPoint); 0: off.
+  /// Ignored when start_point is given; a coarse solve that fails leaves the fine one to the guess.
+  /// 15 m took the Gen-7 lap at 3 m from 274 iterations (140 s) to 196 + 31 (35 s in all;
+  /// docs/optimal-control.md, "Speed").
+  double coarse_step_m = 15.0;
+  /// Weights of the control-smoothness penalty for the steer and the pedal
+  /// (LapProblemOptions::steer_smoothing_weight, pedal_smoothing_weight; < 0: the problem's).
+  double steer_smoothing_weight = -1.0;
+  double pedal_smoothing_weight = -1.0;
   /// Start the solve here instead of the QSS guess: another solution's SolveResult::x on the same
   /// track, car and mesh (LapProblemOptions::start_point).
   std::vector<double> start_point;
@@ -56,6 +66,9 @@ struct OptimalLapOptions {
 struct OptimalLapRun {
   LapSolution solution;
   double qss_lap_time = 0.0;  ///< the QSS flying lap (the guess), s
+  /// The coarse solve of coarse-to-fine (OptimalLapOptions::coarse_step_m; iterations 0 if none).
+  SolveResult coarse;
+  double coarse_lap_time = 0.0;  ///< its lap, s (0 if none)
   /// The QSS flying lap on the optimal lap's own line (same car, same path: the difference left
   /// is the dynamics the QSS leaves out), s; 0 if the solve gave no solution.
   double qss_on_line_lap_time = 0.0;
