@@ -41,7 +41,8 @@ SolvedLap SolveLap(const vehicle::Car& car, const track::Track& track, OptimalLa
   if (log) {
     const SolveResult& r = s.run.solution.solve;
     if (s.run.coarse.iterations > 0) {
-      log(fmt::format("{}: coarse solve ({:g} m mesh) {} after {} iterations in {:.1f} s: lap "
+      log(
+          fmt::format("{}: coarse solve ({:g} m mesh) {} after {} iterations in {:.1f} s: lap "
                       "{:.3f} s; the fine solve starts from it",
                       label, options.coarse_step_m, s.run.coarse.message, s.run.coarse.iterations,
                       s.run.coarse.solve_seconds, s.run.coarse_lap_time));

@@ -227,6 +227,10 @@ SolveResult SolveWithIpopt(const ElementNlp& nlp, const IpoptOptions& options) {
           "warm_start_slack_bound_frac", "warm_start_mult_bound_push"}) {
       app->Options()->SetNumericValue(name, 1e-6);
     }
+  } else if (options.primal_start_mu > 0.0) {
+    app->Options()->SetNumericValue("mu_init", options.primal_start_mu);
+    app->Options()->SetNumericValue("bound_push", 1e-6);
+    app->Options()->SetNumericValue("bound_frac", 1e-6);
   }
   for (const auto& [name, value] : options.extra) {
     // The value as the option's type takes it: integer, number or text.

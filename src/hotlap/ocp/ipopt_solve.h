@@ -33,6 +33,12 @@ struct IpoptOptions {
   std::vector<double> warm_z_lower, warm_z_upper, warm_lambda;
   /// The barrier parameter a warm start begins with.
   double warm_mu = 1e-6;
+  /// A start point that is close to the solution but has no multipliers (coarse to fine): if > 0
+  /// and there is no warm start, Ipopt's barrier begins at this mu and the point is pushed off its
+  /// bounds by 1e-6 instead of Ipopt's 1e-2 (`bound_push`, `bound_frac`), so the first steps do
+  /// not undo the start. 0: Ipopt's defaults (ocp::RunOptimalLap sets 1e-4 for its starts from
+  /// another mesh; < 0 keeps Ipopt's defaults there too).
+  double primal_start_mu = 0.0;
   /// Called at every iteration with (iteration, objective, primal infeasibility, dual
   /// infeasibility); return false to stop.
   std::function<bool(int, double, double, double)> on_iteration;

@@ -165,11 +165,14 @@ struct Builder {
       const bool pedal = !options.independent_drive_and_brake;
       nv.pedal = nlp.AddVariable(pedal ? pedal0 : 0.0, pedal ? -1.0 : 0.0, pedal ? 1.0 : 0.0, 0.5);
       const internal::PedalSplitFn split = Split();
-      // Their range is the pedal's: bounds of their own would nearly coincide with the pedal's
-      // and leave Ipopt two almost parallel active constraints.
-      nv.power = nlp.AddVariable(wheel_power * split.Pos(pedal0, split.eps), 0.0,
+      // Their range is the pedal's, bounds of their own none: pos() > 0 keeps them positive, and
+      // a bound would nearly coincide with the pedal's (the upper) or with the defining equation
+      // (the lower: off the pedal, P = P_max eps^2 / (4 |p|) is a few watts above 0). Nearly
+      // parallel active constraints drive Ipopt's multipliers to 1e15 and stall the solve.
+      const double power_lo = pedal ? -kInf : 0.0, brake_lo = pedal ? -kInf : 0.0;
+      nv.power = nlp.AddVariable(wheel_power * split.Pos(pedal0, split.eps), power_lo,
                                  pedal ? kInf : wheel_power, 2e5);
-      nv.brake = nlp.AddVariable(max_brake_force * split.Pos(-pedal0, split.eps), 0.0,
+      nv.brake = nlp.AddVariable(max_brake_force * split.Pos(-pedal0, split.eps), brake_lo,
                                  pedal ? kInf : max_brake_force, 1e4);
       // Algebraic variables.
       const double r_mean = 0.5 * (p.corner(Corner::kRearLeft).rolling_radius +
@@ -436,8 +439,8 @@ int LapNodeCount(const track::Track& track, double step_m) {
 
 std::vector<double> ResampleLapPoint(const std::vector<double>& x, int from_nodes, int to_nodes) {
   if (from_nodes < 2 || to_nodes < 2 || x.empty() || x.size() % from_nodes != 0) {
-    throw InputError(fmt::format("optimal lap: {} values are not {} nodes of a lap", x.size(),
-                                 from_nodes));
+    throw InputError(
+        fmt::format("optimal lap: {} values are not {} nodes of a lap", x.size(), from_nodes));
   }
   const size_t per_node = x.size() / static_cast<size_t>(from_nodes);
   std::vector<double> out(per_node * static_cast<size_t>(to_nodes));

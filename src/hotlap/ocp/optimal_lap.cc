@@ -112,6 +112,7 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
   lap.periodic_thermal = options.thermal_start == ThermalStart::kPeriodic;
   lap.initial = run.start;
   lap.start_point = options.start_point;
+  lap.pedal_smoothing = options.pedal_smoothing;
   lap.steer_smoothing_weight = options.steer_smoothing_weight;
   lap.pedal_smoothing_weight = options.pedal_smoothing_weight;
   if (options.start_point.empty() && options.coarse_step_m > options.step_m) {
@@ -128,7 +129,14 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
           ResampleLapPoint(c.solve.x, static_cast<int>(c.distance.size()), fine_nodes);
     }
   }
-  run.solution = SolveMinimumTimeLap(car, track, lap, w.guess, options.ipopt);
+  IpoptOptions ipopt = options.ipopt;
+  if (!lap.start_point.empty() && ipopt.warm_lambda.empty() && ipopt.primal_start_mu == 0.0) {
+    // A start near the solution without multipliers (coarse to fine, or a solution of another
+    // mesh): a small first barrier keeps it (the fine Gen-7 solve took 167 iterations with
+    // Ipopt's mu_init 0.1 and 36 with 1e-4; docs/optimal-control.md).
+    ipopt.primal_start_mu = 1e-4;
+  }
+  run.solution = SolveMinimumTimeLap(car, track, lap, w.guess, ipopt);
 
   // The QSS lap on the optimal line: the same warm-up on the path the optimiser chose.
   const LapSolution& s = run.solution;

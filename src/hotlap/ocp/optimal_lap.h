@@ -51,6 +51,8 @@ struct OptimalLapOptions {
   /// 15 m took the Gen-7 lap at 3 m from 274 iterations (140 s) to 196 + 31 (35 s in all;
   /// docs/optimal-control.md, "Speed").
   double coarse_step_m = 15.0;
+  /// The pedal's smooth positive part (LapProblemOptions::pedal_smoothing).
+  double pedal_smoothing = 5e-3;
   /// Weights of the control-smoothness penalty for the steer and the pedal
   /// (LapProblemOptions::steer_smoothing_weight, pedal_smoothing_weight; < 0: the problem's).
   double steer_smoothing_weight = -1.0;
