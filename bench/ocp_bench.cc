@@ -1,9 +1,11 @@
 // Optimal-control speed.
 //
-// BM_DarlingtonOptimalLap/{0,1}: the two Darlington solves of `hotlap lap --method ocp
+// BM_DarlingtonOptimalLap/{0,1,2}: the two Darlington solves of `hotlap lap --method ocp
 // --compare-disc-limit-C 500` (without and with the 500 degC front-disc limit), 3 m mesh (the
-// default): the free lap from its QSS warm-up, the limited one from the free lap's solution, as the
-// command does; counters: lap time, Ipopt iterations, solve seconds (Ipopt's own clock).
+// default): the free lap from its QSS warm-up through a 15 m coarse solve (coarse to fine), the
+// limited one from the free lap's solution, as the command does; /2 the free lap straight from the
+// QSS guess on 3 m (coarse to fine off, the way before it). Counters: lap time, Ipopt iterations
+// and solve seconds of the fine solve (Ipopt's own clock) and of the coarse one.
 //
 // BM_ChassisElementsHessian/{per_element,dense_node_60}: why the programme is lifted
 // (docs/optimal-control.md): one node's chassis elements with second-order forward AD over their
@@ -60,16 +62,19 @@ void BM_DarlingtonOptimalLap(benchmark::State& state) {
     o.ipopt.warm_z_upper = FreeSolution().z_upper;
     o.ipopt.warm_lambda = FreeSolution().lambda;
   }
+  if (state.range(0) == 2) o.coarse_step_m = 0.0;
   ocp::OptimalLapRun run;
   for (auto _ : state) run = ocp::RunOptimalLap(Car(), track, o);
   if (state.range(0) == 0 && run.solution.solve.ok()) FreeSolution() = run.solution.solve;
   state.counters["lap_time_s"] = run.solution.lap_time;
   state.counters["iterations"] = run.solution.solve.iterations;
   state.counters["ipopt_solve_s"] = run.solution.solve.solve_seconds;
+  state.counters["coarse_iterations"] = run.coarse.iterations;
+  state.counters["coarse_solve_s"] = run.coarse.solve_seconds;
   state.counters["converged"] = run.solution.solve.ok() ? 1 : 0;
   state.counters["variables"] = run.solution.variables;
 }
-BENCHMARK(BM_DarlingtonOptimalLap)->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_DarlingtonOptimalLap)->Arg(0)->Arg(1)->Arg(2)->Iterations(1)->Unit(benchmark::kSecond);
 
 // The chassis elements of one node (four corners' kinematics, loads, totals, the longitudinal and
 // lateral dynamics), each differentiated over its own inputs (kPerElement = true) or over a
