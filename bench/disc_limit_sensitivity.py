@@ -8,7 +8,7 @@ calliper's convective conductances as a share of the right front's), the heat pa
 delta and the free lap's peak front-left disc temperature, and writes the same as JSON.
 
   /usr/bin/python3 bench/disc_limit_sensitivity.py [--hotlap build/hotlap] [--step-m 3]
-      [--limit-C 500] [--json out/sensitivity.json]
+      [--limit-C 500] [--car data/cars/gen7] [--json out/sensitivity.json]
 
 Each case is two Ipopt solves (one process each time: Ipopt with MUMPS is not thread-safe).
 """
@@ -46,7 +46,7 @@ def set_key(text, key, value):
 
 def make_car(base, duct=None, gamma=None, balance=None):
     car = pathlib.Path(tempfile.mkdtemp(prefix="hotlap-sens-")) / "gen7"
-    shutil.copytree(CAR, car)
+    shutil.copytree(base, car)
     if duct is not None:
         f = car / "brakes" / "front_left.yaml"
         f.write_text(scale_cholesky(f.read_text(), duct / SHIPPED_DUCT))
@@ -91,6 +91,8 @@ def main():
     ap.add_argument("--step-m", type=float, default=3.0)
     ap.add_argument("--limit-C", type=float, default=500.0)
     ap.add_argument("--json", default="")
+    ap.add_argument("--car", default=str(CAR),
+                    help="the car folder to start from (default: the shipped gen7)")
     ap.add_argument("--extra-limits-C", default="450,425",
                     help="limits to run the shipped car at besides --limit-C (comma-separated)")
     args = ap.parse_args()
@@ -105,7 +107,7 @@ def main():
           "free FL disc peak degC | converged |")
     print("|---|---|---|---|---|---|")
     for name, change, limit in cases:
-        r = run(args.hotlap, make_car(CAR, **change), args, limit)
+        r = run(args.hotlap, make_car(pathlib.Path(args.car), **change), args, limit)
         results[name] = r
         if "error" in r:
             print(f"| {name} | failed | | | {r['error'][-120:]!r} |")
