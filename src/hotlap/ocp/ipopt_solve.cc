@@ -17,6 +17,42 @@ namespace hotlap::ocp {
 
 namespace {
 
+// How Ipopt's ends read in plain words.
+struct StatusWords {
+  Ipopt::SolverReturn ipopt;
+  SolveStatus status;
+  const char* message;
+};
+
+constexpr const char* kNumericalTrouble =
+    "numerical trouble in Ipopt's step (a non-finite or singular system)";
+
+constexpr StatusWords kStatusWords[] = {
+    {Ipopt::SUCCESS, SolveStatus::kConverged, "converged to the requested tolerance"},
+    {Ipopt::STOP_AT_ACCEPTABLE_POINT, SolveStatus::kAcceptable,
+     "converged to Ipopt's acceptable (looser) tolerance only"},
+    {Ipopt::LOCAL_INFEASIBILITY, SolveStatus::kInfeasible,
+     "the constraints cannot all be met (locally infeasible): a limit may be too tight"},
+    {Ipopt::MAXITER_EXCEEDED, SolveStatus::kIterationLimit,
+     "stopped at the iteration limit before converging"},
+    {Ipopt::CPUTIME_EXCEEDED, SolveStatus::kTimeLimit,
+     "stopped at the time limit before converging"},
+    {Ipopt::RESTORATION_FAILURE, SolveStatus::kRestorationFailed,
+     "restoration failed: Ipopt lost feasibility and could not regain it (try a better initial "
+     "guess or a finer mesh)"},
+    {Ipopt::USER_REQUESTED_STOP, SolveStatus::kStopped, "stopped on request"},
+    {Ipopt::ERROR_IN_STEP_COMPUTATION, SolveStatus::kNumericalTrouble, kNumericalTrouble},
+    {Ipopt::INVALID_NUMBER_DETECTED, SolveStatus::kNumericalTrouble, kNumericalTrouble},
+    {Ipopt::TOO_FEW_DEGREES_OF_FREEDOM, SolveStatus::kNumericalTrouble, kNumericalTrouble},
+};
+
+const StatusWords* FindStatusWords(Ipopt::SolverReturn status) {
+  for (const StatusWords& w : kStatusWords) {
+    if (w.ipopt == status) return &w;
+  }
+  return nullptr;
+}
+
 using Ipopt::Index;
 using Ipopt::Number;
 
@@ -140,49 +176,14 @@ class Adaptor : public Ipopt::TNLP {
       result_.dual_infeasibility = q->curr_dual_infeasibility(Ipopt::NORM_MAX);
     }
     (void)n;
-    switch (status) {
-      case Ipopt::SUCCESS:
-        result_.status = SolveStatus::kConverged;
-        result_.message = "converged to the requested tolerance";
-        break;
-      case Ipopt::STOP_AT_ACCEPTABLE_POINT:
-        result_.status = SolveStatus::kAcceptable;
-        result_.message = "converged to Ipopt's acceptable (looser) tolerance only";
-        break;
-      case Ipopt::LOCAL_INFEASIBILITY:
-        result_.status = SolveStatus::kInfeasible;
-        result_.message =
-            "the constraints cannot all be met (locally infeasible): a limit may be too tight";
-        break;
-      case Ipopt::MAXITER_EXCEEDED:
-        result_.status = SolveStatus::kIterationLimit;
-        result_.message = "stopped at the iteration limit before converging";
-        break;
-      case Ipopt::CPUTIME_EXCEEDED:
-        result_.status = SolveStatus::kTimeLimit;
-        result_.message = "stopped at the time limit before converging";
-        break;
-      case Ipopt::RESTORATION_FAILURE:
-        result_.status = SolveStatus::kRestorationFailed;
-        result_.message =
-            "restoration failed: Ipopt lost feasibility and could not regain it (try a better "
-            "initial guess or a finer mesh)";
-        break;
-      case Ipopt::USER_REQUESTED_STOP:
-        result_.status = SolveStatus::kStopped;
-        result_.message = "stopped on request";
-        break;
-      case Ipopt::ERROR_IN_STEP_COMPUTATION:
-      case Ipopt::INVALID_NUMBER_DETECTED:
-      case Ipopt::TOO_FEW_DEGREES_OF_FREEDOM:
-        result_.status = SolveStatus::kNumericalTrouble;
-        result_.message = "numerical trouble in Ipopt's step (a non-finite or singular system)";
-        break;
-      default:
-        result_.status = SolveStatus::kOther;
-        result_.message = "Ipopt ended without converging (status " +
-                          std::to_string(static_cast<int>(status)) + ")";
-        break;
+    const StatusWords* words = FindStatusWords(status);
+    if (words != nullptr) {
+      result_.status = words->status;
+      result_.message = words->message;
+    } else {
+      result_.status = SolveStatus::kOther;
+      result_.message = "Ipopt ended without converging (status " +
+                        std::to_string(static_cast<int>(status)) + ")";
     }
   }
 
