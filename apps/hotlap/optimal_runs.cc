@@ -191,10 +191,7 @@ int RunOptimal(const OptimalArgs& a) {
     o.front_disc_limit = runs.front().front_disc_limit;
     // From the solution itself, taken onto the finer mesh.
     const ocp::LapSolution& first = runs.front().run.solution;
-    if (first.solve.ok()) {
-      o.start_point = ocp::ResampleLapPoint(first.solve.x, static_cast<int>(first.distance.size()),
-                                            ocp::LapNodeCount(track, o.step_m));
-    }
+    if (first.solve.ok()) o.start_point = ocp::StartPointOnMesh(first, track, o.step_m);
     const ocp::SolvedLap fine =
         ocp::SolveLap(car, track, o, "half mesh", nullptr, PrintProgress, PrintLine);
     mesh_delta = fine.figures.lap_time_s - runs.front().figures.lap_time_s;

@@ -169,10 +169,10 @@ struct Builder {
       // a bound would nearly coincide with the pedal's (the upper) or with the defining equation
       // (the lower: off the pedal, P = P_max eps^2 / (4 |p|) is a few watts above 0). Nearly
       // parallel active constraints drive Ipopt's multipliers to 1e15 and stall the solve.
-      const double power_lo = pedal ? -kInf : 0.0, brake_lo = pedal ? -kInf : 0.0;
-      nv.power = nlp.AddVariable(wheel_power * split.Pos(pedal0, split.eps), power_lo,
+      const double lo = pedal ? -kInf : 0.0;
+      nv.power = nlp.AddVariable(wheel_power * split.Pos(pedal0, split.eps), lo,
                                  pedal ? kInf : wheel_power, 2e5);
-      nv.brake = nlp.AddVariable(max_brake_force * split.Pos(-pedal0, split.eps), brake_lo,
+      nv.brake = nlp.AddVariable(max_brake_force * split.Pos(-pedal0, split.eps), lo,
                                  pedal ? kInf : max_brake_force, 1e4);
       // Algebraic variables.
       const double r_mean = 0.5 * (p.corner(Corner::kRearLeft).rolling_radius +
@@ -454,6 +454,12 @@ std::vector<double> ResampleLapPoint(const std::vector<double>& x, int from_node
     }
   }
   return out;
+}
+
+std::vector<double> StartPointOnMesh(const LapSolution& solution, const track::Track& track,
+                                     double step_m) {
+  return ResampleLapPoint(solution.solve.x, static_cast<int>(solution.distance.size()),
+                          LapNodeCount(track, step_m));
 }
 
 LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& track,

@@ -110,6 +110,11 @@ int LapNodeCount(const track::Track& track, double step_m);
 /// a fine solve from a coarse one. InputError if x is not from_nodes whole nodes.
 std::vector<double> ResampleLapPoint(const std::vector<double>& x, int from_nodes, int to_nodes);
 
+/// A solution's point (ResampleLapPoint of solution.solve.x) on the mesh of spacing about `step_m`
+/// of the same track: the start of a solve on another mesh.
+std::vector<double> StartPointOnMesh(const LapSolution& solution, const track::Track& track,
+                                     double step_m);
+
 /// Builds and solves the lap. `guess` (a QSS lap of the same car and track, e.g. from
 /// sim::RunQssLap) gives the starting point. InputError if the car has no vehicle sections;
 /// failures of the solve are reported in the result's `solve` (never thrown).

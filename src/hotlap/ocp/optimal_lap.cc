@@ -123,11 +123,7 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
     const LapSolution c = SolveMinimumTimeLap(car, track, coarse, w.guess, options.ipopt);
     run.coarse = c.solve;
     run.coarse_lap_time = c.lap_time;
-    if (c.solve.ok()) {
-      const int fine_nodes = LapNodeCount(track, options.step_m);
-      lap.start_point =
-          ResampleLapPoint(c.solve.x, static_cast<int>(c.distance.size()), fine_nodes);
-    }
+    if (c.solve.ok()) lap.start_point = StartPointOnMesh(c, track, options.step_m);
   }
   IpoptOptions ipopt = options.ipopt;
   if (!lap.start_point.empty() && ipopt.warm_lambda.empty() && ipopt.primal_start_mu == 0.0) {
