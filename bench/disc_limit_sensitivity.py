@@ -8,11 +8,13 @@ calliper's convective conductances as a share of the right front's), the heat pa
 delta and the free lap's peak front-left disc temperature, and writes the same as JSON.
 
   /usr/bin/python3 bench/disc_limit_sensitivity.py [--hotlap build/hotlap] [--step-m 3]
-      [--limit-C 500] [--car data/cars/gen7] [--json out/sensitivity.json]
+      [--limit-C 500] [--car data/cars/gen7] [--json out/sensitivity.json] [--jobs 2]
 
-Each case is two Ipopt solves (one process each time: Ipopt with MUMPS is not thread-safe).
+Each case is two Ipopt solves in one process of its own (Ipopt with MUMPS is not thread-safe);
+--jobs runs that many cases at once (one per core).
 """
 import argparse
+import concurrent.futures
 import json
 import math
 import pathlib
@@ -93,6 +95,7 @@ def main():
     ap.add_argument("--json", default="")
     ap.add_argument("--car", default=str(CAR),
                     help="the car folder to start from (default: the shipped gen7)")
+    ap.add_argument("--jobs", type=int, default=1, help="cases run at once (one core each)")
     ap.add_argument("--extra-limits-C", default="450,425",
                     help="limits to run the shipped car at besides --limit-C (comma-separated)")
     args = ap.parse_args()
@@ -106,16 +109,19 @@ def main():
     print("| case | delta ms | free lap s | lift into turn 3, free -> limited, m | "
           "free FL disc peak degC | converged |")
     print("|---|---|---|---|---|---|")
-    for name, change, limit in cases:
-        r = run(args.hotlap, make_car(pathlib.Path(args.car), **change), args, limit)
-        results[name] = r
-        if "error" in r:
-            print(f"| {name} | failed | | | {r['error'][-120:]!r} |")
-        else:
-            print(f"| {name} | {r['delta_ms']:.1f} | {r['free_lap_s']:.3f} | "
-                  f"{metres(r['lift_m'][-1])} -> {metres(r['limited_lift_m'][-1])} | "
-                  f"{r['free_fl_disc_peak_C']:.0f} | {'yes' if r['both_converged'] else 'no'} |")
-        sys.stdout.flush()
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        futures = [pool.submit(run, args.hotlap, make_car(pathlib.Path(args.car), **change), args,
+                               limit) for _, change, limit in cases]
+        for (name, _, _), future in zip(cases, futures):  # printed in the cases' order
+            r = future.result()
+            results[name] = r
+            if "error" in r:
+                print(f"| {name} | failed | | | {r['error'][-120:]!r} |")
+            else:
+                print(f"| {name} | {r['delta_ms']:.1f} | {r['free_lap_s']:.3f} | "
+                      f"{metres(r['lift_m'][-1])} -> {metres(r['limited_lift_m'][-1])} | "
+                      f"{r['free_fl_disc_peak_C']:.0f} | {'yes' if r['both_converged'] else 'no'} |")
+            sys.stdout.flush()
     if args.json:
         pathlib.Path(args.json).write_text(json.dumps(results, indent=2) + "\n")
 

@@ -1,11 +1,12 @@
 // Optimal-control speed.
 //
-// BM_DarlingtonOptimalLap/{0,1,2}: the two Darlington solves of `hotlap lap --method ocp
+// BM_DarlingtonOptimalLap/{0,1,2,3}: the two Darlington solves of `hotlap lap --method ocp
 // --compare-disc-limit-C 500` (without and with the 500 degC front-disc limit), 3 m mesh (the
-// default): the free lap from its QSS warm-up through a 15 m coarse solve (coarse to fine), the
-// limited one from the free lap's solution, as the command does; /2 the free lap straight from the
-// QSS guess on 3 m (coarse to fine off, the way before it). Counters: lap time, Ipopt iterations
-// and solve seconds of the fine solve (Ipopt's own clock) and of the coarse one.
+// default), each from its QSS warm-up through a 15 m coarse solve (coarse to fine), as the
+// command does; /2 the free lap straight from the QSS guess on 3 m (coarse to fine off, the way
+// before it); /3 the limited lap warm-started from the free lap's solution and multipliers (the
+// command's way until 2026-11-26). Counters: lap time, Ipopt iterations and solve seconds of the
+// fine solve (Ipopt's own clock) and of the coarse one.
 //
 // BM_ChassisElementsHessian/{per_element,dense_node_60}: why the programme is lifted
 // (docs/optimal-control.md): one node's chassis elements with second-order forward AD over their
@@ -49,8 +50,9 @@ void BM_DarlingtonOptimalLap(benchmark::State& state) {
   ocp::OptimalLapOptions o;
   o.ambient_temp = CelsiusToKelvin(25.0);
   o.track_temp = CelsiusToKelvin(40.0);
-  if (state.range(0) == 1) {
-    // As `hotlap lap --method ocp --compare-disc-limit-C 500`: from the free lap's solution.
+  if (state.range(0) == 1) o.front_disc_limit = CelsiusToKelvin(500.0);
+  if (state.range(0) == 3) {
+    // The limited lap from the free lap's solution and multipliers.
     o.front_disc_limit = CelsiusToKelvin(500.0);
     if (FreeSolution().x.empty()) {
       ocp::OptimalLapOptions free = o;
@@ -74,7 +76,13 @@ void BM_DarlingtonOptimalLap(benchmark::State& state) {
   state.counters["converged"] = run.solution.solve.ok() ? 1 : 0;
   state.counters["variables"] = run.solution.variables;
 }
-BENCHMARK(BM_DarlingtonOptimalLap)->Arg(0)->Arg(1)->Arg(2)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_DarlingtonOptimalLap)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(3)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
 
 // The chassis elements of one node (four corners' kinematics, loads, totals, the longitudinal and
 // lateral dynamics), each differentiated over its own inputs (kPerElement = true) or over a

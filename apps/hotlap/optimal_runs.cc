@@ -46,6 +46,7 @@ ocp::OptimalLapOptions LapOptions(const OptimalArgs& a, double step_m) {
   o.coarse_step_m = a.coarse_step_m;
   o.steer_smoothing_weight = a.steer_smoothing;
   o.pedal_smoothing_weight = a.pedal_smoothing;
+  o.convex_element_hessians = a.hessian == "convex-elements";
   o.thermal_start = ParseStart(a.thermal_start);
   o.ambient_temp = CelsiusToKelvin(a.ambient_C);
   o.track_temp = CelsiusToKelvin(a.track_C);
@@ -95,6 +96,12 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
   a.stock_car_only.push_back(
       sub->add_option("--pedal-smoothing", a.pedal_smoothing,
                       "Weight of the pedal's smoothness penalty (as --steer-smoothing)"));
+  a.stock_car_only.push_back(
+      sub->add_option("--hessian", a.hessian,
+                      "exact (Ipopt corrects its inertia where needed) or convex-elements (each "
+                      "element's negative curvature clipped; docs/optimal-control.md)")
+          ->capture_default_str()
+          ->check(CLI::IsMember({"exact", "convex-elements"})));
   a.stock_car_only.push_back(
       sub->add_option("--thermal-start", a.thermal_start,
                       "Thermal states at the start: racing (QSS laps until no carcass rises over "

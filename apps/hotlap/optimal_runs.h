@@ -20,6 +20,7 @@ struct OptimalArgs {
   double steer_smoothing = -1.0;       ///< the steer's smoothness weight (< 0: the library's)
   double pedal_smoothing = -1.0;       ///< the pedal's
   double coarse_step_m = 15.0;         ///< solve first on this mesh and start from it (0: off)
+  std::string hessian = "exact";       ///< exact, or convex-elements
   std::optional<double> disc_limit_C;  ///< one solve with this front-disc limit
   std::optional<double> compare_disc_limit_C;  ///< two solves: without, and with this limit
   std::string thermal_start = "racing";

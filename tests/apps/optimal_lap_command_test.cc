@@ -40,13 +40,17 @@ TEST(OptimalLapCommandTest, DarlingtonDiscLimitComparisonMeetsTheAcceptance) {
   EXPECT_EQ(free["status"], "converged");
   EXPECT_EQ(limited["status"], "converged");
 
-  // Without the limit: within 3% of the paper's 29.82 s. (Issue 18 asks for 1.5%, 80-82 m/s and
-  // braking into both ends: not met yet, docs/optimal-control.md, "Calibration".)
+  // Without the limit (issue 18's acceptance): within 1.5% of the paper's 29.82 s, 80-82 m/s at
+  // the end of the straights, and braking into both ends.
   const double t_free = free["lap_time_s"].get<double>();
   const double t_limited = limited["lap_time_s"].get<double>();
-  EXPECT_NEAR(t_free, 29.82, 0.03 * 29.82);
+  EXPECT_NEAR(t_free, 29.82, 0.015 * 29.82);
+  EXPECT_GE(free["top_speed_mps"].get<double>(), 80.0);
+  EXPECT_LE(free["top_speed_mps"].get<double>(), 82.0);
   ASSERT_EQ(free["turns"].size(), 2u);
-  EXPECT_FALSE(free["turns"][1]["brake_m"].is_null()) << free["turns"][1].dump();
+  for (const nlohmann::json& turn : free["turns"]) {
+    EXPECT_FALSE(turn["brake_m"].is_null()) << turn.dump();
+  }
 
   // The racing thermal start: carcasses a few laps into a run, each rising at most 15 degC over
   // the last QSS lap before the start.

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 namespace hotlap::ocp {
 namespace {
@@ -124,6 +125,69 @@ TEST(ElementNlpTest, ScaledDerivativesMatchFiniteDifferences) {
     const auto gp = lagrangian_gradient(yp), gm = lagrangian_gradient(ym);
     for (int j = 0; j < n; ++j) {
       EXPECT_NEAR(hess[j * n + i], (gp[j] - gm[j]) / (2 * h), 1e-6) << i << "," << j;
+    }
+  }
+}
+
+// The scaled Lagrangian Hessian as a dense symmetric matrix.
+Eigen::MatrixXd DenseScaledHessian(const ElementNlp& nlp, const std::vector<double>& y,
+                                   double sigma, const std::vector<double>& lambda) {
+  const int n = nlp.variables();
+  std::vector<double> hv(nlp.HessianPattern().rows.size());
+  nlp.ScaledHessian(y.data(), sigma, lambda.data(), hv.data());
+  Eigen::MatrixXd h = Eigen::MatrixXd::Zero(n, n);
+  for (size_t k = 0; k < hv.size(); ++k) {
+    const int r = nlp.HessianPattern().rows[k], c = nlp.HessianPattern().cols[k];
+    h(r, c) += hv[k];
+    if (r != c) h(c, r) += hv[k];
+  }
+  return h;
+}
+
+// Convex element Hessians: an element with negative curvature (a saddle, x y) gives its Hessian
+// with the negative eigenvalue clipped in the scaled variables; one that is already convex
+// (x^2 + y^2 with positive weight) is left exactly as it is.
+struct Saddle {
+  template <class T>
+  void operator()(const T* in, T* out) const {
+    out[0] = in[0] * in[1];
+  }
+};
+struct Bowl {
+  template <class T>
+  void operator()(const T* in, T* out) const {
+    out[0] = in[0] * in[0] + in[1] * in[1];
+  }
+};
+
+TEST(ElementNlpTest, ConvexElementHessiansClipNegativeCurvatureOnly) {
+  for (const bool convex : {false, true}) {
+    ElementNlp nlp;
+    const int a = nlp.AddVariable(0.3, -10, 10, 2.0);
+    const int b = nlp.AddVariable(-0.4, -10, 10, 0.5);
+    const int c = nlp.AddVariable(1.1, -10, 10, 1.0);
+    nlp.AddElement(MakeElement<2, 1>(Saddle{}), {a, b}, {{{Target::kObjective, 1.0}}});
+    nlp.AddElement(MakeElement<2, 1>(Bowl{}), {b, c}, {{{Target::kObjective, 1.0}}});
+    nlp.SetConvexElementHessians(convex);
+    nlp.Finalize();
+    std::vector<double> y(3);
+    nlp.ScaledStart(y.data());
+    const Eigen::MatrixXd h = DenseScaledHessian(nlp, y, 1.0, {});
+    // Scaled: the saddle's block is [[0, s_a s_b], [s_a s_b, 0]] = [[0, 1], [1, 0]] with
+    // eigenvalues -1 and 1; clipped it is 0.5 [[1, 1], [1, 1]]. The bowl's block is
+    // diag(2 s_b^2, 2 s_c^2) = diag(0.5, 2) either way.
+    Eigen::Matrix3d expected;
+    if (convex) {
+      expected << 0.5, 0.5, 0.0, 0.5, 0.5 + 0.5, 0.0, 0.0, 0.0, 2.0;
+    } else {
+      expected << 0.0, 1.0, 0.0, 1.0, 0.5, 0.0, 0.0, 0.0, 2.0;
+    }
+    EXPECT_LT((h - expected).cwiseAbs().maxCoeff(), 1e-12) << "convex " << convex << "\n" << h;
+    const double smallest = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(h).eigenvalues()[0];
+    if (convex) {
+      EXPECT_GE(smallest, -1e-12);
+    } else {
+      EXPECT_LT(smallest, 0.0);
     }
   }
 }

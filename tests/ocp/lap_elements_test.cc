@@ -3,6 +3,7 @@
 
 #include "hotlap/ocp/lap_elements.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -26,7 +27,12 @@ const vehicle::Car& Gen7() {
   return car;
 }
 
-// Jacobian and Hessian (with weights 1, -0.7, 0.4, ...) of `e` at x against differences.
+// Jacobian and Hessian (with weights 1, -0.7, 0.4, ...) of `e` at x against differences,
+// relative per entry: 1e-5 (Jacobian) and 1e-4 (Hessian) of the larger of the two, with a floor
+// at the central difference's rounding level, 1e-10 of the size of the terms that make the output
+// (|value| + sum_i |d out / d x_i x_i|) over the step. So small derivatives (a wear rate's, about
+// 2e-7 m/s per unit) are checked as closely as large ones, not hidden under an absolute
+// tolerance.
 void CheckElement(const Element& e, std::vector<double> x, const std::vector<double>& step,
                   const std::string& what) {
   const int n = e.inputs(), m = e.outputs();
@@ -38,6 +44,14 @@ void CheckElement(const Element& e, std::vector<double> x, const std::vector<dou
   std::vector<double> values(m);
   e.Values(x.data(), values.data());
   for (int o = 0; o < m; ++o) EXPECT_NEAR(values[o], out[o], 1e-9 * (1 + std::abs(out[o]))) << what;
+  // The size of each output's terms, and of the weighted sum's.
+  std::vector<double> terms(m);
+  double weighted_terms = 0.0;
+  for (int o = 0; o < m; ++o) {
+    terms[o] = std::abs(out[o]);
+    for (int i = 0; i < n; ++i) terms[o] += std::abs(jac[o * n + i] * x[i]);
+    weighted_terms += std::abs(w[o]) * terms[o];
+  }
   for (int i = 0; i < n; ++i) {
     std::vector<double> xp = x, xm = x;
     xp[i] += step[i];
@@ -49,13 +63,18 @@ void CheckElement(const Element& e, std::vector<double> x, const std::vector<dou
     e.Jacobian(xm.data(), dummy.data(), jm.data());
     for (int o = 0; o < m; ++o) {
       const double fd = (op[o] - om[o]) / (2 * step[i]);
-      EXPECT_NEAR(jac[o * n + i], fd, 1e-5 * (1 + std::abs(fd)))
+      const double ad = jac[o * n + i];
+      const double floor = 1e-10 * terms[o] / step[i];
+      EXPECT_NEAR(ad, fd, 1e-5 * std::max(std::abs(ad), std::abs(fd)) + floor)
           << what << " d out" << o << "/d in" << i;
     }
     for (int j = 0; j < n; ++j) {
       double fd = 0.0;
       for (int o = 0; o < m; ++o) fd += w[o] * (jp[o * n + j] - jm[o * n + j]) / (2 * step[i]);
-      EXPECT_NEAR(hess[i * n + j], fd, 1e-4 * (1 + std::abs(fd))) << what << " H" << i << j;
+      const double ad = hess[i * n + j];
+      const double floor = 1e-10 * weighted_terms / (step[i] * std::max(std::abs(x[j]), step[j]));
+      EXPECT_NEAR(ad, fd, 1e-4 * std::max(std::abs(ad), std::abs(fd)) + floor)
+          << what << " H" << i << j;
     }
   }
 }

@@ -62,10 +62,11 @@ TEST(Gen7TyreForcesTest, PlausibleRacingRadialOverOvalLoads) {
     for (double fz : {1500.0, 3000.0, 5000.0, 7000.0, 9000.0}) {
       const auto [fy_peak, alpha_peak] = Peak(p, fz, true);
       const auto [fx_peak, kappa_peak] = Peak(p, fz, false);
-      // Friction 0.9..1.3, falling with load; peaks at racing-tyre slips.
-      EXPECT_GT(fy_peak / fz, 0.9) << side << " " << fz;
+      // Friction 0.8..1.3 (hard oval compounds; the nominal 0.98 left, 0.92 right are tuned to
+      // the paper's lap, docs/vehicle.md), falling with load; peaks at racing-tyre slips.
+      EXPECT_GT(fy_peak / fz, 0.8) << side << " " << fz;
       EXPECT_LT(fy_peak / fz, 1.3) << side << " " << fz;
-      EXPECT_GT(fx_peak / fz, 0.9) << side << " " << fz;
+      EXPECT_GT(fx_peak / fz, 0.8) << side << " " << fz;
       EXPECT_LT(fx_peak / fz, 1.35) << side << " " << fz;
       EXPECT_GT(RadToDeg(alpha_peak), 3.0) << side << " " << fz;
       EXPECT_LT(RadToDeg(alpha_peak), 10.0) << side << " " << fz;

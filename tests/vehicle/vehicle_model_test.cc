@@ -189,7 +189,7 @@ double SumFy(const SteadyState& s) {
 
 TEST(VehicleModelTest, FlatCircleLateralForcesBalanceCentripetal) {
   const VehicleParams& p = Gen7();
-  const double u = 35.0, radius = 120.0;
+  const double u = 30.0, radius = 120.0;  // 0.76 g, inside the tyres' grip
   const SteadyState s = SolveSteadyCornering(p, u, radius, 0.0);
   // m u r with r = u / R: the lateral speed's own centripetal share, m (dv + u r), is zero at
   // steady state, so the tyres carry m u^2 / R exactly.

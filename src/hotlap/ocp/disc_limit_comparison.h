@@ -63,13 +63,16 @@ struct DiscLimitComparison {
 };
 
 /// Solves the lap without a disc limit, then with the front discs at most `front_disc_limit` (K)
-/// at every node, warm-started from the free solution (a continuation: the same neighbourhood,
-/// fewer iterations). The problem is not convex, and the limited lap is a feasible point of the
-/// free problem: if it is faster, the free solve stopped at a worse local optimum, and the free
-/// lap is solved again from the limited one, keeping the better of the two. `options`'
-/// front_disc_limit and start_point are ignored. The warm-up runs once, for all the solves.
-/// InputError for bad input, before any solve for a limit below a front disc's temperature at
-/// the start line (except with a periodic thermal start, where the start is free).
+/// at every node: coarse to fine like the free lap where `options.coarse_step_m` turns that on,
+/// else warm-started from the free solution (a continuation: the same neighbourhood, fewer
+/// iterations where the limit changes the lap little); if coarse to fine does not converge, the
+/// continuation is tried too (iterations and seconds of both counted). The problem is not convex,
+/// and the limited lap is a feasible point of the free problem: if it is faster, the free solve
+/// stopped at a worse local optimum, and the free lap is solved again from the limited one, keeping
+/// the better of the two. `options`' front_disc_limit and start_point are ignored. The warm-up runs
+/// once, for all the solves. InputError for bad input, before any solve for a limit below a front
+/// disc's temperature at the start line (except with a periodic thermal start, where the start is
+/// free).
 DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track& track,
                                      const OptimalLapOptions& options, double front_disc_limit,
                                      const LapProgress& progress = {}, const LapLog& log = {});

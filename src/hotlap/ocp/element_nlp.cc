@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include <Eigen/Dense>
+
 namespace hotlap::ocp {
 
 namespace {
@@ -215,6 +217,20 @@ void ElementNlp::ScaledJacobian(const double* y, double* values) const {
   }
 }
 
+void ElementNlp::ClipNegativeCurvature(const Instance& inst, int n, double* hess) const {
+  // In the scaled variables (D H D, D the inputs' scales), where the solver measures curvature.
+  Eigen::Map<Eigen::MatrixXd> h(hess, n, n);
+  Eigen::VectorXd d(n);
+  for (int i = 0; i < n; ++i) d[i] = x_scale_[inst.inputs[i]];
+  const Eigen::MatrixXd scaled = d.asDiagonal() * (0.5 * (h + h.transpose())) * d.asDiagonal();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(scaled);
+  if (eig.info() != Eigen::Success || eig.eigenvalues().minCoeff() >= 0.0) return;
+  const Eigen::VectorXd clipped = eig.eigenvalues().cwiseMax(0.0);
+  const Eigen::MatrixXd convex =
+      eig.eigenvectors() * clipped.asDiagonal() * eig.eigenvectors().transpose();
+  h = d.cwiseInverse().asDiagonal() * convex * d.cwiseInverse().asDiagonal();
+}
+
 void ElementNlp::ScaledHessian(const double* y, double sigma, const double* lambda,
                                double* values) const {
   const std::vector<double> x = Unscale(y);
@@ -236,6 +252,7 @@ void ElementNlp::ScaledHessian(const double* y, double sigma, const double* lamb
     if (!any) continue;
     for (int i = 0; i < n; ++i) in[i] = x[inst.inputs[i]];
     inst.element->Hessian(in.data(), weights.data(), hess.data());
+    if (convex_element_hessians_) ClipNegativeCurvature(inst, n, hess.data());
     for (int k = 0; k < n * n; ++k) {
       if (inst.hess_slots[k] >= 0) values[inst.hess_slots[k]] += hess[k];
     }

@@ -58,6 +58,11 @@ class ElementNlp {
                   std::vector<std::vector<Target>> targets);
   /// The objective is divided by this (> 0) before the solver sees it.
   void SetObjectiveScale(double scale) { objective_scale_ = scale; }
+  /// ScaledHessian gives each element's weighted Hessian with its negative eigenvalues set to
+  /// zero (in the scaled variables) instead of the exact one: a positive semi-definite
+  /// Lagrangian Hessian, so that the solver's inertia correction has less to do, at the price of
+  /// Newton's convergence rate where the exact Hessian is indefinite (docs/optimal-control.md).
+  void SetConvexElementHessians(bool convex) { convex_element_hessians_ = convex; }
   /// Builds the sparsity patterns; call once after adding everything.
   void Finalize();
 
@@ -108,6 +113,8 @@ class ElementNlp {
     std::vector<int> jac_slots;
     std::vector<int> hess_slots;  // inputs * inputs, -1 where var_i < var_j
   };
+  // The element's n x n weighted Hessian `hess` (unscaled) with its negative curvature removed.
+  void ClipNegativeCurvature(const Instance& inst, int n, double* hess) const;
   struct LinearTerm {
     int row;
     int var;
@@ -121,6 +128,7 @@ class ElementNlp {
   std::vector<std::pair<int, double>> objective_linear_;
   std::vector<Instance> instances_;
   double objective_scale_ = 1.0;
+  bool convex_element_hessians_ = false;
   Sparsity jac_pattern_, hess_pattern_;
   bool finalized_ = false;
   int max_inputs_ = 0, max_outputs_ = 0;

@@ -374,8 +374,9 @@ struct Builder {
       nlp.AddObjectiveLinear(nodes[k].w, (k == 0 || k == intervals ? 0.5 : 1.0) * ds);
     }
     // Smooth controls: weight * sum ((c_{k+1} - c_k) / scale)^2 per control.
-    const double pedal_weight =
-        options.pedal_smoothing_weight >= 0.0 ? options.pedal_smoothing_weight : options.smoothing;
+    const double pedal_weight = options.pedal_smoothing_weight >= 0.0
+                                    ? options.pedal_smoothing_weight
+                                    : options.smoothing * std::pow(options.step_m / 3.0, 2);
     const double steer_weight =
         options.steer_smoothing_weight >= 0.0 ? options.steer_smoothing_weight : options.smoothing;
     for (int k = 0; k < intervals; ++k) {
@@ -393,6 +394,7 @@ struct Builder {
       }
     }
     nlp.SetObjectiveScale(1.0);
+    nlp.SetConvexElementHessians(options.convex_element_hessians);
   }
 
   void Build() {

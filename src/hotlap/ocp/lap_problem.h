@@ -48,6 +48,9 @@ struct LapProblemOptions {
   /// non-negative controls (nothing stops both being on; the pedal is then fixed at 0 and the
   /// smoothing penalty and rate limit act on nothing but the steer).
   bool independent_drive_and_brake = false;
+  /// Each element's Hessian with its negative curvature clipped (ElementNlp::
+  /// SetConvexElementHessians) instead of the exact Lagrangian Hessian.
+  bool convex_element_hessians = false;
   /// The pedal (internal::PedalSplitFn): brake force at p = -1, N (0: twice the car's weight).
   double max_brake_force = 0.0;
   /// The pedal's smooth positive part: its eps (dimensionless; where both sides are on at once the
@@ -62,8 +65,14 @@ struct LapProblemOptions {
   /// Weight of the control-smoothness penalty: weight * sum over intervals of the squared change
   /// of each scaled control.
   double smoothing = 1e-4;
-  /// The same penalty's weight for the pedal (< 0: `smoothing`). A weight of 1e-2 took the
-  /// brake application into turn 1 away altogether on a test car (docs/optimal-control.md).
+  /// The same penalty's weight for the pedal (< 0: `smoothing` (step_m / 3 m)^2: 1e-4 on the
+  /// default 3 m mesh, 4e-4 on 6 m, 2.5e-3 on the 15 m coarse one). A coarse mesh resolves the
+  /// pedal's rate-limited lifts and brake applications in fewer intervals and needs more damping
+  /// to converge: on the Gen-7-like car's lap 1e-4 cycled for 1000 iterations on 20 m and 6 m,
+  /// 2e-4 on 6 m; with the square law every mesh tried converges (15 m: 86 iterations, and the
+  /// limited lap 91 against 608 at 5e-4; 6 m: 40; 3 m from the 15 m solution: 47). 1e-3 on the
+  /// 3 m mesh gave the same laps in 2.5 times the iterations, and 1e-2 took the brake application
+  /// into turn 1 away altogether (docs/optimal-control.md).
   double pedal_smoothing_weight = -1.0;
   /// The same penalty's weight for the steer (< 0: `smoothing`).
   double steer_smoothing_weight = -1.0;

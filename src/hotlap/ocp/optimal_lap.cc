@@ -113,8 +113,13 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
   lap.initial = run.start;
   lap.start_point = options.start_point;
   lap.pedal_smoothing = options.pedal_smoothing;
-  lap.steer_smoothing_weight = options.steer_smoothing_weight;
-  lap.pedal_smoothing_weight = options.pedal_smoothing_weight;
+  lap.convex_element_hessians = options.convex_element_hessians;
+  if (options.steer_smoothing_weight >= 0.0) {
+    lap.steer_smoothing_weight = options.steer_smoothing_weight;
+  }
+  if (options.pedal_smoothing_weight >= 0.0) {
+    lap.pedal_smoothing_weight = options.pedal_smoothing_weight;
+  }
   if (options.start_point.empty() && options.coarse_step_m > options.step_m) {
     // Coarse to fine: the same problem on the coarse mesh from the guess, then its solution on
     // the fine mesh as the fine solve's start.
@@ -125,23 +130,23 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
     run.coarse_lap_time = c.lap_time;
     if (c.solve.ok()) lap.start_point = StartPointOnMesh(c, track, options.step_m);
   }
-  IpoptOptions ipopt = options.ipopt;
-  if (!lap.start_point.empty() && ipopt.warm_lambda.empty() && ipopt.primal_start_mu == 0.0) {
-    // A start near the solution without multipliers (coarse to fine, or a solution of another
-    // mesh): a small first barrier keeps it (the fine Gen-7 solve took 167 iterations with
-    // Ipopt's mu_init 0.1 and 36 with 1e-4; docs/optimal-control.md).
-    ipopt.primal_start_mu = 1e-4;
-  }
-  run.solution = SolveMinimumTimeLap(car, track, lap, w.guess, ipopt);
+  // Ipopt's own first barrier also for a start from another mesh: a small one (1e-4 with the
+  // start kept 1e-6 off its bounds, IpoptOptions::primal_start_mu) helped the uncalibrated car's
+  // free lap (36 iterations against 167) but stalled the calibrated car's limited lap (900 and
+  // more against 66; docs/optimal-control.md, "Speed").
+  run.solution = SolveMinimumTimeLap(car, track, lap, w.guess, options.ipopt);
 
-  // The QSS lap on the optimal line: the same warm-up on the path the optimiser chose.
+  // The QSS lap on the optimal line, one lap from the optimal lap's own thermal start.
   const LapSolution& s = run.solution;
   if (s.distance.size() >= 4 && s.distance.size() == s.n.size()) {
     std::vector<double> at(s.distance), offset(s.n);
     if (at.back() >= track.length_m() - 1e-9) at.pop_back(), offset.pop_back();  // closing node
     const std::vector<sim::RoadPoint> own =
         sim::SampleRoadAlongLine(track, track::ResampleLine(at, offset, track, 2.0), 1.0);
-    run.qss_on_line_lap_time = sim::RunQssLap(car, own, qss).laps[1].lap_time;
+    sim::QssOptions on_line = qss;
+    on_line.laps = 1;
+    on_line.initial = run.start;
+    run.qss_on_line_lap_time = sim::RunQssLap(car, own, on_line).laps[0].lap_time;
   }
 
   // The exact models over the solution's channels.

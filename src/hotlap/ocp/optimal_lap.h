@@ -57,6 +57,8 @@ struct OptimalLapOptions {
   /// (LapProblemOptions::steer_smoothing_weight, pedal_smoothing_weight; < 0: the problem's).
   double steer_smoothing_weight = -1.0;
   double pedal_smoothing_weight = -1.0;
+  /// LapProblemOptions::convex_element_hessians.
+  bool convex_element_hessians = false;
   /// Start the solve here instead of the QSS guess: another solution's SolveResult::x on the same
   /// track, car and mesh (LapProblemOptions::start_point).
   std::vector<double> start_point;
@@ -71,8 +73,8 @@ struct OptimalLapRun {
   /// The coarse solve of coarse-to-fine (OptimalLapOptions::coarse_step_m; iterations 0 if none).
   SolveResult coarse;
   double coarse_lap_time = 0.0;  ///< its lap, s (0 if none)
-  /// The QSS flying lap on the optimal lap's own line (same car, same path: the difference left
-  /// is the dynamics the QSS leaves out), s; 0 if the solve gave no solution.
+  /// The QSS lap on the optimal lap's own line from its own thermal start (same car, path and
+  /// start: the difference left is the dynamics the QSS leaves out), s; 0 if no solution.
   double qss_on_line_lap_time = 0.0;
   sim::ReplayInitialState start;  ///< the thermal state at the start line
   int start_laps = 0;  ///< QSS laps run before the start (kRacing: until settled; else 1 or 0)

@@ -8,6 +8,7 @@
 #include "hotlap/common/csv.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
+#include "hotlap/track/periodic_spline.h"
 #include "hotlap/track/track_point.h"
 
 namespace hotlap::track {
@@ -43,21 +44,32 @@ RacingLine CentreLine(const Track& track, double step_m) {
 
 RacingLine ResampleLine(std::span<const double> s, std::span<const double> n, const Track& track,
                         double step_m) {
-  const size_t rows = s.size();
   const double length = track.length_m();
-  // Linear interpolation between rows; the gap after the last row wraps to the first.
+  // Knots from the first row; a closing row one lap after the first is the first again.
+  std::vector<double> knots, values;
+  for (size_t i = 0; i < s.size(); ++i) {
+    if (i > 0 && s[i] - s[0] >= length - 1e-3) break;  // within a millimetre
+    knots.push_back(s[i] - s[0]);
+    values.push_back(n[i]);
+  }
+  if (knots.size() < 3) {
+    throw InputError(
+        fmt::format("a racing line needs 3 distinct points or more, got {}", knots.size()));
+  }
+  // The periodic cubic spline through the rows (C2): a line's curvature is its offset's second
+  // derivative, which linear interpolation would pile onto the rows as spikes.
+  const std::vector<double> slopes = internal::PeriodicSplineSlopes(knots, values, length);
+  const size_t rows = knots.size();
   const auto offset_at = [&](double x) {
-    const auto it = std::upper_bound(s.begin(), s.end(), x);
-    const size_t hi = static_cast<size_t>(it - s.begin());
-    double s0, n0, s1, n1;
-    if (hi == 0) {
-      s0 = s[rows - 1] - length, n0 = n[rows - 1], s1 = s[0], n1 = n[0];
-    } else if (hi == rows) {
-      s0 = s[rows - 1], n0 = n[rows - 1], s1 = s[0] + length, n1 = n[0];
-    } else {
-      s0 = s[hi - 1], n0 = n[hi - 1], s1 = s[hi], n1 = n[hi];
-    }
-    return s1 > s0 ? n0 + (n1 - n0) * (x - s0) / (s1 - s0) : n0;
+    x = std::fmod(x - s[0], length);
+    if (x < 0.0) x += length;
+    const auto it = std::upper_bound(knots.begin(), knots.end(), x);
+    const size_t i = static_cast<size_t>(it - knots.begin()) - 1;  // knots[0] = 0 <= x
+    const size_t j = (i + 1) % rows;
+    const double h = (j == 0 ? length : knots[j]) - knots[i];
+    const double t = (x - knots[i]) / h, t2 = t * t, t3 = t2 * t;
+    return (2.0 * t3 - 3.0 * t2 + 1.0) * values[i] + (t3 - 2.0 * t2 + t) * h * slopes[i] +
+           (-2.0 * t3 + 3.0 * t2) * values[j] + (t3 - t2) * h * slopes[j];
   };
   RacingLine line = CentreLine(track, step_m);
   for (size_t k = 0; k < line.s_m.size(); ++k) line.offset_m[k] = offset_at(line.s_m[k]);

@@ -27,15 +27,16 @@ struct RacingLine {
 RacingLine CentreLine(const Track& track, double step_m);
 
 /// The line through offsets n at increasing centre-line distances s in [0, lap length] (sizes
-/// equal, 4 or more), resampled at round(length / step_m) equal intervals, linear between the
-/// points and wrapping round the start line.
+/// equal, 4 or more), resampled at round(length / step_m) equal intervals on the periodic cubic
+/// spline through them (C2, wrapping round the start line; a last point one lap after the first
+/// is dropped as the first again), so that the line's curvature is smooth where the points are.
 RacingLine ResampleLine(std::span<const double> s, std::span<const double> n, const Track& track,
                         double step_m);
 
 /// A line read from a CSV file with columns `distance_m` (centre-line distance, increasing, within
 /// [0, lap length]) and `offset_m` (lateral offset, positive left), such as the channels of
-/// `hotlap optimise`; resampled at round(length / step_m) equal intervals (linear between the
-/// rows, wrapping round the start line). InputError naming the file and row when a column is
+/// `hotlap optimise`; resampled at round(length / step_m) equal intervals (ResampleLine's
+/// periodic cubic spline). InputError naming the file and row when a column is
 /// missing, a cell empty, the distances not increasing or outside the lap, or an offset off the
 /// track.
 RacingLine ReadRacingLine(const std::filesystem::path& path, const Track& track, double step_m);
