@@ -70,6 +70,7 @@ void BM_DarlingtonOptimalLap(benchmark::State& state) {
   if (state.range(0) == 0 && run.solution.solve.ok()) FreeSolution() = run.solution.solve;
   state.counters["lap_time_s"] = run.solution.lap_time;
   state.counters["iterations"] = run.solution.solve.iterations;
+  state.counters["regularized_iterations"] = run.solution.solve.regularized_iterations;
   state.counters["ipopt_solve_s"] = run.solution.solve.solve_seconds;
   state.counters["coarse_iterations"] = run.coarse.iterations;
   state.counters["coarse_solve_s"] = run.coarse.solve_seconds;

@@ -59,9 +59,11 @@ nlohmann::json RunJson(const ocp::SolvedLap& s, const std::string& thermal_start
       {"qss_on_optimal_line_lap_time_s", RoundSignificant(s.run.qss_on_line_lap_time)},
       {"solve_time_s", RoundSignificant(r.solve_seconds)},
       {"ipopt_iterations", r.iterations},
+      {"regularized_iterations", r.regularized_iterations},
       {"coarse_solve",
        s.run.coarse.iterations > 0
            ? nlohmann::json{{"ipopt_iterations", s.run.coarse.iterations},
+                            {"regularized_iterations", s.run.coarse.regularized_iterations},
                             {"solve_time_s", RoundSignificant(s.run.coarse.solve_seconds)},
                             {"lap_time_s", RoundSignificant(s.run.coarse_lap_time)},
                             {"status", s.run.coarse.ok() ? "converged" : "failed"}}

@@ -39,6 +39,11 @@ TEST(OptimalLapCommandTest, DarlingtonDiscLimitComparisonMeetsTheAcceptance) {
   // Both solves converged (Ipopt's tolerance is 1e-7, tighter than the issue's 1e-6).
   EXPECT_EQ(free["status"], "converged");
   EXPECT_EQ(limited["status"], "converged");
+  for (const nlohmann::json* run : {&free, &limited}) {
+    const int regularized = (*run)["regularized_iterations"].get<int>();
+    EXPECT_GE(regularized, 0);
+    EXPECT_LE(regularized, (*run)["ipopt_iterations"].get<int>());
+  }
 
   // Without the limit (issue 18's acceptance): within 1.5% of the paper's 29.82 s, 80-82 m/s at
   // the end of the straights, and braking into both ends.

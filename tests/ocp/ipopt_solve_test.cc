@@ -206,6 +206,36 @@ TEST(IpoptSolveTest, InfeasibleProblemSaysSo) {
   EXPECT_EQ(res.x.size(), 1u);
 }
 
+// (x - 0.3)^2 times a sign: a bowl (convex) or a cap (negative curvature).
+struct Parabola {
+  double sign;
+  template <class T>
+  void operator()(const T* in, T* out) const {
+    out[0] = sign * (in[0] - 0.3) * (in[0] - 0.3);
+  }
+};
+
+// Iterations with an inertia correction: none on a convex problem; on a cap over [0, 1] whose
+// maximum is inside (its minimum at the far bound x = 1), Ipopt has to perturb the negative
+// Hessian before its first steps.
+TEST(IpoptSolveTest, CountsTheIterationsThatNeededAnInertiaCorrection) {
+  for (const double sign : {1.0, -1.0}) {
+    ElementNlp nlp;
+    const int x = nlp.AddVariable(0.35, 0.0, 1.0, 1.0);
+    nlp.AddElement(MakeElement<1, 1>(Parabola{sign}), {x}, {{{Target::kObjective, 1.0}}});
+    nlp.Finalize();
+    const SolveResult res = SolveWithIpopt(nlp, {});
+    ASSERT_TRUE(res.ok()) << res.message;
+    EXPECT_NEAR(res.x[0], sign > 0 ? 0.3 : 1.0, 1e-6);
+    EXPECT_LE(res.regularized_iterations, res.iterations);
+    if (sign > 0) {
+      EXPECT_EQ(res.regularized_iterations, 0);
+    } else {
+      EXPECT_GT(res.regularized_iterations, 0);
+    }
+  }
+}
+
 // Extra options reach Ipopt by their type; one it does not know, or a value it refuses, is bad
 // input that names the option, not a solve quietly run without it.
 TEST(IpoptSolveTest, ExtraOptionsAreCheckedByIpopt) {

@@ -153,9 +153,13 @@ class Adaptor : public Ipopt::TNLP {
   }
 
   bool intermediate_callback(Ipopt::AlgorithmMode, Index iter, Number obj_value, Number inf_pr,
-                             Number inf_du, Number, Number, Number, Number, Number, Index,
-                             const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
+                             Number inf_du, Number, Number, Number regularization_size, Number,
+                             Number, Index, const Ipopt::IpoptData*,
+                             Ipopt::IpoptCalculatedQuantities*) override {
     result_.iterations = iter;
+    // The Hessian perturbation of the step that led here (0 where the first factorisation had
+    // the right inertia).
+    if (iter > 0 && regularization_size > 0.0) ++result_.regularized_iterations;
     if (options_.on_iteration) return options_.on_iteration(iter, obj_value, inf_pr, inf_du);
     return true;
   }

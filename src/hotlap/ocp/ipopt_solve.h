@@ -65,6 +65,9 @@ struct SolveResult {
   std::vector<double> z_lower, z_upper, lambda;
   double objective = 0.0;
   int iterations = 0;
+  /// Iterations whose step needed a Hessian perturbation (Ipopt's inertia correction): each
+  /// factorised the KKT system at least twice.
+  int regularized_iterations = 0;
   double primal_infeasibility = 0.0;  ///< max |constraint violation| at x, scaled
   double dual_infeasibility = 0.0;
   double solve_seconds = 0.0;
