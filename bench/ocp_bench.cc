@@ -8,12 +8,17 @@
 // command's way until 2026-11-26). Counters: lap time, Ipopt iterations and solve seconds of the
 // fine solve (Ipopt's own clock) and of the coarse one.
 //
+// BM_F1PeerCatalunya: the peer case (docs/f1-peer.md), the 2014 F1 car on fastest-lap's
+// Catalunya with 500 mesh points, in the same run, so that the Darlington solves can be read as a
+// multiple of it (issue 19's goal: the free lap at most 6 times this).
+//
 // BM_ChassisElementsHessian/{per_element,dense_node_60}: why the programme is lifted
 // (docs/optimal-control.md): one node's chassis elements with second-order forward AD over their
 // own few inputs, and the same functions differentiated in a 60-variable space, the size of a
 // whole lap-problem node, which is what a dense per-node Hessian would cost.
 //
 // Run: ./build/ocp_bench --benchmark_filter=Chassis   (seconds)
+//      ./build/ocp_bench --benchmark_filter=F1Peer   (seconds)
 //      ./build/ocp_bench --benchmark_filter=Darlington --benchmark_min_time=0   (minutes)
 
 #include <benchmark/benchmark.h>
@@ -24,10 +29,12 @@
 
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/units.h"
+#include "hotlap/ocp/f1_lap_problem.h"
 #include "hotlap/ocp/lap_elements.h"
 #include "hotlap/ocp/optimal_lap.h"
 #include "hotlap/ocp/solver_memory.h"
 #include "hotlap/track/track_io.h"
+#include "hotlap/vehicle/f1_car.h"
 
 namespace {
 
@@ -84,6 +91,23 @@ BENCHMARK(BM_DarlingtonOptimalLap)
     ->Arg(3)
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
+
+void BM_F1PeerCatalunya(benchmark::State& state) {
+  ocp::KeepSolverMemory();
+  const vehicle::F1CarParams car = vehicle::LoadF1Car(ResolveCarFile("f1-2014"));
+  const track::Track track = track::LoadTrack("catalunya-fl");
+  ocp::F1LapOptions o;
+  o.mesh_points = 500;
+  ocp::F1LapSolution s;
+  for (auto _ : state) s = ocp::SolveF1Lap(car, track, o, ocp::F1IpoptOptions());
+  state.counters["lap_time_s"] = s.lap_time;
+  state.counters["iterations"] = s.solve.iterations;
+  state.counters["regularized_iterations"] = s.solve.regularized_iterations;
+  state.counters["ipopt_solve_s"] = s.solve.solve_seconds;
+  state.counters["converged"] = s.solve.ok() ? 1 : 0;
+  state.counters["variables"] = s.variables;
+}
+BENCHMARK(BM_F1PeerCatalunya)->Iterations(1)->Unit(benchmark::kSecond);
 
 // The chassis elements of one node (four corners' kinematics, loads, totals, the longitudinal and
 // lateral dynamics), each differentiated over its own inputs (kPerElement = true) or over a
