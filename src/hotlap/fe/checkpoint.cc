@@ -2,12 +2,11 @@
 
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <system_error>
 
 #include "hotlap/common/atomic_file.h"
 #include "hotlap/common/error.h"
+#include "hotlap/common/read_file.h"
 
 namespace hotlap::fe {
 
@@ -195,10 +194,12 @@ std::string ReadCheckpointFile(const std::filesystem::path& path, const Checkpoi
   };
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) fail("does not exist or is not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail("cannot be opened");
-  const std::string s((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) fail("cannot be read");
+  std::string s;
+  try {
+    s = ReadWholeFile(path);
+  } catch (const InputError& e) {
+    fail(std::string("cannot be read (") + e.what() + ")");
+  }
   if (s.size() < sizeof kMagic || std::memcmp(s.data(), kMagic, sizeof kMagic) != 0) {
     fail("is not a hotlap FE checkpoint (no HLFECKPT header)");
   }

@@ -1,20 +1,14 @@
 #include "hotlap/sim/fe_abs_stop.h"
 
-#include <fstream>
-#include <iterator>
-
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
+#include "hotlap/common/read_file.h"
 
 namespace hotlap::sim {
 
 fe::CheckpointKey MakeFeCheckpointKey(const fe::TyreRun& run) {
-  const auto bytes = [](const std::filesystem::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    if (!in) throw InputError(fmt::format("cannot read '{}'", p.string()));
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  };
+  const auto bytes = [](const std::filesystem::path& p) { return ReadWholeFile(p); };
   fe::CheckpointKey key;
   key.mesh_hash = fe::HashMesh(run.tyre().mesh);
   key.nodes = run.tyre().mesh.nodes.size();
