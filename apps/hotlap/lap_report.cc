@@ -1,0 +1,103 @@
+#include "lap_report.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "hotlap/report/html_report.h"
+
+namespace hotlap::app {
+
+void WriteLapReport(const std::filesystem::path& path, const LapReportSettings& a,
+                    const vehicle::Car& car, const track::Track& track,
+                    const sim::QssResult& result, const sim::ColumnSet& columns,
+                    const std::vector<std::vector<std::string>>& lap_rows,
+                    const std::vector<std::vector<std::string>>& corner_rows,
+                    const std::vector<sim::BrakingZone>& zones) {
+  report::HtmlReport page(fmt::format("hotlap lap: {} on {}", car.name, track.name()));
+  page.AddMetadata("method", "quasi-steady-state (docs/lap-simulation.md)");
+  page.AddMetadata("line", a.line);
+  page.AddMetadata("car", car.path.string());
+  page.AddMetadata("track", fmt::format("{} ({:.1f} m)", track.name(), track.length_m()));
+  page.AddMetadata("laps", std::to_string(a.laps));
+  page.AddMetadata("air / track", fmt::format("{:g} / {:g} \u00b0C", a.ambient_C, a.track_C));
+  page.AddMetadata("version", HOTLAP_VERSION);
+  page.AddHeading("Summary");
+  page.AddTable(
+      {.title = "Laps", .header = {"lap", "time s", "top m/s", "min m/s"}, .rows = lap_rows});
+  page.AddTable({.title = "Per corner over the stint: peak temperatures and wear",
+                 .header = {"corner", "tread \u00b0C", "carcass \u00b0C", "disc \u00b0C",
+                            "calliper \u00b0C", "wear mm/lap"},
+                 .rows = corner_rows});
+  std::vector<std::vector<std::string>> zone_rows;
+  for (const sim::BrakingZone& z : zones) {
+    zone_rows.push_back({std::to_string(z.lap), fmt::format("{:.0f}", z.start_m),
+                         fmt::format("{:.0f}", z.end_m), fmt::format("{:.1f}", z.entry_speed),
+                         fmt::format("{:.1f}", z.exit_speed), fmt::format("{:.2f}", z.peak_decel)});
+  }
+  page.AddTable(
+      {.title = "Braking zones",
+       .header = {"lap", "from m", "to m", "entry m/s", "exit m/s", "peak decel m/s\u00b2"},
+       .rows = zone_rows});
+
+  const auto col = [&](const std::string& name) -> const std::vector<double>& {
+    const auto it = std::find(columns.names.begin(), columns.names.end(), name);
+    return columns.values[static_cast<size_t>(it - columns.names.begin())];
+  };
+  const std::vector<double>& distance = col("distance_m");
+  page.AddHeading("Track");
+  page.AddMapChart({.title = "Track map coloured by speed",
+                    .x_axis = {.label = "x", .unit = "m"},
+                    .y_axis = {.label = "y", .unit = "m"},
+                    .value_axis = {.label = "speed", .unit = "m/s"},
+                    .x = col("x_m"),
+                    .y = col("y_m"),
+                    .value = col("speed_mps")});
+  page.AddHeading("Car");
+  page.AddLineChart({.title = "Speed",
+                     .x_axis = {.label = "distance", .unit = "m"},
+                     .y_axis = {.label = "speed", .unit = "m/s"},
+                     .series = {{.label = "speed", .x = distance, .y = col("speed_mps")}},
+                     .x_link = "distance",
+                     .width = report::ChartWidth::kFullRow});
+  page.AddLineChart(
+      {.title = "Accelerations",
+       .x_axis = {.label = "distance", .unit = "m"},
+       .y_axis = {.label = "acceleration", .unit = "m/s\u00b2"},
+       .series = {{.label = "longitudinal", .x = distance, .y = col("accel_long_mps2")},
+                  {.label = "lateral (in the road plane)",
+                   .x = distance,
+                   .y = col("accel_lat_mps2")}},
+       .x_link = "distance"});
+  const auto corners_chart = [&](const char* title, const char* label, const char* unit,
+                                 const char* pattern) {
+    report::LineChart c{.title = title,
+                        .x_axis = {.label = "distance", .unit = "m"},
+                        .y_axis = {.label = label, .unit = unit},
+                        .x_link = "distance"};
+    for (Corner corner : kAllCorners) {
+      c.series.push_back({.label = std::string(CornerName(corner)),
+                          .x = distance,
+                          .y = col(fmt::format(fmt::runtime(pattern), CornerName(corner))),
+                          .corner = corner});
+    }
+    page.AddLineChart(c);
+  };
+  corners_chart("Normal loads", "Fz", "N", "fz_{}_N");
+  page.AddHeading("Tyres");
+  corners_chart("Tread temperature", "tread", "\u00b0C", "tread_temp_{}_C");
+  corners_chart("Carcass temperature", "carcass", "\u00b0C", "carcass_temp_{}_C");
+  corners_chart("Wear", "wear", "mm", "wear_{}_mm");
+  corners_chart("Grip factor g(T) h(wear)", "grip factor", "", "grip_factor_{}");
+  corners_chart("Slip angle", "slip angle", "deg", "slip_angle_{}_deg");
+  corners_chart("Slip ratio", "slip ratio", "", "slip_ratio_{}");
+  page.AddHeading("Brakes");
+  corners_chart("Disc temperature", "disc", "\u00b0C", "disc_temp_{}_C");
+  corners_chart("Calliper temperature", "calliper", "\u00b0C", "calliper_temp_{}_C");
+  corners_chart("Braking power", "braking power", "W", "brake_power_{}_W");
+  page.Write(path);
+}
+
+}  // namespace hotlap::app
