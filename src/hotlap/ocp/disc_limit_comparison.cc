@@ -79,7 +79,7 @@ DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track
   // The limited lap: coarse to fine like the free one where that is on, else warm-started from
   // the free lap. Where the limit changes the lap much (the Gen-7-like car's front-left disc
   // from 901 to 500 degC) the free lap is a poor start: 241 iterations (206 s) on the 3 m mesh
-  // from it against 48 after the 15 m solve (94 s in all), the same lap.
+  // from it against 66 after 91 on the 15 m mesh (46 s in all), the same lap.
   const bool coarse_to_fine = options.coarse_step_m > options.step_m;
   c.limited = SolveLap(car, track, limited_options, limited_label,
                        free.ok() && !coarse_to_fine ? &free : nullptr, progress, log, &warm_up);
