@@ -127,4 +127,17 @@ std::vector<double> PeriodicSmooth(const std::vector<double>& y, double lambda) 
   return std::vector<double>(q.data(), q.data() + n);
 }
 
+double PeriodicHermiteValue(const std::vector<double>& s, const std::vector<double>& y,
+                            const std::vector<double>& slopes, double period, double x) {
+  x = std::fmod(x, period);
+  if (x < 0.0) x += period;
+  const size_t n = s.size();
+  const size_t i = static_cast<size_t>(std::upper_bound(s.begin(), s.end(), x) - s.begin()) - 1;
+  const size_t j = (i + 1) % n;
+  const double h = (j == 0 ? period : s[j]) - s[i];
+  const double t = (x - s[i]) / h, t2 = t * t, t3 = t2 * t;
+  return (2.0 * t3 - 3.0 * t2 + 1.0) * y[i] + (t3 - 2.0 * t2 + t) * h * slopes[i] +
+         (-2.0 * t3 + 3.0 * t2) * y[j] + (t3 - t2) * h * slopes[j];
+}
+
 }  // namespace hotlap::track::internal

@@ -24,6 +24,11 @@ std::vector<double> PeriodicSplineSlopes(const std::vector<double>& s, const std
 std::vector<double> PeriodicMonotoneSlopes(const std::vector<double>& s,
                                            const std::vector<double>& y, double period);
 
+/// The value at x (wrapped into [0, period)) of the cubic Hermite through (s_i, y_i) with the
+/// given slopes (from the functions above).
+double PeriodicHermiteValue(const std::vector<double>& s, const std::vector<double>& y,
+                            const std::vector<double>& slopes, double period, double x);
+
 /// Periodic Whittaker smoother: the q minimising sum (q_i - y_i)^2 + lambda sum (D^3 q)_i^2,
 /// with D^3 the cyclic third difference over the index. Its transfer function is
 /// 1 / (1 + lambda (2 sin(w/2))^6) at w rad per sample: lambda = (wavelength / (2 pi spacing))^6

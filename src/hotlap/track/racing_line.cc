@@ -59,17 +59,8 @@ RacingLine ResampleLine(std::span<const double> s, std::span<const double> n, co
   // The periodic cubic spline through the rows (C2): a line's curvature is its offset's second
   // derivative, which linear interpolation would pile onto the rows as spikes.
   const std::vector<double> slopes = internal::PeriodicSplineSlopes(knots, values, length);
-  const size_t rows = knots.size();
   const auto offset_at = [&](double x) {
-    x = std::fmod(x - s[0], length);
-    if (x < 0.0) x += length;
-    const auto it = std::upper_bound(knots.begin(), knots.end(), x);
-    const size_t i = static_cast<size_t>(it - knots.begin()) - 1;  // knots[0] = 0 <= x
-    const size_t j = (i + 1) % rows;
-    const double h = (j == 0 ? length : knots[j]) - knots[i];
-    const double t = (x - knots[i]) / h, t2 = t * t, t3 = t2 * t;
-    return (2.0 * t3 - 3.0 * t2 + 1.0) * values[i] + (t3 - 2.0 * t2 + t) * h * slopes[i] +
-           (-2.0 * t3 + 3.0 * t2) * values[j] + (t3 - t2) * h * slopes[j];
+    return internal::PeriodicHermiteValue(knots, values, slopes, length, x - s[0]);
   };
   RacingLine line = CentreLine(track, step_m);
   for (size_t k = 0; k < line.s_m.size(); ++k) line.offset_m[k] = offset_at(line.s_m[k]);
