@@ -5,8 +5,11 @@
 // default), each from its QSS warm-up through a 15 m coarse solve (coarse to fine), as the
 // command does; /2 the free lap straight from the QSS guess on 3 m (coarse to fine off, the way
 // before it); /3 the limited lap warm-started from the free lap's solution and multipliers (the
-// command's way until 2026-11-26). Counters: lap time, Ipopt iterations and solve seconds of the
-// fine solve (Ipopt's own clock) and of the coarse one.
+// command's way until 2026-11-26). The second argument 1 solves /0 and /1 the way of the morning
+// of 2026-11-26, for issue 19's before/after table: every brake in the programme
+// (all_brake_states) and the fine solve from the coarse point alone (no coarse_multipliers).
+// Counters: lap time, Ipopt iterations and solve seconds of the fine solve (Ipopt's own clock)
+// and of the coarse one.
 //
 // BM_F1PeerCatalunya: the peer case (docs/f1-peer.md), the 2014 F1 car on fastest-lap's
 // Catalunya with 500 mesh points, in the same run, so that the Darlington solves can be read as a
@@ -20,6 +23,7 @@
 // Run: ./build/ocp_bench --benchmark_filter=Chassis   (seconds)
 //      ./build/ocp_bench --benchmark_filter=F1Peer   (seconds)
 //      ./build/ocp_bench --benchmark_filter=Darlington --benchmark_min_time=0   (minutes)
+//      ./build/ocp_bench --benchmark_filter='Darlington.*/[01]/|F1'   (issue 19's table)
 
 #include <benchmark/benchmark.h>
 
@@ -72,9 +76,15 @@ void BM_DarlingtonOptimalLap(benchmark::State& state) {
     o.ipopt.warm_lambda = FreeSolution().lambda;
   }
   if (state.range(0) == 2) o.coarse_step_m = 0.0;
+  if (state.range(1) == 1) {
+    o.all_brake_states = true;
+    o.coarse_multipliers = false;
+  }
   ocp::OptimalLapRun run;
   for (auto _ : state) run = ocp::RunOptimalLap(Car(), track, o);
-  if (state.range(0) == 0 && run.solution.solve.ok()) FreeSolution() = run.solution.solve;
+  if (state.range(0) == 0 && state.range(1) == 0 && run.solution.solve.ok()) {
+    FreeSolution() = run.solution.solve;
+  }
   state.counters["lap_time_s"] = run.solution.lap_time;
   state.counters["iterations"] = run.solution.solve.iterations;
   state.counters["regularized_iterations"] = run.solution.solve.regularized_iterations;
@@ -85,10 +95,12 @@ void BM_DarlingtonOptimalLap(benchmark::State& state) {
   state.counters["variables"] = run.solution.variables;
 }
 BENCHMARK(BM_DarlingtonOptimalLap)
-    ->Arg(0)
-    ->Arg(1)
-    ->Arg(2)
-    ->Arg(3)
+    ->Args({0, 1})
+    ->Args({1, 1})
+    ->Args({0, 0})
+    ->Args({1, 0})
+    ->Args({2, 0})
+    ->Args({3, 0})
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
 

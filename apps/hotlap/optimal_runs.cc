@@ -198,7 +198,15 @@ int RunOptimal(const OptimalArgs& a) {
     o.front_disc_limit = runs.front().front_disc_limit;
     // From the solution itself, taken onto the finer mesh.
     const ocp::LapSolution& first = runs.front().run.solution;
-    if (first.solve.ok()) o.start_point = ocp::StartPointOnMesh(first, track, o.step_m);
+    if (first.solve.ok()) {
+      // Point and multipliers (a warm start, as coarse to fine does).
+      o.start_point = ocp::StartPointOnMesh(first, track, o.step_m);
+      const ocp::LapMultipliers m = ocp::ResampleLapMultipliers(
+          first.solve, first.layout, first.layout.WithNodes(ocp::LapNodeCount(track, o.step_m)));
+      o.ipopt.warm_z_lower = m.z_lower;
+      o.ipopt.warm_z_upper = m.z_upper;
+      o.ipopt.warm_lambda = m.lambda;
+    }
     const ocp::SolvedLap fine =
         ocp::SolveLap(car, track, o, "half mesh", nullptr, PrintProgress, PrintLine);
     mesh_delta = fine.figures.lap_time_s - runs.front().figures.lap_time_s;

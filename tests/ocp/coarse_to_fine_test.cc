@@ -37,6 +37,59 @@ TEST(ResampleLapPointTest, RefusesAPointThatIsNotWholeNodes) {
   EXPECT_THROW(ResampleLapPoint({1.0, 2.0}, 1, 4), InputError);
 }
 
+// A layout of one variable and one node row per node, one defect per interval, one closure row
+// and one rate-limit block (two rows per interval).
+LapLayout TinyLayout(int nodes) {
+  LapLayout l;
+  l.nodes = nodes;
+  l.vars_per_node = 1;
+  l.rows_per_node = 1;
+  l.defects_per_interval = 1;
+  l.closure_rows = 1;
+  l.rate_blocks = 1;
+  return l;
+}
+
+TEST(ResampleLapMultipliersTest, NodeSharesScaleWithTheSpacingIntervalOnesDoNot) {
+  // Three nodes (two intervals) onto five (four): the spacing halves.
+  SolveResult coarse;
+  coarse.z_lower = {1.0, 4.0, 2.0};  // node shares 1/2, 1, 1/2: densities 2, 4, 4 per interval
+  coarse.z_upper = {0.0, 0.0, 0.0};
+  // Node rows; defects at the interval midpoints 1/2 and 3/2; the closure; the rate pairs (up,
+  // down) of intervals 0 and 1.
+  coarse.lambda = {1.0, 4.0, 2.0, 10.0, 20.0, 7.0, 1.0, -1.0, 3.0, -3.0};
+  ASSERT_EQ(static_cast<int>(coarse.lambda.size()), TinyLayout(3).rows());
+  const LapMultipliers m = ResampleLapMultipliers(coarse, TinyLayout(3), TinyLayout(5));
+  // Densities at 0, 1/2, 1, 3/2, 2 coarse intervals: 2, 3, 4, 4, 4; times the new shares (1/2,
+  // 1, 1, 1, 1/2) and the new spacing (1/2 of the old): the total is kept (7).
+  const std::vector<double> nodes = {0.5, 1.5, 2.0, 2.0, 1.0};
+  ASSERT_EQ(m.z_lower.size(), 5u);
+  for (int k = 0; k < 5; ++k) EXPECT_DOUBLE_EQ(m.z_lower[k], nodes[k]) << k;
+  EXPECT_EQ(m.z_upper, std::vector<double>(5, 0.0));
+  ASSERT_EQ(static_cast<int>(m.lambda.size()), TinyLayout(5).rows());
+  for (int k = 0; k < 5; ++k) EXPECT_DOUBLE_EQ(m.lambda[k], nodes[k]) << k;
+  // Defects at the new midpoints 1/4, 3/4, 5/4, 7/4: held beyond the old ones, else linear.
+  const std::vector<double> defects = {10.0, 12.5, 17.5, 20.0};
+  for (int k = 0; k < 4; ++k) EXPECT_DOUBLE_EQ(m.lambda[5 + k], defects[k]) << k;
+  EXPECT_DOUBLE_EQ(m.lambda[9], 7.0);  // the closure, copied
+  const std::vector<double> rates = {1.0, -1.0, 1.5, -1.5, 2.5, -2.5, 3.0, -3.0};
+  for (int k = 0; k < 8; ++k) EXPECT_DOUBLE_EQ(m.lambda[10 + k], rates[k]) << k;
+  // Onto the same mesh: unchanged.
+  const LapMultipliers same = ResampleLapMultipliers(coarse, TinyLayout(3), TinyLayout(3));
+  EXPECT_EQ(same.z_lower, coarse.z_lower);
+  EXPECT_EQ(same.lambda, coarse.lambda);
+}
+
+TEST(ResampleLapMultipliersTest, RefusesMultipliersOfAnotherLayout) {
+  SolveResult r;
+  r.z_lower = r.z_upper = {1.0, 2.0, 3.0};
+  r.lambda.assign(9, 0.0);  // one short
+  EXPECT_THROW(ResampleLapMultipliers(r, TinyLayout(3), TinyLayout(5)), InputError);
+  r.lambda.assign(10, 0.0);
+  r.z_upper = {1.0};
+  EXPECT_THROW(ResampleLapMultipliers(r, TinyLayout(3), TinyLayout(5)), InputError);
+}
+
 TEST(LapNodeCountTest, IntervalsOfAboutTheStepAndTheClosingNode) {
   const track::Track track = track::LoadTrack("darlington");  // 2198 m
   EXPECT_EQ(LapNodeCount(track, 3.0), 734);                   // round(732.7) + 1
@@ -72,6 +125,14 @@ TEST(CoarseToFineTest, ReachesTheSameLapAsTheGuessStartInFewerIterations) {
   RecordProperty("direct_iterations", direct.solution.solve.iterations);
   RecordProperty("coarse_iterations", staged.coarse.iterations);
   RecordProperty("fine_iterations", staged.solution.solve.iterations);
+
+  // Without the coarse solve's multipliers (the point alone, Ipopt's own first barrier): the
+  // same lap.
+  o.coarse_multipliers = false;
+  const OptimalLapRun point_only = RunOptimalLap(car, track, o, &warm_up);
+  ASSERT_TRUE(point_only.solution.solve.ok()) << point_only.solution.solve.message;
+  EXPECT_NEAR(point_only.solution.lap_time, staged.solution.lap_time, 2e-3);
+  RecordProperty("fine_iterations_point_only", point_only.solution.solve.iterations);
 
   // With a small first barrier that keeps the start (IpoptOptions::primal_start_mu): the same lap
   // (the iterations differ either way with the car and the mesh, docs/optimal-control.md).

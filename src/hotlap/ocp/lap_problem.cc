@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
+#include <stdexcept>
 #include <tuple>
 
 #include <fmt/format.h>
@@ -100,6 +102,10 @@ struct Builder {
   }
 
   void AddNodes() {
+    for (int c = 0; c < 4; ++c) {
+      brake_in_programme[c] = options.all_brake_states || options.periodic_thermal ||
+                              (options.front_disc_limit && IsFront(kAllCorners[c]));
+    }
     intervals = LapNodeCount(track, options.step_m) - 1;
     ds = track.length_m() / intervals;
     const double wheel_power = p.powertrain.WheelPower();
@@ -138,8 +144,11 @@ struct Builder {
         const sim::CornerHistory& h = guess.thermal.corners[c];
         const bool fix = k == 0 && !options.periodic_thermal;
         const auto state = [&](const std::vector<double>& hist, double start, double lo, double hi,
-                               double scale) {
+                               double scale, bool in_programme = true) {
           const double value = k == 0 ? start : Sample(guess.centre_distance, hist, g_s);
+          // A brake that feeds nothing back is a fixed variable: Ipopt leaves it out of its
+          // programme, and it is integrated after the solve (IntegrateBrakesLeftOut).
+          if (!in_programme) return nlp.AddVariable(value, value, value, scale);
           return nlp.AddVariable(value, fix ? start : lo, fix ? start : hi, scale);
         };
         nv.tread[c] = state(h.tread_temp, options.initial.tyres[c].tread_temp, 200.0, 800.0, 100.0);
@@ -149,10 +158,14 @@ struct Builder {
         double disc_hi = 2000.0;
         if (options.front_disc_limit && IsFront(kAllCorners[c]))
           disc_hi = *options.front_disc_limit;
-        nv.disc[c] = state(h.disc_temp, options.initial.brakes[c].disc_temp, 200.0, disc_hi, 100.0);
-        if (!fix) nlp.set_initial(nv.disc[c], std::min(nlp.initial(nv.disc[c]), disc_hi - 1.0));
-        nv.calliper[c] =
-            state(h.calliper_temp, options.initial.brakes[c].calliper_temp, 200.0, 2000.0, 100.0);
+        const bool in = brake_in_programme[c];
+        nv.disc[c] =
+            state(h.disc_temp, options.initial.brakes[c].disc_temp, 200.0, disc_hi, 100.0, in);
+        if (!fix && in) {
+          nlp.set_initial(nv.disc[c], std::min(nlp.initial(nv.disc[c]), disc_hi - 1.0));
+        }
+        nv.calliper[c] = state(h.calliper_temp, options.initial.brakes[c].calliper_temp, 200.0,
+                               2000.0, 100.0, in);
       }
       // Controls from the QSS lap's forces.
       double total_fx = 0.0;
@@ -292,11 +305,17 @@ struct Builder {
 
   void AddDynamics() {
     const int n_states = static_cast<int>(nodes[0].States().size());
-    // Defect rows x_{k+1} - x_k - ds/2 (f_k + f_{k+1}) = c, c from the road's -kappa_g terms.
-    defect_rows.assign(intervals, std::vector<int>(n_states));
+    // Defect rows x_{k+1} - x_k - ds/2 (f_k + f_{k+1}) = c, c from the road's -kappa_g terms; none
+    // for the brakes left out of the programme (-1).
+    state_in_programme.assign(n_states, true);
+    for (int c = 0; c < 4; ++c) {
+      state_in_programme[5 + 5 * c + 3] = state_in_programme[5 + 5 * c + 4] = brake_in_programme[c];
+    }
+    defect_rows.assign(intervals, std::vector<int>(n_states, -1));
     for (int k = 0; k < intervals; ++k) {
       const std::vector<int> a = nodes[k].States(), b = nodes[k + 1].States();
       for (int j = 0; j < n_states; ++j) {
+        if (!state_in_programme[j]) continue;
         // dxi/ds = w r - kappa_g: the constant moves to the right-hand side.
         double rhs = 0.0;
         if (j == 4) rhs = -0.5 * ds * (roads[k].kappa_g() + roads[k + 1].kappa_g());
@@ -329,6 +348,7 @@ struct Builder {
             {nv.w, nv.tread[c], nv.carcass[c], nv.wear[c], nv.vx[c], nv.fx[c], nv.fy[c], nv.fz[c],
              nv.alpha[c], nv.kappa[c]},
             {DefectTargets(k, base), DefectTargets(k, base + 1), DefectTargets(k, base + 2)});
+        if (!brake_in_programme[c]) continue;
         nlp.AddElement(brake_elements[c], {nv.w, nv.disc[c], nv.calliper[c], nv.vx[c], nv.brake},
                        {DefectTargets(k, base + 3), DefectTargets(k, base + 4)});
       }
@@ -356,7 +376,7 @@ struct Builder {
     // The lap closes: mechanical states (and thermal ones on request) end where they start.
     std::vector<int> periodic = {0, 1, 2, 3, 4};
     if (options.periodic_thermal) {
-      for (int j = 5; j < 25; ++j) periodic.push_back(j);
+      for (int j = 5; j < static_cast<int>(nodes[0].States().size()); ++j) periodic.push_back(j);
     }
     const std::vector<int> a = nodes.front().States(), b = nodes.back().States();
     for (int j : periodic) {
@@ -409,17 +429,108 @@ struct Builder {
           options.track_temp});
       const double share =
           IsFront(corner) ? 0.5 * p.brakes.front_share : 0.5 * (1.0 - p.brakes.front_share);
-      brake_elements[c] = MakeElement<5, 2>(internal::BrakeFn{
+      brake_fns[c] = std::make_shared<internal::BrakeFn>(internal::BrakeFn{
           &car.brakes[c].params, &brake_so[c], &brake_jet[c], share, options.ambient_temp});
+      brake_elements[c] = MakeElement<5, 2>(*brake_fns[c]);
     }
+    layout.nodes = intervals + 1;
+    layout.vars_per_node = nlp.variables() / layout.nodes;
     for (int k = 0; k <= intervals; ++k) AddNodeEquations(k);
+    layout.rows_per_node = nlp.constraints() / layout.nodes;
     AddDynamics();
+    layout.defects_per_interval = static_cast<int>(nodes[0].States().size());
+    defects_left_out =
+        static_cast<int>(std::count(state_in_programme.begin(), state_in_programme.end(), false));
+    const int before_closure = nlp.constraints();
     AddPeriodicityAndObjective();
+    // The closure's rows come first, then the rate limits' pairs per interval.
+    layout.closure_rows = options.periodic_thermal ? layout.defects_per_interval : 5;
+    layout.rate_blocks =
+        (nlp.constraints() - before_closure - layout.closure_rows) / (2 * intervals);
+    if (layout.rows() - intervals * defects_left_out != nlp.constraints() ||
+        layout.variables() != nlp.variables()) {
+      throw std::logic_error("lap problem: rows or variables out of their layout");
+    }
     nlp.Finalize();
   }
 
   std::array<std::shared_ptr<const Element>, 4> tyre_elements, thermal_elements, brake_elements;
+  std::array<std::shared_ptr<const internal::BrakeFn>, 4> brake_fns;
   std::vector<std::vector<int>> defect_rows;
+  std::array<bool, 4> brake_in_programme{};
+  std::vector<bool> state_in_programme;  // by position in NodeVars::States()
+  int defects_left_out = 0;              // per interval
+  LapLayout layout;
+
+  // The programme's rows and the layout's (which has every state's defects) from one another.
+  // Node rows come first in both, and the rows after the defects keep their order.
+  int LayoutRowOf(int row) const {
+    const int defects_begin = layout.nodes * layout.rows_per_node;
+    const int programme_defects = intervals * (layout.defects_per_interval - defects_left_out);
+    if (row < defects_begin) return row;
+    if (row >= defects_begin + programme_defects) return row + intervals * defects_left_out;
+    const int present = layout.defects_per_interval - defects_left_out;
+    const int k = (row - defects_begin) / present, i = (row - defects_begin) % present;
+    int j = -1;
+    for (int seen = -1; seen < i;) seen += state_in_programme[++j] ? 1 : 0;
+    return defects_begin + k * layout.defects_per_interval + j;
+  }
+  std::vector<double> ToLayoutRows(const std::vector<double>& programme) const {
+    std::vector<double> out(layout.rows(), 0.0);
+    for (size_t r = 0; r < programme.size(); ++r)
+      out[LayoutRowOf(static_cast<int>(r))] = programme[r];
+    return out;
+  }
+  std::vector<double> ToProgrammeRows(const std::vector<double>& full) const {
+    std::vector<double> out(nlp.constraints());
+    for (size_t r = 0; r < out.size(); ++r) out[r] = full[LayoutRowOf(static_cast<int>(r))];
+    return out;
+  }
+
+  // The brakes left out of the programme, integrated node by node over the solution `x` by the
+  // trapezoid the defects would have imposed (so x is the point the full programme would have
+  // had), from the start's temperatures.
+  void IntegrateBrakesLeftOut(std::vector<double>& x) const {
+    for (int c = 0; c < 4; ++c) {
+      if (brake_in_programme[c]) continue;
+      const internal::BrakeFn& fn = *brake_fns[c];
+      // dT/ds at node k with temperatures y (and its Jacobian in y).
+      const auto rate = [&](int k, const std::array<double, 2>& y,
+                            std::array<std::array<double, 2>, 2>* jac) {
+        const NodeVars& nv = nodes[k];
+        Jet5 in[5] = {Jet5(x[nv.w]), Jet5(y[0], 0), Jet5(y[1], 1), Jet5(x[nv.vx[c]]),
+                      Jet5(x[nv.brake])};
+        Jet5 out[2];
+        fn(in, out);
+        if (jac) *jac = {{{out[0].v[0], out[0].v[1]}, {out[1].v[0], out[1].v[1]}}};
+        return std::array<double, 2>{out[0].a, out[1].a};
+      };
+      std::array<double, 2> y = {options.initial.brakes[c].disc_temp,
+                                 options.initial.brakes[c].calliper_temp};
+      x[nodes[0].disc[c]] = y[0];
+      x[nodes[0].calliper[c]] = y[1];
+      for (int k = 0; k < intervals; ++k) {
+        const std::array<double, 2> f0 = rate(k, y, nullptr);
+        std::array<double, 2> next = y;
+        for (int it = 0; it < 30; ++it) {  // Newton on next - y - ds/2 (f0 + f(next)) = 0
+          std::array<std::array<double, 2>, 2> j;
+          const std::array<double, 2> f1 = rate(k + 1, next, &j);
+          const double r0 = next[0] - y[0] - 0.5 * ds * (f0[0] + f1[0]);
+          const double r1 = next[1] - y[1] - 0.5 * ds * (f0[1] + f1[1]);
+          const double a = 1.0 - 0.5 * ds * j[0][0], b = -0.5 * ds * j[0][1];
+          const double cc = -0.5 * ds * j[1][0], d = 1.0 - 0.5 * ds * j[1][1];
+          const double det = a * d - b * cc;
+          const double step0 = (d * r0 - b * r1) / det, step1 = (a * r1 - cc * r0) / det;
+          next[0] -= step0;
+          next[1] -= step1;
+          if (std::abs(step0) + std::abs(step1) < 1e-10) break;
+        }
+        y = next;
+        x[nodes[k + 1].disc[c]] = y[0];
+        x[nodes[k + 1].calliper[c]] = y[1];
+      }
+    }
+  }
 };
 
 }  // namespace
@@ -464,6 +575,82 @@ std::vector<double> StartPointOnMesh(const LapSolution& solution, const track::T
                           LapNodeCount(track, step_m));
 }
 
+namespace {
+
+// Linear interpolation of a function sampled at `from` points onto `to` points, both uniform on
+// [0, 1] with `first` the first sample's place in units of the spacing (0 for nodes, 0.5 for
+// interval midpoints). Values beyond the ends are held.
+double Interpolate(const std::function<double(int)>& value, int from_count, double from_first,
+                   double place) {
+  if (from_count < 2) return value(0);
+  const double at = std::clamp(place - from_first, 0.0, static_cast<double>(from_count - 1));
+  const int j = std::min(static_cast<int>(at), from_count - 2);
+  const double w = at - j;
+  return (1.0 - w) * value(j) + w * value(j + 1);
+}
+
+}  // namespace
+
+LapMultipliers ResampleLapMultipliers(const SolveResult& solve, const LapLayout& from,
+                                      const LapLayout& to) {
+  if (from.nodes < 2 || to.nodes < 2 ||
+      solve.z_lower.size() != static_cast<size_t>(from.variables()) ||
+      solve.z_upper.size() != solve.z_lower.size() ||
+      solve.lambda.size() != static_cast<size_t>(from.rows())) {
+    throw InputError(fmt::format(
+        "optimal lap: multipliers of {} variables and {} rows are not the {}-node problem's",
+        solve.z_lower.size(), solve.lambda.size(), from.nodes));
+  }
+  const int nf = from.intervals(), nt = to.intervals();
+  // A node's share of the lap in units of its mesh's spacing (the trapezoid's weights).
+  const auto share = [](int k, int intervals) { return k == 0 || k == intervals ? 0.5 : 1.0; };
+  const double ratio = static_cast<double>(nf) / nt;  // ds_to / ds_from
+  // Node quantities: densities per unit of `from`'s spacing, interpolated, times the new share.
+  const auto nodes = [&](const std::vector<double>& src, int src_begin, int per_node,
+                         std::vector<double>& dst, int dst_begin) {
+    for (int k = 0; k < to.nodes; ++k) {
+      const double place = static_cast<double>(k) * nf / nt;
+      for (int i = 0; i < per_node; ++i) {
+        const double density =
+            Interpolate([&](int j) { return src[src_begin + j * per_node + i] / share(j, nf); },
+                        from.nodes, 0.0, place);
+        dst[dst_begin + k * per_node + i] = density * share(k, nt) * ratio;
+      }
+    }
+  };
+  // Interval quantities: interpolated at the midpoints, unscaled.
+  const auto intervals = [&](const std::vector<double>& src, int src_begin, int per_interval,
+                             std::vector<double>& dst, int dst_begin) {
+    for (int k = 0; k < nt; ++k) {
+      const double place = (k + 0.5) * nf / nt;
+      for (int i = 0; i < per_interval; ++i) {
+        dst[dst_begin + k * per_interval + i] = Interpolate(
+            [&](int j) { return src[src_begin + j * per_interval + i]; }, nf, 0.5, place);
+      }
+    }
+  };
+  LapMultipliers out;
+  out.z_lower.assign(to.variables(), 0.0);
+  out.z_upper.assign(to.variables(), 0.0);
+  out.lambda.assign(to.rows(), 0.0);
+  nodes(solve.z_lower, 0, from.vars_per_node, out.z_lower, 0);
+  nodes(solve.z_upper, 0, from.vars_per_node, out.z_upper, 0);
+  nodes(solve.lambda, 0, from.rows_per_node, out.lambda, 0);
+  int src = from.nodes * from.rows_per_node, dst = to.nodes * to.rows_per_node;
+  intervals(solve.lambda, src, from.defects_per_interval, out.lambda, dst);
+  src += nf * from.defects_per_interval;
+  dst += nt * to.defects_per_interval;
+  std::copy_n(solve.lambda.begin() + src, from.closure_rows, out.lambda.begin() + dst);
+  src += from.closure_rows;
+  dst += to.closure_rows;
+  for (int b = 0; b < from.rate_blocks; ++b) {
+    intervals(solve.lambda, src, 2, out.lambda, dst);
+    src += 2 * nf;
+    dst += 2 * nt;
+  }
+  return out;
+}
+
 LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& track,
                                 const LapProblemOptions& options, const sim::QssLap& guess,
                                 const IpoptOptions& ipopt) {
@@ -497,11 +684,22 @@ LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& tra
     }
   }
   LapSolution out;
+  out.layout = b.layout;
   out.variables = b.nlp.variables();
   out.constraints = b.nlp.constraints();
-  out.solve = SolveWithIpopt(b.nlp, ipopt);
-  const std::vector<double>& x = out.solve.x.empty() ? std::vector<double>() : out.solve.x;
-  if (x.empty()) return out;
+  // Multipliers come and go in the layout's rows (every state's defects; zero for the brakes
+  // left out, whose costates are zero: they feed nothing back).
+  IpoptOptions programme_ipopt = ipopt;
+  if (programme_ipopt.warm_lambda.size() == static_cast<size_t>(b.layout.rows())) {
+    programme_ipopt.warm_lambda = b.ToProgrammeRows(ipopt.warm_lambda);
+  }
+  out.solve = SolveWithIpopt(b.nlp, programme_ipopt);
+  if (out.solve.lambda.size() == static_cast<size_t>(b.nlp.constraints())) {
+    out.solve.lambda = b.ToLayoutRows(out.solve.lambda);
+  }
+  if (out.solve.x.empty()) return out;
+  b.IntegrateBrakesLeftOut(out.solve.x);
+  const std::vector<double>& x = out.solve.x;
   double time = 0.0;
   for (int k = 0; k <= b.intervals; ++k) {
     const NodeVars& nv = b.nodes[k];

@@ -48,6 +48,12 @@ struct LapProblemOptions {
   /// non-negative controls (nothing stops both being on; the pedal is then fixed at 0 and the
   /// smoothing penalty and rate limit act on nothing but the steer).
   bool independent_drive_and_brake = false;
+  /// Keep every brake's temperatures in the programme. Otherwise a brake's disc and calliper
+  /// temperatures, which feed nothing back into the lap, are left out of it (fixed variables that
+  /// Ipopt removes, no defects) and integrated after the solve by the same trapezoid: the rear
+  /// brakes always, the front ones unless they are limited (front_disc_limit), and none when the
+  /// thermal states are periodic. The same solution, eight (or four) fewer states per node.
+  bool all_brake_states = false;
   /// Each element's Hessian with its negative curvature clipped (ElementNlp::
   /// SetConvexElementHessians) instead of the exact Lagrangian Hessian.
   bool convex_element_hessians = false;
@@ -91,6 +97,32 @@ struct CornerTrace {
   std::vector<double> tread_temp, carcass_temp, wear, disc_temp, calliper_temp, brake_power;
 };
 
+/// Where a lap problem's variables and rows lie. Variables: node by node, `vars_per_node` each.
+/// Rows: the node equations, node by node (`rows_per_node` each); then the collocation defects,
+/// interval by interval (`defects_per_interval` each); then the lap's closure (`closure_rows`);
+/// then `rate_blocks` blocks of two rows per interval (the steer's and pedal's rate limits).
+struct LapLayout {
+  int nodes = 0;  ///< intervals + 1
+  int vars_per_node = 0;
+  int rows_per_node = 0;
+  int defects_per_interval = 0;
+  int closure_rows = 0;
+  int rate_blocks = 0;
+
+  int intervals() const { return nodes - 1; }
+  int variables() const { return nodes * vars_per_node; }
+  int rows() const {
+    return nodes * rows_per_node + intervals() * (defects_per_interval + 2 * rate_blocks) +
+           closure_rows;
+  }
+  /// The same problem on a mesh of `n` nodes.
+  LapLayout WithNodes(int n) const {
+    LapLayout l = *this;
+    l.nodes = n;
+    return l;
+  }
+};
+
 /// The optimal lap at the mesh nodes (N + 1: the last closes the lap).
 struct LapSolution {
   SolveResult solve;
@@ -103,6 +135,7 @@ struct LapSolution {
   double lap_time = 0.0;  ///< s
   int variables = 0;
   int constraints = 0;
+  LapLayout layout;
 };
 
 /// InputError naming the disc if a front disc of `start` is above `front_disc_limit` (K): a lap
@@ -123,6 +156,22 @@ std::vector<double> ResampleLapPoint(const std::vector<double>& x, int from_node
 /// of the same track: the start of a solve on another mesh.
 std::vector<double> StartPointOnMesh(const LapSolution& solution, const track::Track& track,
                                      double step_m);
+
+/// Multipliers of a lap problem (as SolveResult holds them: of the scaled programme).
+struct LapMultipliers {
+  std::vector<double> z_lower, z_upper, lambda;
+};
+
+/// A solve's multipliers on the mesh of `from`, taken onto the mesh of `to` (the same problem on
+/// another node count): the warm start of a fine solve from a coarse one. The transcription's
+/// multipliers approximate continuous ones in two ways. A defect's multiplier is the costate of
+/// its state (time per unit of state, whatever the spacing), and a rate limit's is likewise a
+/// density-free function of distance: both are interpolated at the interval midpoints. A node
+/// equation's or a bound's multiplier carries its node's share of the lap, ds (ds / 2 at the two
+/// ends, as in the trapezoid): they are interpolated as densities per metre and multiplied by the
+/// new share. The closure's rows are copied. InputError if the sizes do not match `from`.
+LapMultipliers ResampleLapMultipliers(const SolveResult& solve, const LapLayout& from,
+                                      const LapLayout& to);
 
 /// Builds and solves the lap. `guess` (a QSS lap of the same car and track, e.g. from
 /// sim::RunQssLap) gives the starting point. InputError if the car has no vehicle sections;

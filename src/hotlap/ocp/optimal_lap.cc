@@ -114,12 +114,14 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
   lap.start_point = options.start_point;
   lap.pedal_smoothing = options.pedal_smoothing;
   lap.convex_element_hessians = options.convex_element_hessians;
+  lap.all_brake_states = options.all_brake_states;
   if (options.steer_smoothing_weight >= 0.0) {
     lap.steer_smoothing_weight = options.steer_smoothing_weight;
   }
   if (options.pedal_smoothing_weight >= 0.0) {
     lap.pedal_smoothing_weight = options.pedal_smoothing_weight;
   }
+  IpoptOptions fine_ipopt = options.ipopt;
   if (options.start_point.empty() && options.coarse_step_m > options.step_m) {
     // Coarse to fine: the same problem on the coarse mesh from the guess, then its solution on
     // the fine mesh as the fine solve's start.
@@ -128,13 +130,23 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
     const LapSolution c = SolveMinimumTimeLap(car, track, coarse, w.guess, options.ipopt);
     run.coarse = c.solve;
     run.coarse_lap_time = c.lap_time;
-    if (c.solve.ok()) lap.start_point = StartPointOnMesh(c, track, options.step_m);
+    if (c.solve.ok()) {
+      lap.start_point = StartPointOnMesh(c, track, options.step_m);
+      if (options.coarse_multipliers) {
+        const LapMultipliers m = ResampleLapMultipliers(
+            c.solve, c.layout, c.layout.WithNodes(LapNodeCount(track, options.step_m)));
+        fine_ipopt.warm_z_lower = m.z_lower;
+        fine_ipopt.warm_z_upper = m.z_upper;
+        fine_ipopt.warm_lambda = m.lambda;
+      }
+    }
   }
-  // Ipopt's own first barrier also for a start from another mesh: a small one (1e-4 with the
-  // start kept 1e-6 off its bounds, IpoptOptions::primal_start_mu) helped the uncalibrated car's
-  // free lap (36 iterations against 167) but stalled the calibrated car's limited lap (900 and
-  // more against 66; docs/optimal-control.md, "Speed").
-  run.solution = SolveMinimumTimeLap(car, track, lap, w.guess, options.ipopt);
+  // With the coarse solve's multipliers the fine solve is a warm start (small barrier, the point
+  // kept where it is). Without them, Ipopt's own first barrier: a small one with the point alone
+  // (1e-4 with the start kept 1e-6 off its bounds, IpoptOptions::primal_start_mu) helped the
+  // uncalibrated car's free lap (36 iterations against 167) but stalled the calibrated car's
+  // limited lap (900 and more against 66; docs/optimal-control.md, "Speed").
+  run.solution = SolveMinimumTimeLap(car, track, lap, w.guess, fine_ipopt);
 
   // The QSS lap on the optimal line, one lap from the optimal lap's own thermal start.
   const LapSolution& s = run.solution;

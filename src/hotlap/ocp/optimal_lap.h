@@ -51,6 +51,9 @@ struct OptimalLapOptions {
   /// 15 m took the Gen-7 lap at 3 m from 274 iterations (140 s) to 196 + 31 (35 s in all;
   /// docs/optimal-control.md, "Speed").
   double coarse_step_m = 15.0;
+  /// Coarse to fine with the coarse solve's multipliers too (ResampleLapMultipliers): the fine
+  /// solve is then an Ipopt warm start from mu = ipopt.warm_mu (docs/optimal-control.md, "Speed").
+  bool coarse_multipliers = true;
   /// The pedal's smooth positive part (LapProblemOptions::pedal_smoothing).
   double pedal_smoothing = 5e-3;
   /// Weights of the control-smoothness penalty for the steer and the pedal
@@ -59,6 +62,9 @@ struct OptimalLapOptions {
   double pedal_smoothing_weight = -1.0;
   /// LapProblemOptions::convex_element_hessians.
   bool convex_element_hessians = false;
+  /// LapProblemOptions::all_brake_states (false: the brakes that feed nothing back are
+  /// integrated after the solve instead of solved for).
+  bool all_brake_states = false;
   /// Start the solve here instead of the QSS guess: another solution's SolveResult::x on the same
   /// track, car and mesh (LapProblemOptions::start_point).
   std::vector<double> start_point;

@@ -1,0 +1,100 @@
+// The lap problem's brakes that feed nothing back (ocp/lap_problem.h
+// LapProblemOptions::all_brake_states): left out of the programme and integrated after the solve,
+// they give the same solution as the programme that carries them, with fewer rows.
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "hotlap/common/units.h"
+#include "hotlap/ocp/lap_problem.h"
+#include "hotlap/ocp/optimal_lap.h"
+#include "hotlap/track/track_io.h"
+#include "test_util.h"
+
+namespace hotlap::ocp {
+namespace {
+
+double MaxAbsDifference(const std::vector<double>& a, const std::vector<double>& b) {
+  EXPECT_EQ(a.size(), b.size());
+  double d = 0.0;
+  for (size_t i = 0; i < std::min(a.size(), b.size()); ++i) d = std::max(d, std::abs(a[i] - b[i]));
+  return d;
+}
+
+class BrakesLeftOutTest : public ::testing::TestWithParam<bool> {};
+
+// From the solution of the full programme (point and multipliers), the programme without the
+// brakes that feed nothing back is already solved: Ipopt stops at once on the same lap, and the
+// brakes integrated after the solve are the full programme's to the solver's tolerance.
+TEST_P(BrakesLeftOutTest, SameSolutionAsTheFullProgramme) {
+  const bool limited = GetParam();
+  const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
+  const track::Track track = track::LoadTrack("darlington");
+  OptimalLapOptions o;
+  o.ambient_temp = CelsiusToKelvin(25.0);
+  o.track_temp = CelsiusToKelvin(40.0);
+  const LapWarmUp warm_up = RunLapWarmUp(car, track, o);
+
+  LapProblemOptions lap;
+  lap.step_m = 30.0;
+  lap.ambient_temp = o.ambient_temp;
+  lap.track_temp = o.track_temp;
+  lap.initial = warm_up.start;
+  if (limited) lap.front_disc_limit = CelsiusToKelvin(500.0);
+  lap.all_brake_states = true;
+  const LapSolution full = SolveMinimumTimeLap(car, track, lap, warm_up.guess, LapIpoptOptions());
+  ASSERT_TRUE(full.solve.ok()) << full.solve.message;
+
+  lap.all_brake_states = false;
+  lap.start_point = full.solve.x;
+  IpoptOptions warm = LapIpoptOptions();
+  warm.warm_z_lower = full.solve.z_lower;
+  warm.warm_z_upper = full.solve.z_upper;
+  warm.warm_lambda = full.solve.lambda;
+  warm.warm_mu = 1e-9;
+  const LapSolution reduced = SolveMinimumTimeLap(car, track, lap, warm_up.guess, warm);
+  ASSERT_TRUE(reduced.solve.ok()) << reduced.solve.message;
+
+  // The same variables (the brakes left out are fixed ones), two rows fewer per interval and brake.
+  const int brakes_left_out = limited ? 2 : 4;
+  EXPECT_EQ(reduced.variables, full.variables);
+  EXPECT_EQ(reduced.constraints, full.constraints - 2 * brakes_left_out * (full.layout.nodes - 1));
+  EXPECT_EQ(reduced.layout.rows(), full.layout.rows());
+  EXPECT_LE(reduced.solve.iterations, 5);
+  EXPECT_NEAR(reduced.lap_time, full.lap_time, 1e-6);
+  // Every brake temperature, integrated or solved for, to well under a tenth of a kelvin (the
+  // solver's tolerance on the full programme's defects is 1e-7 of 100 K).
+  for (int c = 0; c < 4; ++c) {
+    EXPECT_LT(MaxAbsDifference(reduced.corners[c].disc_temp, full.corners[c].disc_temp), 1e-3) << c;
+    EXPECT_LT(MaxAbsDifference(reduced.corners[c].calliper_temp, full.corners[c].calliper_temp),
+              1e-3)
+        << c;
+  }
+  // The integrated brakes heat up over the lap (they are not left at their guess or start).
+  const std::vector<double>& rear = reduced.corners[CornerIndex(Corner::kRearLeft)].disc_temp;
+  EXPECT_GT(*std::max_element(rear.begin(), rear.end()), rear.front() + 20.0);
+  // The reduced solve's multipliers come back in the full layout, zero on the defects left out:
+  // the full programme's are zero there too (a state that feeds nothing back has no costate).
+  ASSERT_EQ(static_cast<int>(reduced.solve.lambda.size()), reduced.layout.rows());
+  ASSERT_EQ(full.solve.lambda.size(), reduced.solve.lambda.size());
+  const int defects = reduced.layout.nodes * reduced.layout.rows_per_node;
+  const int per_interval = reduced.layout.defects_per_interval;
+  double largest = 0.0;
+  for (int k = 0; k + 1 < reduced.layout.nodes; ++k) {
+    for (const int j : {3, 4}) {  // disc, calliper
+      const int row = defects + k * per_interval + 5 + 5 * CornerIndex(Corner::kRearLeft) + j;
+      EXPECT_EQ(reduced.solve.lambda[row], 0.0);
+      largest = std::max(largest, std::abs(full.solve.lambda[row]));
+    }
+  }
+  EXPECT_LT(largest, 1e-6);
+}
+
+INSTANTIATE_TEST_SUITE_P(FreeAndLimited, BrakesLeftOutTest, ::testing::Bool(),
+                         [](const auto& info) { return info.param ? "Limited" : "Free"; });
+
+}  // namespace
+}  // namespace hotlap::ocp
