@@ -16,6 +16,8 @@ CommandRunner RegisterReplayCommand(CLI::App& app);
 
 /// `hotlap tyre eval|fit`: tyre force models at a point or over a sweep, and fitted to rig data.
 CommandRunner RegisterTyreCommand(CLI::App& app);
+/// `tyre fit` under the `tyre` command (cmd_tyre_fit.cc); its runner runs the fit.
+CommandRunner RegisterTyreFitSubcommand(CLI::App* tyre);
 
 /// `hotlap track info`: length, closure, radii, banking and turns of a track (cmd_track.cc).
 CommandRunner RegisterTrackCommand(CLI::App& app);

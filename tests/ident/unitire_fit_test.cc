@@ -209,5 +209,32 @@ TEST(UniTireFitTest, RejectsUnusableInput) {
   EXPECT_THROW(FitUniTire(bad, options), InputError);
 }
 
+TEST(RequireFitAndPredictTempsTest, EveryTemperatureInTheDataAndNoneInBothRoles) {
+  std::vector<RigSample> samples(3);
+  samples[0].tread_temp = CelsiusToKelvin(20.0);
+  samples[1].tread_temp = CelsiusToKelvin(60.0);
+  samples[2].tread_temp = CelsiusToKelvin(100.4);
+  UniTireFitOptions o;
+  o.temp_tolerance = 1.0;
+  o.fit_temps = {CelsiusToKelvin(20.0), CelsiusToKelvin(100.0)};
+  EXPECT_NO_THROW(RequireFitAndPredictTemps(samples, o, {CelsiusToKelvin(60.0)}, "rig.csv"));
+  const auto message = [&](const std::vector<double>& predict) {
+    try {
+      RequireFitAndPredictTemps(samples, o, predict, "rig.csv");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  // A predict temperature with no sample within 1 K: named with the file.
+  EXPECT_PRED2(test::Contains, message({CelsiusToKelvin(40.0)}),
+               "rig.csv: no rig sample within 1 K of 40 degC");
+  // A predict temperature that is also a fit temperature.
+  EXPECT_PRED2(test::Contains, message({CelsiusToKelvin(20.5)}), "both a fit and a predict");
+  // A fit temperature with no sample.
+  o.fit_temps.push_back(CelsiusToKelvin(80.0));
+  EXPECT_PRED2(test::Contains, message({}), "of 80 degC");
+}
+
 }  // namespace
 }  // namespace hotlap::ident

@@ -12,6 +12,7 @@
 
 #include "hotlap/common/error.h"
 #include "hotlap/common/median.h"
+#include "hotlap/common/units.h"
 #include "hotlap/ident/multi_start_solve.h"
 #include "hotlap/ident/rig_fit_common.h"
 
@@ -505,6 +506,32 @@ UniTireFitResult FitUniTire(std::span<const RigSample> samples, const UniTireFit
   result.metrics =
       EvaluateUniTire(result.params, samples, options.fit_temps, options.temp_tolerance);
   return result;
+}
+
+void RequireFitAndPredictTemps(std::span<const RigSample> samples, const UniTireFitOptions& options,
+                               const std::vector<double>& predict_temps,
+                               const std::string& source) {
+  const double tol = options.temp_tolerance;
+  const auto present = [&](double temp) {
+    return std::any_of(samples.begin(), samples.end(),
+                       [&](const RigSample& s) { return std::abs(s.tread_temp - temp) <= tol; });
+  };
+  for (const auto* list : {&options.fit_temps, &predict_temps}) {
+    for (double t : *list) {
+      if (!present(t)) {
+        throw InputError(fmt::format("{}: no rig sample within {:g} K of {:g} degC", source, tol,
+                                     KelvinToCelsius(t)));
+      }
+    }
+  }
+  for (double p : predict_temps) {
+    for (double f : options.fit_temps) {
+      if (std::abs(p - f) <= tol) {
+        throw InputError(
+            fmt::format("{:g} degC is both a fit and a predict temperature", KelvinToCelsius(p)));
+      }
+    }
+  }
 }
 
 }  // namespace hotlap::ident

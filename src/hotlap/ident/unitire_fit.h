@@ -117,6 +117,12 @@ tyre::UniTireParams<double> CalcUniTireInitialGuess(std::span<const RigSample> s
 /// loads, non-finite values).
 UniTireFitResult FitUniTire(std::span<const RigSample> samples, const UniTireFitOptions& options);
 
+/// InputError, naming `source` (the data file), unless every fit temperature and every predict
+/// temperature (K) has a sample within options.temp_tolerance, and no predict temperature is also
+/// a fit temperature: the checks to run before FitUniTire when the temperatures come from a user.
+void RequireFitAndPredictTemps(std::span<const RigSample> samples, const UniTireFitOptions& options,
+                               const std::vector<double>& predict_temps, const std::string& source);
+
 /// Metrics of `params` on `samples`, one row per temperature group (groups are runs of sorted
 /// temperatures no more than `temp_tolerance` apart); `fitted` marks groups within
 /// `temp_tolerance` of one of `fit_temps`.

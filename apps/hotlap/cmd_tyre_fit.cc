@@ -1,0 +1,224 @@
+// `hotlap tyre fit`: a UniTire (with its temperature factors) or Magic Formula model fitted to
+// rig data (ident/unitire_fit.h, ident/mf_fit.h), written as a parameter file.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "hotlap/common/error.h"
+#include "hotlap/common/units.h"
+#include "hotlap/ident/mf_fit.h"
+#include "hotlap/ident/rig_data.h"
+#include "hotlap/ident/unitire_fit.h"
+#include "hotlap/tyre/magic_formula.h"
+#include "hotlap/tyre/tir_file.h"
+#include "hotlap/tyre/tyre_force_params_io.h"
+#include "hotlap/tyre/tyre_params_io.h"
+#include "output.h"
+
+namespace hotlap::app {
+
+namespace {
+
+struct FitArgs {
+  std::string model;
+  std::string data;
+  std::vector<double> fit_temps_C;
+  std::vector<double> predict_temps_C;
+  std::string out;
+  std::string json;
+  std::string base;
+  double temp_tolerance_K = 1.5;
+};
+
+nlohmann::json MetricsJson(const ident::UniTireTempMetrics& m) {
+  // Round to 1e-9 degC first so that 0 degC is written as 0, not -1.7e-13.
+  const double temp_C = std::round(KelvinToCelsius(m.temp) * 1e9) / 1e9;
+  nlohmann::json j = {{"temp_C", RoundSignificant(temp_C + 0.0, 6)},
+                      {"samples", m.samples},
+                      {"fy_rms_N", RoundSignificant(m.fy_rms_N)},
+                      {"fy_peak_N", RoundSignificant(m.fy_peak_N)},
+                      {"fy_rms_rel_peak", RoundSignificant(m.fy_rms_rel_peak)},
+                      {"mz_rms_Nm", RoundSignificant(m.mz_rms_Nm)}};
+  if (m.fx_rms_N) j["fx_rms_N"] = RoundSignificant(*m.fx_rms_N);
+  return j;
+}
+
+int RunFitUniTire(const FitArgs& a) {
+  const std::vector<ident::RigSample> samples = ident::ReadRigCsv(a.data);
+  ident::UniTireFitOptions options;
+  options.temp_tolerance = a.temp_tolerance_K;
+  for (double t : a.fit_temps_C) options.fit_temps.push_back(CelsiusToKelvin(t));
+  std::vector<double> predict_temps;
+  for (double t : a.predict_temps_C) predict_temps.push_back(CelsiusToKelvin(t));
+  ident::RequireFitAndPredictTemps(samples, options, predict_temps, a.data);
+
+  fmt::print("hotlap tyre fit: UniTire to {} ({} samples), fit on {} degC\n", a.data,
+             samples.size(), fmt::join(a.fit_temps_C, ", "));
+  std::fflush(stdout);
+  const ident::UniTireFitResult fit = ident::FitUniTire(samples, options);
+  fmt::print("{} after {} iterations; {} free parameters\n",
+             fit.converged ? "converged" : "NOT converged", fit.iterations,
+             fit.fitted_fields.size());
+
+  tyre::UniTireParamsFile file{std::filesystem::path(a.out).stem().string(), fit.params};
+  tyre::WriteUniTireParams(
+      a.out, file,
+      fmt::format(
+          "UniTire parameters fitted by hotlap {} tyre fit to {}\nfit temperatures: {} degC",
+          HOTLAP_VERSION, a.data, fmt::join(a.fit_temps_C, ", ")),
+      "", [&](std::string_view name) {
+        const std::string data = std::filesystem::path(a.data).filename().string();
+        const bool fitted = std::find(fit.fitted_fields.begin(), fit.fitted_fields.end(), name) !=
+                            fit.fitted_fields.end();
+        return fitted ? fmt::format("fitted to {}", data)
+                      : fmt::format("held (not fitted): initial guess from {}", data);
+      });
+
+  nlohmann::json fitted = nlohmann::json::array();
+  nlohmann::json predicted = nlohmann::json::array();
+  fmt::print("{:>8} {:>8} {:>8} {:>11} {:>11} {:>11} {:>11}\n", "temp C", "role", "samples",
+             "Fy rms N", "Fy peak N", "rms/peak", "Mz rms N m");
+  for (const ident::UniTireTempMetrics& m : fit.metrics) {
+    const double temp_C = std::round(KelvinToCelsius(m.temp) * 1e9) / 1e9 + 0.0;
+    const bool is_predict =
+        std::any_of(a.predict_temps_C.begin(), a.predict_temps_C.end(),
+                    [&](double t) { return std::abs(t - temp_C) <= a.temp_tolerance_K; });
+    const char* role = m.fitted ? "fit" : (is_predict ? "predict" : "other");
+    fmt::print("{:>8.1f} {:>8} {:>8} {:>11.2f} {:>11.1f} {:>10.2f}% {:>11.3f}\n", temp_C, role,
+               m.samples, m.fy_rms_N, m.fy_peak_N, 100.0 * m.fy_rms_rel_peak, m.mz_rms_Nm);
+    if (m.fitted) fitted.push_back(MetricsJson(m));
+    if (is_predict) predicted.push_back(MetricsJson(m));
+  }
+  fmt::print("wrote {}\n", a.out);
+  if (!a.json.empty()) {
+    nlohmann::json params;
+    for (size_t i = 0; i < fit.fitted_fields.size(); ++i) params.push_back(fit.fitted_fields[i]);
+    WriteJsonFile(a.json, {{"command", "tyre fit"},
+                           {"model", "unitire"},
+                           {"data", a.data},
+                           {"out", a.out},
+                           {"converged", fit.converged},
+                           {"iterations", fit.iterations},
+                           {"fitted_parameters", params},
+                           {"fit", fitted},
+                           {"predict", predicted}});
+    fmt::print("wrote {}\n", a.json);
+  }
+  return fit.converged ? 0 : 3;
+}
+
+int RunFitMagicFormula(const FitArgs& a) {
+  if (!a.fit_temps_C.empty() || !a.predict_temps_C.empty()) {
+    throw InputError(
+        "--fit-temps-C and --predict-temps-C are for --model unitire; the Magic Formula has no "
+        "temperature");
+  }
+  const std::vector<ident::RigSample> samples = ident::ReadRigCsv(a.data);
+  ident::MagicFormulaFitOptions options;
+  if (!a.base.empty()) options.base = tyre::LoadMagicFormula(a.base);
+  fmt::print("hotlap tyre fit: Magic Formula pure-slip coefficients to {} ({} samples){}\n", a.data,
+             samples.size(), a.base.empty() ? "" : ", starting from " + a.base);
+  std::fflush(stdout);
+  const ident::MagicFormulaFitResult fit = ident::FitMagicFormula(samples, options);
+  for (const std::string& w : fit.warnings) fmt::print("warning: {}\n", w);
+  fmt::print(
+      "{} after {} iterations; {} free coefficients ({} side-slip, {} longitudinal samples)\n",
+      fit.converged ? "converged" : "NOT converged", fit.iterations, fit.fitted_coefficients.size(),
+      fit.lateral_samples, fit.longitudinal_samples);
+
+  const auto& table = tyre::MagicFormulaParamTable();
+  const auto value_of = [&](const tyre::MagicFormulaParams<double>& p, const std::string& name) {
+    for (const tyre::MagicFormulaParamInfo& info : table) {
+      if (info.name == name) return p.*info.field;
+    }
+    return std::nan("");
+  };
+  nlohmann::json coefficients = nlohmann::json::object();
+  fmt::print("{:>8} {:>14} {:>14}\n", "coef", "start", "fitted");
+  for (const std::string& name : fit.fitted_coefficients) {
+    const double start = value_of(fit.initial_guess, name);
+    const double value = value_of(fit.params, name);
+    fmt::print("{:>8} {:>14.6g} {:>14.6g}\n", name, start, value);
+    coefficients[name] = RoundSignificant(value);
+  }
+  nlohmann::json metrics = nlohmann::json::array();
+  fmt::print("{:>8} {:>10} {:>8} {:>10} {:>10} {:>9}\n", "channel", "Fz N", "samples", "rms N",
+             "peak N", "rms/peak");
+  for (const ident::MagicFormulaFitMetrics& m : fit.metrics) {
+    fmt::print("{:>8} {:>10.0f} {:>8} {:>10.2f} {:>10.1f} {:>8.2f}%\n", m.channel, m.fz_N,
+               m.samples, m.rms_N, m.peak_N, 100.0 * m.rms_rel_peak);
+    metrics.push_back({{"channel", m.channel},
+                       {"fz_N", RoundSignificant(m.fz_N)},
+                       {"samples", m.samples},
+                       {"rms_N", RoundSignificant(m.rms_N)},
+                       {"peak_N", RoundSignificant(m.peak_N)},
+                       {"rms_rel_peak", RoundSignificant(m.rms_rel_peak)}});
+  }
+  tyre::WriteTirFile(
+      a.out, fit.params,
+      fmt::format("pure-slip coefficients fitted by hotlap {} tyre fit to {}\nfree: {}",
+                  HOTLAP_VERSION, std::filesystem::path(a.data).filename().string(),
+                  fmt::join(fit.fitted_coefficients, " ")));
+  fmt::print("wrote {}\n", a.out);
+  if (!a.json.empty()) {
+    WriteJsonFile(a.json, {{"command", "tyre fit"},
+                           {"model", "mf"},
+                           {"data", a.data},
+                           {"out", a.out},
+                           {"converged", fit.converged},
+                           {"iterations", fit.iterations},
+                           {"coefficients", coefficients},
+                           {"metrics", metrics},
+                           {"warnings", fit.warnings}});
+    fmt::print("wrote {}\n", a.json);
+  }
+  return fit.converged ? 0 : 3;
+}
+
+int RunFit(const FitArgs& a) {
+  CheckOutputFolder(a.out, "--out");
+  if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
+  if (a.model == "unitire") {
+    if (a.fit_temps_C.empty()) throw InputError("--fit-temps-C is required for --model unitire");
+    if (!a.base.empty()) throw InputError("--base is only used with --model mf");
+    return RunFitUniTire(a);
+  }
+  return RunFitMagicFormula(a);
+}
+
+}  // namespace
+
+CommandRunner RegisterTyreFitSubcommand(CLI::App* tyre) {
+  auto fit = std::make_shared<FitArgs>();
+  CLI::App* f = tyre->add_subcommand("fit", "Fit a tyre model to rig data (CSV)");
+  f->add_option("--model", fit->model, "unitire or mf")
+      ->required()
+      ->check(CLI::IsMember({"unitire", "mf"}));
+  f->add_option("--data", fit->data, "Rig CSV (docs/tyre-forces.md)")->required();
+  f->add_option("--fit-temps-C", fit->fit_temps_C, "Temperatures to fit on (unitire)")
+      ->delimiter(',');
+  f->add_option("--predict-temps-C", fit->predict_temps_C, "Held-out temperatures (unitire)")
+      ->delimiter(',');
+  f->add_option("--temp-tolerance-K", fit->temp_tolerance_K,
+                "Samples this close to a temperature belong to it")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  f->add_option("--out", fit->out, "Fitted parameter file (.yaml for unitire, .tir for mf)")
+      ->required();
+  f->add_option("--base", fit->base,
+                "mf: .tir to start from and to keep the coefficients the fit does not free "
+                "(default: generic coefficients sized to the data)");
+  f->add_option("--json", fit->json, "Write the summary as JSON (docs/json-output.md)");
+
+  return [fit] { return RunFit(*fit); };
+}
+
+}  // namespace hotlap::app
