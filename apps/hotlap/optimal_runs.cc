@@ -17,6 +17,7 @@
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
 #include "hotlap/ocp/disc_limit_comparison.h"
+#include "hotlap/ocp/mesh_check.h"
 #include "hotlap/ocp/optimal_lap.h"
 #include "hotlap/ocp/optimal_output.h"
 #include "hotlap/ocp/solver_memory.h"
@@ -194,21 +195,8 @@ int RunOptimal(const OptimalArgs& a) {
   }
   std::optional<double> mesh_delta;
   if (a.mesh_check) {
-    ocp::OptimalLapOptions o = LapOptions(a, 0.5 * a.step_m);
-    o.front_disc_limit = runs.front().front_disc_limit;
-    // From the solution itself, taken onto the finer mesh.
-    const ocp::LapSolution& first = runs.front().run.solution;
-    if (first.solve.ok()) {
-      // Point and multipliers (a warm start, as coarse to fine does).
-      o.start_point = ocp::StartPointOnMesh(first, track, o.step_m);
-      const ocp::LapMultipliers m = ocp::ResampleLapMultipliers(
-          first.solve, first.layout, first.layout.WithNodes(ocp::LapNodeCount(track, o.step_m)));
-      o.ipopt.warm_z_lower = m.z_lower;
-      o.ipopt.warm_z_upper = m.z_upper;
-      o.ipopt.warm_lambda = m.lambda;
-    }
-    const ocp::SolvedLap fine =
-        ocp::SolveLap(car, track, o, "half mesh", nullptr, PrintProgress, PrintLine);
+    const ocp::SolvedLap fine = ocp::SolveOnHalfMesh(car, track, LapOptions(a, a.step_m),
+                                                     runs.front(), PrintProgress, PrintLine);
     mesh_delta = fine.figures.lap_time_s - runs.front().figures.lap_time_s;
   }
   for (const ocp::SolvedLap& s : runs) {
