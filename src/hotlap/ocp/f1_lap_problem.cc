@@ -480,16 +480,9 @@ F1LapSolution SolveF1Lap(const F1CarParams& car, const track::Track& track,
   out.solve = SolveWithIpopt(b.nlp, ipopt);
   const std::vector<double>& x = out.solve.x;
   if (x.empty()) return out;
-  double time = 0.0;
+  const double time = AppendRoadFrameChannels(b.nodes, x, b.ds, out);
   for (int k = 0; k < b.count; ++k) {
     const Node& nd = b.nodes[k];
-    if (k > 0) time += 0.5 * b.ds * (x[b.nodes[k - 1].w] + x[nd.w]);
-    out.distance.push_back(k * b.ds);
-    out.time.push_back(time);
-    out.u.push_back(x[nd.u]);
-    out.v.push_back(x[nd.v]);
-    out.r.push_back(x[nd.r]);
-    out.n.push_back(x[nd.n]);
     out.alpha.push_back(x[nd.alpha]);
     out.steer.push_back(x[nd.steer]);
     out.throttle.push_back(x[nd.throttle]);

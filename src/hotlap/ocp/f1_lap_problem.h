@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "hotlap/ocp/ipopt_solve.h"
+#include "hotlap/ocp/road_frame_channels.h"
 #include "hotlap/track/track.h"
 #include "hotlap/vehicle/f1_car.h"
 
@@ -34,10 +35,10 @@ struct F1LapOptions {
 };
 
 /// The solution at the N mesh nodes (s = k L / N).
-struct F1LapSolution {
+/// The road-frame channels (distance, time, u, v, r, n) come from RoadFrameChannels.
+struct F1LapSolution : RoadFrameChannels {
   SolveResult solve;
-  std::vector<double> distance, time;  ///< m, s
-  std::vector<double> u, v, r, n, alpha, steer, throttle;
+  std::vector<double> alpha, steer, throttle;
   std::array<std::vector<double>, 4> kappa, lambda, fz, fx, fy;  ///< fl fr rl rr, wheel frame
   double lap_time = 0.0;                                         ///< s
   double guess_lap_time = 0.0;  ///< the starting point's (quasi-steady speed profile), s

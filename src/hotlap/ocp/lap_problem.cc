@@ -700,16 +700,9 @@ LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& tra
   if (out.solve.x.empty()) return out;
   b.IntegrateBrakesLeftOut(out.solve.x);
   const std::vector<double>& x = out.solve.x;
-  double time = 0.0;
+  const double time = AppendRoadFrameChannels(b.nodes, x, b.ds, out);
   for (int k = 0; k <= b.intervals; ++k) {
     const NodeVars& nv = b.nodes[k];
-    if (k > 0) time += 0.5 * b.ds * (x[b.nodes[k - 1].w] + x[nv.w]);
-    out.distance.push_back(k * b.ds);
-    out.time.push_back(time);
-    out.u.push_back(x[nv.u]);
-    out.v.push_back(x[nv.v]);
-    out.r.push_back(x[nv.r]);
-    out.n.push_back(x[nv.n]);
     out.xi.push_back(x[nv.xi]);
     out.steer.push_back(x[nv.steer]);
     out.pedal.push_back(x[nv.pedal]);

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "hotlap/ocp/ipopt_solve.h"
+#include "hotlap/ocp/road_frame_channels.h"
 #include "hotlap/sim/qss_lap.h"
 #include "hotlap/track/track.h"
 #include "hotlap/tyre/tyre_thermal.h"
@@ -124,11 +125,10 @@ struct LapLayout {
 };
 
 /// The optimal lap at the mesh nodes (N + 1: the last closes the lap).
-struct LapSolution {
+/// The road-frame channels (distance, time, u, v, r, n) come from RoadFrameChannels.
+struct LapSolution : RoadFrameChannels {
   SolveResult solve;
-  std::vector<double> distance;  ///< m
-  std::vector<double> time;      ///< s (trapezoid of w)
-  std::vector<double> u, v, r, n, xi;
+  std::vector<double> xi;  ///< heading error, rad
   std::vector<double> steer, pedal, drive_power, brake_force;
   double max_brake_force = 0.0;  ///< N, the pedal's brake force at p = -1
   std::array<CornerTrace, 4> corners;
