@@ -33,13 +33,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-ocp::ThermalStart ParseStart(const std::string& s) {
-  if (s == "car") return ocp::ThermalStart::kCar;
-  if (s == "periodic") return ocp::ThermalStart::kPeriodic;
-  if (s == "warm") return ocp::ThermalStart::kWarm;
-  return ocp::ThermalStart::kRacing;
-}
-
 // The command's options as the library's.
 ocp::OptimalLapOptions LapOptions(const OptimalArgs& a, double step_m) {
   ocp::OptimalLapOptions o;
@@ -48,12 +41,13 @@ ocp::OptimalLapOptions LapOptions(const OptimalArgs& a, double step_m) {
   o.steer_smoothing_weight = a.steer_smoothing;
   o.pedal_smoothing_weight = a.pedal_smoothing;
   o.convex_element_hessians = a.hessian == "convex-elements";
-  o.thermal_start = ParseStart(a.thermal_start);
+  o.thermal_start = ocp::ParseThermalStart(a.thermal_start);
   o.ambient_temp = CelsiusToKelvin(a.ambient_C);
   o.track_temp = CelsiusToKelvin(a.track_C);
   o.ipopt.max_iterations = a.max_iterations;
   o.ipopt.extra = IpoptOptionPairs(a);
   o.ipopt.print_level = a.ipopt_output ? 5 : 0;
+  o.second_process = !a.single_process;
   return o;
 }
 
@@ -123,6 +117,9 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
       sub->add_flag("--mesh-check", a.mesh_check,
                     "Solve again on a mesh of half the spacing and report the lap time's change"));
   sub->add_flag("--ipopt-output", a.ipopt_output, "Print Ipopt's own iteration log");
+  a.stock_car_only.push_back(
+      sub->add_flag("--single-process", a.single_process,
+                    "Solve the limited lap after the free one, not beside it in a second process"));
   sub->add_option("--ipopt-option", a.ipopt_options,
                   "An Ipopt option as NAME=VALUE (repeatable), e.g. mumps_pivot_order=5")
       ->check([](const std::string& s) {
@@ -179,10 +176,12 @@ int RunOptimal(const OptimalArgs& a) {
   fmt::print("hotlap optimal lap: car '{}' on {} ({:.1f} m)\n", car.name, track.name(),
              track.length_m());
   std::vector<ocp::SolvedLap> runs;
+  std::optional<bool> second_process;
   if (a.compare_disc_limit_C) {
     ocp::DiscLimitComparison c =
         ocp::CompareDiscLimit(car, track, LapOptions(a, a.step_m),
                               CelsiusToKelvin(*a.compare_disc_limit_C), PrintProgress, PrintLine);
+    second_process = c.limited_in_second_process;
     runs.push_back(std::move(c.free));
     runs.push_back(std::move(c.limited));
   } else {
@@ -281,6 +280,7 @@ int RunOptimal(const OptimalArgs& a) {
                             "max_front_disc_temp_C", "top_speed_mps"}) {
         j[k] = j["unconstrained"][k];
       }
+      j["limited_in_second_process"] = second_process.value_or(false);
     } else {
       j = RunJson(runs[0], a.thermal_start);
       j["command"] = "optimise";
@@ -288,6 +288,7 @@ int RunOptimal(const OptimalArgs& a) {
     j["track"] = track.name();
     j["car"] = car.name;
     j["mesh_step_m"] = a.step_m;
+    j["wall_time_s"] = RoundSignificant(elapsed);
     if (mesh_delta) j["mesh_check_delta_s"] = RoundSignificant(*mesh_delta);
     WriteJsonFile(a.json, j);
     fmt::print("wrote {}\n", a.json);

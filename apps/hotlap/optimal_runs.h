@@ -29,6 +29,7 @@ struct OptimalArgs {
   int max_iterations = 1000;
   bool mesh_check = false;
   bool ipopt_output = false;
+  bool single_process = false;
   std::vector<std::string> ipopt_options;  ///< NAME=VALUE, passed to Ipopt as they are
   int mesh_points = 0;  ///< limebeer-2014-f1 cars only: mesh nodes (0: 500; docs/f1-peer.md)
   /// Options given on the command line that only one of the two models uses (filled by CLI11

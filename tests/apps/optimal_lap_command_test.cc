@@ -72,6 +72,10 @@ TEST(OptimalLapCommandTest, DarlingtonDiscLimitComparisonMeetsTheAcceptance) {
     EXPECT_LT((*run)["brake_energy_under_drive_J"].get<double>(), 0.005 * work);
   }
   EXPECT_NEAR(j["lap_time_s"].get<double>(), t_free, 1e-9);
+  // The limited lap solved in a second process beside the free one (coarse to fine, the default);
+  // the whole command's wall time is reported.
+  EXPECT_TRUE(j["limited_in_second_process"].get<bool>());
+  EXPECT_GT(j["wall_time_s"].get<double>(), free["solve_time_s"].get<double>());
 
   // The limit binds: the free lap takes the front-left disc above 500 degC (without braking
   // against the engine: the check below).

@@ -108,5 +108,32 @@ TEST(DiscLimitComparisonTest, LimitBelowTheStartingDiscIsBadInput) {
   EXPECT_TRUE(lines.empty());
 }
 
+// Coarse to fine, the limited lap is solved in a child process beside the free one: the same
+// laps as solving it afterwards in this process, to the last bit.
+TEST(DiscLimitComparisonTest, SecondProcessGivesTheSameLaps) {
+  const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
+  const track::Track track = track::LoadTrack("darlington");
+  OptimalLapOptions o = Coarse();
+  o.step_m = 30.0;
+  o.coarse_step_m = 60.0;
+  std::vector<std::string> lines;
+  const auto log = [&](const std::string& line) { lines.push_back(line); };
+  const DiscLimitComparison two = CompareDiscLimit(car, track, o, CelsiusToKelvin(480.0), {}, log);
+  EXPECT_TRUE(test::Contains(lines.at(0), "solving in a second process"));
+  EXPECT_TRUE(two.limited_in_second_process);
+  o.second_process = false;
+  const DiscLimitComparison one = CompareDiscLimit(car, track, o, CelsiusToKelvin(480.0));
+  EXPECT_FALSE(one.limited_in_second_process);
+  ASSERT_TRUE(two.converged() && one.converged());
+  EXPECT_EQ(two.limited.run.solution.lap_time, one.limited.run.solution.lap_time);
+  EXPECT_EQ(two.limited.run.solution.solve.iterations, one.limited.run.solution.solve.iterations);
+  EXPECT_EQ(two.limited.run.coarse.iterations, one.limited.run.coarse.iterations);
+  EXPECT_GT(two.limited.run.coarse.iterations, 0);
+  EXPECT_EQ(two.limited.run.solution.corners[0].disc_temp,
+            one.limited.run.solution.corners[0].disc_temp);
+  EXPECT_EQ(two.free.run.solution.lap_time, one.free.run.solution.lap_time);
+  EXPECT_EQ(two.delta_s(), one.delta_s());
+}
+
 }  // namespace
 }  // namespace hotlap::ocp

@@ -1,10 +1,13 @@
 #include "hotlap/ocp/disc_limit_comparison.h"
 
+#include <optional>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "hotlap/common/units.h"
+#include "hotlap/ocp/child_solve.h"
 
 namespace hotlap::ocp {
 
@@ -23,7 +26,7 @@ SolvedLap SolveLap(const vehicle::Car& car, const track::Track& track, OptimalLa
       return progress(label, it, obj, pr, du);
     };
   }
-  if (log) {
+  if (log && !options.presolved) {
     log(fmt::format(
         "{}: solving ({:.1f} m mesh{}{})...", label, options.step_m,
         options.front_disc_limit
@@ -73,16 +76,36 @@ DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track
     RequireFrontDiscsWithinLimit(warm_up.start, front_disc_limit);
   }
 
-  DiscLimitComparison c;
-  c.free = SolveLap(car, track, free_options, "no limit", nullptr, progress, log, &warm_up);
-  const SolveResult& free = c.free.run.solution.solve;
   // The limited lap: coarse to fine like the free one where that is on, else warm-started from
   // the free lap. Where the limit changes the lap much (the Gen-7-like car's front-left disc
   // from 901 to 500 degC) the free lap is a poor start: 241 iterations (206 s) on the 3 m mesh
-  // from it against 66 after 91 on the 15 m mesh (46 s in all), the same lap.
+  // from it against 66 after 91 on the 15 m mesh (46 s in all), the same lap. Coarse to fine,
+  // the two solves are independent: the limited one runs in a child process beside the free one.
   const bool coarse_to_fine = options.coarse_step_m > options.step_m;
+  std::optional<ChildSolve> child;
+  if (coarse_to_fine && options.second_process) {
+    if (log) log(fmt::format("{}: solving in a second process", limited_label));
+    child.emplace([&] {
+      const SolvedLap l =
+          SolveLap(car, track, limited_options, limited_label, nullptr, progress, {}, &warm_up);
+      return std::vector<SolveResult>{l.run.coarse, l.run.solution.solve};
+    });
+  }
+  DiscLimitComparison c;
+  c.free = SolveLap(car, track, free_options, "no limit", nullptr, progress, log, &warm_up);
+  const SolveResult& free = c.free.run.solution.solve;
+  if (child) {
+    std::optional<std::vector<SolveResult>> r = child->Join();
+    if (r && r->size() == 2) {
+      limited_options.presolved = PresolvedLap{std::move((*r)[0]), std::move((*r)[1])};
+      c.limited_in_second_process = true;
+    } else if (log) {
+      log(fmt::format("{}: the second process gave no answer; solving here", limited_label));
+    }
+  }
   c.limited = SolveLap(car, track, limited_options, limited_label,
                        free.ok() && !coarse_to_fine ? &free : nullptr, progress, log, &warm_up);
+  limited_options.presolved.reset();
   if (coarse_to_fine && free.ok() && !c.limited.run.solution.solve.ok()) {
     // The continuation from the free lap as the fallback: slower where the limit changes the lap
     // much, but it starts from a lap that differs only where the limit acts (a brake balance of

@@ -57,6 +57,9 @@ struct DiscLimitComparison {
   /// The limited lap came out faster than the free one, so the free lap was solved again from it
   /// (a local optimum; the better free lap is kept, its iterations and time are both solves').
   bool free_solved_again = false;
+  /// The limited lap was solved in a child process beside the free one
+  /// (OptimalLapOptions::second_process); its solve seconds are the child's.
+  bool limited_in_second_process = false;
   /// What the limit costs: the limited lap's time minus the free lap's, s.
   double delta_s() const { return limited.figures.lap_time_s - free.figures.lap_time_s; }
   bool converged() const { return free.run.solution.solve.ok() && limited.run.solution.solve.ok(); }

@@ -653,7 +653,7 @@ LapMultipliers ResampleLapMultipliers(const SolveResult& solve, const LapLayout&
 
 LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& track,
                                 const LapProblemOptions& options, const sim::QssLap& guess,
-                                const IpoptOptions& ipopt) {
+                                const IpoptOptions& ipopt, const SolveResult* solved) {
   const VehicleParams& p = vehicle::RequireVehicle(car, "the optimal lap");
   if (!(options.step_m > 0.0)) throw InputError("optimal lap: the mesh step must be > 0 m");
   if (options.front_disc_limit && !options.periodic_thermal) {
@@ -689,16 +689,26 @@ LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& tra
   out.constraints = b.nlp.constraints();
   // Multipliers come and go in the layout's rows (every state's defects; zero for the brakes
   // left out, whose costates are zero: they feed nothing back).
-  IpoptOptions programme_ipopt = ipopt;
-  if (programme_ipopt.warm_lambda.size() == static_cast<size_t>(b.layout.rows())) {
-    programme_ipopt.warm_lambda = b.ToProgrammeRows(ipopt.warm_lambda);
+  if (solved != nullptr) {
+    // Solved elsewhere, already in the layout (x complete, multipliers in the layout's rows).
+    if (!solved->x.empty() && static_cast<int>(solved->x.size()) != b.nlp.variables()) {
+      throw InputError(fmt::format("optimal lap: a solution of {} values for {} variables",
+                                   solved->x.size(), b.nlp.variables()));
+    }
+    out.solve = *solved;
+    if (out.solve.x.empty()) return out;
+  } else {
+    IpoptOptions programme_ipopt = ipopt;
+    if (programme_ipopt.warm_lambda.size() == static_cast<size_t>(b.layout.rows())) {
+      programme_ipopt.warm_lambda = b.ToProgrammeRows(ipopt.warm_lambda);
+    }
+    out.solve = SolveWithIpopt(b.nlp, programme_ipopt);
+    if (out.solve.lambda.size() == static_cast<size_t>(b.nlp.constraints())) {
+      out.solve.lambda = b.ToLayoutRows(out.solve.lambda);
+    }
+    if (out.solve.x.empty()) return out;
+    b.IntegrateBrakesLeftOut(out.solve.x);
   }
-  out.solve = SolveWithIpopt(b.nlp, programme_ipopt);
-  if (out.solve.lambda.size() == static_cast<size_t>(b.nlp.constraints())) {
-    out.solve.lambda = b.ToLayoutRows(out.solve.lambda);
-  }
-  if (out.solve.x.empty()) return out;
-  b.IntegrateBrakesLeftOut(out.solve.x);
   const std::vector<double>& x = out.solve.x;
   const double time = AppendRoadFrameChannels(b.nodes, x, b.ds, out);
   for (int k = 0; k <= b.intervals; ++k) {

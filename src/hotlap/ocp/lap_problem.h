@@ -176,8 +176,11 @@ LapMultipliers ResampleLapMultipliers(const SolveResult& solve, const LapLayout&
 /// Builds and solves the lap. `guess` (a QSS lap of the same car and track, e.g. from
 /// sim::RunQssLap) gives the starting point. InputError if the car has no vehicle sections;
 /// failures of the solve are reported in the result's `solve` (never thrown).
+/// `solved`, if not null, is this problem's solve done already (by another process: ocp/
+/// child_solve.h): it is taken as the result instead of calling Ipopt (InputError if its x is not
+/// this problem's size).
 LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& track,
                                 const LapProblemOptions& options, const sim::QssLap& guess,
-                                const IpoptOptions& ipopt);
+                                const IpoptOptions& ipopt, const SolveResult* solved = nullptr);
 
 }  // namespace hotlap::ocp

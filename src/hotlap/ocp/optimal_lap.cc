@@ -39,6 +39,14 @@ sim::QssOptions WarmUpQss(const vehicle::Car& car, const track::Track& track,
 
 }  // namespace
 
+ThermalStart ParseThermalStart(const std::string& name) {
+  if (name == "racing") return ThermalStart::kRacing;
+  if (name == "warm") return ThermalStart::kWarm;
+  if (name == "car") return ThermalStart::kCar;
+  if (name == "periodic") return ThermalStart::kPeriodic;
+  throw InputError(fmt::format("thermal start '{}': expected racing, warm, car or periodic", name));
+}
+
 LapWarmUp RunLapWarmUp(const vehicle::Car& car, const track::Track& track,
                        const OptimalLapOptions& options) {
   vehicle::RequireVehicle(car, "the optimal lap");
@@ -127,7 +135,9 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
     // the fine mesh as the fine solve's start.
     LapProblemOptions coarse = lap;
     coarse.step_m = options.coarse_step_m;
-    const LapSolution c = SolveMinimumTimeLap(car, track, coarse, w.guess, options.ipopt);
+    const LapSolution c =
+        SolveMinimumTimeLap(car, track, coarse, w.guess, options.ipopt,
+                            options.presolved ? &options.presolved->coarse : nullptr);
     run.coarse = c.solve;
     run.coarse_lap_time = c.lap_time;
     if (c.solve.ok()) {
@@ -146,7 +156,8 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
   // (1e-4 with the start kept 1e-6 off its bounds, IpoptOptions::primal_start_mu) helped the
   // uncalibrated car's free lap (36 iterations against 167) but stalled the calibrated car's
   // limited lap (900 and more against 66; docs/optimal-control.md, "Speed").
-  run.solution = SolveMinimumTimeLap(car, track, lap, w.guess, fine_ipopt);
+  run.solution = SolveMinimumTimeLap(car, track, lap, w.guess, fine_ipopt,
+                                     options.presolved ? &options.presolved->fine : nullptr);
 
   // The QSS lap on the optimal line, one lap from the optimal lap's own thermal start.
   const LapSolution& s = run.solution;

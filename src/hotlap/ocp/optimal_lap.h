@@ -28,12 +28,22 @@ enum class ThermalStart {
   kPeriodic,  ///< temperatures end the lap where they start (wear still starts at zero)
 };
 
+/// The start by its name in files and on command lines: "racing", "warm", "car" or "periodic".
+/// InputError naming the choices otherwise.
+ThermalStart ParseThermalStart(const std::string& name);
+
 /// Ipopt's settings for the lap: its defaults but for alpha_for_y = "min-dual-infeas".
 inline IpoptOptions LapIpoptOptions() {
   IpoptOptions o;
   o.alpha_for_y = "min-dual-infeas";
   return o;
 }
+
+/// A lap's solves done already (e.g. in a child process, ocp/child_solve.h): the coarse solve
+/// (empty if none) and the fine one.
+struct PresolvedLap {
+  SolveResult coarse, fine;
+};
 
 struct OptimalLapOptions {
   double step_m = 3.0;                     ///< mesh spacing along the centre line
@@ -54,6 +64,13 @@ struct OptimalLapOptions {
   /// Coarse to fine with the coarse solve's multipliers too (ResampleLapMultipliers): the fine
   /// solve is then an Ipopt warm start from mu = ipopt.warm_mu (docs/optimal-control.md, "Speed").
   bool coarse_multipliers = true;
+  /// CompareDiscLimit with coarse to fine: solve the limited lap in a child process beside the
+  /// free one (two cores; Ipopt with MUMPS is not thread-safe, so not a thread). Off, or if the
+  /// child cannot start or fails, the limited lap is solved after the free one.
+  bool second_process = true;
+  /// RunOptimalLap takes these results instead of calling Ipopt (same problem, same options), and
+  /// computes everything else as usual.
+  std::optional<PresolvedLap> presolved;
   /// The pedal's smooth positive part (LapProblemOptions::pedal_smoothing).
   double pedal_smoothing = 5e-3;
   /// Weights of the control-smoothness penalty for the steer and the pedal
