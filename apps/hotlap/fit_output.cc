@@ -2,28 +2,24 @@
 
 #include <cmath>
 #include <cstdio>
-#include <limits>
 
 #include <fmt/format.h>
 
 #include "hotlap/common/csv.h"
 #include "hotlap/common/error.h"
 #include "hotlap/report/html_report.h"
-#include "output.h"
 
 namespace hotlap::app {
 
 namespace {
 
+using ident::CornerFitOutcome;
+using ident::CornerWarnings;
 using ident::FitParameter;
-using ident::FitResult;
+using ident::ModelParameters;
 using ident::ParameterEstimate;
 using ident::ParameterRole;
-
-nlohmann::json Num(double v) {
-  if (!std::isfinite(v)) return nullptr;
-  return RoundSignificant(v);
-}
+using ident::ReportedFit;
 
 std::string Short(double v) {
   if (!std::isfinite(v)) return v > 0 ? "inf" : (v < 0 ? "-inf" : "n/a");
@@ -48,145 +44,13 @@ std::string Verdict(const ParameterEstimate& e) {
   return e.well_determined ? "yes" : "no";
 }
 
-nlohmann::json ParameterJson(const FitParameter& p, const ParameterEstimate& e,
-                             const std::map<std::string, double>& truth) {
-  nlohmann::json j = {
-      {"value", Num(e.value + p.display_offset)},
-      {"std_error", Num(e.std_error)},
-      {"ci95", {Num(e.ci_low + p.display_offset), Num(e.ci_high + p.display_offset)}},
-      {"well_determined", e.well_determined},
-      {"undetermined", e.undetermined},
-      {"at_bound", e.at_bound},
-      {"start", Num(e.start + p.display_offset)},
-      {"unit", p.unit},
-  };
-  // Only model parameters are in the joint family (nuisance ones get null).
-  j["ci95_joint"] = p.role == ParameterRole::kModel
-                        ? nlohmann::json{Num(e.joint_low + p.display_offset),
-                                         Num(e.joint_high + p.display_offset)}
-                        : nlohmann::json(nullptr);
-  if (auto it = truth.find(p.key); it != truth.end()) {
-    j["truth"] = Num(it->second);
-    const double t = it->second - p.display_offset;
-    j["in_ci95"] = t >= e.ci_low && t <= e.ci_high;
-    j["in_ci95_joint"] = t >= e.joint_low && t <= e.joint_high;
-  }
-  return j;
-}
-
-nlohmann::json FitJson(const ReportedFit& r) {
-  const FitResult& f = r.fit;
-  nlohmann::json nuisance = nlohmann::json::object(), names = nlohmann::json::array();
-  for (size_t i = 0; i < f.parameters.size(); ++i) {
-    names.push_back(f.parameters[i].key);
-    if (f.parameters[i].role == ParameterRole::kNuisance) {
-      nuisance[f.parameters[i].key] = ParameterJson(f.parameters[i], f.estimates[i], {});
-    }
-  }
-  nlohmann::json matrix = nlohmann::json::array();
-  for (Eigen::Index i = 0; i < f.correlation.rows(); ++i) {
-    nlohmann::json row = nlohmann::json::array();
-    for (Eigen::Index k = 0; k < f.correlation.cols(); ++k) {
-      row.push_back(std::isfinite(f.correlation(i, k))
-                        ? nlohmann::json(std::round(f.correlation(i, k) * 1e4) / 1e4)
-                        : nlohmann::json(nullptr));
-    }
-    matrix.push_back(row);
-  }
-  nlohmann::json channels = nlohmann::json::object();
-  for (const ident::ChannelStats& c : f.channels) {
-    channels[c.name] = {{"samples", c.samples},
-                        {"rms", Num(c.rms)},
-                        {"noise", Num(c.sigma)},
-                        {"outliers", c.outliers},
-                        {"autocorrelation", Num(c.autocorrelation)},
-                        {"apparent_lag_s", Num(c.apparent_lag)}};
-  }
-  nlohmann::json held = nlohmann::json::object();
-  for (const auto& [k, v] : r.held) held[k] = Num(v);
-  return {{"nuisance", nuisance},
-          {"held", held},
-          {"correlation", {{"parameters", names}, {"matrix", matrix}}},
-          {"channels", channels},
-          {"converged", f.converged},
-          {"iterations", f.iterations},
-          {"starts_scored", f.starts_scored},
-          {"starts_solved", f.starts_solved},
-          {"warnings", f.AllWarnings()}};
-}
-
-// Every warning of a corner, data first.
-std::vector<std::string> CornerWarnings(const CornerOutcome& c) {
-  std::vector<std::string> all = c.warnings;
-  for (const ReportedFit& r : c.fits) {
-    for (const std::string& w : r.fit.AllWarnings()) all.push_back(r.title + ": " + w);
-  }
-  return all;
-}
-
-// The model parameters of a corner, in order over its fits.
-std::vector<std::pair<const FitParameter*, const ParameterEstimate*>> ModelParameters(
-    const CornerOutcome& c) {
-  std::vector<std::pair<const FitParameter*, const ParameterEstimate*>> out;
-  for (const ReportedFit& r : c.fits) {
-    for (size_t i = 0; i < r.fit.parameters.size(); ++i) {
-      if (r.fit.parameters[i].role == ParameterRole::kModel) {
-        out.emplace_back(&r.fit.parameters[i], &r.fit.estimates[i]);
-      }
-    }
-  }
-  return out;
-}
-
 }  // namespace
-
-nlohmann::json FitRunJson(const FitRun& run) {
-  nlohmann::json corners = nlohmann::json::object();
-  nlohmann::json all_warnings = nlohmann::json::array();
-  for (const CornerOutcome& c : run.corners) {
-    const std::string name(CornerName(c.corner));
-    nlohmann::json j = {{"fitted", c.fitted}};
-    for (const auto& [key, value] : c.rms) j[key] = Num(value);
-    nlohmann::json params = nlohmann::json::object(), fits = nlohmann::json::object();
-    for (const ReportedFit& r : c.fits) {
-      for (size_t i = 0; i < r.fit.parameters.size(); ++i) {
-        if (r.fit.parameters[i].role == ParameterRole::kModel) {
-          params[r.fit.parameters[i].key] =
-              ParameterJson(r.fit.parameters[i], r.fit.estimates[i], c.truth);
-        }
-      }
-      for (const auto& [k, v] : r.held) {
-        params[k] = {{"value", Num(v)},          {"std_error", nullptr},
-                     {"ci95", nullptr},          {"ci95_joint", nullptr},
-                     {"well_determined", false}, {"undetermined", false},
-                     {"at_bound", false},        {"held", true}};
-      }
-      fits[r.title] = FitJson(r);
-    }
-    j["parameters"] = params;
-    j["fits"] = fits;
-    j["warnings"] = CornerWarnings(c);
-    for (const std::string& w : CornerWarnings(c)) all_warnings.push_back(name + ": " + w);
-    corners[name] = j;
-  }
-  return {{"command", run.command},
-          {"telemetry", run.telemetry},
-          {"car", run.car_name},
-          {"out", run.out},
-          {"samples", run.time.size()},
-          {"duration_s", Num(run.time.empty() ? 0.0 : run.time.back() - run.time.front())},
-          {"options", run.options},
-          {"joint_family_size", run.joint_family_size},
-          {"elapsed_s", Num(run.elapsed_s)},
-          {"warnings", all_warnings},
-          {"corners", corners}};
-}
 
 void PrintFitRun(const FitRun& run) {
   fmt::print("hotlap {}: {} ({} samples, {:.2f} s of log) with car '{}'\n", run.command,
              run.telemetry, run.time.size(),
              run.time.empty() ? 0.0 : run.time.back() - run.time.front(), run.car_name);
-  for (const CornerOutcome& c : run.corners) {
+  for (const CornerFitOutcome& c : run.result.corners) {
     fmt::print("{}:", CornerName(c.corner));
     for (const auto& [key, value] : c.rms) fmt::print("  {} {:.4g}", key, value);
     fmt::print("\n");
@@ -226,7 +90,7 @@ std::vector<std::filesystem::path> WriteFitReport(const FitRun& run,
   // The paper's tables: per corner the values and the RMS errors.
   page.AddHeading("Fitted parameters");
   report::Table summary{.title = "Per corner: fitted values and RMS errors (as 000 Tables 4, 6)"};
-  for (const CornerOutcome& c : run.corners) {
+  for (const CornerFitOutcome& c : run.result.corners) {
     const auto params = ModelParameters(c);
     if (summary.header.empty() && !params.empty()) {
       summary.header.push_back("corner");
@@ -250,10 +114,10 @@ std::vector<std::filesystem::path> WriteFitReport(const FitRun& run,
       "is not at a bound and the data do not leave it undetermined. Each 95% interval alone misses "
       "its truth one time in twenty; the joint intervals hold every parameter of this report at "
       "once with 95% probability (Bonferroni: each is a 1 - 0.05/m interval, m = " +
-      std::to_string(run.joint_family_size) +
+      std::to_string(run.result.joint_family_size) +
       " parameters). Both are widened where the cost rises more slowly than its quadratic "
       "(docs/fitting.md).");
-  for (const CornerOutcome& c : run.corners) {
+  for (const CornerFitOutcome& c : run.result.corners) {
     for (const ReportedFit& r : c.fits) {
       report::Table t{.title = fmt::format("{}: {}", CornerName(c.corner), r.title),
                       .header = {"parameter", "unit", "value", "std error", "95% interval",
@@ -306,7 +170,7 @@ std::vector<std::filesystem::path> WriteFitReport(const FitRun& run,
 
   page.AddHeading("Warnings");
   bool any = false;
-  for (const CornerOutcome& c : run.corners) {
+  for (const CornerFitOutcome& c : run.result.corners) {
     for (const std::string& w : CornerWarnings(c)) {
       page.AddText(std::string(CornerName(c.corner)) + ": " + w);
       any = true;
@@ -317,12 +181,12 @@ std::vector<std::filesystem::path> WriteFitReport(const FitRun& run,
   // Measured against modelled, one chart per channel and corner on a shared time axis.
   std::vector<std::string> names = {"time_s"};
   std::vector<std::vector<double>> columns = {run.time};
-  if (!run.corners.empty()) {
+  if (!run.result.corners.empty()) {
     page.AddHeading("Measured and modelled");
-    for (size_t q = 0; q < run.corners.front().channels.size(); ++q) {
-      for (const CornerOutcome& c : run.corners) {
+    for (size_t q = 0; q < run.result.corners.front().channels.size(); ++q) {
+      for (const CornerFitOutcome& c : run.result.corners) {
         if (q >= c.channels.size()) continue;
-        const ChannelPair& ch = c.channels[q];
+        const ident::ChannelPair& ch = c.channels[q];
         report::LineChart chart{.title = fmt::format("{} {}", CornerName(c.corner), ch.title),
                                 .x_axis = {.label = "time", .unit = "s"},
                                 .y_axis = {.label = ch.quantity, .unit = ch.unit},

@@ -71,5 +71,40 @@ TEST(FittedCarTest, Formats) {
   EXPECT_TRUE(std::regex_match(TodayIsoDate(), std::regex("20[0-9]{2}-[01][0-9]-[0-3][0-9]")));
 }
 
+TEST(FittedCarTest, SourceCommentsSayHowWellTheValueIsKnown) {
+  ParameterEstimate e{.value = 0.5, .std_error = 0.0012345, .ci_low = 0.4976, .ci_high = 0.5024};
+  e.well_determined = true;
+  EXPECT_EQ(SourceComment("2030-01-02", "lap.csv", e),
+            "fitted 2030-01-02 to lap.csv: std error 0.00123, 95% [0.4976, 0.5024]");
+  e.well_determined = false;
+  EXPECT_EQ(SourceComment("2030-01-02", "lap.csv", e),
+            "fitted 2030-01-02 to lap.csv: std error 0.00123, 95% [0.4976, 0.5024]; not well "
+            "determined");
+  e.at_bound = true;
+  EXPECT_EQ(SourceComment("d", "l", e),
+            "fitted d to l: std error 0.00123, 95% [0.4976, 0.5024]; "
+            "at its bound");
+  e.undetermined = true;
+  EXPECT_EQ(SourceComment("d", "l", e),
+            "fitted d to l: undetermined by the data (kept where the fit left it)");
+}
+
+TEST(FittedCarTest, FileEditsOfAFitAreItsModelParametersPrefixed) {
+  FitResult fit;
+  fit.parameters = {{.key = "p1"},
+                    {.key = "initial_tread_temp_C", .role = ParameterRole::kNuisance},
+                    {.key = "p5_W_per_m2K"}};
+  fit.estimates = {{.value = 0.4}, {.value = 350.0}, {.value = 641.0}};
+  fit.estimates[2].undetermined = true;
+  const std::vector<FileEdit> edits = FileEditsOf(fit, "heat_generation.", "D", "L");
+  ASSERT_EQ(edits.size(), 2u);
+  EXPECT_EQ(edits[0].key, "heat_generation.p1");
+  EXPECT_EQ(edits[0].value, 0.4);
+  EXPECT_EQ(edits[0].comment, SourceComment("D", "L", fit.estimates[0]));
+  EXPECT_EQ(edits[1].key, "heat_generation.p5_W_per_m2K");
+  EXPECT_EQ(edits[1].value, 641.0);
+  EXPECT_TRUE(edits[1].comment.find("undetermined") != std::string::npos);
+}
+
 }  // namespace
 }  // namespace hotlap::ident

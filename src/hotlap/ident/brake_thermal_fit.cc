@@ -314,6 +314,11 @@ FitResult ReportInP(const BrakeLogModel& model, const std::vector<double>& all,
 
 }  // namespace
 
+std::array<double, 6> ConvectionMatrixEntries(const brake::ConvectionPolynomial<double>& l) {
+  const double entries[6] = {l.l11, l.l21, l.l22, l.l31, l.l32, l.l33};
+  return PEntries(entries);
+}
+
 const std::vector<std::string>& BrakeParameterKeys() {
   static const std::vector<std::string> keys = [] {
     std::vector<std::string> k;

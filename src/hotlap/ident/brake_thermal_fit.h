@@ -18,6 +18,7 @@
 /// in them, so a valley of equally good fits (one lap rarely determines all six entries) is
 /// straight in P and its linearised intervals hold, where in L it curves and they do not.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -57,5 +58,9 @@ BrakeFitResult FitBrakeCorner(const brake::BrakeFile& brake, const BrakeCornerDa
 /// "mass_participation", "disc_convection_cholesky_sqrtW_per_K.l11" .. ".l33", then the same
 /// for the calliper.
 const std::vector<std::string>& BrakeParameterKeys();
+
+/// The entries P11, P21, P22, P31, P32, P33 (W/K) of P = L L' of a convection polynomial, whose
+/// fields are the entries of L: the coordinates the brake fit reports in.
+std::array<double, 6> ConvectionMatrixEntries(const brake::ConvectionPolynomial<double>& l);
 
 }  // namespace hotlap::ident

@@ -103,6 +103,31 @@ void CheckReadBack(double read, const FileEdit& e, const fs::path& file) {
 
 }  // namespace
 
+std::string SourceComment(const std::string& date, const std::string& log,
+                          const ParameterEstimate& estimate) {
+  const ParameterEstimate& e = estimate;
+  if (e.undetermined) {
+    return fmt::format("fitted {} to {}: undetermined by the data (kept where the fit left it)",
+                       date, log);
+  }
+  std::string verdict;
+  if (e.at_bound) verdict = "; at its bound";
+  if (!e.well_determined && !e.at_bound) verdict = "; not well determined";
+  return fmt::format("fitted {} to {}: std error {:.3g}, 95% [{:.5g}, {:.5g}]{}", date, log,
+                     e.std_error, e.ci_low, e.ci_high, verdict);
+}
+
+std::vector<FileEdit> FileEditsOf(const FitResult& fit, const std::string& key_prefix,
+                                  const std::string& date, const std::string& log) {
+  std::vector<FileEdit> edits;
+  for (size_t i = 0; i < fit.parameters.size(); ++i) {
+    if (fit.parameters[i].role != ParameterRole::kModel) continue;
+    edits.push_back({key_prefix + fit.parameters[i].key, fit.estimates[i].value,
+                     SourceComment(date, log, fit.estimates[i])});
+  }
+  return edits;
+}
+
 std::string TodayIsoDate() {
   const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
   std::tm local{};

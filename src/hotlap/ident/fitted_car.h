@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "hotlap/ident/channel_fit.h"
 #include "hotlap/vehicle/car.h"
 
 namespace hotlap::ident {
@@ -43,6 +44,16 @@ struct FittedCarEdits {
 std::vector<std::filesystem::path> WriteFittedCar(const vehicle::Car& car,
                                                   const std::filesystem::path& car_path,
                                                   const FittedCarEdits& edits);
+
+/// The source comment of a fitted value: "fitted DATE to LOG: std error ..., 95% [lo, hi]" and
+/// whether it is at its bound or not well determined; or that the data leave it undetermined.
+std::string SourceComment(const std::string& date, const std::string& log,
+                          const ParameterEstimate& estimate);
+
+/// The edits that write the model parameters of `fit` (nuisance ones are left out), each key
+/// prefixed with `key_prefix` (e.g. "heat_generation."), with their source comments.
+std::vector<FileEdit> FileEditsOf(const FitResult& fit, const std::string& key_prefix,
+                                  const std::string& date, const std::string& log);
 
 /// Today's date as YYYY-MM-DD (local time), for source comments.
 std::string TodayIsoDate();
