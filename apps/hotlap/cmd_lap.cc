@@ -48,6 +48,7 @@ struct LapArgs {
   std::optional<double> tread_C, carcass_C, disc_C, calliper_C;
   std::optional<double> compare_disc_limit_C;  // --method ocp
   std::optional<double> ocp_step_m;            // --method ocp
+  bool single_process = false;                 // --method ocp with a comparison
 };
 
 double Celsius(double kelvin) { return KelvinToCelsius(kelvin); }
@@ -63,6 +64,7 @@ int RunLap(const LapArgs& a) {
     o.ambient_C = a.ambient_C;
     o.track_C = a.track_C;
     if (a.ocp_step_m) o.step_m = *a.ocp_step_m;
+    o.single_process = a.single_process;
     return RunOptimal(o);
   }
   if (a.compare_disc_limit_C) {
@@ -252,6 +254,8 @@ CommandRunner RegisterLapCommand(CLI::App& app) {
   sub->add_option("--compare-disc-limit-C", args->compare_disc_limit_C,
                   "ocp: solve without and with this front-disc limit (degC) and compare");
   sub->add_option("--ocp-step-m", args->ocp_step_m, "ocp: mesh spacing, m (default 3)");
+  sub->add_flag("--single-process", args->single_process,
+                "ocp: solve the limited lap after the free one, not beside it in a second process");
   sub->add_option("--track", args->track, "Built-in track name or a .yaml/.csv/.xml file")
       ->capture_default_str();
   sub->add_option("--car", args->car, "Built-in car name or path to a car.yaml")
