@@ -45,7 +45,7 @@ ocp::OptimalLapOptions LapOptions(const OptimalArgs& a, double step_m) {
   o.ambient_temp = CelsiusToKelvin(a.ambient_C);
   o.track_temp = CelsiusToKelvin(a.track_C);
   o.ipopt.max_iterations = a.max_iterations;
-  o.ipopt.extra = IpoptOptionPairs(a);
+  for (auto& kv : IpoptOptionPairs(a)) o.ipopt.extra.push_back(std::move(kv));
   o.ipopt.print_level = a.ipopt_output ? 5 : 0;
   o.second_process = !a.single_process;
   return o;
