@@ -17,6 +17,7 @@
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
 #include "hotlap/ocp/disc_limit_comparison.h"
+#include "hotlap/ocp/lap_start_file.h"
 #include "hotlap/ocp/mesh_check.h"
 #include "hotlap/ocp/optimal_lap.h"
 #include "hotlap/ocp/optimal_output.h"
@@ -68,77 +69,6 @@ void PrintLine(const std::string& line) {
 
 }  // namespace
 
-void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
-  sub->add_option("--track", a.track, "Built-in track name or a .yaml/.csv/.xml file")
-      ->capture_default_str();
-  sub->add_option("--car", a.car, "Built-in car name or path to a car.yaml")->capture_default_str();
-  sub->add_option("--out", a.out, "Output folder")->required();
-  sub->add_option("--json", a.json, "Write the summary as JSON (docs/json-output.md)");
-  a.stock_car_only.push_back(
-      sub->add_option("--step-m", a.step_m, "Mesh spacing along the centre line, m")
-          ->capture_default_str()
-          ->check(CLI::Range(0.5, 50.0)));
-  a.stock_car_only.push_back(
-      sub->add_option("--coarse-step-m", a.coarse_step_m,
-                      "Coarse to fine: solve first on a mesh of this spacing, m, and start the "
-                      "--step-m solve from it (0: off; docs/optimal-control.md)")
-          ->capture_default_str()
-          ->check(CLI::Range(0.0, 100.0)));
-  a.stock_car_only.push_back(
-      sub->add_option("--steer-smoothing", a.steer_smoothing,
-                      "Weight of the steer's smoothness penalty, s per squared scaled change "
-                      "between nodes (default: the library's; docs/optimal-control.md)"));
-  a.stock_car_only.push_back(
-      sub->add_option("--pedal-smoothing", a.pedal_smoothing,
-                      "Weight of the pedal's smoothness penalty (as --steer-smoothing)"));
-  a.stock_car_only.push_back(
-      sub->add_option("--hessian", a.hessian,
-                      "exact (Ipopt corrects its inertia where needed) or convex-elements (each "
-                      "element's negative curvature clipped; docs/optimal-control.md)")
-          ->capture_default_str()
-          ->check(CLI::IsMember({"exact", "convex-elements"})));
-  a.stock_car_only.push_back(
-      sub->add_option("--thermal-start", a.thermal_start,
-                      "Thermal states at the start: racing (QSS laps until no carcass rises over "
-                      "15 degC a lap), "
-                      "warm (after one QSS out-lap), car (the car file's initial_state) or "
-                      "periodic (temperatures end where they start)")
-          ->capture_default_str()
-          ->check(CLI::IsMember({"racing", "warm", "car", "periodic"})));
-  a.stock_car_only.push_back(
-      sub->add_option("--ambient-temp-C", a.ambient_C, "Air temperature")->capture_default_str());
-  a.stock_car_only.push_back(
-      sub->add_option("--track-temp-C", a.track_C, "Track surface temperature")
-          ->capture_default_str());
-  sub->add_option("--max-iterations", a.max_iterations, "Ipopt's iteration limit")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  a.stock_car_only.push_back(
-      sub->add_flag("--mesh-check", a.mesh_check,
-                    "Solve again on a mesh of half the spacing and report the lap time's change"));
-  sub->add_flag("--ipopt-output", a.ipopt_output, "Print Ipopt's own iteration log");
-  a.stock_car_only.push_back(
-      sub->add_flag("--single-process", a.single_process,
-                    "Solve the limited lap after the free one, not beside it in a second process"));
-  sub->add_option("--ipopt-option", a.ipopt_options,
-                  "An Ipopt option as NAME=VALUE (repeatable), e.g. mumps_pivot_order=5")
-      ->check([](const std::string& s) {
-        const size_t eq = s.find('=');
-        return eq == std::string::npos || eq == 0 || eq + 1 == s.size()
-                   ? std::string("expected NAME=VALUE, got '" + s + "'")
-                   : std::string();
-      });
-}
-
-std::vector<std::pair<std::string, std::string>> IpoptOptionPairs(const OptimalArgs& a) {
-  std::vector<std::pair<std::string, std::string>> out;
-  for (const std::string& kv : a.ipopt_options) {
-    const size_t eq = kv.find('=');  // the option's check guarantees one
-    out.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
-  }
-  return out;
-}
-
 int RunOptimal(const OptimalArgs& a) {
   // The 3-DOF F1 car of the fastest-lap peer benchmark has its own solver (docs/f1-peer.md).
   const fs::path car_file = ResolveCarFile(a.car);
@@ -164,6 +94,10 @@ int RunOptimal(const OptimalArgs& a) {
     throw InputError(fmt::format("--out {}: exists and is not a folder", a.out));
   }
   if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
+  if (!a.save_solution.empty()) CheckOutputFolder(a.save_solution, "--save-solution");
+  if (a.compare_disc_limit_C && !(a.warm_start.empty() && a.save_solution.empty())) {
+    throw InputError("--warm-start and --save-solution are for one solve, not the comparison");
+  }
   if (a.disc_limit_C && a.compare_disc_limit_C) {
     throw InputError("give either --disc-limit-C (one solve) or --compare-disc-limit-C (two)");
   }
@@ -172,6 +106,8 @@ int RunOptimal(const OptimalArgs& a) {
       throw InputError(fmt::format("the disc limit {:g} degC must be in (0, 1500)", *limit));
     }
   }
+  std::optional<ocp::LapStart> warm_start;
+  if (!a.warm_start.empty()) warm_start = ocp::ReadLapStart(a.warm_start);
   ocp::KeepSolverMemory();
   fmt::print("hotlap optimal lap: car '{}' on {} ({:.1f} m)\n", car.name, track.name(),
              track.length_m());
@@ -187,10 +123,15 @@ int RunOptimal(const OptimalArgs& a) {
   } else {
     ocp::OptimalLapOptions o = LapOptions(a, a.step_m);
     if (a.disc_limit_C) o.front_disc_limit = CelsiusToKelvin(*a.disc_limit_C);
+    if (warm_start) ocp::UseLapStart(*warm_start, track, o);
     runs.push_back(ocp::SolveLap(
         car, track, o,
         a.disc_limit_C ? fmt::format("discs <= {:g} degC", *a.disc_limit_C) : "optimal lap",
         nullptr, PrintProgress, PrintLine));
+  }
+  if (!a.save_solution.empty() && runs.front().run.solution.solve.ok()) {
+    ocp::WriteLapStart(a.save_solution, runs.front().run.solution, track.length_m());
+    fmt::print("wrote {}\n", a.save_solution);
   }
   std::optional<double> mesh_delta;
   if (a.mesh_check) {

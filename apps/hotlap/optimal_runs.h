@@ -30,6 +30,8 @@ struct OptimalArgs {
   bool mesh_check = false;
   bool ipopt_output = false;
   bool single_process = false;
+  std::string warm_start;                  ///< a lap saved with --save-solution to start from
+  std::string save_solution;               ///< where to save the solved lap
   std::vector<std::string> ipopt_options;  ///< NAME=VALUE, passed to Ipopt as they are
   int mesh_points = 0;  ///< limebeer-2014-f1 cars only: mesh nodes (0: 500; docs/f1-peer.md)
   /// Options given on the command line that only one of the two models uses (filled by CLI11
@@ -38,7 +40,7 @@ struct OptimalArgs {
   std::vector<const CLI::Option*> stock_car_only, f1_only;
 };
 
-/// Adds the options shared by both commands to `sub`.
+/// Adds the options shared by both commands to `sub` (optimal_options.cc).
 void AddOptimalOptions(CLI::App* sub, OptimalArgs& args);
 
 /// The --ipopt-option values as (name, value) pairs.

@@ -178,6 +178,10 @@ TEST_F(LapCommandTest, BadInputFailsCleanlyWithoutOutput) {
       {"optimise --car f1-2014 --step-m 2", "--step-m does not apply"},
       {"optimise --car f1-2014 --mesh-check", "--mesh-check does not apply"},
       {"optimise --car gen7 --mesh-points 100", "--mesh-points does not apply"},
+      // A warm start that is not a saved lap, or missing.
+      {"optimise --warm-start " + backwards.string(), "is not a saved lap"},
+      {"optimise --warm-start " + (dir() / "missing.bin").string(), "missing.bin"},
+      {"optimise --car f1-2014 --warm-start " + backwards.string(), "does not apply"},
   };
   for (const Case& c : cases) {
     const RunResult r = Run(c.args + " --out " + out.string() + " --json " + json.string());
@@ -186,6 +190,31 @@ TEST_F(LapCommandTest, BadInputFailsCleanlyWithoutOutput) {
     EXPECT_FALSE(fs::exists(out)) << c.args;
     EXPECT_FALSE(fs::exists(json)) << c.args;
   }
+}
+
+// A lap saved with --save-solution starts another solve: on the same mesh it is already solved (a
+// few iterations to the same lap), on a finer one it replaces the coarse solve.
+TEST_F(LapCommandTest, SavedSolutionWarmStartsTheNextSolve) {
+  const fs::path saved = dir() / "lap30.bin";
+  const auto run = [&](const std::string& args, const std::string& name) {
+    const fs::path json = dir() / (name + ".json");
+    const RunResult r =
+        Run("optimise --out " + (dir() / name).string() + " --json " + json.string() + " " + args);
+    EXPECT_EQ(r.exit_code, 0) << args << "\n" << r.out << r.err;
+    return nlohmann::json::parse(test::ReadTextFile(json));
+  };
+  const nlohmann::json first =
+      run("--step-m 30 --coarse-step-m 0 --save-solution " + saved.string(), "first");
+  ASSERT_TRUE(fs::exists(saved));
+  const nlohmann::json again = run("--step-m 30 --warm-start " + saved.string(), "again");
+  EXPECT_NEAR(again["lap_time_s"].get<double>(), first["lap_time_s"].get<double>(), 1e-4);
+  EXPECT_LE(again["ipopt_iterations"].get<int>(), 10);
+  EXPECT_TRUE(again["coarse_solve"].is_null());
+  const nlohmann::json finer = run("--step-m 15 --warm-start " + saved.string(), "finer");
+  EXPECT_TRUE(finer["coarse_solve"].is_null());
+  EXPECT_EQ(finer["status"], "converged");
+  EXPECT_LT(finer["ipopt_iterations"].get<int>(), first["ipopt_iterations"].get<int>());
+  EXPECT_NEAR(finer["lap_time_s"].get<double>(), first["lap_time_s"].get<double>(), 0.02);
 }
 
 }  // namespace

@@ -1,0 +1,95 @@
+#include "hotlap/ocp/lap_start_file.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "hotlap/common/atomic_file.h"
+#include "hotlap/common/error.h"
+#include "hotlap/common/read_file.h"
+#include "hotlap/ocp/child_solve.h"
+
+namespace hotlap::ocp {
+
+namespace {
+
+constexpr char kMagic[8] = {'h', 'o', 't', 'l', 'a', 'p', 'L', '1'};
+constexpr size_t kHeader = sizeof(kMagic) + sizeof(double) + 6 * sizeof(int32_t);
+
+std::vector<int32_t> LayoutNumbers(const LapLayout& l) {
+  return {l.nodes,        l.vars_per_node, l.rows_per_node, l.defects_per_interval,
+          l.closure_rows, l.rate_blocks};
+}
+
+}  // namespace
+
+void WriteLapStart(const std::filesystem::path& path, const LapSolution& solution,
+                   double track_length_m) {
+  const SolveResult& s = solution.solve;
+  if (s.x.empty() || static_cast<int>(s.x.size()) != solution.layout.variables()) {
+    throw InputError(fmt::format("'{}': the lap has no solution to save", path.string()));
+  }
+  std::string bytes(kMagic, sizeof(kMagic));
+  bytes.append(reinterpret_cast<const char*>(&track_length_m), sizeof(double));
+  for (const int32_t v : LayoutNumbers(solution.layout)) {
+    bytes.append(reinterpret_cast<const char*>(&v), sizeof(v));
+  }
+  bytes += EncodeSolveResults({s});
+  WriteFileAtomically(path, [&](std::ostream& out) { out.write(bytes.data(), bytes.size()); });
+}
+
+LapStart ReadLapStart(const std::filesystem::path& path) {
+  const std::string bytes = ReadWholeFile(path);
+  const auto fail = [&](const std::string& why) {
+    return InputError(
+        fmt::format("'{}' is not a saved lap (--save-solution): {}", path.string(), why));
+  };
+  if (bytes.size() < kHeader || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0) {
+    throw fail("it does not start as one");
+  }
+  LapStart s;
+  size_t at = sizeof(kMagic);
+  std::memcpy(&s.track_length_m, bytes.data() + at, sizeof(double));
+  at += sizeof(double);
+  int32_t v[6];
+  std::memcpy(v, bytes.data() + at, sizeof(v));
+  at += sizeof(v);
+  s.layout = {v[0], v[1], v[2], v[3], v[4], v[5]};
+  std::vector<SolveResult> solves;
+  try {
+    solves = DecodeSolveResults(bytes.substr(at));
+  } catch (const InputError& e) {
+    throw fail(e.what());
+  }
+  if (solves.size() != 1) throw fail("it holds no solve");
+  s.solve = std::move(solves[0]);
+  const LapLayout& l = s.layout;
+  const bool sizes =
+      l.nodes >= 2 && l.vars_per_node > 0 && l.rows_per_node >= 0 && l.defects_per_interval >= 0 &&
+      l.closure_rows >= 0 && l.rate_blocks >= 0 && std::isfinite(s.track_length_m) &&
+      s.track_length_m > 0.0 && s.solve.x.size() == static_cast<size_t>(l.variables()) &&
+      s.solve.z_lower.size() == s.solve.x.size() && s.solve.z_upper.size() == s.solve.x.size() &&
+      s.solve.lambda.size() == static_cast<size_t>(l.rows());
+  if (!sizes) throw fail("its sizes do not agree with its layout");
+  return s;
+}
+
+void UseLapStart(const LapStart& start, const track::Track& track, OptimalLapOptions& options) {
+  if (std::abs(start.track_length_m - track.length_m()) > 1.0) {
+    throw InputError(fmt::format("the saved lap is of a {:.1f} m track, this one is {:.1f} m",
+                                 start.track_length_m, track.length_m()));
+  }
+  // The layout of this problem on the target mesh, as far as the file can tell: the same node.
+  const LapLayout to = start.layout.WithNodes(LapNodeCount(track, options.step_m));
+  options.start_point = ResampleLapPoint(start.solve.x, start.layout.nodes, to.nodes);
+  const LapMultipliers m = ResampleLapMultipliers(start.solve, start.layout, to);
+  options.ipopt.warm_z_lower = m.z_lower;
+  options.ipopt.warm_z_upper = m.z_upper;
+  options.ipopt.warm_lambda = m.lambda;
+}
+
+}  // namespace hotlap::ocp
