@@ -66,7 +66,9 @@ struct OptimalLapOptions {
   bool coarse_multipliers = true;
   /// CompareDiscLimit with coarse to fine: solve the limited lap in a child process beside the
   /// free one (two cores; Ipopt with MUMPS is not thread-safe, so not a thread). Off, or if the
-  /// child cannot start or fails, the limited lap is solved after the free one.
+  /// child cannot start or fails, the limited lap is solved after the free one. The child is a
+  /// fork(): in a process with other threads running (an embedding interpreter, a thread pool)
+  /// turn it off, since only the forking thread lives on in the child.
   bool second_process = true;
   /// RunOptimalLap takes these results instead of calling Ipopt (same problem, same options), and
   /// computes everything else as usual.
