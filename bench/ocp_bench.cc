@@ -9,7 +9,8 @@
 // of 2026-11-26, for issue 19's before/after table: every brake in the programme
 // (all_brake_states) and the fine solve from the coarse point alone (no coarse_multipliers).
 // Counters: lap time, Ipopt iterations and solve seconds of the fine solve (Ipopt's own clock)
-// and of the coarse one.
+// and of the coarse one, and MUMPS factorisations per Ipopt iteration (both solves; counted by
+// interposing dmumps_c, bench/mumps_factorisations.cc).
 //
 // BM_F1PeerCatalunya: the peer case (docs/f1-peer.md), the 2014 F1 car on fastest-lap's
 // Catalunya with 500 mesh points, in the same run, so that the Darlington solves can be read as a
@@ -39,6 +40,7 @@
 #include "hotlap/ocp/solver_memory.h"
 #include "hotlap/track/track_io.h"
 #include "hotlap/vehicle/f1_car.h"
+#include "mumps_factorisations.h"
 
 namespace {
 
@@ -81,7 +83,12 @@ void BM_DarlingtonOptimalLap(benchmark::State& state) {
     o.coarse_multipliers = false;
   }
   ocp::OptimalLapRun run;
-  for (auto _ : state) run = ocp::RunOptimalLap(Car(), track, o);
+  long factorisations = 0;
+  for (auto _ : state) {
+    const long before = bench::MumpsFactorisations();
+    run = ocp::RunOptimalLap(Car(), track, o);
+    factorisations = bench::MumpsFactorisations() - before;
+  }
   if (state.range(0) == 0 && state.range(1) == 0 && run.solution.solve.ok()) {
     FreeSolution() = run.solution.solve;
   }
@@ -89,6 +96,10 @@ void BM_DarlingtonOptimalLap(benchmark::State& state) {
   state.counters["iterations"] = run.solution.solve.iterations;
   state.counters["regularized_iterations"] = run.solution.solve.regularized_iterations;
   state.counters["ipopt_solve_s"] = run.solution.solve.solve_seconds;
+  // MUMPS factorisations of both solves per Ipopt iteration of both.
+  const int all_iterations = run.solution.solve.iterations + run.coarse.iterations;
+  state.counters["factorisations_per_iteration"] =
+      all_iterations > 0 ? static_cast<double>(factorisations) / all_iterations : 0.0;
   state.counters["coarse_iterations"] = run.coarse.iterations;
   state.counters["coarse_solve_s"] = run.coarse.solve_seconds;
   state.counters["converged"] = run.solution.solve.ok() ? 1 : 0;
@@ -111,7 +122,14 @@ void BM_F1PeerCatalunya(benchmark::State& state) {
   ocp::F1LapOptions o;
   o.mesh_points = 500;
   ocp::F1LapSolution s;
-  for (auto _ : state) s = ocp::SolveF1Lap(car, track, o, ocp::F1IpoptOptions());
+  long factorisations = 0;
+  for (auto _ : state) {
+    const long before = bench::MumpsFactorisations();
+    s = ocp::SolveF1Lap(car, track, o, ocp::F1IpoptOptions());
+    factorisations = bench::MumpsFactorisations() - before;
+  }
+  state.counters["factorisations_per_iteration"] =
+      s.solve.iterations > 0 ? static_cast<double>(factorisations) / s.solve.iterations : 0.0;
   state.counters["lap_time_s"] = s.lap_time;
   state.counters["iterations"] = s.solve.iterations;
   state.counters["regularized_iterations"] = s.solve.regularized_iterations;
