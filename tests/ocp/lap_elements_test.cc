@@ -108,6 +108,8 @@ TEST(LapElementsTest, ChassisElements) {
                {0.0134, 30000.0, 75.0, 0.41, 0.01}, {1e-7, 1, 1e-3, 1e-5, 1e-6}, "lateral");
   CheckElement(*MakeElement<4, 1>(internal::OffsetFn{}), {0.0134, 75.0, 0.4, 0.01},
                {1e-7, 1e-3, 1e-4, 1e-6}, "offset");
+  CheckElement(*MakeElement<2, 1>(internal::ScaledProductFn{1.0 / 2900.0}), {0.0134, 4500.0},
+               {1e-7, 1.0}, "yaw");
 }
 
 // The pedal: drive and brake never on together beyond the smoothing's eps^2 / (4 |p|), the

@@ -128,17 +128,6 @@ struct RearDriveFn {
   }
 };
 
-// dt/ds: in (w, u, v, alpha, n) -> w (u cos alpha - v sin alpha) - (1 - n kappa).
-struct TimeFn {
-  double curvature;
-  template <class T>
-  void operator()(const T* in, T* out) const {
-    using std::cos;
-    using std::sin;
-    out[0] = in[0] * (in[1] * cos(in[3]) - in[2] * sin(in[3])) - (1.0 - in[4] * curvature);
-  }
-};
-
 // du/ds: in (w, X, u, v, r) -> w ((X - D u^2) / m + v r).
 struct LongitudinalFn {
   double inv_mass, drag;
@@ -154,16 +143,6 @@ struct LateralFn {
   template <class T>
   void operator()(const T* in, T* out) const {
     out[0] = in[0] * (in[1] * inv_mass - in[2] * in[3]);
-  }
-};
-
-// w times a variable times a constant: in (w, x) -> c w x (dr/ds = w Mz / Izz; dalpha/ds + kappa
-// = w r).
-struct ScaledProductFn {
-  double c;
-  template <class T>
-  void operator()(const T* in, T* out) const {
-    out[0] = c * in[0] * in[1];
   }
 };
 
@@ -328,8 +307,9 @@ struct Builder {
     // dt/ds.
     {
       const int rt = nlp.AddConstraint(0.0, 0.0, 1.0);
-      nlp.AddElement(MakeElement<5, 1>(TimeFn{curvature[k]}), {nd.w, nd.u, nd.v, nd.alpha, nd.n},
-                     {{{rt, 1.0}}});
+      // The stock car's element; this problem's heading error alpha stands for its xi.
+      nlp.AddElement(MakeElement<5, 1>(internal::TimeFn{curvature[k]}),
+                     {nd.w, nd.u, nd.v, nd.n, nd.alpha}, {{{rt, 1.0}}});
     }
   }
 
@@ -358,10 +338,11 @@ struct Builder {
     const auto lateral =
         std::shared_ptr<const Element>(MakeElement<4, 1>(LateralFn{1.0 / p.mass_kg}));
     const auto yaw = std::shared_ptr<const Element>(
-        MakeElement<2, 1>(ScaledProductFn{1.0 / p.yaw_inertia_kgm2}));
+        MakeElement<2, 1>(internal::ScaledProductFn{1.0 / p.yaw_inertia_kgm2}));
     // The stock car's dn/ds element; this problem's heading error alpha stands for its xi.
     const auto offset = std::shared_ptr<const Element>(MakeElement<4, 1>(internal::OffsetFn{}));
-    const auto heading = std::shared_ptr<const Element>(MakeElement<2, 1>(ScaledProductFn{1.0}));
+    const auto heading =
+        std::shared_ptr<const Element>(MakeElement<2, 1>(internal::ScaledProductFn{1.0}));
     for (int k = 0; k < count; ++k) {
       const Node& nd = nodes[k];
       nlp.AddElement(longitudinal, {nd.w, nd.x_total, nd.u, nd.v, nd.r}, {DefectTargets(k, 0)});

@@ -97,7 +97,8 @@ struct LoadsFn {
   }
 };
 
-/// dt/ds: in (w, u, v, n, xi) -> w (u cos xi - v sin xi) - (1 - n kappa_g) (spec section 10).
+/// dt/ds: in (w, u, v, n, xi) -> w (u cos xi - v sin xi) - (1 - n kappa_g) (spec section 10);
+/// also the F1 lap problem's, with its heading error for xi and its curvature for kappa_g.
 struct TimeFn {
   double kappa_g;
   template <class T>
@@ -138,12 +139,14 @@ struct LateralFn {
   }
 };
 
-/// dr/ds: in (w, Mz) -> w Mz / I_z.
-struct YawFn {
-  double inv_inertia;
+/// w times a variable times a constant: in (w, x) -> c w x. The yaw rate's dr/ds = w Mz / I_z
+/// (c = 1 / I_z) and the heading error's dxi/ds + kappa_g = w r (c = 1; the road's -kappa_g is a
+/// constant of the defect row), in both lap problems.
+struct ScaledProductFn {
+  double c;
   template <class T>
   void operator()(const T* in, T* out) const {
-    out[0] = in[0] * in[1] * inv_inertia;
+    out[0] = c * in[0] * in[1];
   }
 };
 
@@ -154,14 +157,6 @@ struct OffsetFn {
     using std::cos;
     using std::sin;
     out[0] = in[0] * (in[1] * sin(in[3]) + in[2] * cos(in[3]));
-  }
-};
-
-/// dxi/ds + kappa_g: in (w, r) -> w r (the road's -kappa_g is a constant of the defect row).
-struct HeadingFn {
-  template <class T>
-  void operator()(const T* in, T* out) const {
-    out[0] = in[0] * in[1];
   }
 };
 

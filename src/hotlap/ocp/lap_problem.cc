@@ -336,11 +336,12 @@ struct Builder {
           {DefectTargets(k, 0)});
       nlp.AddElement(MakeElement<5, 1>(internal::LateralFn{&p, road}),
                      {nv.w, nv.sum_fy, nv.u, nv.r, nv.xi}, {DefectTargets(k, 1)});
-      nlp.AddElement(MakeElement<2, 1>(internal::YawFn{inv_iz}), {nv.w, nv.yaw_moment},
+      nlp.AddElement(MakeElement<2, 1>(internal::ScaledProductFn{inv_iz}), {nv.w, nv.yaw_moment},
                      {DefectTargets(k, 2)});
       nlp.AddElement(MakeElement<4, 1>(internal::OffsetFn{}), {nv.w, nv.u, nv.v, nv.xi},
                      {DefectTargets(k, 3)});
-      nlp.AddElement(MakeElement<2, 1>(internal::HeadingFn{}), {nv.w, nv.r}, {DefectTargets(k, 4)});
+      nlp.AddElement(MakeElement<2, 1>(internal::ScaledProductFn{1.0}), {nv.w, nv.r},
+                     {DefectTargets(k, 4)});
       for (int c = 0; c < 4; ++c) {
         const int base = 5 + 5 * c;
         nlp.AddElement(
