@@ -142,27 +142,18 @@ int RunReplay(const ReplayArgs& a) {
              "carcass degC", "disc degC", "calliper degC", "wear mm", "grip");
   nlohmann::json corners;
   std::vector<std::vector<std::string>> summary_rows;  // the printed table, for --report
+  const std::array<sim::CornerReplaySummary, 4> summaries = sim::SummarizeReplay(result);
   for (Corner c : kAllCorners) {
-    const sim::CornerHistory& h = result.corners[CornerIndex(c)];
-    const auto tread = sim::CalcHistoryStats(result.time, h.tread_temp);
-    const auto carcass = sim::CalcHistoryStats(result.time, h.carcass_temp);
-    const auto disc = sim::CalcHistoryStats(result.time, h.disc_temp);
-    const auto calliper = sim::CalcHistoryStats(result.time, h.calliper_temp);
-    const double min_grip = *std::min_element(h.grip_factor.begin(), h.grip_factor.end());
-    double brake_energy = 0.0;
-    for (size_t i = 1; i < result.time.size(); ++i) {
-      brake_energy +=
-          0.5 * (h.brake_power[i] + h.brake_power[i - 1]) * (result.time[i] - result.time[i - 1]);
-    }
+    const sim::CornerReplaySummary& cs = summaries[CornerIndex(c)];
+    const auto& [tread, carcass, disc, calliper, wear, min_grip, brake_energy] = cs;
     const auto triple = [](const sim::HistoryStats& s) {
       return fmt::format("{:.1f}/{:.1f}/{:.1f}", KelvinToCelsius(s.peak), KelvinToCelsius(s.mean),
                          KelvinToCelsius(s.final));
     };
     fmt::print("{:<6} {:>23} {:>23} {:>23} {:>23} {:>8.4f} {:>6.3f}\n", CornerName(c),
-               triple(tread), triple(carcass), triple(disc), triple(calliper), h.wear.back(),
-               min_grip);
+               triple(tread), triple(carcass), triple(disc), triple(calliper), wear, min_grip);
     summary_rows.push_back({std::string(CornerName(c)), triple(tread), triple(carcass),
-                            triple(disc), triple(calliper), fmt::format("{:.4f}", h.wear.back()),
+                            triple(disc), triple(calliper), fmt::format("{:.4f}", wear),
                             fmt::format("{:.3f}", min_grip),
                             fmt::format("{:.1f}", brake_energy / 1e3)});
     corners[std::string(CornerName(c))] = {
@@ -170,7 +161,7 @@ int RunReplay(const ReplayArgs& a) {
         {"carcass_temp_C", StatsJson(carcass, true)},
         {"disc_temp_C", StatsJson(disc, true)},
         {"calliper_temp_C", StatsJson(calliper, true)},
-        {"wear_mm", RoundSignificant(h.wear.back())},
+        {"wear_mm", RoundSignificant(wear)},
         {"min_grip_factor", RoundSignificant(min_grip)},
         {"brake_energy_J", RoundSignificant(brake_energy)},
     };

@@ -148,6 +148,32 @@ TEST(ReplayTest, HistoryStatsUseTimeWeightedMean) {
   EXPECT_DOUBLE_EQ(s.mean, 6.25);
 }
 
+TEST(ReplayTest, SummaryPerCornerByHand) {
+  ReplayResult r;
+  r.time = {0.0, 1.0, 2.0, 4.0};
+  for (int c = 0; c < 4; ++c) {
+    CornerHistory& h = r.corners[c];
+    h.tread_temp = {300.0, 300.0, 310.0 + c, 310.0 + c};
+    h.carcass_temp = {320.0, 321.0, 322.0, 323.0};
+    h.disc_temp = {400.0, 500.0, 450.0, 420.0};
+    h.calliper_temp = {350.0, 350.0, 350.0, 350.0};
+    h.wear = {0.0, 0.001, 0.002, 0.004 * (c + 1)};
+    h.grip_factor = {1.0, 0.9 - 0.1 * c, 0.95, 0.97};
+    h.brake_power = {0.0, 100.0, 100.0, 0.0};  // 50 + 100 + 100 J
+  }
+  const std::array<CornerReplaySummary, 4> s = SummarizeReplay(r);
+  for (int c = 0; c < 4; ++c) {
+    EXPECT_DOUBLE_EQ(s[c].tread.peak, 310.0 + c) << c;
+    EXPECT_DOUBLE_EQ(s[c].tread.mean, (300.0 + 0.5 * (610.0 + c) + 2.0 * (310.0 + c)) / 4.0);
+    EXPECT_DOUBLE_EQ(s[c].disc.peak, 500.0);
+    EXPECT_DOUBLE_EQ(s[c].disc.final, 420.0);
+    EXPECT_DOUBLE_EQ(s[c].calliper.mean, 350.0);
+    EXPECT_DOUBLE_EQ(s[c].final_wear_mm, 0.004 * (c + 1));
+    EXPECT_DOUBLE_EQ(s[c].min_grip_factor, std::min(0.9 - 0.1 * c, 1.0));
+    EXPECT_DOUBLE_EQ(s[c].brake_energy_J, 250.0);
+  }
+}
+
 // Four samples at uneven times from t = 10 s with a kink at 11 s; every channel differs.
 ReplayInputs KinkedInputs() {
   ReplayInputs in;

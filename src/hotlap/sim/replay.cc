@@ -207,4 +207,24 @@ HistoryStats CalcHistoryStats(const std::vector<double>& time, const std::vector
   return s;
 }
 
+std::array<CornerReplaySummary, 4> SummarizeReplay(const ReplayResult& result) {
+  std::array<CornerReplaySummary, 4> out;
+  const std::vector<double>& t = result.time;
+  for (int c = 0; c < 4; ++c) {
+    const CornerHistory& h = result.corners[c];
+    CornerReplaySummary& s = out[c];
+    s.tread = CalcHistoryStats(t, h.tread_temp);
+    s.carcass = CalcHistoryStats(t, h.carcass_temp);
+    s.disc = CalcHistoryStats(t, h.disc_temp);
+    s.calliper = CalcHistoryStats(t, h.calliper_temp);
+    s.final_wear_mm = h.wear.empty() ? 0.0 : h.wear.back();
+    s.min_grip_factor =
+        h.grip_factor.empty() ? 0.0 : *std::min_element(h.grip_factor.begin(), h.grip_factor.end());
+    for (size_t i = 1; i < t.size() && i < h.brake_power.size(); ++i) {
+      s.brake_energy_J += 0.5 * (h.brake_power[i] + h.brake_power[i - 1]) * (t[i] - t[i - 1]);
+    }
+  }
+  return out;
+}
+
 }  // namespace hotlap::sim

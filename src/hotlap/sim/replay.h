@@ -85,4 +85,16 @@ struct HistoryStats {
 };
 HistoryStats CalcHistoryStats(const std::vector<double>& time, const std::vector<double>& values);
 
+/// What a replay did to one corner: its temperatures' statistics (K), the wear at the end (mm),
+/// the lowest grip factor and the brake's work over the run (trapezoid of the brake power, J).
+struct CornerReplaySummary {
+  HistoryStats tread, carcass, disc, calliper;
+  double final_wear_mm = 0.0;
+  double min_grip_factor = 0.0;
+  double brake_energy_J = 0.0;
+};
+
+/// The four corners' summaries (fl, fr, rl, rr) of a replay, as `hotlap replay` prints them.
+std::array<CornerReplaySummary, 4> SummarizeReplay(const ReplayResult& result);
+
 }  // namespace hotlap::sim
