@@ -27,6 +27,7 @@ packages=(
   libjs-chart.js         # Chart.js, embedded in the binary at build time so HTML reports work offline
   libgtest-dev libgmock-dev  # unit tests
   libbenchmark-dev       # benchmarks in bench/
+  libmumps-headers-dev   # dmumps_c.h: ocp_bench counts MUMPS factorisations (Ipopt's linear solver)
   python3 time           # bench/peer/run_peer_bench.sh: JSON parsing, GNU time for CPU seconds
 )
 if [ "$with_tests" -eq 1 ]; then
