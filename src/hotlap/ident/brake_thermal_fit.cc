@@ -27,7 +27,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 enum Index : int { kGamma, kXi, kDisc = 2, kCalliper = 8, kDisc0 = 14, kCalliper0, kCount };
 enum Channel : int { kDiscTemp, kCalliperTemp };
 
-constexpr std::array<const char*, 6> kEntryNames = {"l11", "l21", "l22", "l31", "l32", "l33"};
+// The entries of P = L L' in the order of L's: 11, 21, 22, 31, 32, 33.
+constexpr std::array<const char*, 6> kPNames = {"P11", "P21", "P22", "P31", "P32", "P33"};
 constexpr std::array<bool, 6> kDiagonal = {true, false, true, false, false, true};
 // Where the fitted L has a diagonal entry below this fraction of its scale, the P-space statistics
 // are taken at L with that entry raised to it (see ReportInP).
@@ -41,10 +42,6 @@ void SetCholesky(brake::ConvectionPolynomial<T>& l, std::span<const T> x) {
   l.l31 = x[3];
   l.l32 = x[4];
   l.l33 = x[5];
-}
-
-std::array<double, 6> CholeskyOf(const brake::ConvectionPolynomial<double>& l) {
-  return {l.l11, l.l21, l.l22, l.l31, l.l32, l.l33};
 }
 
 class BrakeLogModel {
@@ -112,27 +109,12 @@ class BrakeLogModelP {
 };
 
 FitParameter BrakeParameter(int index, const brake::BrakeThermalParams<double>& car) {
-  const auto scale = [](double value, double floor) { return std::max(std::abs(value), floor); };
-  if (index == kGamma) {
-    return {"heat_partition", "gamma", "", 0.0, 1.0, scale(car.heat_partition, 0.1)};
-  }
-  if (index == kXi) {
-    return {"mass_participation", "xi", "", 0.005, 1.0, scale(car.mass_participation, 0.01)};
-  }
   if (index == kDisc0) return InitialTemperatureParameter("initial_disc_temp_C", "T_disc(0)");
   if (index == kCalliper0) {
     return InitialTemperatureParameter("initial_calliper_temp_C", "T_calliper(0)");
   }
-  const bool disc = index < kCalliper;
-  const int e = index - (disc ? kDisc : kCalliper);
-  const std::array<double, 6> l = CholeskyOf(disc ? car.disc_convection : car.calliper_convection);
-  return {fmt::format("{}_convection_cholesky_sqrtW_per_K.{}", disc ? "disc" : "calliper",
-                      kEntryNames[e]),
-          fmt::format("{} {}", disc ? "disc" : "cal", kEntryNames[e]),
-          "\u221a(W/K)",
-          kDiagonal[e] ? 0.0 : -100.0,
-          100.0,
-          scale(l[e], 0.3)};
+  const brake::BrakeThermalField& f = *BrakeFitFields()[index];
+  return FitParameterOf(f.Path(), *f.fit, f.Of(car));
 }
 
 std::vector<double> Cumulative(std::span<const double> time, const std::vector<double>& f) {
@@ -239,8 +221,6 @@ std::optional<std::vector<double>> EquationErrorGuess(const brake::BrakeFile& br
   return out;
 }
 
-constexpr std::array<const char*, 6> kPNames = {"P11", "P21", "P22", "P31", "P32", "P33"};
-
 // The entries 11, 21, 22, 31, 32, 33 of P = L L' from L's (same order).
 std::array<double, 6> PEntries(const double* l) {
   return {l[0] * l[0],
@@ -274,13 +254,12 @@ FitResult ReportInP(const BrakeLogModel& model, const std::vector<double>& all,
     const std::array<double, 6> p = PEntries(l);
     for (int e = 0; e < 6; ++e) {
       p_all[base + e] = p[e];
-      params[base + e] = {
-          fmt::format("{}_convection_{}_W_per_K", base == kDisc ? "disc" : "calliper", kPNames[e]),
-          fmt::format("{} {}", base == kDisc ? "disc" : "cal", kPNames[e]),
-          "W/K",
-          kDiagonal[e] ? 0.0 : -kInf,
-          kInf,
-          std::max(std::abs(p[e]), 0.1)};
+      params[base + e] = {ConvectionMatrixKeys()[base - kDisc + e],
+                          fmt::format("{} {}", base == kDisc ? "disc" : "cal", kPNames[e]),
+                          "W/K",
+                          kDiagonal[e] ? 0.0 : -kInf,
+                          kInf,
+                          std::max(std::abs(p[e]), 0.1)};
     }
   }
   std::vector<double> start;
@@ -319,11 +298,27 @@ std::array<double, 6> ConvectionMatrixEntries(const brake::ConvectionPolynomial<
   return PEntries(entries);
 }
 
+const std::vector<const brake::BrakeThermalField*>& BrakeFitFields() {
+  static const std::vector<const brake::BrakeThermalField*> fields =
+      brake::FittedBrakeThermalFields();
+  return fields;
+}
+
 const std::vector<std::string>& BrakeParameterKeys() {
   static const std::vector<std::string> keys = [] {
     std::vector<std::string> k;
-    const brake::BrakeThermalParams<double> any{};
-    for (int i = 0; i < kDisc0; ++i) k.push_back(BrakeParameter(i, any).key);
+    for (const brake::BrakeThermalField* f : BrakeFitFields()) k.push_back(f->Path());
+    return k;
+  }();
+  return keys;
+}
+
+const std::vector<std::string>& ConvectionMatrixKeys() {
+  static const std::vector<std::string> keys = [] {
+    std::vector<std::string> k;
+    for (const char* part : {"disc", "calliper"}) {
+      for (const char* e : kPNames) k.push_back(fmt::format("{}_convection_{}_W_per_K", part, e));
+    }
     return k;
   }();
   return keys;
@@ -338,11 +333,7 @@ BrakeFitResult FitBrakeCorner(const brake::BrakeFile& brake, const BrakeCornerDa
   const BrakeLogModel model(brake, d.samples, options.max_step_s, options.sensor_lag_s);
   const brake::BrakeThermalParams<double>& car = brake.params;
   std::vector<double> all(kCount);
-  all[kGamma] = car.heat_partition;
-  all[kXi] = car.mass_participation;
-  const auto disc_l = CholeskyOf(car.disc_convection), cal_l = CholeskyOf(car.calliper_convection);
-  std::copy(disc_l.begin(), disc_l.end(), all.begin() + kDisc);
-  std::copy(cal_l.begin(), cal_l.end(), all.begin() + kCalliper);
+  for (int i = 0; i < kDisc0; ++i) all[i] = BrakeFitFields()[i]->Of(car);
   all[kDisc0] = StartingTemperature(d.disc, time, options.initial_state, d.fallback_disc_temp);
   all[kCalliper0] =
       StartingTemperature(d.calliper, time, options.initial_state, d.fallback_calliper_temp);
@@ -390,11 +381,7 @@ BrakeFitResult FitBrakeCorner(const brake::BrakeFile& brake, const BrakeCornerDa
     r.warnings.push_back(
         "no usable disc or calliper temperature: the brake parameters are kept from the car file");
   }
-  r.params.heat_partition = all[kGamma];
-  r.params.mass_participation = all[kXi];
-  SetCholesky<double>(r.params.disc_convection, std::span<const double>(all).subspan(kDisc, 6));
-  SetCholesky<double>(r.params.calliper_convection,
-                      std::span<const double>(all).subspan(kCalliper, 6));
+  for (int i = 0; i < kDisc0; ++i) BrakeFitFields()[i]->Of(r.params) = all[i];
   r.disc_model.resize(time.size());
   r.calliper_model.resize(time.size());
   model.Run<double>(all, [&](int c, size_t k, double v) {

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "hotlap/brake/brake_params_io.h"
+#include "hotlap/brake/brake_thermal_fields.h"
 #include "hotlap/ident/channel_fit.h"
 #include "hotlap/ident/fit_log.h"
 #include "hotlap/ident/log_fit.h"
@@ -54,10 +55,19 @@ struct BrakeFitResult {
 BrakeFitResult FitBrakeCorner(const brake::BrakeFile& brake, const BrakeCornerData& data,
                               const LogFitOptions& options);
 
+/// The field table's entries of the 14 parameters the fit frees (brake_thermal_fields.h), in fit
+/// order: gamma, xi, the disc's Cholesky entries l11 .. l33, then the calliper's.
+const std::vector<const brake::BrakeThermalField*>& BrakeFitFields();
+
 /// The file keys of the 14 fitted brake parameters, in fit order: "heat_partition",
 /// "mass_participation", "disc_convection_cholesky_sqrtW_per_K.l11" .. ".l33", then the same
 /// for the calliper.
 const std::vector<std::string>& BrakeParameterKeys();
+
+/// The keys the fit reports the convection in ("disc_convection_P11_W_per_K" ..
+/// "disc_convection_P33_W_per_K", then the same for the calliper), in ConvectionMatrixEntries
+/// order.
+const std::vector<std::string>& ConvectionMatrixKeys();
 
 /// The entries P11, P21, P22, P31, P32, P33 (W/K) of P = L L' of a convection polynomial, whose
 /// fields are the entries of L: the coordinates the brake fit reports in.

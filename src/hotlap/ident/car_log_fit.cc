@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "hotlap/brake/brake_thermal_fields.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/parallel_for.h"
 #include "hotlap/common/units.h"
@@ -78,11 +79,11 @@ void FitTyre(const CarFitInputs& in, Corner c, CornerFitOutcome& out,
     for (const FitParameter& p : f.fit.parameters) fitted_keys.push_back(p.key);
   }
   const tyre::TyreThermalParams<double>& p = in.car.tyres[i].params;
-  const std::vector<double> values = {p.p1, p.p2, p.p3, p.p4, p.p5, p.wear_coeff, p.wear_exponent};
-  for (size_t k = 0; k < values.size() && !out.fits.empty(); ++k) {
-    const std::string& key = TyreParameterKeys()[k];
+  for (const tyre::TyreThermalField* f : TyreFitFields()) {
+    if (out.fits.empty()) break;
+    const std::string key(f->key);
     if (std::find(fitted_keys.begin(), fitted_keys.end(), key) != fitted_keys.end()) continue;
-    out.fits.back().held[key] = values[k];
+    out.fits.back().held[key] = f->Of(p);
   }
   out.fitted = !out.fits.empty();
   out.channels = {Pair("tread_temp", "tread temperature", "\u00b0C", "C", d.tread.values,
@@ -109,10 +110,12 @@ void FitBrake(const CarFitInputs& in, Corner c, CornerFitOutcome& out,
     out.rms = {{"rms_disc_C", r.fit->channels[0].rms}, {"rms_calliper_C", r.fit->channels[1].rms}};
     // gamma and xi as reported; L as solved (its uncertainty is reported for P = L L').
     for (const FileEdit& e : FileEditsOf(*r.fit, "", in.date, in.log_name)) {
-      if (e.key == "heat_partition" || e.key == "mass_participation") edits.push_back(e);
+      const brake::BrakeThermalField* f = brake::FindBrakeThermalField(e.key);
+      if (f && f->member) edits.push_back(e);  // a top-level key of the brake file
     }
     for (const FileEdit& e : FileEditsOf(*r.cholesky_fit, "", in.date, in.log_name)) {
-      if (e.key.find("cholesky") == std::string::npos) continue;
+      const brake::BrakeThermalField* f = brake::FindBrakeThermalField(e.key);
+      if (!f || !f->polynomial) continue;  // a convection polynomial's entry
       edits.push_back({e.key, e.value,
                        fmt::format("fitted {} to {}; its uncertainty is reported for P = L L' "
                                    "(fit report)",

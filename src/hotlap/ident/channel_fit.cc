@@ -151,6 +151,15 @@ bool ResidualsLookWhite(const Predictions* p, std::span<const MeasuredChannel> c
 
 }  // namespace
 
+FitParameter FitParameterOf(std::string key, const FitHint& hint, double value) {
+  return {std::move(key),
+          std::string(hint.label),
+          std::string(hint.unit),
+          hint.lower,
+          hint.upper,
+          std::max(std::abs(value), hint.scale_floor)};
+}
+
 FitResult FitChannels(const ChannelModel& model, std::span<const FitParameter> parameters,
                       std::span<const MeasuredChannel> channels,
                       std::span<const std::vector<double>> starts, std::span<const double> time,

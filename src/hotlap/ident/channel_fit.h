@@ -47,6 +47,8 @@
 
 #include <Eigen/Core>
 
+#include "hotlap/common/fit_hint.h"
+
 namespace hotlap::ident {
 
 /// Whether a parameter is part of the model or only needed by the fit (an initial temperature).
@@ -64,6 +66,10 @@ struct FitParameter {
   /// Added to values for display (e.g. -273.15 to show a temperature in degC).
   double display_offset = 0.0;
 };
+
+/// A model parameter as a field table describes it (common/fit_hint.h): key `key`, the hint's
+/// label, unit and bounds, and scale max(|value|, hint.scale_floor).
+FitParameter FitParameterOf(std::string key, const FitHint& hint, double value);
 
 /// One measured channel at the model's samples.
 struct MeasuredChannel {

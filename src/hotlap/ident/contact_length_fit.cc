@@ -7,6 +7,7 @@
 
 #include "hotlap/common/error.h"
 #include "hotlap/ident/jet_predictor.h"
+#include "hotlap/tyre/tyre_thermal_fields.h"
 
 namespace hotlap::ident {
 
@@ -93,9 +94,11 @@ ContactLengthFitResult FitContactLength(const tyre::TyreFile& tyre, std::span<co
         fmt::format("only {} usable rolling-radius samples: p_cp1 and p_cp2 kept from the car file",
                     r.samples_used));
   } else {
-    const std::vector<FitParameter> params = {
-        {"p_cp1", "p_cp1", "m/N^p_cp2", 1e-8, 1.0, std::max(r.p_cp1, 1e-6)},
-        {"p_cp2", "p_cp2", "", 0.0, 2.0, std::max(r.p_cp2, 0.1)}};
+    // p_cp1, p_cp2 as the field table describes them.
+    std::vector<FitParameter> params;
+    for (const tyre::TyreThermalField* f : tyre::FittedTyreThermalFields("contact_length")) {
+      params.push_back(FitParameterOf(std::string(f->key), *f->fit, f->Of(tyre.params)));
+    }
     std::vector<std::vector<double>> starts = {{r.p_cp1, r.p_cp2}};
     const double n = r.samples_used, den = n * sxx - sx * sx;
     if (den > 0.0) {

@@ -9,10 +9,12 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include "hotlap/brake/brake_thermal_fields.h"
 #include "hotlap/common/atomic_file.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/read_file.h"
 #include "hotlap/ident/yaml_text_edit.h"
+#include "hotlap/tyre/tyre_thermal_fields.h"
 
 namespace hotlap::ident {
 
@@ -60,37 +62,16 @@ class CopyNames {
   std::map<std::string, std::string> by_source_;
 };
 
-// The value of a fitted key as LoadCar read it back, in the file's unit.
+// The value of a fitted key ("section.key") as LoadCar read it back, in the file's unit (the
+// fitted parameters are stored as the file gives them); NaN for a key no fit writes.
 double TyreValue(const tyre::TyreThermalParams<double>& p, const std::string& key) {
-  const std::map<std::string, double> values = {
-      {"heat_generation.p1", p.p1},
-      {"heat_generation.p2_J_per_kgN", p.p2},
-      {"heat_generation.p3_J_per_kgN", p.p3},
-      {"heat_generation.p4_J_per_kgN", p.p4},
-      {"heat_generation.p5_W_per_m2K", p.p5},
-      {"wear.wp1_mm_per_s", p.wear_coeff},
-      {"wear.wp2", p.wear_exponent},
-      {"contact_length.p_cp1", p.contact_length_coeff},
-      {"contact_length.p_cp2", p.contact_length_exponent}};
-  const auto it = values.find(key);
-  return it == values.end() ? std::nan("") : it->second;
+  const tyre::TyreThermalField* f = tyre::FindTyreThermalField(key);
+  return f && f->fit ? f->Of(p) : std::nan("");
 }
 
 double BrakeValue(const brake::BrakeThermalParams<double>& p, const std::string& key) {
-  const auto l = [](const brake::ConvectionPolynomial<double>& c) {
-    return std::map<std::string, double>{{"l11", c.l11}, {"l21", c.l21}, {"l22", c.l22},
-                                         {"l31", c.l31}, {"l32", c.l32}, {"l33", c.l33}};
-  };
-  std::map<std::string, double> values = {{"heat_partition", p.heat_partition},
-                                          {"mass_participation", p.mass_participation}};
-  for (const auto& [k, v] : l(p.disc_convection)) {
-    values["disc_convection_cholesky_sqrtW_per_K." + k] = v;
-  }
-  for (const auto& [k, v] : l(p.calliper_convection)) {
-    values["calliper_convection_cholesky_sqrtW_per_K." + k] = v;
-  }
-  const auto it = values.find(key);
-  return it == values.end() ? std::nan("") : it->second;
+  const brake::BrakeThermalField* f = brake::FindBrakeThermalField(key);
+  return f && f->fit ? f->Of(p) : std::nan("");
 }
 
 void CheckReadBack(double read, const FileEdit& e, const fs::path& file) {

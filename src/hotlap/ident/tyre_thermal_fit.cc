@@ -75,11 +75,7 @@ class WearQuadratureModel {
   WearQuadratureModel(const tyre::TyreFile& tyre, const sim::CornerSamples& samples,
                       const std::vector<double>& all, double max_step) {
     tyre::TyreThermalParams<double> p = tyre.params;
-    p.p1 = all[kP1];
-    p.p2 = all[kP2];
-    p.p3 = all[kP3];
-    p.p4 = all[kP4];
-    p.p5 = all[kP5];
+    for (int i = kP1; i <= kP5; ++i) TyreFitFields()[i]->Of(p) = all[i];
     const tyre::TyreConstants<double> constants = tyre::CalcTyreConstants(p);
     const tyre::TyreCompound& compound = *tyre.compound;
     std::vector<double> clock;  // the time state on entry to each stage, s
@@ -131,22 +127,11 @@ class WearQuadratureModel {
 };
 
 FitParameter TyreParameter(int index, const tyre::TyreThermalParams<double>& car) {
-  const auto scale = [](double value, double floor) { return std::max(std::abs(value), floor); };
+  if (index <= kWp2) {
+    const tyre::TyreThermalField& f = *TyreFitFields()[index];
+    return FitParameterOf(std::string(f.key), *f.fit, f.Of(car));
+  }
   switch (index) {
-    case kP1:
-      return {"p1", "p1", "", 0.0, 1.0, scale(car.p1, 0.05)};
-    case kP2:
-      return {"p2_J_per_kgN", "p2", "J/(kg N)", 0.0, 0.1, scale(car.p2, 1e-5)};
-    case kP3:
-      return {"p3_J_per_kgN", "p3", "J/(kg N)", 0.0, 0.1, scale(car.p3, 1e-5)};
-    case kP4:
-      return {"p4_J_per_kgN", "p4", "J/(kg N)", 0.0, 0.1, scale(car.p4, 1e-5)};
-    case kP5:
-      return {"p5_W_per_m2K", "p5", "W/(m\u00b2 K)", 0.0, 1e4, scale(car.p5, 10.0)};
-    case kWp1:
-      return {"wp1_mm_per_s", "wp1", "mm/s", 0.0, 1.0, scale(car.wear_coeff, 1e-8)};
-    case kWp2:
-      return {"wp2", "wp2", "", 0.0, 5.0, scale(car.wear_exponent, 0.5)};
     case kTread0:
       return InitialTemperatureParameter("initial_tread_temp_C", "T_tread(0)");
     case kCarcass0:
@@ -183,11 +168,10 @@ std::optional<std::array<double, 5>> EquationErrorGuess(const tyre::TyreFile& ty
   const std::vector<double> tc = SmoothedForGuess(d.carcass.values);
   // Each regressor is a heat flow with one parameter at 1 and the others at 0.
   std::array<tyre::TyreThermalParams<double>, 5> unit;
-  for (int i = 0; i < 5; ++i) {
+  for (int i = kP1; i <= kP5; ++i) {
     unit[i] = tyre.params;
-    unit[i].p1 = unit[i].p2 = unit[i].p3 = unit[i].p4 = unit[i].p5 = 0.0;
+    for (int j = kP1; j <= kP5; ++j) TyreFitFields()[j]->Of(unit[i]) = i == j ? 1.0 : 0.0;
   }
-  unit[0].p1 = unit[1].p2 = unit[2].p3 = unit[3].p4 = unit[4].p5 = 1.0;
   std::vector<double> s(n), hx(n), hy(n), hz(n), dd(n), lt(n), lc(n);
   for (size_t k = 0; k < n; ++k) {
     const tyre::TyreInput<double> in = d.samples.TyreInputAt<double>(k, 0.0);
@@ -268,11 +252,20 @@ void AddThermalUncertainty(const TyreLogModel& model, const std::vector<double>&
 
 }  // namespace
 
+const std::vector<const tyre::TyreThermalField*>& TyreFitFields() {
+  static const std::vector<const tyre::TyreThermalField*> fields = [] {
+    std::vector<const tyre::TyreThermalField*> f = tyre::FittedTyreThermalFields("heat_generation");
+    const std::vector<const tyre::TyreThermalField*> wear = tyre::FittedTyreThermalFields("wear");
+    f.insert(f.end(), wear.begin(), wear.end());
+    return f;
+  }();
+  return fields;
+}
+
 const std::vector<std::string>& TyreParameterKeys() {
   static const std::vector<std::string> keys = [] {
     std::vector<std::string> k;
-    const tyre::TyreThermalParams<double> any{};
-    for (int i = kP1; i <= kWp2; ++i) k.push_back(TyreParameter(i, any).key);
+    for (const tyre::TyreThermalField* f : TyreFitFields()) k.emplace_back(f->key);
     return k;
   }();
   return keys;
@@ -287,13 +280,7 @@ TyreFitResult FitTyreCorner(const tyre::TyreFile& tyre, const TyreCornerData& d,
   const TyreLogModel model(tyre, d.samples, options.max_step_s, options.sensor_lag_s);
   const tyre::TyreThermalParams<double>& car = tyre.params;
   std::vector<double> all(kCount);
-  all[kP1] = car.p1;
-  all[kP2] = car.p2;
-  all[kP3] = car.p3;
-  all[kP4] = car.p4;
-  all[kP5] = car.p5;
-  all[kWp1] = car.wear_coeff;
-  all[kWp2] = car.wear_exponent;
+  for (int i = kP1; i <= kWp2; ++i) all[i] = TyreFitFields()[i]->Of(car);
   all[kTread0] = StartingTemperature(d.tread, time, options.initial_state, d.fallback_tread_temp);
   all[kCarcass0] =
       StartingTemperature(d.carcass, time, options.initial_state, d.fallback_carcass_temp);
@@ -410,13 +397,7 @@ TyreFitResult FitTyreCorner(const tyre::TyreFile& tyre, const TyreCornerData& d,
         "the car file");
   }
 
-  r.params.p1 = all[kP1];
-  r.params.p2 = all[kP2];
-  r.params.p3 = all[kP3];
-  r.params.p4 = all[kP4];
-  r.params.p5 = all[kP5];
-  r.params.wear_coeff = all[kWp1];
-  r.params.wear_exponent = all[kWp2];
+  for (int i = kP1; i <= kWp2; ++i) TyreFitFields()[i]->Of(r.params) = all[i];
   r.tread_model.resize(time.size());
   r.carcass_model.resize(time.size());
   r.wear_model.resize(time.size());

@@ -28,6 +28,7 @@
 #include "hotlap/ident/log_fit.h"
 #include "hotlap/sim/sampled_inputs.h"
 #include "hotlap/tyre/tyre_params_io.h"
+#include "hotlap/tyre/tyre_thermal_fields.h"
 
 namespace hotlap::ident {
 
@@ -55,6 +56,10 @@ struct TyreFitResult {
 /// Fits one corner. Throws InputError if the data have no sample.
 TyreFitResult FitTyreCorner(const tyre::TyreFile& tyre, const TyreCornerData& data,
                             const LogFitOptions& options);
+
+/// The field table's entries of the seven parameters the fit frees (tyre_thermal_fields.h), in
+/// TyreFitResult order: heat_generation's p1..p5, then wear's wp1, wp2.
+const std::vector<const tyre::TyreThermalField*>& TyreFitFields();
 
 /// The file keys of the seven fitted tyre parameters, in TyreFitResult order
 /// ("p1" .. "p5_W_per_m2K", "wp1_mm_per_s", "wp2").

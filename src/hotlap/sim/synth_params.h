@@ -22,35 +22,33 @@
 
 #include <array>
 #include <filesystem>
-#include <optional>
 #include <string>
+#include <vector>
 
+#include "hotlap/brake/brake_thermal_fields.h"
+#include "hotlap/tyre/tyre_thermal_fields.h"
 #include "hotlap/vehicle/car.h"
 
 namespace hotlap::sim {
 
-/// Tyre values to override; unset ones keep the car's.
-struct TyreOverrides {
-  std::optional<double> p1, p2, p3, p4, p5;         ///< heat_generation
-  std::optional<double> wear_coeff, wear_exponent;  ///< wear: wp1 (mm/s), wp2
-  std::optional<double> contact_length_coeff;       ///< contact_length: p_cp1
-  std::optional<double> contact_length_exponent;    ///< contact_length: p_cp2
+/// One value to override: the field table's entry it sets and its value in the file's unit.
+template <class Field>
+struct Override {
+  const Field* field = nullptr;
+  double value = 0.0;
 };
 
-/// Cholesky entries l11, l21, l22, l31, l32, l33, sqrt(W/K).
-using CholeskyOverrides = std::array<std::optional<double>, 6>;
-
-/// Brake values to override; unset ones keep the car's.
-struct BrakeOverrides {
-  std::optional<double> heat_partition, mass_participation;
-  CholeskyOverrides disc_convection, calliper_convection;
+/// One corner's values to override, in file order; the parameters not listed keep the car's.
+struct CornerOverrides {
+  std::vector<Override<tyre::TyreThermalField>> tyre;     ///< fitted entries of the tyre table
+  std::vector<Override<brake::BrakeThermalField>> brake;  ///< fitted entries of the brake table
 };
 
+/// An override file as loaded.
 struct ParameterOverrides {
   std::string name;
   std::filesystem::path path;
-  std::array<TyreOverrides, 4> tyres;    ///< by CornerIndex
-  std::array<BrakeOverrides, 4> brakes;  ///< by CornerIndex
+  std::array<CornerOverrides, 4> corners;  ///< by CornerIndex
 };
 
 /// Loads an override file; InputError naming the file, key, value and range on any problem.

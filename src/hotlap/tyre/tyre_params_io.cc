@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
+#include "hotlap/common/field_table.h"
 #include "hotlap/common/units.h"
 #include "hotlap/common/yaml_reader.h"
+#include "hotlap/tyre/tyre_thermal_fields.h"
 
 namespace hotlap::tyre {
 
@@ -52,6 +54,18 @@ GripWearTable ReadGripWearTable(YamlReader& parent, std::string_view key) {
   return table;
 }
 
+// The construction's cross-field checks, once its section is read.
+void CheckConstruction(const YamlReader& c, const TyreThermalParams<double>& p) {
+  if (!(p.rim_radius < p.unloaded_radius)) {
+    c.Fail("rim_radius_m", fmt::format("{:g} m must be smaller than unloaded_radius_m ({:g} m)",
+                                       p.rim_radius, p.unloaded_radius));
+  }
+  if (!(p.contact_width < p.width)) {
+    c.Fail("contact_width_m",
+           fmt::format("{:g} m must be smaller than width_m ({:g} m)", p.contact_width, p.width));
+  }
+}
+
 }  // namespace
 
 TyreCompound LoadTyreCompound(const std::filesystem::path& path) {
@@ -76,55 +90,14 @@ TyreFile LoadTyreFile(const std::filesystem::path& path) {
   out.compound = std::make_shared<const TyreCompound>(LoadTyreCompound(out.compound_path));
 
   TyreThermalParams<double>& p = out.params;
-  {
-    YamlReader g = y.Map("heat_generation");
-    p.p1 = g.Number("p1", Range::Closed(0.0, 1.0, ""));
-    p.p2 = g.Number("p2_J_per_kgN", Range::NonNegative("J/(kg N)"));
-    p.p3 = g.Number("p3_J_per_kgN", Range::NonNegative("J/(kg N)"));
-    p.p4 = g.Number("p4_J_per_kgN", Range::NonNegative("J/(kg N)"));
-    p.p5 = g.Number("p5_W_per_m2K", Range::NonNegative("W/(m^2 K)"));
-    g.Finish();
-  }
-  {
-    YamlReader w = y.Map("wear");
-    p.wear_coeff = w.Number("wp1_mm_per_s", Range::NonNegative("mm/s"));
-    p.wear_exponent = w.Number("wp2", Range::Closed(0.0, 10.0, ""));
-    w.Finish();
-  }
-  {
-    YamlReader c = y.Map("contact_length");
-    p.contact_length_coeff = c.Number("p_cp1", Range::Positive("m/N^p_cp2"));
-    p.contact_length_exponent = c.Number("p_cp2", Range::Closed(0.0, 2.0, ""));
-    c.Finish();
-  }
-  {
-    YamlReader c = y.Map("construction");
-    p.tread_mass = c.Number("tread_mass_kg", Range::Positive("kg"));
-    p.carcass_mass = c.Number("carcass_mass_kg", Range::Positive("kg"));
-    p.tread_heat_capacity = c.Number("tread_heat_capacity_J_per_kgK", Range::Positive("J/(kg K)"));
-    p.carcass_heat_capacity =
-        c.Number("carcass_heat_capacity_J_per_kgK", Range::Positive("J/(kg K)"));
-    p.track_conductance = c.Number("track_conductance_W_per_m2K", Range::NonNegative("W/(m^2 K)"));
-    p.contact_width = c.Number("contact_width_m", Range::Positive("m"));
-    p.reference_slip_angle =
-        DegToRad(c.Number("reference_slip_angle_deg", Range::OpenClosed(0.0, 90.0, "deg")));
-    p.non_sliding_fraction_low = c.Number("non_sliding_fraction_low", Range::Closed(0.0, 1.0, ""));
-    p.non_sliding_fraction_high =
-        c.Number("non_sliding_fraction_high", Range::Closed(0.0, 1.0, ""));
-    p.unloaded_radius = c.Number("unloaded_radius_m", Range::Positive("m"));
-    p.rim_radius = c.Number("rim_radius_m", Range::Positive("m"));
-    p.diameter = c.Number("diameter_m", Range::Positive("m"));
-    p.width = c.Number("width_m", Range::Positive("m"));
-    p.emissivity = c.Number("emissivity", Range::Closed(0.0, 1.0, ""));
-    if (!(p.rim_radius < p.unloaded_radius)) {
-      c.Fail("rim_radius_m", fmt::format("{:g} m must be smaller than unloaded_radius_m ({:g} m)",
-                                         p.rim_radius, p.unloaded_radius));
+  for (std::string_view section : TyreThermalSections()) {
+    YamlReader s = y.Map(section);
+    for (const TyreThermalField* f : TyreThermalFieldsIn(section)) {
+      const double value = s.Number(f->key, f->range);
+      f->Of(p) = FieldToSi(*f, value);
     }
-    if (!(p.contact_width < p.width)) {
-      c.Fail("contact_width_m",
-             fmt::format("{:g} m must be smaller than width_m ({:g} m)", p.contact_width, p.width));
-    }
-    c.Finish();
+    if (section == "construction") CheckConstruction(s, p);
+    s.Finish();
   }
   y.Finish();
   return out;

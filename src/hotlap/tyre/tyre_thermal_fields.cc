@@ -1,0 +1,85 @@
+#include "hotlap/tyre/tyre_thermal_fields.h"
+
+#include <array>
+
+#include <vector>
+#include "hotlap/common/field_table.h"
+
+#include "hotlap/common/units.h"
+
+namespace hotlap::tyre {
+
+namespace {
+
+using P = TyreThermalParams<double>;
+
+// How the log fits bound and show the parameters they free (tyre_thermal_fit.cc,
+// contact_length_fit.cc).
+constexpr FitHint kP1Fit{"p1", "", 0.0, 1.0, 0.05};
+constexpr FitHint kP2Fit{"p2", "J/(kg N)", 0.0, 0.1, 1e-5};
+constexpr FitHint kP3Fit{"p3", "J/(kg N)", 0.0, 0.1, 1e-5};
+constexpr FitHint kP4Fit{"p4", "J/(kg N)", 0.0, 0.1, 1e-5};
+constexpr FitHint kP5Fit{"p5", "W/(m\u00b2 K)", 0.0, 1e4, 10.0};
+constexpr FitHint kWp1Fit{"wp1", "mm/s", 0.0, 1.0, 1e-8};
+constexpr FitHint kWp2Fit{"wp2", "", 0.0, 5.0, 0.5};
+constexpr FitHint kPcp1Fit{"p_cp1", "m/N^p_cp2", 1e-8, 1.0, 1e-6};
+constexpr FitHint kPcp2Fit{"p_cp2", "", 0.0, 2.0, 0.1};
+
+double DegreesToSi(double deg) { return DegToRad(deg); }
+
+std::span<const TyreThermalField> Table() {
+  // clang-format off
+  static const auto table = std::to_array<TyreThermalField>({
+      {"heat_generation", "p1", &P::p1, Range::Closed(0.0, 1.0, ""), nullptr, &kP1Fit},
+      {"heat_generation", "p2_J_per_kgN", &P::p2, Range::NonNegative("J/(kg N)"), nullptr, &kP2Fit},
+      {"heat_generation", "p3_J_per_kgN", &P::p3, Range::NonNegative("J/(kg N)"), nullptr, &kP3Fit},
+      {"heat_generation", "p4_J_per_kgN", &P::p4, Range::NonNegative("J/(kg N)"), nullptr, &kP4Fit},
+      {"heat_generation", "p5_W_per_m2K", &P::p5, Range::NonNegative("W/(m^2 K)"), nullptr, &kP5Fit},
+      {"wear", "wp1_mm_per_s", &P::wear_coeff, Range::NonNegative("mm/s"), nullptr, &kWp1Fit},
+      {"wear", "wp2", &P::wear_exponent, Range::Closed(0.0, 10.0, ""), nullptr, &kWp2Fit},
+      {"contact_length", "p_cp1", &P::contact_length_coeff, Range::Positive("m/N^p_cp2"), nullptr, &kPcp1Fit},
+      {"contact_length", "p_cp2", &P::contact_length_exponent, Range::Closed(0.0, 2.0, ""), nullptr, &kPcp2Fit},
+      {"construction", "tread_mass_kg", &P::tread_mass, Range::Positive("kg")},
+      {"construction", "carcass_mass_kg", &P::carcass_mass, Range::Positive("kg")},
+      {"construction", "tread_heat_capacity_J_per_kgK", &P::tread_heat_capacity, Range::Positive("J/(kg K)")},
+      {"construction", "carcass_heat_capacity_J_per_kgK", &P::carcass_heat_capacity, Range::Positive("J/(kg K)")},
+      {"construction", "track_conductance_W_per_m2K", &P::track_conductance, Range::NonNegative("W/(m^2 K)")},
+      {"construction", "contact_width_m", &P::contact_width, Range::Positive("m")},
+      {"construction", "reference_slip_angle_deg", &P::reference_slip_angle, Range::OpenClosed(0.0, 90.0, "deg"), &DegreesToSi},
+      {"construction", "non_sliding_fraction_low", &P::non_sliding_fraction_low, Range::Closed(0.0, 1.0, "")},
+      {"construction", "non_sliding_fraction_high", &P::non_sliding_fraction_high, Range::Closed(0.0, 1.0, "")},
+      {"construction", "unloaded_radius_m", &P::unloaded_radius, Range::Positive("m")},
+      {"construction", "rim_radius_m", &P::rim_radius, Range::Positive("m")},
+      {"construction", "diameter_m", &P::diameter, Range::Positive("m")},
+      {"construction", "width_m", &P::width, Range::Positive("m")},
+      {"construction", "emissivity", &P::emissivity, Range::Closed(0.0, 1.0, "")},
+  });
+  // clang-format on
+  return table;
+}
+
+constexpr std::array<std::string_view, 4> kSections = {"heat_generation", "wear", "contact_length",
+                                                       "construction"};
+
+}  // namespace
+
+std::string TyreThermalField::Path() const { return std::string(section) + "." + std::string(key); }
+
+std::span<const TyreThermalField> TyreThermalFields() { return Table(); }
+
+std::span<const std::string_view> TyreThermalSections() { return kSections; }
+
+std::vector<const TyreThermalField*> TyreThermalFieldsIn(std::string_view section) {
+  return FieldsIn(Table(), section);
+}
+
+std::vector<const TyreThermalField*> FittedTyreThermalFields(std::string_view section) {
+  if (section.empty()) return FittedFields(Table());
+  return FittedFields(Table(), section);
+}
+
+const TyreThermalField* FindTyreThermalField(std::string_view path) {
+  return FindField(Table(), path);
+}
+
+}  // namespace hotlap::tyre

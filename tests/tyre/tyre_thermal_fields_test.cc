@@ -1,0 +1,155 @@
+// The tyre thermal field table: keys unique, every member covered once, the shipped car's values
+// in range, and the reader's messages naming file, field and range for every entry.
+
+#include "hotlap/tyre/tyre_thermal_fields.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include "hotlap/common/error.h"
+#include "hotlap/tyre/tyre_params_io.h"
+#include "test_util.h"
+
+namespace hotlap::tyre {
+namespace {
+
+using test::Contains;
+
+// Every value of the struct's FieldsOf (each member once), in declaration order.
+std::vector<double> MemberValues(const TyreThermalParams<double>& p) {
+  std::vector<double> out;
+  std::apply([&](const auto&... v) { (out.push_back(v), ...); },
+             TyreThermalParams<double>::FieldsOf(p));
+  return out;
+}
+
+TEST(TyreThermalFieldsTest, KeysAreUniqueWithinTheirSection) {
+  std::set<std::string> paths;
+  for (const TyreThermalField& f : TyreThermalFields()) {
+    EXPECT_FALSE(f.key.empty());
+    EXPECT_TRUE(paths.insert(f.Path()).second) << "twice: " << f.Path();
+    const auto sections = TyreThermalSections();
+    EXPECT_NE(std::find(sections.begin(), sections.end(), f.section), sections.end()) << f.Path();
+    EXPECT_EQ(FindTyreThermalField(f.Path()), &f);
+  }
+  EXPECT_EQ(FindTyreThermalField("heat_generation.no_such_key"), nullptr);
+}
+
+TEST(TyreThermalFieldsTest, EveryMemberIsCoveredExactlyOnce) {
+  const TyreThermalParams<double> zero{};
+  ASSERT_EQ(TyreThermalFields().size(), MemberValues(zero).size());
+  // A distinct value through each entry; reading the struct back must find each exactly once (a
+  // member no entry names stays 0, a member two entries name keeps only the later value).
+  TyreThermalParams<double> p{};
+  std::vector<double> expected;
+  for (size_t i = 0; i < TyreThermalFields().size(); ++i) {
+    TyreThermalFields()[i].Of(p) = 1.0 + static_cast<double>(i);
+    expected.push_back(1.0 + static_cast<double>(i));
+  }
+  std::vector<double> got = MemberValues(p);
+  std::sort(got.begin(), got.end());
+  EXPECT_EQ(got, expected);
+  // The const accessor reads the same member.
+  const TyreThermalParams<double>& c = p;
+  for (size_t i = 0; i < TyreThermalFields().size(); ++i) {
+    EXPECT_EQ(TyreThermalFields()[i].Of(c), 1.0 + static_cast<double>(i));
+  }
+}
+
+TEST(TyreThermalFieldsTest, SectionsListTheirEntriesInTableOrder) {
+  size_t count = 0;
+  for (std::string_view section : TyreThermalSections()) {
+    const std::vector<const TyreThermalField*> in = TyreThermalFieldsIn(section);
+    EXPECT_FALSE(in.empty()) << section;
+    for (const TyreThermalField* f : in) {
+      EXPECT_EQ(f, &TyreThermalFields()[count]) << "table not grouped by section: " << f->Path();
+      ++count;
+    }
+  }
+  EXPECT_EQ(count, TyreThermalFields().size());
+}
+
+TEST(TyreThermalFieldsTest, FittedEntriesAreTheThreeFittedSections) {
+  std::vector<std::string> fitted;
+  for (const TyreThermalField* f : FittedTyreThermalFields()) {
+    fitted.push_back(f->Path());
+    EXPECT_LT(f->fit->lower, f->fit->upper) << f->Path();
+    EXPECT_GT(f->fit->scale_floor, 0.0) << f->Path();
+    EXPECT_EQ(f->to_si, nullptr) << "a fitted value is stored as the file gives it";
+  }
+  EXPECT_EQ(fitted, (std::vector<std::string>{
+                        "heat_generation.p1", "heat_generation.p2_J_per_kgN",
+                        "heat_generation.p3_J_per_kgN", "heat_generation.p4_J_per_kgN",
+                        "heat_generation.p5_W_per_m2K", "wear.wp1_mm_per_s", "wear.wp2",
+                        "contact_length.p_cp1", "contact_length.p_cp2"}));
+  EXPECT_EQ(FittedTyreThermalFields("wear").size(), 2u);
+  EXPECT_TRUE(FittedTyreThermalFields("construction").empty());
+}
+
+TEST(TyreThermalFieldsTest, ShippedTyresAreInRangeAndHoldExactlyTheTableKeys) {
+  for (const char* corner : {"fl", "fr", "rl", "rr"}) {
+    const std::string file = (test::Gen7Dir() / "tyres" / (std::string(corner) + ".yaml")).string();
+    const YAML::Node root = YAML::LoadFile(file);
+    size_t keys = 0;
+    for (std::string_view section : TyreThermalSections()) {
+      const YAML::Node s = root[std::string(section)];
+      ASSERT_TRUE(s.IsMap()) << file << " " << section;
+      keys += s.size();
+    }
+    EXPECT_EQ(keys, TyreThermalFields().size()) << file;
+    for (const TyreThermalField& f : TyreThermalFields()) {
+      const YAML::Node v = root[std::string(f.section)][std::string(f.key)];
+      ASSERT_TRUE(v.IsScalar()) << file << ": no " << f.Path();
+      EXPECT_TRUE(f.range.Contains(v.as<double>()))
+          << file << ": " << f.Path() << " = " << v.as<double>() << " not " << f.range.Describe();
+    }
+    // The loader puts each file value where the table says, converted to SI.
+    const TyreFile loaded = LoadTyreFile(file);
+    for (const TyreThermalField& f : TyreThermalFields()) {
+      const double v = root[std::string(f.section)][std::string(f.key)].as<double>();
+      EXPECT_EQ(f.Of(loaded.params), f.to_si ? f.to_si(v) : v) << f.Path();
+    }
+  }
+  const TyreThermalField* slip = FindTyreThermalField("construction.reference_slip_angle_deg");
+  ASSERT_NE(slip, nullptr);
+  ASSERT_NE(slip->to_si, nullptr);
+  EXPECT_NEAR(slip->to_si(180.0), M_PI, 1e-15);
+}
+
+// Each entry set out of its range in a copy of the shipped rear-right tyre: the reader's message
+// names the file, the field and the allowed range.
+TEST(TyreThermalFieldsTest, ReaderErrorNamesFileFieldAndRangeForEveryEntry) {
+  test::TempDir dir;
+  dir.Write("compound.yaml", test::ReadTextFile(test::Gen7Dir() / "tyres" / "compound.yaml"));
+  int checked = 0;
+  for (const TyreThermalField& f : TyreThermalFields()) {
+    const double bad = std::isfinite(f.range.min) ? f.range.min - 1.0 : f.range.max + 1.0;
+    if (!std::isfinite(bad)) continue;
+    YAML::Node root = YAML::LoadFile((test::Gen7Dir() / "tyres" / "rr.yaml").string());
+    root[std::string(f.section)][std::string(f.key)] = bad;
+    YAML::Emitter out;
+    out << root;
+    const std::filesystem::path path = dir.Write("rr.yaml", out.c_str());
+    std::string message;
+    try {
+      LoadTyreFile(path);
+    } catch (const InputError& e) {
+      message = e.what();
+    }
+    EXPECT_TRUE(Contains(message, path.string())) << f.Path();
+    EXPECT_TRUE(Contains(message, "field '" + f.Path() + "'")) << f.Path();
+    EXPECT_TRUE(Contains(message, f.range.Describe())) << f.Path();
+    ++checked;
+  }
+  EXPECT_EQ(checked, static_cast<int>(TyreThermalFields().size()));
+}
+
+}  // namespace
+}  // namespace hotlap::tyre
