@@ -1,10 +1,9 @@
 #include "hotlap/tyre/tyre_thermal_fields.h"
 
 #include <array>
-
 #include <vector>
-#include "hotlap/common/field_table.h"
 
+#include "hotlap/common/field_table.h"
 #include "hotlap/common/units.h"
 
 namespace hotlap::tyre {
