@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include "field_table_checks.h"
 #include "hotlap/brake/brake_params_io.h"
 #include "hotlap/common/error.h"
 #include "test_util.h"
@@ -50,21 +51,13 @@ TEST(BrakeThermalFieldsTest, KeysAreUniqueWithinTheirSection) {
 }
 
 TEST(BrakeThermalFieldsTest, EveryMemberIsCoveredExactlyOnce) {
-  const BrakeThermalParams<double> zero{};
-  ASSERT_EQ(BrakeThermalFields().size(), MemberValues(zero).size());
+  test::ExpectEveryMemberCoveredOnce<BrakeThermalParams<double>>(
+      BrakeThermalFields(), [](const BrakeThermalParams<double>& p) { return MemberValues(p); });
   BrakeThermalParams<double> p{};
-  std::vector<double> expected;
   for (size_t i = 0; i < BrakeThermalFields().size(); ++i) {
     BrakeThermalFields()[i].Of(p) = 1.0 + static_cast<double>(i);
-    expected.push_back(1.0 + static_cast<double>(i));
   }
-  std::vector<double> got = MemberValues(p);
-  std::sort(got.begin(), got.end());
-  EXPECT_EQ(got, expected);
   const BrakeThermalParams<double>& c = p;
-  for (size_t i = 0; i < BrakeThermalFields().size(); ++i) {
-    EXPECT_EQ(BrakeThermalFields()[i].Of(c), 1.0 + static_cast<double>(i));
-  }
   // The polynomial entries land in the polynomial they name.
   EXPECT_EQ(FindBrakeThermalField("disc_convection_cholesky_sqrtW_per_K.l33")->Of(c),
             p.disc_convection.l33);
@@ -110,26 +103,11 @@ TEST(BrakeThermalFieldsTest, ShippedBrakesAreInRangeAndLoadWhereTheTableSays) {
 // message names the file, the field and the allowed range.
 TEST(BrakeThermalFieldsTest, ReaderErrorNamesFileFieldAndRangeForEveryBoundedEntry) {
   test::TempDir dir;
-  int checked = 0;
-  for (const BrakeThermalField& f : BrakeThermalFields()) {
-    const double bad = std::isfinite(f.range.min) ? f.range.min - 1.0 : f.range.max + 1.0;
-    if (!std::isfinite(bad)) continue;  // off-diagonal Cholesky entries take any value
-    YAML::Node root = YAML::LoadFile((test::Gen7Dir() / "brakes" / "front.yaml").string());
-    NodeOf(root, f) = bad;
-    YAML::Emitter out;
-    out << root;
-    const std::filesystem::path path = dir.Write("front.yaml", out.c_str());
-    std::string message;
-    try {
-      LoadBrakeFile(path);
-    } catch (const InputError& e) {
-      message = e.what();
-    }
-    EXPECT_TRUE(Contains(message, path.string())) << f.Path();
-    EXPECT_TRUE(Contains(message, "field '" + f.Path() + "'")) << f.Path();
-    EXPECT_TRUE(Contains(message, f.range.Describe())) << f.Path();
-    ++checked;
-  }
+  const int checked = test::ExpectReaderErrorsNameFileFieldAndRange(
+      BrakeThermalFields(), test::Gen7Dir() / "brakes" / "front.yaml", dir, "front.yaml",
+      [](YAML::Node& root, const BrakeThermalField& f, double v) { NodeOf(root, f) = v; },
+      [](const std::filesystem::path& path) { LoadBrakeFile(path); });
+  // All but the six off-diagonal Cholesky entries, which take any value.
   EXPECT_EQ(checked, static_cast<int>(BrakeThermalFields().size()) - 6);
 }
 

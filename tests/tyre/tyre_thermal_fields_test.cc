@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include "field_table_checks.h"
 #include "hotlap/common/error.h"
 #include "hotlap/tyre/tyre_params_io.h"
 #include "test_util.h"
@@ -43,24 +44,8 @@ TEST(TyreThermalFieldsTest, KeysAreUniqueWithinTheirSection) {
 }
 
 TEST(TyreThermalFieldsTest, EveryMemberIsCoveredExactlyOnce) {
-  const TyreThermalParams<double> zero{};
-  ASSERT_EQ(TyreThermalFields().size(), MemberValues(zero).size());
-  // A distinct value through each entry; reading the struct back must find each exactly once (a
-  // member no entry names stays 0, a member two entries name keeps only the later value).
-  TyreThermalParams<double> p{};
-  std::vector<double> expected;
-  for (size_t i = 0; i < TyreThermalFields().size(); ++i) {
-    TyreThermalFields()[i].Of(p) = 1.0 + static_cast<double>(i);
-    expected.push_back(1.0 + static_cast<double>(i));
-  }
-  std::vector<double> got = MemberValues(p);
-  std::sort(got.begin(), got.end());
-  EXPECT_EQ(got, expected);
-  // The const accessor reads the same member.
-  const TyreThermalParams<double>& c = p;
-  for (size_t i = 0; i < TyreThermalFields().size(); ++i) {
-    EXPECT_EQ(TyreThermalFields()[i].Of(c), 1.0 + static_cast<double>(i));
-  }
+  test::ExpectEveryMemberCoveredOnce<TyreThermalParams<double>>(
+      TyreThermalFields(), [](const TyreThermalParams<double>& p) { return MemberValues(p); });
 }
 
 TEST(TyreThermalFieldsTest, SectionsListTheirEntriesInTableOrder) {
@@ -128,26 +113,12 @@ TEST(TyreThermalFieldsTest, ShippedTyresAreInRangeAndHoldExactlyTheTableKeys) {
 TEST(TyreThermalFieldsTest, ReaderErrorNamesFileFieldAndRangeForEveryEntry) {
   test::TempDir dir;
   dir.Write("compound.yaml", test::ReadTextFile(test::Gen7Dir() / "tyres" / "compound.yaml"));
-  int checked = 0;
-  for (const TyreThermalField& f : TyreThermalFields()) {
-    const double bad = std::isfinite(f.range.min) ? f.range.min - 1.0 : f.range.max + 1.0;
-    if (!std::isfinite(bad)) continue;
-    YAML::Node root = YAML::LoadFile((test::Gen7Dir() / "tyres" / "rr.yaml").string());
-    root[std::string(f.section)][std::string(f.key)] = bad;
-    YAML::Emitter out;
-    out << root;
-    const std::filesystem::path path = dir.Write("rr.yaml", out.c_str());
-    std::string message;
-    try {
-      LoadTyreFile(path);
-    } catch (const InputError& e) {
-      message = e.what();
-    }
-    EXPECT_TRUE(Contains(message, path.string())) << f.Path();
-    EXPECT_TRUE(Contains(message, "field '" + f.Path() + "'")) << f.Path();
-    EXPECT_TRUE(Contains(message, f.range.Describe())) << f.Path();
-    ++checked;
-  }
+  const int checked = test::ExpectReaderErrorsNameFileFieldAndRange(
+      TyreThermalFields(), test::Gen7Dir() / "tyres" / "rr.yaml", dir, "rr.yaml",
+      [](YAML::Node& root, const TyreThermalField& f, double v) {
+        root[std::string(f.section)][std::string(f.key)] = v;
+      },
+      [](const std::filesystem::path& path) { LoadTyreFile(path); });
   EXPECT_EQ(checked, static_cast<int>(TyreThermalFields().size()));
 }
 
