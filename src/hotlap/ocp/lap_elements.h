@@ -141,12 +141,14 @@ struct LateralFn {
 
 /// w times a variable times a constant: in (w, x) -> c w x. The yaw rate's dr/ds = w Mz / I_z
 /// (c = 1 / I_z) and the heading error's dxi/ds + kappa_g = w r (c = 1; the road's -kappa_g is a
-/// constant of the defect row), in both lap problems.
+/// constant of the defect row), in both lap problems. Evaluated as (w x) c, the order the stock
+/// car's own yaw element had: its 15 m solves from the QSS guess are sensitive to rounding (c (w x)
+/// took the limited lap's from 92 iterations to 199; docs/optimal-control.md, "Speed").
 struct ScaledProductFn {
   double c;
   template <class T>
   void operator()(const T* in, T* out) const {
-    out[0] = c * in[0] * in[1];
+    out[0] = in[0] * in[1] * c;
   }
 };
 
