@@ -182,6 +182,7 @@ TEST_F(LapCommandTest, BadInputFailsCleanlyWithoutOutput) {
       {"optimise --warm-start " + backwards.string(), "is not a saved lap"},
       {"optimise --warm-start " + (dir() / "missing.bin").string(), "missing.bin"},
       {"optimise --car f1-2014 --warm-start " + backwards.string(), "does not apply"},
+      {"optimise --save-solution " + (dir() / "no" / "such" / "x.bin").string(), "--save-solution"},
   };
   for (const Case& c : cases) {
     const RunResult r = Run(c.args + " --out " + out.string() + " --json " + json.string());
