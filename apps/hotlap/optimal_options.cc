@@ -64,9 +64,9 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
   a.stock_car_only.push_back(sub->add_option(
       "--save-solution", a.save_solution,
       "Save the solved lap (point and multipliers) for --warm-start (binary, this machine)"));
-  a.stock_car_only.push_back(
-      sub->add_flag("--single-process", a.single_process,
-                    "Solve the limited lap after the free one, not beside it in a second process"));
+  a.stock_car_only.push_back(sub->add_flag(
+      "--single-process", a.single_process,
+      "With a comparison: the limited lap after the free one, not beside it in a second process"));
   sub->add_option("--ipopt-option", a.ipopt_options,
                   "An Ipopt option as NAME=VALUE (repeatable), e.g. mumps_pivot_order=5")
       ->check([](const std::string& s) {
