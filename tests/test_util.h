@@ -19,6 +19,7 @@
 
 #include <gtest/gtest.h>
 
+#include "hotlap/common/error.h"
 #include "hotlap/common/scalar.h"
 
 namespace hotlap::test {
@@ -65,6 +66,18 @@ inline std::string ReplaceOnce(std::string text, const std::string& from, const 
 inline ::testing::AssertionResult Contains(const std::string& text, const std::string& part) {
   if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << "'" << text << "' does not contain '" << part << "'";
+}
+
+/// The message of the InputError that `f()` throws; "" and a test failure if it throws none.
+template <typename F>
+std::string InputErrorOf(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no InputError";
+  return "";
 }
 
 /// Central difference of `f` with respect to the double that `select(x)` refers to, with a relative

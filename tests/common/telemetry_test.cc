@@ -22,18 +22,7 @@ namespace fs = std::filesystem;
 constexpr double kTol = 1e-12;
 
 using test::Contains;
-
-// The message of the InputError that `f` throws ("" and a failure if none).
-template <typename F>
-std::string InputErrorOf(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError";
-  return "";
-}
+using test::InputErrorOf;
 
 // A fresh folder per test, removed with everything in it at the end.
 class TelemetryTest : public ::testing::Test {

@@ -97,20 +97,8 @@ int ExpectTruthInsideJointIntervals(const CornerFitOutcome& c) {
   return checked;
 }
 
-// The message of the InputError `f` throws; fails the test if it throws none.
-std::string InputErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError";
-  return "";
-}
-
-bool Contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
+using test::Contains;
+using test::InputErrorOf;
 
 TEST_F(CarLogFitTest, TyreFitRecoversTheTruthAndEditsTheFittedValues) {
   const CarFitResult r = FitCarToLog(*car_, *log_, Options(CarFitKind::kTyre, {kRr}));

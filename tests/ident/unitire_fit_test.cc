@@ -219,12 +219,7 @@ TEST(RequireFitAndPredictTempsTest, EveryTemperatureInTheDataAndNoneInBothRoles)
   o.fit_temps = {CelsiusToKelvin(20.0), CelsiusToKelvin(100.0)};
   EXPECT_NO_THROW(RequireFitAndPredictTemps(samples, o, {CelsiusToKelvin(60.0)}, "rig.csv"));
   const auto message = [&](const std::vector<double>& predict) {
-    try {
-      RequireFitAndPredictTemps(samples, o, predict, "rig.csv");
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return test::InputErrorOf([&] { RequireFitAndPredictTemps(samples, o, predict, "rig.csv"); });
   };
   // A predict temperature with no sample within 1 K: named with the file.
   EXPECT_PRED2(test::Contains, message({CelsiusToKelvin(40.0)}),

@@ -59,12 +59,7 @@ TEST(LapStartFileTest, RefusesWhatIsNotASavedLap) {
   const auto message = [&](const std::string& content) {
     const auto bad = dir.path() / "bad.bin";
     test::WriteTextFile(bad, content);
-    try {
-      ReadLapStart(bad);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return test::InputErrorOf([&] { ReadLapStart(bad); });
   };
   EXPECT_PRED2(test::Contains, message("distance_m,offset_m\n"), "is not a saved lap");
   EXPECT_PRED2(test::Contains, message(bytes.substr(0, bytes.size() - 3)), "bad.bin");

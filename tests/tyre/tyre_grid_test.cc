@@ -46,12 +46,7 @@ TEST(ParseGridAxisTest, ReadsNameAndRange) {
 
 TEST(ParseGridAxisTest, RefusesBadTextWithTheReason) {
   const auto message = [](const std::string& text) {
-    try {
-      ParseGridAxis(text);
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return test::InputErrorOf([&] { ParseGridAxis(text); });
   };
   EXPECT_PRED2(test::Contains, message("slip-angle-deg"), "no '='");
   EXPECT_PRED2(test::Contains, message("slip=0:1:0.1"), "unknown input 'slip'");
