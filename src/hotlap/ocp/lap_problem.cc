@@ -385,6 +385,7 @@ struct Builder {
       nlp.AddLinear(row, b[j], 1.0);
       nlp.AddLinear(row, a[j], -1.0);
     }
+    layout.closure_rows = static_cast<int>(periodic.size());
     // The driver's hands and feet: |c_{k+1} - c_k| <= rate * dt, dt = ds (w_k + w_k+1) / 2.
     AddRateLimit(&NodeVars::steer, options.max_steer_rate, 0.01);
     if (!options.independent_drive_and_brake) {
@@ -445,7 +446,6 @@ struct Builder {
     const int before_closure = nlp.constraints();
     AddPeriodicityAndObjective();
     // The closure's rows come first, then the rate limits' pairs per interval.
-    layout.closure_rows = options.periodic_thermal ? layout.defects_per_interval : 5;
     layout.rate_blocks =
         (nlp.constraints() - before_closure - layout.closure_rows) / (2 * intervals);
     if (layout.rows() - intervals * defects_left_out != nlp.constraints() ||
