@@ -14,18 +14,6 @@ namespace {
 
 using test::Contains;
 
-// Runs `f` and returns the InputError's message; fails the test if none is thrown.
-template <class F>
-std::string ErrorOf(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError thrown";
-  return "";
-}
-
 TEST(RangeTest, ContainsHonoursOpenAndClosedEnds) {
   EXPECT_TRUE(Range::Positive("kg").Contains(1e-300));
   EXPECT_FALSE(Range::Positive("kg").Contains(0.0));
@@ -90,21 +78,21 @@ TEST_F(YamlReaderTest, ReadsEveryKindOfField) {
 }
 
 TEST_F(YamlReaderTest, MissingFileAndBadSyntaxAndNonMapping) {
-  EXPECT_TRUE(
-      Contains(ErrorOf([&] { YamlReader::Load(dir_.path() / "nope.yaml"); }), "no such file"));
+  EXPECT_TRUE(Contains(test::InputErrorOf([&] { YamlReader::Load(dir_.path() / "nope.yaml"); }),
+                       "no such file"));
   const auto bad = Write("a: 1\nb: [1, 2\nc: 3\n");
-  const std::string m = ErrorOf([&] { YamlReader::Load(bad); });
+  const std::string m = test::InputErrorOf([&] { YamlReader::Load(bad); });
   EXPECT_TRUE(Contains(m, bad.string() + ":"));
   EXPECT_TRUE(Contains(m, "YAML syntax error"));
   const auto list = Write("- 1\n- 2\n");
-  EXPECT_TRUE(Contains(ErrorOf([&] { YamlReader::Load(list); }), "expected a mapping"));
+  EXPECT_TRUE(Contains(test::InputErrorOf([&] { YamlReader::Load(list); }), "expected a mapping"));
 }
 
 TEST_F(YamlReaderTest, OutOfRangeNamesFileFieldValueAndRange) {
   const auto path = Write("inner:\n  mass_kg: -2\n");
   YamlReader y = YamlReader::Load(path);
   YamlReader inner = y.Map("inner");
-  const std::string m = ErrorOf([&] { inner.Number("mass_kg", Range::Positive("kg")); });
+  const std::string m = test::InputErrorOf([&] { inner.Number("mass_kg", Range::Positive("kg")); });
   EXPECT_EQ(m, path.string() + ": field 'inner.mass_kg': value -2 is out of range: must be > 0 kg");
 }
 
@@ -112,34 +100,35 @@ TEST_F(YamlReaderTest, RejectsNonNumbers) {
   YamlReader y =
       YamlReader::Load(Write("a: abc\nb: 1.5kg\nc: .nan\nd: [1]\ne: \"\"\nf: 1e999\ng: 0x10\n"));
   const Range any = Range::Any("");
-  EXPECT_TRUE(Contains(ErrorOf([&] { y.Number("a", any); }), "'abc' is not a number"));
-  EXPECT_TRUE(Contains(ErrorOf([&] { y.Number("b", any); }), "'1.5kg' is not a number"));
-  EXPECT_TRUE(Contains(ErrorOf([&] { y.Number("c", any); }), "field 'c'"));
-  EXPECT_TRUE(Contains(ErrorOf([&] { y.Number("d", any); }), "expected a number"));
-  EXPECT_TRUE(Contains(ErrorOf([&] { y.String("e"); }), "non-empty"));
-  EXPECT_TRUE(Contains(ErrorOf([&] { y.Number("f", any); }), "field 'f'"));  // overflows
-  EXPECT_TRUE(Contains(ErrorOf([&] { y.Number("g", any); }), "'0x10' is not a number"));
+  EXPECT_TRUE(Contains(test::InputErrorOf([&] { y.Number("a", any); }), "'abc' is not a number"));
+  EXPECT_TRUE(Contains(test::InputErrorOf([&] { y.Number("b", any); }), "'1.5kg' is not a number"));
+  EXPECT_TRUE(Contains(test::InputErrorOf([&] { y.Number("c", any); }), "field 'c'"));
+  EXPECT_TRUE(Contains(test::InputErrorOf([&] { y.Number("d", any); }), "expected a number"));
+  EXPECT_TRUE(Contains(test::InputErrorOf([&] { y.String("e"); }), "non-empty"));
+  EXPECT_TRUE(Contains(test::InputErrorOf([&] { y.Number("f", any); }), "field 'f'"));  // overflows
+  EXPECT_TRUE(Contains(test::InputErrorOf([&] { y.Number("g", any); }), "'0x10' is not a number"));
 }
 
 // A key with another unit suffix is a missing field plus a hint naming the key that was found.
 TEST_F(YamlReaderTest, MissingFieldSuggestsTheKeyFound) {
   const auto path = Write("tread_mass_g: 900\n");
   YamlReader y = YamlReader::Load(path);
-  const std::string m = ErrorOf([&] { y.Number("tread_mass_kg", Range::Positive("kg")); });
+  const std::string m =
+      test::InputErrorOf([&] { y.Number("tread_mass_kg", Range::Positive("kg")); });
   EXPECT_TRUE(Contains(m, path.string()));
   EXPECT_TRUE(Contains(m, "missing field 'tread_mass_kg'"));
   EXPECT_TRUE(Contains(m, "found 'tread_mass_g' instead"));
   EXPECT_TRUE(Contains(m, "> 0 kg"));
   // Nothing close: no suggestion.
   YamlReader z = YamlReader::Load(Write("completely_different: 1\n"));
-  EXPECT_FALSE(Contains(ErrorOf([&] { z.Number("p1", Range::Any("")); }), "found"));
+  EXPECT_FALSE(Contains(test::InputErrorOf([&] { z.Number("p1", Range::Any("")); }), "found"));
 }
 
 TEST_F(YamlReaderTest, FinishRejectsUnreadKeysWithSuggestion) {
   const auto path = Write("emissivity: 0.9\nemisivity: 0.9\nextra: 1\n");
   YamlReader y = YamlReader::Load(path);
   y.Number("emissivity", Range::Closed(0, 1, ""));
-  const std::string m = ErrorOf([&] { y.Finish(); });
+  const std::string m = test::InputErrorOf([&] { y.Finish(); });
   EXPECT_TRUE(Contains(m, path.string() + ": unknown field 'emisivity'"));
   EXPECT_TRUE(Contains(m, "did you mean 'emissivity'"));
   EXPECT_TRUE(Contains(m, "1 more unknown field"));
@@ -149,17 +138,17 @@ TEST_F(YamlReaderTest, ChoiceFilePathMapAndListErrors) {
   const auto path =
       Write("model: c\nref: missing.yaml\nscalar: 3\nrows:\n  - {a: 1}\nbadrows:\n  - 1\n  - 2\n");
   YamlReader y = YamlReader::Load(path);
-  const std::string choice = ErrorOf([&] { y.Choice("model", {"a", "b"}); });
+  const std::string choice = test::InputErrorOf([&] { y.Choice("model", {"a", "b"}); });
   EXPECT_TRUE(Contains(choice, "field 'model'"));
   EXPECT_TRUE(Contains(choice, "'c' is not allowed"));
   EXPECT_TRUE(Contains(choice, "'a'"));
-  const std::string file = ErrorOf([&] { y.FilePath("ref"); });
+  const std::string file = test::InputErrorOf([&] { y.FilePath("ref"); });
   EXPECT_TRUE(Contains(file, "field 'ref'"));
   EXPECT_TRUE(Contains(file, "does not exist"));
-  EXPECT_TRUE(Contains(ErrorOf([&] { y.Map("scalar"); }), "expected a mapping"));
-  EXPECT_TRUE(Contains(ErrorOf([&] { y.Map("absent"); }), "missing field 'absent'"));
-  EXPECT_TRUE(Contains(ErrorOf([&] { y.MapList("rows", 2); }), "at least 2 entries"));
-  EXPECT_TRUE(Contains(ErrorOf([&] { y.MapList("badrows", 1); }), "field 'badrows[0]'"));
+  EXPECT_TRUE(Contains(test::InputErrorOf([&] { y.Map("scalar"); }), "expected a mapping"));
+  EXPECT_TRUE(Contains(test::InputErrorOf([&] { y.Map("absent"); }), "missing field 'absent'"));
+  EXPECT_TRUE(Contains(test::InputErrorOf([&] { y.MapList("rows", 2); }), "at least 2 entries"));
+  EXPECT_TRUE(Contains(test::InputErrorOf([&] { y.MapList("badrows", 1); }), "field 'badrows[0]'"));
 }
 
 TEST_F(YamlReaderTest, FailNamesFileAndDottedField) {
@@ -167,7 +156,7 @@ TEST_F(YamlReaderTest, FailNamesFileAndDottedField) {
   YamlReader y = YamlReader::Load(path);
   YamlReader inner = y.Map("outer").Map("inner");
   EXPECT_EQ(inner.Where("x"), path.string() + ": field 'outer.inner.x'");
-  EXPECT_EQ(ErrorOf([&] { inner.Fail("x", "too big"); }),
+  EXPECT_EQ(test::InputErrorOf([&] { inner.Fail("x", "too big"); }),
             path.string() + ": field 'outer.inner.x': too big");
 }
 

@@ -13,18 +13,11 @@
 
 #include <functional>
 #include <optional>
-#include <string>
 #include <vector>
 
 #include "hotlap/ocp/ipopt_solve.h"
 
 namespace hotlap::ocp {
-
-/// A SolveResult as bytes and back (SolveResult's fields except nothing: status, message, x,
-/// multipliers, objective, iteration counts, infeasibilities, seconds). DecodeSolveResults throws
-/// InputError on bytes that are not a whole encoding.
-std::string EncodeSolveResults(const std::vector<SolveResult>& results);
-std::vector<SolveResult> DecodeSolveResults(const std::string& bytes);
 
 /// A solve running in a child process.
 class ChildSolve {

@@ -11,7 +11,7 @@
 #include "hotlap/common/atomic_file.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/read_file.h"
-#include "hotlap/ocp/child_solve.h"
+#include "hotlap/ocp/solve_result_bytes.h"
 
 namespace hotlap::ocp {
 
