@@ -570,10 +570,15 @@ std::vector<double> ResampleLapPoint(const std::vector<double>& x, int from_node
   return out;
 }
 
-std::vector<double> StartPointOnMesh(const LapSolution& solution, const track::Track& track,
-                                     double step_m) {
-  return ResampleLapPoint(solution.solve.x, static_cast<int>(solution.distance.size()),
-                          LapNodeCount(track, step_m));
+void StartFromSolution(const SolveResult& solve, const LapLayout& from, int to_nodes,
+                       bool with_multipliers, std::vector<double>& start_point,
+                       IpoptOptions& ipopt) {
+  start_point = ResampleLapPoint(solve.x, from.nodes, to_nodes);
+  if (!with_multipliers) return;
+  const LapMultipliers m = ResampleLapMultipliers(solve, from, from.WithNodes(to_nodes));
+  ipopt.warm_z_lower = m.z_lower;
+  ipopt.warm_z_upper = m.z_upper;
+  ipopt.warm_lambda = m.lambda;
 }
 
 namespace {

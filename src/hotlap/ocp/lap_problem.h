@@ -152,11 +152,6 @@ int LapNodeCount(const track::Track& track, double step_m);
 /// a fine solve from a coarse one. InputError if x is not from_nodes whole nodes.
 std::vector<double> ResampleLapPoint(const std::vector<double>& x, int from_nodes, int to_nodes);
 
-/// A solution's point (ResampleLapPoint of solution.solve.x) on the mesh of spacing about `step_m`
-/// of the same track: the start of a solve on another mesh.
-std::vector<double> StartPointOnMesh(const LapSolution& solution, const track::Track& track,
-                                     double step_m);
-
 /// Multipliers of a lap problem (as SolveResult holds them: of the scaled programme).
 struct LapMultipliers {
   std::vector<double> z_lower, z_upper, lambda;
@@ -172,6 +167,14 @@ struct LapMultipliers {
 /// new share. The closure's rows are copied. InputError if the sizes do not match `from`.
 LapMultipliers ResampleLapMultipliers(const SolveResult& solve, const LapLayout& from,
                                       const LapLayout& to);
+
+/// The start of a solve from a solved lap (`solve`, of the layout `from`) on a mesh of `to_nodes`
+/// nodes of the same problem: its point (ResampleLapPoint) as `start_point` and, if
+/// `with_multipliers`, its multipliers (ResampleLapMultipliers) as `ipopt`'s warm start. Coarse
+/// to fine, the mesh check and a saved lap (ocp/lap_start_file.h) all start this way.
+void StartFromSolution(const SolveResult& solve, const LapLayout& from, int to_nodes,
+                       bool with_multipliers, std::vector<double>& start_point,
+                       IpoptOptions& ipopt);
 
 /// Builds and solves the lap. `guess` (a QSS lap of the same car and track, e.g. from
 /// sim::RunQssLap) gives the starting point. InputError if the car has no vehicle sections;

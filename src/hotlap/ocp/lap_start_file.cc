@@ -83,13 +83,9 @@ void UseLapStart(const LapStart& start, const track::Track& track, OptimalLapOpt
     throw InputError(fmt::format("the saved lap is of a {:.1f} m track, this one is {:.1f} m",
                                  start.track_length_m, track.length_m()));
   }
-  // The layout of this problem on the target mesh, as far as the file can tell: the same node.
-  const LapLayout to = start.layout.WithNodes(LapNodeCount(track, options.step_m));
-  options.start_point = ResampleLapPoint(start.solve.x, start.layout.nodes, to.nodes);
-  const LapMultipliers m = ResampleLapMultipliers(start.solve, start.layout, to);
-  options.ipopt.warm_z_lower = m.z_lower;
-  options.ipopt.warm_z_upper = m.z_upper;
-  options.ipopt.warm_lambda = m.lambda;
+  // This problem's layout on the target mesh, as far as the file can tell: the same node.
+  StartFromSolution(start.solve, start.layout, LapNodeCount(track, options.step_m), true,
+                    options.start_point, options.ipopt);
 }
 
 }  // namespace hotlap::ocp

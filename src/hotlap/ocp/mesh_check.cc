@@ -11,12 +11,8 @@ SolvedLap SolveOnHalfMesh(const vehicle::Car& car, const track::Track& track,
   const LapSolution& s = solved.run.solution;
   if (s.solve.ok()) {
     // Point and multipliers: a warm start, as coarse to fine does.
-    options.start_point = StartPointOnMesh(s, track, options.step_m);
-    const LapMultipliers m = ResampleLapMultipliers(
-        s.solve, s.layout, s.layout.WithNodes(LapNodeCount(track, options.step_m)));
-    options.ipopt.warm_z_lower = m.z_lower;
-    options.ipopt.warm_z_upper = m.z_upper;
-    options.ipopt.warm_lambda = m.lambda;
+    StartFromSolution(s.solve, s.layout, LapNodeCount(track, options.step_m), true,
+                      options.start_point, options.ipopt);
   }
   return SolveLap(car, track, options, "half mesh", nullptr, progress, log);
 }

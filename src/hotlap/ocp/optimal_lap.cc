@@ -141,14 +141,8 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
     run.coarse = c.solve;
     run.coarse_lap_time = c.lap_time;
     if (c.solve.ok()) {
-      lap.start_point = StartPointOnMesh(c, track, options.step_m);
-      if (options.coarse_multipliers) {
-        const LapMultipliers m = ResampleLapMultipliers(
-            c.solve, c.layout, c.layout.WithNodes(LapNodeCount(track, options.step_m)));
-        fine_ipopt.warm_z_lower = m.z_lower;
-        fine_ipopt.warm_z_upper = m.z_upper;
-        fine_ipopt.warm_lambda = m.lambda;
-      }
+      StartFromSolution(c.solve, c.layout, LapNodeCount(track, options.step_m),
+                        options.coarse_multipliers, lap.start_point, fine_ipopt);
     }
   }
   // With the coarse solve's multipliers the fine solve is a warm start (small barrier, the point
