@@ -112,12 +112,12 @@ int RunOptimal(const OptimalArgs& a) {
   fmt::print("hotlap optimal lap: car '{}' on {} ({:.1f} m)\n", car.name, track.name(),
              track.length_m());
   std::vector<ocp::SolvedLap> runs;
-  std::optional<bool> second_process;
+  bool limited_in_second_process = false;
   if (a.compare_disc_limit_C) {
     ocp::DiscLimitComparison c =
         ocp::CompareDiscLimit(car, track, LapOptions(a, a.step_m),
                               CelsiusToKelvin(*a.compare_disc_limit_C), PrintProgress, PrintLine);
-    second_process = c.limited_in_second_process;
+    limited_in_second_process = c.limited_in_second_process;
     runs.push_back(std::move(c.free));
     runs.push_back(std::move(c.limited));
   } else {
@@ -221,7 +221,7 @@ int RunOptimal(const OptimalArgs& a) {
                             "max_front_disc_temp_C", "top_speed_mps"}) {
         j[k] = j["unconstrained"][k];
       }
-      j["limited_in_second_process"] = second_process.value_or(false);
+      j["limited_in_second_process"] = limited_in_second_process;
     } else {
       j = RunJson(runs[0], a.thermal_start);
       j["command"] = "optimise";
