@@ -29,7 +29,11 @@ fs::path DataDir() {
   std::error_code ec;
   const fs::path installed = ExecutableDir() / ".." / "share" / "hotlap" / "data";
   if (fs::is_directory(installed, ec)) return installed;
-  return fs::path(HOTLAP_SOURCE_DIR) / "data";
+  // A program of the user's linked against the library: the source tree it was built from, or,
+  // once that is gone, the data `cmake --install` put in place.
+  const fs::path source = fs::path(HOTLAP_SOURCE_DIR) / "data";
+  if (fs::is_directory(source, ec)) return source;
+  return fs::path(HOTLAP_INSTALL_DATA_DIR);
 }
 
 fs::path ResolveCarFile(std::string_view name_or_path) {

@@ -8,7 +8,8 @@
 namespace hotlap {
 
 /// The data folder: $HOTLAP_DATA_DIR if set, else `<prefix>/share/hotlap/data` beside an
-/// installed binary, else the source tree's `data/`.
+/// installed binary, else the source tree's `data/` while it exists, else the data folder of the
+/// install prefix the library was configured for (`cmake --install`).
 std::filesystem::path DataDir();
 
 /// A car given as a built-in name ("gen7" -> DataDir()/cars/gen7/car.yaml) or a path to a

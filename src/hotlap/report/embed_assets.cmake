@@ -1,4 +1,4 @@
-# Embeds the HTML report's page assets in hotlap_core (included from the top CMakeLists.txt).
+# Embeds the HTML report's page assets in hotlap_report (included from the top CMakeLists.txt).
 #
 # Chart.js comes from Debian's libjs-chart.js package (the UMD build chart.min.js); the page's own
 # script and style sheet live beside this file. At configure time each file is read and written
@@ -84,5 +84,5 @@ std::string_view PageStyle() { return {kPageCss, sizeof kPageCss}; }
 }  // namespace hotlap::report::internal
 ")
 configure_file("${_hotlap_assets_cc}.in" "${_hotlap_assets_cc}" COPYONLY)
-target_sources(hotlap_core PRIVATE "${_hotlap_assets_cc}")
+target_sources(hotlap_report PRIVATE "${_hotlap_assets_cc}")
 message(STATUS "HTML reports embed Chart.js ${_hotlap_chartjs_version} from ${HOTLAP_CHARTJS_FILE}")
