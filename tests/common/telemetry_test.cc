@@ -4,8 +4,10 @@
 #include <filesystem>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -361,6 +363,59 @@ TEST_F(TelemetryTest, RewriteInCanonicalUnitsReadsBackTheSame) {
   EXPECT_NEAR(again.Channel("tread_temp", Corner::kFrontRight)[0], 350.0, 1e-9);
   EXPECT_TRUE(std::isnan(again.Channel("tread_temp", Corner::kFrontRight)[1]));
   EXPECT_EQ(again.unknown_columns()[0].first, "lap_flag");
+}
+
+// ---- Columns in memory (the Python module's logs) ----
+
+TEST_F(TelemetryTest, FromTableReadsColumnsAsReadReadsTheSameFile) {
+  const fs::path path = tmp_.Write("log.csv",
+                                   "time_s,speed_kph,slip_angle_fl_deg,lap_flag\n"
+                                   "0,180,1.5,0\n0.1,,2,1\n0.2,190,2.5,1\n");
+  const Telemetry from_file = Telemetry::Read(path);
+  CsvTable table;
+  table.path = "<columns>";
+  table.columns = {"time_s", "speed_kph", "slip_angle_fl_deg", "lap_flag"};
+  table.values = {{0.0, 0.1, 0.2},
+                  {180.0, std::numeric_limits<double>::quiet_NaN(), 190.0},
+                  {1.5, 2.0, 2.5},
+                  {0.0, 1.0, 1.0}};
+  const Telemetry in_memory = Telemetry::FromTable(table);
+  ASSERT_EQ(in_memory.size(), 3u);
+  EXPECT_EQ(in_memory.path(), fs::path("<columns>"));
+  for (const auto& [quantity, corner] :
+       {std::pair<const char*, std::optional<Corner>>{"time", std::nullopt},
+        {"speed", std::nullopt},
+        {"slip_angle", Corner::kFrontLeft}}) {
+    const std::vector<double> a = from_file.FilledChannel(quantity, corner);
+    const std::vector<double> b = in_memory.FilledChannel(quantity, corner);
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i], b[i]) << quantity << " row " << i;
+  }
+  EXPECT_NEAR(in_memory.Channel("speed")[2], 190.0 / 3.6, kTol);
+  ASSERT_EQ(in_memory.unknown_columns().size(), 1u);
+  EXPECT_EQ(in_memory.unknown_columns()[0].first, "lap_flag");
+}
+
+TEST_F(TelemetryTest, FromTableRefusesRaggedRepeatedInfiniteAndUnorderedColumns) {
+  CsvTable table;
+  table.path = "<python dict>";
+  table.columns = {"time_s", "speed_mps"};
+  table.values = {{0.0, 1.0}, {50.0}};
+  EXPECT_TRUE(Contains(InputErrorOf([&] { Telemetry::FromTable(table); }),
+                       "<python dict>: column 'speed_mps' has 1 values"));
+  table.columns = {"time_s", "time_s"};
+  table.values = {{0.0, 1.0}, {0.0, 1.0}};
+  EXPECT_TRUE(Contains(InputErrorOf([&] { Telemetry::FromTable(table); }), "given twice"));
+  table.columns = {"time_s", "speed_mps"};
+  table.values = {{0.0, 1.0}, {50.0, std::numeric_limits<double>::infinity()}};
+  EXPECT_TRUE(Contains(InputErrorOf([&] { Telemetry::FromTable(table); }),
+                       "column 'speed_mps', row 2: inf is not a finite number"));
+  table.values = {{0.0, 0.0}, {50.0, 51.0}};
+  // Rows numbered as lines under a header: the second row is line 3.
+  EXPECT_TRUE(Contains(InputErrorOf([&] { Telemetry::FromTable(table); }),
+                       "<python dict>:3: 'time_s' must be strictly increasing"));
+  table.values = {{}, {}};
+  EXPECT_TRUE(Contains(InputErrorOf([&] { Telemetry::FromTable(table); }), "no data rows"));
 }
 
 }  // namespace

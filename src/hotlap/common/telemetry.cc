@@ -228,8 +228,45 @@ Telemetry Telemetry::Read(const std::filesystem::path& path, std::string_view in
         "Telemetry::Read: index quantity must be 'time' or 'distance', not '" +
         std::string(index_quantity) + "'");
   }
-  CsvTable table = ReadCsv(path);
+  return FromTable(ReadCsv(path), index_quantity);
+}
+
+Telemetry Telemetry::FromTable(CsvTable table, std::string_view index_quantity) {
+  if (index_quantity != "time" && index_quantity != "distance") {
+    throw std::invalid_argument(
+        "Telemetry::FromTable: index quantity must be 'time' or 'distance', not '" +
+        std::string(index_quantity) + "'");
+  }
+  const std::filesystem::path path = table.path;
   const std::string file = path.string();
+  if (table.values.size() != table.columns.size()) {
+    throw std::invalid_argument("Telemetry::FromTable: one value vector per column");
+  }
+  const size_t rows = table.values.empty() ? 0 : table.values.front().size();
+  for (size_t c = 0; c < table.columns.size(); ++c) {
+    if (table.values[c].size() != rows) {
+      throw InputError(fmt::format("{}: column '{}' has {} values, column '{}' {}", file,
+                                   table.columns[c], table.values[c].size(), table.columns[0],
+                                   rows));
+    }
+    for (size_t i = 0; i < rows; ++i) {
+      if (std::isinf(table.values[c][i])) {
+        throw InputError(fmt::format("{}: column '{}', row {}: {} is not a finite number", file,
+                                     table.columns[c], i + 1, table.values[c][i]));
+      }
+    }
+    for (size_t d = 0; d < c; ++d) {
+      if (table.columns[d] == table.columns[c]) {
+        throw InputError(fmt::format("{}: column '{}' given twice", file, table.columns[c]));
+      }
+    }
+  }
+  if (rows == 0) throw InputError(fmt::format("{}: no data rows", file));
+  if (table.line_numbers.size() != rows) {
+    // Columns given in memory: row i is "line" i + 2, as if under a header line.
+    table.line_numbers.resize(rows);
+    for (size_t i = 0; i < rows; ++i) table.line_numbers[i] = static_cast<int>(i) + 2;
+  }
 
   Telemetry log;
   log.path_ = path;

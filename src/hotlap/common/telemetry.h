@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "hotlap/common/corner.h"
+#include "hotlap/common/csv.h"
 
 namespace hotlap {
 
@@ -85,6 +86,12 @@ class Telemetry {
   /// both.
   static Telemetry Read(const std::filesystem::path& path,
                         std::string_view index_quantity = "time");
+
+  /// The same from a table already in memory (e.g. columns handed over from Python): the rules of
+  /// Read() from the channel names on, plus equal column lengths, unique names and at least one
+  /// row (InputError naming `table.path`, the source's name, otherwise). Without line numbers,
+  /// row i is reported as line i + 2, as if under a header line.
+  static Telemetry FromTable(CsvTable table, std::string_view index_quantity = "time");
 
   /// The file it was read from.
   const std::filesystem::path& path() const { return path_; }
