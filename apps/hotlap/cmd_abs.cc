@@ -15,12 +15,13 @@
 #include "commands.h"
 #include "hotlap/common/csv.h"
 #include "hotlap/common/error.h"
+#include "hotlap/common/json_output.h"
+#include "hotlap/common/output_folder.h"
 #include "hotlap/common/units.h"
 #include "hotlap/sim/abs_config.h"
 #include "hotlap/sim/abs_metrics.h"
 #include "hotlap/sim/abs_run.h"
 #include "hotlap/sim/abs_scenarios.h"
-#include "output.h"
 
 namespace hotlap::app {
 

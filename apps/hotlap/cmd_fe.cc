@@ -18,12 +18,13 @@
 #include "fe_abs_report.h"
 #include "fe_output.h"
 #include "hotlap/common/error.h"
+#include "hotlap/common/json_output.h"
+#include "hotlap/common/output_folder.h"
 #include "hotlap/fe/fe_config.h"
 #include "hotlap/fe/tyre_steps.h"
 #include "hotlap/fe/vtu_writer.h"
 #include "hotlap/sim/abs_config.h"
 #include "hotlap/sim/fe_abs_stop.h"
-#include "output.h"
 
 namespace hotlap::app {
 

@@ -17,13 +17,14 @@
 #include "fit_output.h"
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/error.h"
+#include "hotlap/common/json_output.h"
+#include "hotlap/common/output_folder.h"
 #include "hotlap/common/telemetry.h"
 #include "hotlap/common/units.h"
 #include "hotlap/ident/car_log_fit.h"
 #include "hotlap/ident/fit_log.h"
 #include "hotlap/ident/fitted_car.h"
 #include "hotlap/sim/synth_params.h"
-#include "output.h"
 
 namespace hotlap::app {
 

@@ -16,6 +16,8 @@
 #include "hotlap/common/csv.h"
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/error.h"
+#include "hotlap/common/json_output.h"
+#include "hotlap/common/output_folder.h"
 #include "hotlap/common/units.h"
 #include "hotlap/ocp/min_curvature_line.h"
 #include "hotlap/sim/lap_output.h"
@@ -25,7 +27,6 @@
 #include "hotlap/track/track_io.h"
 #include "lap_report.h"
 #include "optimal_runs.h"
-#include "output.h"
 
 namespace hotlap::app {
 

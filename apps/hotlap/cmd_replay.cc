@@ -15,12 +15,13 @@
 #include "commands.h"
 #include "hotlap/common/csv.h"
 #include "hotlap/common/data_path.h"
+#include "hotlap/common/json_output.h"
+#include "hotlap/common/output_folder.h"
 #include "hotlap/common/telemetry.h"
 #include "hotlap/common/units.h"
 #include "hotlap/report/html_report.h"
 #include "hotlap/sim/replay.h"
 #include "hotlap/sim/replay_io.h"
-#include "output.h"
 
 namespace hotlap::app {
 

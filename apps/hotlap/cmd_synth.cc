@@ -12,12 +12,13 @@
 #include "commands.h"
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/error.h"
+#include "hotlap/common/json_output.h"
+#include "hotlap/common/output_folder.h"
 #include "hotlap/common/units.h"
 #include "hotlap/sim/road.h"
 #include "hotlap/sim/synth.h"
 #include "hotlap/sim/synth_params.h"
 #include "hotlap/track/track_io.h"
-#include "output.h"
 
 namespace hotlap::app {
 

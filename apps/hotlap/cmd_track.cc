@@ -11,10 +11,11 @@
 
 #include "commands.h"
 #include "hotlap/common/csv.h"
+#include "hotlap/common/json_output.h"
+#include "hotlap/common/output_folder.h"
 #include "hotlap/common/units.h"
 #include "hotlap/track/track_io.h"
 #include "hotlap/track/track_summary.h"
-#include "output.h"
 
 namespace hotlap::app {
 

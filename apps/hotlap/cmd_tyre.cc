@@ -14,12 +14,13 @@
 #include "commands.h"
 #include "hotlap/common/csv.h"
 #include "hotlap/common/error.h"
+#include "hotlap/common/json_output.h"
+#include "hotlap/common/output_folder.h"
 #include "hotlap/common/units.h"
 #include "hotlap/tyre/tyre_force_model.h"
 #include "hotlap/tyre/tyre_force_params_io.h"
 #include "hotlap/tyre/tyre_grid.h"
 #include "hotlap/tyre/tyre_params_io.h"
-#include "output.h"
 
 namespace hotlap::app {
 

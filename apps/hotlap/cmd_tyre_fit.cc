@@ -13,6 +13,8 @@
 
 #include "commands.h"
 #include "hotlap/common/error.h"
+#include "hotlap/common/json_output.h"
+#include "hotlap/common/output_folder.h"
 #include "hotlap/common/units.h"
 #include "hotlap/ident/mf_fit.h"
 #include "hotlap/ident/rig_data.h"
@@ -21,7 +23,6 @@
 #include "hotlap/tyre/tir_file.h"
 #include "hotlap/tyre/tyre_force_params_io.h"
 #include "hotlap/tyre/tyre_params_io.h"
-#include "output.h"
 
 namespace hotlap::app {
 

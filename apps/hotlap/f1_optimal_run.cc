@@ -12,11 +12,12 @@
 
 #include "hotlap/common/csv.h"
 #include "hotlap/common/error.h"
+#include "hotlap/common/json_output.h"
+#include "hotlap/common/output_folder.h"
 #include "hotlap/common/units.h"
 #include "hotlap/ocp/f1_lap_problem.h"
 #include "hotlap/ocp/solver_memory.h"
 #include "hotlap/track/track_io.h"
-#include "output.h"
 
 namespace hotlap::app {
 

@@ -7,7 +7,7 @@
 
 #include "hotlap/common/atomic_file.h"
 #include "hotlap/common/csv.h"
-#include "output.h"
+#include "hotlap/common/json_output.h"
 
 namespace hotlap::app {
 

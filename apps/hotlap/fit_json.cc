@@ -4,7 +4,7 @@
 #include <map>
 #include <string>
 
-#include "output.h"
+#include "hotlap/common/json_output.h"
 
 namespace hotlap::app {
 

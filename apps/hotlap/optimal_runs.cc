@@ -15,6 +15,8 @@
 #include "hotlap/common/csv.h"
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/error.h"
+#include "hotlap/common/json_output.h"
+#include "hotlap/common/output_folder.h"
 #include "hotlap/common/units.h"
 #include "hotlap/ocp/disc_limit_comparison.h"
 #include "hotlap/ocp/lap_start_file.h"
@@ -26,7 +28,6 @@
 #include "hotlap/track/track_io.h"
 #include "hotlap/vehicle/f1_car.h"
 #include "optimal_summary.h"
-#include "output.h"
 
 namespace hotlap::app {
 

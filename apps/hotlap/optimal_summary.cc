@@ -5,8 +5,8 @@
 #include <fmt/format.h>
 
 #include "hotlap/common/csv.h"
+#include "hotlap/common/json_output.h"
 #include "hotlap/common/units.h"
-#include "output.h"
 
 namespace hotlap::app {
 
