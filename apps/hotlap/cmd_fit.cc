@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -13,8 +14,6 @@
 #include <fmt/format.h>
 
 #include "commands.h"
-#include "fit_json.h"
-#include "fit_output.h"
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/json_output.h"
@@ -23,6 +22,9 @@
 #include "hotlap/common/units.h"
 #include "hotlap/ident/car_log_fit.h"
 #include "hotlap/ident/fit_log.h"
+#include "hotlap/ident/fit_run.h"
+#include "hotlap/ident/fit_run_json.h"
+#include "hotlap/ident/fit_run_report.h"
 #include "hotlap/ident/fitted_car.h"
 #include "hotlap/sim/synth_params.h"
 
@@ -53,6 +55,33 @@ const char* CommandName(CarFitKind kind) {
       break;
   }
   return "fit brake";
+}
+
+// The paper-style table, the uncertainties and the warnings (warnings to stderr).
+void PrintFitRun(const ident::FitRun& run) {
+  using ident::ShortNumber;
+  fmt::print("hotlap {}: {} ({} samples, {:.2f} s of log) with car '{}'\n", run.command,
+             run.telemetry, run.time.size(),
+             run.time.empty() ? 0.0 : run.time.back() - run.time.front(), run.car_name);
+  for (const ident::CornerFitOutcome& c : run.result.corners) {
+    fmt::print("{}:", CornerName(c.corner));
+    for (const auto& [key, value] : c.rms) fmt::print("  {} {:.4g}", key, value);
+    fmt::print("\n");
+    for (const auto& [p, e] : ident::ModelParameters(c)) {
+      fmt::print(
+          "  {:<12} {:>11} {:<10} std error {:>9}  95% {:<24} joint {:<24} well determined: {}\n",
+          p->label, ShortNumber(e->value + p->display_offset), p->unit, ShortNumber(e->std_error),
+          ident::IntervalText(*p, *e), ident::JointIntervalText(*p, *e), ident::VerdictText(*e));
+    }
+    for (const ident::ReportedFit& r : c.fits) {
+      for (const auto& [k, v] : r.held) fmt::print("  {:<12} {:>11} (held)\n", k, ShortNumber(v));
+    }
+    for (const std::string& w : ident::CornerWarnings(c)) {
+      std::fprintf(stderr, "hotlap: warning: %s: %s\n", std::string(CornerName(c.corner)).c_str(),
+                   w.c_str());
+    }
+  }
+  fmt::print("fitted in {:.2f} s\n", run.elapsed_s);
 }
 
 // InputError before any work if an output cannot be written where it was asked for.
@@ -98,7 +127,7 @@ int RunFit(const FitArgs& a, CarFitKind kind) {
   options.source_date = ident::TodayIsoDate();
   options.source_log = fs::path(a.telemetry).filename().string();
 
-  FitRun run;
+  ident::FitRun run;
   run.command = CommandName(kind);
   run.telemetry = a.telemetry;
   run.car_name = car.name;
@@ -126,11 +155,12 @@ int RunFit(const FitArgs& a, CarFitKind kind) {
   fmt::print("wrote {} (and the folder {})\n", a.out,
              (fs::path(a.out).parent_path() / fs::path(a.out).stem()).string());
   if (!a.json.empty()) {
-    WriteJsonFile(a.json, FitRunJson(run));
+    WriteJsonFile(a.json, ident::FitRunJson(run));
     fmt::print("wrote {}\n", a.json);
   }
   if (!a.report.empty()) {
-    for (const fs::path& p : WriteFitReport(run, a.report)) fmt::print("wrote {}\n", p.string());
+    for (const fs::path& p : ident::WriteFitReport(run, a.report))
+      fmt::print("wrote {}\n", p.string());
   }
   return 0;
 }

@@ -1,4 +1,4 @@
-#include "fit_json.h"
+#include "hotlap/ident/fit_run_json.h"
 
 #include <cmath>
 #include <map>
@@ -6,17 +6,9 @@
 
 #include "hotlap/common/json_output.h"
 
-namespace hotlap::app {
+namespace hotlap::ident {
 
 namespace {
-
-using ident::CornerFitOutcome;
-using ident::CornerWarnings;
-using ident::FitParameter;
-using ident::FitResult;
-using ident::ParameterEstimate;
-using ident::ParameterRole;
-using ident::ReportedFit;
 
 nlohmann::json Num(double v) {
   if (!std::isfinite(v)) return nullptr;
@@ -69,7 +61,7 @@ nlohmann::json FitJson(const ReportedFit& r) {
     matrix.push_back(row);
   }
   nlohmann::json channels = nlohmann::json::object();
-  for (const ident::ChannelStats& c : f.channels) {
+  for (const ChannelStats& c : f.channels) {
     channels[c.name] = {{"samples", c.samples},
                         {"rms", Num(c.rms)},
                         {"noise", Num(c.sigma)},
@@ -134,4 +126,4 @@ nlohmann::json FitRunJson(const FitRun& run) {
           {"corners", corners}};
 }
 
-}  // namespace hotlap::app
+}  // namespace hotlap::ident

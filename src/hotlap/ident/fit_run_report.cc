@@ -1,7 +1,7 @@
-#include "fit_output.h"
+#include "hotlap/ident/fit_run_report.h"
 
 #include <cmath>
-#include <cstdio>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -9,67 +9,7 @@
 #include "hotlap/common/error.h"
 #include "hotlap/report/html_report.h"
 
-namespace hotlap::app {
-
-namespace {
-
-using ident::CornerFitOutcome;
-using ident::CornerWarnings;
-using ident::FitParameter;
-using ident::ModelParameters;
-using ident::ParameterEstimate;
-using ident::ParameterRole;
-using ident::ReportedFit;
-
-std::string Short(double v) {
-  if (!std::isfinite(v)) return v > 0 ? "inf" : (v < 0 ? "-inf" : "n/a");
-  return fmt::format("{:.4g}", v);
-}
-
-std::string Interval(const FitParameter& p, const ParameterEstimate& e) {
-  return fmt::format("[{}, {}]", Short(e.ci_low + p.display_offset),
-                     Short(e.ci_high + p.display_offset));
-}
-
-// The joint interval of a model parameter; nuisance parameters are not in the family: "".
-std::string JointInterval(const FitParameter& p, const ParameterEstimate& e) {
-  if (p.role != ParameterRole::kModel) return "";
-  return fmt::format("[{}, {}]", Short(e.joint_low + p.display_offset),
-                     Short(e.joint_high + p.display_offset));
-}
-
-std::string Verdict(const ParameterEstimate& e) {
-  if (e.undetermined) return "undetermined";
-  if (e.at_bound) return "at bound";
-  return e.well_determined ? "yes" : "no";
-}
-
-}  // namespace
-
-void PrintFitRun(const FitRun& run) {
-  fmt::print("hotlap {}: {} ({} samples, {:.2f} s of log) with car '{}'\n", run.command,
-             run.telemetry, run.time.size(),
-             run.time.empty() ? 0.0 : run.time.back() - run.time.front(), run.car_name);
-  for (const CornerFitOutcome& c : run.result.corners) {
-    fmt::print("{}:", CornerName(c.corner));
-    for (const auto& [key, value] : c.rms) fmt::print("  {} {:.4g}", key, value);
-    fmt::print("\n");
-    for (const auto& [p, e] : ModelParameters(c)) {
-      fmt::print(
-          "  {:<12} {:>11} {:<10} std error {:>9}  95% {:<24} joint {:<24} well determined: {}\n",
-          p->label, Short(e->value + p->display_offset), p->unit, Short(e->std_error),
-          Interval(*p, *e), JointInterval(*p, *e), Verdict(*e));
-    }
-    for (const ReportedFit& r : c.fits) {
-      for (const auto& [k, v] : r.held) fmt::print("  {:<12} {:>11} (held)\n", k, Short(v));
-    }
-    for (const std::string& w : CornerWarnings(c)) {
-      std::fprintf(stderr, "hotlap: warning: %s: %s\n", std::string(CornerName(c.corner)).c_str(),
-                   w.c_str());
-    }
-  }
-  fmt::print("fitted in {:.2f} s\n", run.elapsed_s);
-}
+namespace hotlap::ident {
 
 std::vector<std::filesystem::path> WriteFitReport(const FitRun& run,
                                                   const std::filesystem::path& dir) {
@@ -101,8 +41,8 @@ std::vector<std::filesystem::path> WriteFitReport(const FitRun& run,
     }
     if (params.size() + c.rms.size() + 1 != summary.header.size()) continue;
     std::vector<std::string> row = {std::string(CornerName(c.corner))};
-    for (const auto& [p, e] : params) row.push_back(Short(e->value + p->display_offset));
-    for (const auto& [key, v] : c.rms) row.push_back(Short(v));
+    for (const auto& [p, e] : params) row.push_back(ShortNumber(e->value + p->display_offset));
+    for (const auto& [key, v] : c.rms) row.push_back(ShortNumber(v));
     summary.rows.push_back(row);
   }
   if (!summary.header.empty()) page.AddTable(summary);
@@ -130,24 +70,24 @@ std::vector<std::filesystem::path> WriteFitReport(const FitRun& run,
         const ParameterEstimate& e = r.fit.estimates[i];
         std::vector<std::string> row = {p.label,
                                         p.unit,
-                                        Short(e.value + p.display_offset),
-                                        Short(e.std_error),
-                                        Interval(p, e),
-                                        JointInterval(p, e),
-                                        Verdict(e),
-                                        Short(e.start + p.display_offset)};
+                                        ShortNumber(e.value + p.display_offset),
+                                        ShortNumber(e.std_error),
+                                        IntervalText(p, e),
+                                        JointIntervalText(p, e),
+                                        VerdictText(e),
+                                        ShortNumber(e.start + p.display_offset)};
         if (!c.truth.empty()) {
           const auto it = c.truth.find(p.key);
           const bool known = it != c.truth.end();
           const double t0 = known ? it->second - p.display_offset : 0.0;
-          row.push_back(known ? Short(it->second) : "");
+          row.push_back(known ? ShortNumber(it->second) : "");
           row.push_back(known ? (t0 >= e.ci_low && t0 <= e.ci_high ? "yes" : "NO") : "");
           row.push_back(known ? (t0 >= e.joint_low && t0 <= e.joint_high ? "yes" : "NO") : "");
         }
         t.rows.push_back(row);
       }
       for (const auto& [k, v] : r.held) {
-        std::vector<std::string> row = {k, "", Short(v), "held", "", "", "", ""};
+        std::vector<std::string> row = {k, "", ShortNumber(v), "held", "", "", "", ""};
         if (!c.truth.empty()) row.insert(row.end(), {"", "", ""});
         t.rows.push_back(row);
       }
@@ -186,7 +126,7 @@ std::vector<std::filesystem::path> WriteFitReport(const FitRun& run,
     for (size_t q = 0; q < run.result.corners.front().channels.size(); ++q) {
       for (const CornerFitOutcome& c : run.result.corners) {
         if (q >= c.channels.size()) continue;
-        const ident::ChannelPair& ch = c.channels[q];
+        const ChannelPair& ch = c.channels[q];
         report::LineChart chart{.title = fmt::format("{} {}", CornerName(c.corner), ch.title),
                                 .x_axis = {.label = "time", .unit = "s"},
                                 .y_axis = {.label = ch.quantity, .unit = ch.unit},
@@ -217,4 +157,4 @@ std::vector<std::filesystem::path> WriteFitReport(const FitRun& run,
   return {html, csv};
 }
 
-}  // namespace hotlap::app
+}  // namespace hotlap::ident
