@@ -20,12 +20,14 @@
 #include "hotlap/common/output_folder.h"
 #include "hotlap/common/units.h"
 #include "hotlap/ocp/min_curvature_line.h"
+#include "hotlap/sim/lap_json.h"
 #include "hotlap/sim/lap_output.h"
+#include "hotlap/sim/lap_report.h"
+#include "hotlap/sim/lap_summary.h"
 #include "hotlap/sim/qss_lap.h"
 #include "hotlap/sim/road.h"
 #include "hotlap/track/racing_line.h"
 #include "hotlap/track/track_io.h"
-#include "lap_report.h"
 #include "optimal_runs.h"
 
 namespace hotlap::app {
@@ -123,72 +125,32 @@ int RunLap(const LapArgs& a) {
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
-  // Figures.
-  std::vector<sim::LapFigures> figures;
-  std::vector<sim::BrakingZone> zones;
-  for (size_t l = 0; l < result.laps.size(); ++l) {
-    figures.push_back(sim::CalcLapFigures(result.laps[l]));
-    const auto z = sim::FindBrakingZones(result.laps[l], static_cast<int>(l) + 1);
-    zones.insert(zones.end(), z.begin(), z.end());
-  }
-  const sim::LapFigures& last = figures.back();
-  int not_reached = 0;
-  double deficit = 0.0;
-  for (const sim::QssLap& lap : result.laps) {
-    not_reached += lap.slip_points_not_reached;
-    deficit = std::max(deficit, lap.max_force_deficit);
-  }
-
   // Terminal summary.
+  const sim::StintSummary stint = sim::SummarizeStint(result);
   fmt::print("{:>4} {:>9} {:>9} {:>9}\n", "lap", "time s", "top m/s", "min m/s");
-  std::vector<std::vector<std::string>> lap_rows;
-  for (size_t l = 0; l < figures.size(); ++l) {
-    const sim::LapFigures& f = figures[l];
+  for (size_t l = 0; l < stint.laps.size(); ++l) {
+    const sim::LapFigures& f = stint.laps[l];
     fmt::print("{:>4} {:>9.3f} {:>9.2f} {:>9.2f}\n", l + 1, f.lap_time_s, f.top_speed, f.min_speed);
-    lap_rows.push_back({std::to_string(l + 1), fmt::format("{:.3f}", f.lap_time_s),
-                        fmt::format("{:.2f}", f.top_speed), fmt::format("{:.2f}", f.min_speed)});
   }
   fmt::print("braking zones{}:\n", a.laps > 1 ? " (last lap)" : "");
-  for (const sim::BrakingZone& z : zones) {
+  for (const sim::BrakingZone& z : stint.braking_zones) {
     if (z.lap != a.laps) continue;
     fmt::print("  {:6.0f} m to {:6.0f} m: {:.1f} -> {:.1f} m/s, peak {:.2f} m/s^2, {:.2f} s\n",
                z.start_m, z.end_m, z.entry_speed, z.exit_speed, z.peak_decel, z.duration_s);
   }
   fmt::print("{:<6} {:>10} {:>11} {:>9} {:>12} {:>12}\n", "corner", "tread pk C", "carcass pk C",
              "disc pk C", "calliper pk C", "wear mm/lap");
-  std::vector<std::vector<std::string>> corner_rows;
-  nlohmann::json corners;
   for (Corner c : kAllCorners) {
-    const int k = CornerIndex(c);
-    double tread = 0, carcass = 0, disc = 0, calliper = 0, wear = 0;
-    for (const sim::LapFigures& f : figures) {
-      tread = std::max(tread, f.peak_tread_temp[k]);
-      carcass = std::max(carcass, f.peak_carcass_temp[k]);
-      disc = std::max(disc, f.peak_disc_temp[k]);
-      calliper = std::max(calliper, f.peak_calliper_temp[k]);
-      wear += f.wear[k];
-    }
-    wear /= static_cast<double>(figures.size());
+    const sim::StintCorner& s = stint.corners[CornerIndex(c)];
     fmt::print("{:<6} {:>10.1f} {:>11.1f} {:>9.1f} {:>12.1f} {:>12.5f}\n", CornerName(c),
-               Celsius(tread), Celsius(carcass), Celsius(disc), Celsius(calliper), wear);
-    corner_rows.push_back({std::string(CornerName(c)), fmt::format("{:.1f}", Celsius(tread)),
-                           fmt::format("{:.1f}", Celsius(carcass)),
-                           fmt::format("{:.1f}", Celsius(disc)),
-                           fmt::format("{:.1f}", Celsius(calliper)), fmt::format("{:.5f}", wear)});
-    corners[std::string(CornerName(c))] = {
-        {"peak_tread_temp_C", RoundSignificant(Celsius(tread))},
-        {"peak_carcass_temp_C", RoundSignificant(Celsius(carcass))},
-        {"peak_disc_temp_C", RoundSignificant(Celsius(disc))},
-        {"peak_calliper_temp_C", RoundSignificant(Celsius(calliper))},
-        {"wear_per_lap_mm", RoundSignificant(wear)},
-        {"wear_total_mm", RoundSignificant(result.laps.back().thermal.corners[k].wear.back())},
-    };
+               Celsius(s.peak_tread_temp), Celsius(s.peak_carcass_temp), Celsius(s.peak_disc_temp),
+               Celsius(s.peak_calliper_temp), s.wear_per_lap_mm);
   }
-  if (not_reached > 0) {
+  if (stint.slip_points_not_reached > 0) {
     fmt::print(
         "note: at {} samples a tyre could not make the force the speed profile gave it (largest "
         "shortfall {:.0f} N): the combined-slip envelope is inside the friction ellipse there\n",
-        not_reached, deficit);
+        stint.slip_points_not_reached, stint.max_force_deficit);
   }
 
   // Outputs: the folder, then each file atomically.
@@ -202,40 +164,11 @@ int RunLap(const LapArgs& a) {
             {"car", car.path.string()},
             {"laps", std::to_string(a.laps)}},
            columns.names, columns.values);
-  WriteLapReport(html, {a.line, a.laps, a.ambient_C, a.track_C}, car, track, result, columns,
-                 lap_rows, corner_rows, zones);
+  sim::WriteLapReport(html, {a.line, a.laps, a.ambient_C, a.track_C}, car, track, columns, stint);
   fmt::print("wrote {} and {} in {:.2f} s\n", csv.string(), html.string(), elapsed);
 
   if (!a.json.empty()) {
-    nlohmann::json laps = nlohmann::json::array();
-    for (const sim::LapFigures& f : figures) {
-      laps.push_back({{"lap_time_s", RoundSignificant(f.lap_time_s)},
-                      {"top_speed_mps", RoundSignificant(f.top_speed)},
-                      {"min_speed_mps", RoundSignificant(f.min_speed)}});
-    }
-    nlohmann::json braking = nlohmann::json::array();
-    for (const sim::BrakingZone& z : zones) {
-      braking.push_back({{"lap", z.lap},
-                         {"start_m", RoundSignificant(z.start_m)},
-                         {"end_m", RoundSignificant(z.end_m)},
-                         {"entry_speed_mps", RoundSignificant(z.entry_speed)},
-                         {"exit_speed_mps", RoundSignificant(z.exit_speed)},
-                         {"peak_decel_mps2", RoundSignificant(z.peak_decel)}});
-    }
-    WriteJsonFile(a.json, {{"command", "lap"},
-                           {"method", "qss"},
-                           {"track", track.name()},
-                           {"track_length_m", RoundSignificant(track.length_m())},
-                           {"car", car.name},
-                           {"laps", laps},
-                           {"lap_time_s", RoundSignificant(last.lap_time_s)},
-                           {"top_speed_mps", RoundSignificant(last.top_speed)},
-                           {"min_speed_mps", RoundSignificant(last.min_speed)},
-                           {"braking_zones", braking},
-                           {"corners", corners},
-                           {"slip_points_not_reached", not_reached},
-                           {"out_csv", csv.string()},
-                           {"out_report", html.string()}});
+    WriteJsonFile(a.json, sim::StintJson(stint, track, car.name, csv.string(), html.string()));
     fmt::print("wrote {}\n", a.json);
   }
   return 0;

@@ -1,4 +1,4 @@
-#include "lap_report.h"
+#include "hotlap/sim/lap_report.h"
 
 #include <algorithm>
 #include <string>
@@ -6,16 +6,29 @@
 
 #include <fmt/format.h>
 
+#include "hotlap/common/units.h"
 #include "hotlap/report/html_report.h"
 
-namespace hotlap::app {
+namespace hotlap::sim {
 
 void WriteLapReport(const std::filesystem::path& path, const LapReportSettings& a,
-                    const vehicle::Car& car, const track::Track& track,
-                    const sim::QssResult& result, const sim::ColumnSet& columns,
-                    const std::vector<std::vector<std::string>>& lap_rows,
-                    const std::vector<std::vector<std::string>>& corner_rows,
-                    const std::vector<sim::BrakingZone>& zones) {
+                    const vehicle::Car& car, const track::Track& track, const ColumnSet& columns,
+                    const StintSummary& stint) {
+  std::vector<std::vector<std::string>> lap_rows, corner_rows;
+  for (size_t l = 0; l < stint.laps.size(); ++l) {
+    const LapFigures& f = stint.laps[l];
+    lap_rows.push_back({std::to_string(l + 1), fmt::format("{:.3f}", f.lap_time_s),
+                        fmt::format("{:.2f}", f.top_speed), fmt::format("{:.2f}", f.min_speed)});
+  }
+  for (Corner c : kAllCorners) {
+    const StintCorner& s = stint.corners[CornerIndex(c)];
+    corner_rows.push_back({std::string(CornerName(c)),
+                           fmt::format("{:.1f}", KelvinToCelsius(s.peak_tread_temp)),
+                           fmt::format("{:.1f}", KelvinToCelsius(s.peak_carcass_temp)),
+                           fmt::format("{:.1f}", KelvinToCelsius(s.peak_disc_temp)),
+                           fmt::format("{:.1f}", KelvinToCelsius(s.peak_calliper_temp)),
+                           fmt::format("{:.5f}", s.wear_per_lap_mm)});
+  }
   report::HtmlReport page(fmt::format("hotlap lap: {} on {}", car.name, track.name()));
   page.AddMetadata("method", "quasi-steady-state (docs/lap-simulation.md)");
   page.AddMetadata("line", a.line);
@@ -32,7 +45,7 @@ void WriteLapReport(const std::filesystem::path& path, const LapReportSettings& 
                             "calliper \u00b0C", "wear mm/lap"},
                  .rows = corner_rows});
   std::vector<std::vector<std::string>> zone_rows;
-  for (const sim::BrakingZone& z : zones) {
+  for (const BrakingZone& z : stint.braking_zones) {
     zone_rows.push_back({std::to_string(z.lap), fmt::format("{:.0f}", z.start_m),
                          fmt::format("{:.0f}", z.end_m), fmt::format("{:.1f}", z.entry_speed),
                          fmt::format("{:.1f}", z.exit_speed), fmt::format("{:.2f}", z.peak_decel)});
@@ -100,4 +113,4 @@ void WriteLapReport(const std::filesystem::path& path, const LapReportSettings& 
   page.Write(path);
 }
 
-}  // namespace hotlap::app
+}  // namespace hotlap::sim
