@@ -1,7 +1,4 @@
-// The HTML report of `hotlap abs`: the braking event's histories against time, and with
-// --scenarios the ABS-versus-locked comparison and the series of stops.
-
-#include "cmd_abs_report.h"
+#include "hotlap/sim/abs_report.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +11,7 @@
 #include "hotlap/common/units.h"
 #include "hotlap/report/html_report.h"
 
-namespace hotlap::app {
+namespace hotlap::sim {
 
 namespace {
 
@@ -36,9 +33,9 @@ std::string StateLegend() {
   return s;
 }
 
-void AddEventCharts(report::HtmlReport& page, const sim::AbsRunResult& run,
-                    const sim::AbsConfig& config, bool with_abs) {
-  const sim::AbsHistory& h = run.history;
+void AddEventCharts(report::HtmlReport& page, const AbsRunResult& run, const AbsConfig& config,
+                    bool with_abs) {
+  const AbsHistory& h = run.history;
   const auto chart = [&](const char* title, const char* label, const char* unit) {
     return report::LineChart{.title = title,
                              .x_axis = {.label = "time", .unit = "s"},
@@ -72,7 +69,7 @@ void AddEventCharts(report::HtmlReport& page, const sim::AbsRunResult& run,
   slip.series.push_back({.label = "lambda", .x = h.time, .y = h.lambda});
   slip.series.push_back({.label = "0.135 (002 Fig. 10)",
                          .x = {h.time.front(), h.time.back()},
-                         .y = {sim::kPaperSlipLimit, sim::kPaperSlipLimit},
+                         .y = {kPaperSlipLimit, kPaperSlipLimit},
                          .colour = "#e15759",
                          .style = report::LineStyle::kDashed});
   page.AddLineChart(slip);
@@ -100,8 +97,8 @@ void AddEventCharts(report::HtmlReport& page, const sim::AbsRunResult& run,
   page.AddLineChart(temps);
 }
 
-void AddScenarios(report::HtmlReport& page, const std::vector<sim::AbsComparisonRun>& runs,
-                  const sim::AbsStopSeries& series) {
+void AddScenarios(report::HtmlReport& page, const std::vector<AbsComparisonRun>& runs,
+                  const AbsStopSeries& series) {
   page.AddHeading("Scenarios: ABS against locked wheels");
   page.AddText(
       "Each surface braked from the same speed to standstill, with the ABS and with the driver's "
@@ -116,13 +113,13 @@ void AddScenarios(report::HtmlReport& page, const std::vector<sim::AbsComparison
                           .x_link = "scenario",
                           .width = report::ChartWidth::kFullRow};
   for (size_t i = 0; i + 1 < runs.size(); i += 2) {
-    const sim::AbsComparisonRun& abs = runs[i];
-    const sim::AbsComparisonRun& locked = runs[i + 1];
-    const auto metres = [](const sim::AbsMetrics& m) {
+    const AbsComparisonRun& abs = runs[i];
+    const AbsComparisonRun& locked = runs[i + 1];
+    const auto metres = [](const AbsMetrics& m) {
       return m.stopping_distance_m ? fmt::format("{:.2f}", *m.stopping_distance_m)
                                    : std::string("not stopped");
     };
-    const auto seconds = [](const sim::AbsMetrics& m) {
+    const auto seconds = [](const AbsMetrics& m) {
       return m.stop_time_s ? fmt::format("{:.3f}", *m.stop_time_s) : std::string("-");
     };
     std::string ratio = "-";
@@ -152,7 +149,7 @@ void AddScenarios(report::HtmlReport& page, const std::vector<sim::AbsComparison
   report::Table stops{.title = "Each stop",
                       .header = {"stop", "starts s", "stop m", "peak disc \u00b0C"}};
   for (size_t k = 0; k < series.stops.size(); ++k) {
-    const sim::AbsMetrics& m = series.stops[k];
+    const AbsMetrics& m = series.stops[k];
     stops.rows.push_back({std::to_string(k + 1), fmt::format("{:.1f}", series.stop_start_s[k]),
                           m.stopping_distance_m ? fmt::format("{:.2f}", *m.stopping_distance_m)
                                                 : std::string("not stopped"),
@@ -177,9 +174,9 @@ void AddScenarios(report::HtmlReport& page, const std::vector<sim::AbsComparison
 }  // namespace
 
 void WriteAbsReport(const AbsReportInputs& in, const std::filesystem::path& path) {
-  const sim::AbsConfig& config = *in.config;
-  const sim::AbsEvent& event = *in.event;
-  const bool with_abs = event.control == sim::AbsControl::kAbs;
+  const AbsConfig& config = *in.config;
+  const AbsEvent& event = *in.event;
+  const bool with_abs = event.control == AbsControl::kAbs;
   report::HtmlReport page(fmt::format("hotlap abs: {} on '{}'{}", config.name, event.surface,
                                       with_abs ? "" : " without ABS"));
   page.AddMetadata("configuration", config.path.string());
@@ -188,9 +185,9 @@ void WriteAbsReport(const AbsReportInputs& in, const std::filesystem::path& path
   page.AddMetadata("brake", fmt::format("{} ({})", config.brake.name, config.brake.path.string()));
   page.AddMetadata(
       "event",
-      fmt::format(
-          "{:.3f} m/s, at most {:g} s, vehicle {}", event.initial_speed_mps, event.duration_s,
-          event.vehicle == sim::AbsVehicleMode::kFree ? "free (quarter car)" : "held (drum)"));
+      fmt::format("{:.3f} m/s, at most {:g} s, vehicle {}", event.initial_speed_mps,
+                  event.duration_s,
+                  event.vehicle == AbsVehicleMode::kFree ? "free (quarter car)" : "held (drum)"));
   page.AddMetadata("channels", in.csv);
 
   page.AddHeading("Summary");
@@ -207,4 +204,4 @@ void WriteAbsReport(const AbsReportInputs& in, const std::filesystem::path& path
   page.Write(path);
 }
 
-}  // namespace hotlap::app
+}  // namespace hotlap::sim

@@ -13,21 +13,21 @@
 #include "hotlap/sim/abs_run.h"
 #include "hotlap/sim/abs_scenarios.h"
 
-namespace hotlap::app {
+namespace hotlap::sim {
 
 /// What the report shows.
 struct AbsReportInputs {
-  const sim::AbsConfig* config = nullptr;
-  const sim::AbsEvent* event = nullptr;
-  const sim::AbsRunResult* run = nullptr;
-  const sim::AbsMetrics* metrics = nullptr;
-  std::vector<std::pair<std::string, std::string>> summary;        ///< figure, value rows
-  const std::vector<sim::AbsComparisonRun>* comparison = nullptr;  ///< null without --scenarios
-  const sim::AbsStopSeries* series = nullptr;                      ///< null without --scenarios
+  const AbsConfig* config = nullptr;
+  const AbsEvent* event = nullptr;
+  const AbsRunResult* run = nullptr;
+  const AbsMetrics* metrics = nullptr;
+  std::vector<std::pair<std::string, std::string>> summary;   ///< figure, value rows
+  const std::vector<AbsComparisonRun>* comparison = nullptr;  ///< null without --scenarios
+  const AbsStopSeries* series = nullptr;                      ///< null without --scenarios
   std::string csv;  ///< the channels file written beside it
 };
 
 /// Writes the report to `path` atomically.
 void WriteAbsReport(const AbsReportInputs& in, const std::filesystem::path& path);
 
-}  // namespace hotlap::app
+}  // namespace hotlap::sim
