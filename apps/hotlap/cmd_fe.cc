@@ -15,15 +15,17 @@
 #include <fmt/format.h>
 
 #include "commands.h"
-#include "fe_abs_report.h"
-#include "fe_output.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/json_output.h"
 #include "hotlap/common/output_folder.h"
 #include "hotlap/fe/fe_config.h"
+#include "hotlap/fe/step_json.h"
+#include "hotlap/fe/step_output.h"
 #include "hotlap/fe/tyre_steps.h"
 #include "hotlap/fe/vtu_writer.h"
 #include "hotlap/sim/abs_config.h"
+#include "hotlap/sim/fe_abs_json.h"
+#include "hotlap/sim/fe_abs_report.h"
 #include "hotlap/sim/fe_abs_stop.h"
 
 namespace hotlap::app {
@@ -52,6 +54,12 @@ fe::ElementKernel ChooseKernel(const std::string& option) {
   const char* env = std::getenv("HOTLAP_FE_KERNEL");
   if (env == nullptr || *env == '\0') return fe::BestElementKernel();
   return fe::ParseElementKernel(env, "fe: HOTLAP_FE_KERNEL");
+}
+
+// The warning for a cord strain above what the stable step allows for, on stderr.
+void WarnCordStrain(const char* step, double strain) {
+  const std::string w = fe::CordStrainWarning(step, strain);
+  if (!w.empty()) std::fprintf(stderr, "%s\n", w.c_str());
 }
 
 // Reads the checkpoint into `run` and `stop` before anything is written; says on stderr where
@@ -165,18 +173,13 @@ int RunFeCommand(const FeArgs& a) {
 
   j["config"] = config.file.string();
   j["step"] = a.step;
-  j["mesh"] = {{"elements", run.tyre().mesh.elements.size()},
-               {"nodes", run.tyre().mesh.nodes.size()},
-               {"time_step_s", RoundSignificant(solver.time_step(), 6)},
-               {"stable_step_unscaled_s", RoundSignificant(ms.stable_step_unscaled_s, 6)},
-               {"physical_mass_kg", RoundSignificant(ms.physical_mass_kg, 6)},
-               {"mass_scaling_added_kg", RoundSignificant(ms.added_mass_kg, 6)},
-               {"mass_scaled_elements", ms.scaled_elements}};
+  j["mesh"] = fe::FeMeshJson(run);
   if (!restarted) {
     begin();
     const fe::InflateResult inf = run.Inflate(hooks);
-    WriteFeHistoryCsv(out / "inflate_history.csv", "inflate", config, inf.history, 0.0);
-    j["inflate"] = InflateJson(inf, solver.energies());
+    fe::WriteFeHistoryCsv(out / "inflate_history.csv", "inflate", config, inf.history, 0.0);
+    j["inflate"] = fe::InflateJson(inf, solver.energies());
+    WarnCordStrain("inflate", inf.max_cord_strain);
     std::printf("inflate: %.0f kPa, outer radius %.2f -> %.2f mm, section width %.1f -> %.1f mm\n",
                 1e-3 * inf.pressure_Pa, 1e3 * inf.outer_radius_before_m,
                 1e3 * inf.outer_radius_after_m, 1e3 * inf.section_width_before_m,
@@ -184,9 +187,10 @@ int RunFeCommand(const FeArgs& a) {
     if (last >= 1) {
       begin();
       const fe::FootprintResult fp = run.Footprint(hooks);
-      WriteFeHistoryCsv(out / "footprint_history.csv", "footprint", config, fp.history, 0.0);
-      WriteFootprintPressure(out, config, fp);
-      j["footprint"] = FootprintJson(fp, solver.energies());
+      fe::WriteFeHistoryCsv(out / "footprint_history.csv", "footprint", config, fp.history, 0.0);
+      fe::WriteFootprintPressure(out, config, fp);
+      j["footprint"] = fe::FootprintJson(fp, solver.energies());
+      WarnCordStrain("footprint", fp.max_cord_strain);
       std::printf(
           "footprint: %.0f N, loaded radius %.2f mm, deflection %.2f mm, %.0f kN/m, "
           "contact %.0f cm^2 (%.0f x %.0f mm node to node), mean %.0f kPa\n",
@@ -197,8 +201,10 @@ int RunFeCommand(const FeArgs& a) {
     if (last >= 2) {
       begin();
       const fe::RollResult rr = run.Roll(hooks);
-      WriteFeHistoryCsv(out / "roll_history.csv", "roll", config, rr.history, run.slip_radius_m());
-      j["roll"] = RollJson(rr, solver.energies());
+      fe::WriteFeHistoryCsv(out / "roll_history.csv", "roll", config, rr.history,
+                            run.slip_radius_m());
+      j["roll"] = fe::RollJson(rr, solver.energies());
+      WarnCordStrain("roll", rr.max_cord_strain);
       std::printf(
           "roll: %.3f m/s, spin %.3f rad/s, effective radius %.2f mm (paper: 28.268 rad/s, "
           "394.2 mm), loaded radius %.2f mm\n",
@@ -218,12 +224,14 @@ int RunFeCommand(const FeArgs& a) {
     if (restarted) step_t0 = run.brake_start_s();
     const sim::FeAbsStopResult r = stop->Run(options);
     const fe::BrakeResult& br = r.brake;
-    WriteFeHistoryCsv(out / "abs_history.csv", "abs", config, br.history, run.slip_radius_m());
-    WriteFeAbsReport(out / "abs_report.html", br.history, r.cycles, run.slip_radius_m(),
-                     {{"configuration", config.file.string()},
-                      {"mesh", fmt::format("{} elements, {} nodes", run.tyre().mesh.elements.size(),
-                                           run.tyre().mesh.nodes.size())}});
-    j["abs"] = AbsStopJson(r, config.abs_duration_s, solver.energies());
+    fe::WriteFeHistoryCsv(out / "abs_history.csv", "abs", config, br.history, run.slip_radius_m());
+    sim::WriteFeAbsReport(
+        out / "abs_report.html", br.history, r.cycles, run.slip_radius_m(),
+        {{"configuration", config.file.string()},
+         {"mesh", fmt::format("{} elements, {} nodes", run.tyre().mesh.elements.size(),
+                              run.tyre().mesh.nodes.size())}});
+    j["abs"] = sim::FeAbsStopJson(r, config.abs_duration_s, solver.energies());
+    WarnCordStrain("abs", br.max_cord_strain);
     std::printf("abs: %.3f s, speed %.3f -> %.3f m/s over %.3f m, max slip %.3f, %d cycles\n",
                 config.abs_duration_s, br.initial_speed_mps, br.final_speed_mps, br.distance_m,
                 br.max_slip, r.cycles.cycles);

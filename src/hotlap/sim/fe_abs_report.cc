@@ -1,4 +1,4 @@
-#include "fe_abs_report.h"
+#include "hotlap/sim/fe_abs_report.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,11 +8,9 @@
 
 #include "hotlap/report/html_report.h"
 
-namespace hotlap::app {
+namespace hotlap::sim {
 
 namespace {
-
-using sim::kPaperSlipLimit;
 
 report::LineChart TimeChart(const std::string& title, const std::string& label,
                             const std::string& unit) {
@@ -25,7 +23,7 @@ report::LineChart TimeChart(const std::string& title, const std::string& label,
 }  // namespace
 
 void WriteFeAbsReport(const std::filesystem::path& path, const std::vector<fe::HistoryRow>& history,
-                      const sim::CycleWindow& cycles, double loaded_radius_m,
+                      const CycleWindow& cycles, double loaded_radius_m,
                       const std::vector<std::pair<std::string, std::string>>& metadata) {
   if (history.empty()) throw std::invalid_argument("WriteFeAbsReport: empty history");
   const size_t n = history.size();
@@ -107,4 +105,4 @@ void WriteFeAbsReport(const std::filesystem::path& path, const std::vector<fe::H
   page.Write(path);
 }
 
-}  // namespace hotlap::app
+}  // namespace hotlap::sim

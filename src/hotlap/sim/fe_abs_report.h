@@ -12,15 +12,15 @@
 #include "hotlap/fe/tyre_steps.h"
 #include "hotlap/sim/abs_metrics.h"
 
-namespace hotlap::app {
+namespace hotlap::sim {
 
-/// Writes the report to `path` (atomically), with the control cycles `cycles` (sim::CalcCycleWindow
+/// Writes the report to `path` (atomically), with the control cycles `cycles` (CalcCycleWindow
 /// of the same history) in words. `loaded_radius_m` turns the rim
 /// spin into the circumferential speed omega R_l (as the history CSV's omega_R_mps); `metadata`
 /// lines go under the title. Throws InputError if the file cannot be written, std::invalid_argument
 /// if the history is empty.
 void WriteFeAbsReport(const std::filesystem::path& path, const std::vector<fe::HistoryRow>& history,
-                      const sim::CycleWindow& cycles, double loaded_radius_m,
+                      const CycleWindow& cycles, double loaded_radius_m,
                       const std::vector<std::pair<std::string, std::string>>& metadata);
 
-}  // namespace hotlap::app
+}  // namespace hotlap::sim
