@@ -63,10 +63,10 @@ int RunLap(const LapArgs& a) {
     o.car = a.car;
     o.out = a.out;
     o.json = a.json;
-    o.compare_disc_limit_C = a.compare_disc_limit_C;
-    o.ambient_C = a.ambient_C;
-    o.track_C = a.track_C;
-    if (a.ocp_step_m) o.step_m = *a.ocp_step_m;
+    o.run.compare_disc_limit_C = a.compare_disc_limit_C;
+    o.run.ambient_C = a.ambient_C;
+    o.run.track_C = a.track_C;
+    if (a.ocp_step_m) o.run.step_m = *a.ocp_step_m;
     o.single_process = a.single_process;
     return RunOptimal(o);
   }

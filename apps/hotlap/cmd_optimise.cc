@@ -13,7 +13,7 @@ CommandRunner RegisterOptimiseCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "optimise", "Minimum-lap-time optimal control with tyre and brake temperatures as states");
   AddOptimalOptions(sub, *args);
-  sub->add_option("--disc-limit-C", args->disc_limit_C,
+  sub->add_option("--disc-limit-C", args->run.disc_limit_C,
                   "Front disc temperatures at most this, degC (none by default)");
   args->f1_only.push_back(
       sub->add_option("--mesh-points", args->mesh_points,

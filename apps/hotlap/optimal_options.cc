@@ -2,8 +2,6 @@
 // optimal_runs.h declares them.
 
 #include <string>
-#include <utility>
-#include <vector>
 
 #include "optimal_runs.h"
 
@@ -16,21 +14,21 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
   sub->add_option("--out", a.out, "Output folder")->required();
   sub->add_option("--json", a.json, "Write the summary as JSON (docs/json-output.md)");
   a.stock_car_only.push_back(
-      sub->add_option("--step-m", a.step_m, "Mesh spacing along the centre line, m")
+      sub->add_option("--step-m", a.run.step_m, "Mesh spacing along the centre line, m")
           ->capture_default_str()
           ->check(CLI::Range(0.5, 50.0)));
   a.stock_car_only.push_back(
-      sub->add_option("--coarse-step-m", a.coarse_step_m,
+      sub->add_option("--coarse-step-m", a.run.coarse_step_m,
                       "Coarse to fine: solve first on a mesh of this spacing, m, and start the "
                       "--step-m solve from it (0: off; docs/optimal-control.md)")
           ->capture_default_str()
           ->check(CLI::Range(0.0, 100.0)));
   a.stock_car_only.push_back(
-      sub->add_option("--steer-smoothing", a.steer_smoothing,
+      sub->add_option("--steer-smoothing", a.run.steer_smoothing,
                       "Weight of the steer's smoothness penalty, s per squared scaled change "
                       "between nodes (default: the library's; docs/optimal-control.md)"));
   a.stock_car_only.push_back(
-      sub->add_option("--pedal-smoothing", a.pedal_smoothing,
+      sub->add_option("--pedal-smoothing", a.run.pedal_smoothing,
                       "Weight of the pedal's smoothness penalty (as --steer-smoothing)"));
   a.stock_car_only.push_back(
       sub->add_option("--hessian", a.hessian,
@@ -39,25 +37,25 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
           ->capture_default_str()
           ->check(CLI::IsMember({"exact", "convex-elements"})));
   a.stock_car_only.push_back(
-      sub->add_option("--thermal-start", a.thermal_start,
+      sub->add_option("--thermal-start", a.run.thermal_start,
                       "Thermal states at the start: racing (QSS laps until no carcass rises over "
                       "15 degC a lap), "
                       "warm (after one QSS out-lap), car (the car file's initial_state) or "
                       "periodic (temperatures end where they start)")
           ->capture_default_str()
           ->check(CLI::IsMember({"racing", "warm", "car", "periodic"})));
+  a.stock_car_only.push_back(sub->add_option("--ambient-temp-C", a.run.ambient_C, "Air temperature")
+                                 ->capture_default_str());
   a.stock_car_only.push_back(
-      sub->add_option("--ambient-temp-C", a.ambient_C, "Air temperature")->capture_default_str());
-  a.stock_car_only.push_back(
-      sub->add_option("--track-temp-C", a.track_C, "Track surface temperature")
+      sub->add_option("--track-temp-C", a.run.track_C, "Track surface temperature")
           ->capture_default_str());
-  sub->add_option("--max-iterations", a.max_iterations, "Ipopt's iteration limit")
+  sub->add_option("--max-iterations", a.run.max_iterations, "Ipopt's iteration limit")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   a.stock_car_only.push_back(
       sub->add_flag("--mesh-check", a.mesh_check,
                     "Solve again on a mesh of half the spacing and report the lap time's change"));
-  sub->add_flag("--ipopt-output", a.ipopt_output, "Print Ipopt's own iteration log");
+  sub->add_flag("--ipopt-output", a.run.ipopt_output, "Print Ipopt's own iteration log");
   a.stock_car_only.push_back(sub->add_option(
       "--warm-start", a.warm_start,
       "Start from a lap saved with --save-solution (any mesh; the coarse solve is skipped)"));
@@ -75,15 +73,6 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
                    ? std::string("expected NAME=VALUE, got '" + s + "'")
                    : std::string();
       });
-}
-
-std::vector<std::pair<std::string, std::string>> IpoptOptionPairs(const OptimalArgs& a) {
-  std::vector<std::pair<std::string, std::string>> out;
-  for (const std::string& kv : a.ipopt_options) {
-    const size_t eq = kv.find('=');  // the option's check guarantees one
-    out.emplace_back(kv.substr(0, eq), kv.substr(eq + 1));
-  }
-  return out;
 }
 
 }  // namespace hotlap::app

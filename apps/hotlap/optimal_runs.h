@@ -1,13 +1,15 @@
 #pragma once
-// The optimal lap as `hotlap optimise` and `hotlap lap --method ocp` run it: options, one solve or
-// the paper's comparison without and with a front-disc limit, outputs and summaries.
+// The optimal lap as `hotlap optimise` and `hotlap lap --method ocp` run it: the command-line
+// options, the checks before any work, and what is printed and written of the library's runs
+// (ocp/optimal_run.h).
 
-#include <optional>
+#include <filesystem>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include "hotlap/ocp/optimal_run.h"
 
 namespace hotlap::app {
 
@@ -16,20 +18,12 @@ struct OptimalArgs {
   std::string car = "gen7";
   std::string out;
   std::string json;
-  double step_m = 3.0;
-  double steer_smoothing = -1.0;       ///< the steer's smoothness weight (< 0: the library's)
-  double pedal_smoothing = -1.0;       ///< the pedal's
-  double coarse_step_m = 15.0;         ///< solve first on this mesh and start from it (0: off)
-  std::string hessian = "exact";       ///< exact, or convex-elements
-  std::optional<double> disc_limit_C;  ///< one solve with this front-disc limit
-  std::optional<double> compare_disc_limit_C;  ///< two solves: without, and with this limit
-  std::string thermal_start = "racing";
-  double ambient_C = 25.0;
-  double track_C = 40.0;
-  int max_iterations = 1000;
-  bool mesh_check = false;
-  bool ipopt_output = false;
+  /// The library's options, filled by CLI11 (the Hessian, the second process and the Ipopt
+  /// options from the three below at run time).
+  ocp::OptimalRunOptions run;
+  std::string hessian = "exact";  ///< exact, or convex-elements
   bool single_process = false;
+  bool mesh_check = false;
   std::string warm_start;                  ///< a lap saved with --save-solution to start from
   std::string save_solution;               ///< where to save the solved lap
   std::vector<std::string> ipopt_options;  ///< NAME=VALUE, passed to Ipopt as they are
@@ -43,11 +37,15 @@ struct OptimalArgs {
 /// Adds the options shared by both commands to `sub` (optimal_options.cc).
 void AddOptimalOptions(CLI::App* sub, OptimalArgs& args);
 
-/// The --ipopt-option values as (name, value) pairs.
-std::vector<std::pair<std::string, std::string>> IpoptOptionPairs(const OptimalArgs& args);
+/// args.run with the Hessian, the second process and the --ipopt-option pairs filled in.
+ocp::OptimalRunOptions RunOptions(const OptimalArgs& args);
 
 /// Runs the solve(s), prints the summary, writes the outputs. Returns the exit code: 0, or 3 when
 /// a solve did not converge (its last point is still written).
 int RunOptimal(const OptimalArgs& args);
+
+/// The same for a car of model limebeer-2014-f1 in `car_file` (f1_optimal_run.cc, docs/f1-peer.md):
+/// one minimum-time solve, <out>/optimal.csv and, with --json, the summary.
+int RunF1Optimal(const OptimalArgs& args, const std::filesystem::path& car_file);
 
 }  // namespace hotlap::app

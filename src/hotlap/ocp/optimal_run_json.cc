@@ -1,20 +1,13 @@
-// What `hotlap optimise` and `hotlap lap --method ocp` print and write of a solved lap.
+#include "hotlap/ocp/optimal_run_json.h"
 
-#include "optimal_summary.h"
-
-#include <fmt/format.h>
-
-#include "hotlap/common/csv.h"
 #include "hotlap/common/json_output.h"
 #include "hotlap/common/units.h"
 
-namespace hotlap::app {
+namespace hotlap::ocp {
 
-namespace fs = std::filesystem;
-
-nlohmann::json RunJson(const ocp::SolvedLap& s, const std::string& thermal_start) {
-  const ocp::SolveResult& r = s.run.solution.solve;
-  const ocp::OptimalLapFigures& f = s.figures;
+nlohmann::json SolvedLapJson(const SolvedLap& s, const std::string& thermal_start) {
+  const SolveResult& r = s.run.solution.solve;
+  const OptimalLapFigures& f = s.figures;
   nlohmann::json corners;
   for (Corner c : kAllCorners) {
     const int i = CornerIndex(c);
@@ -30,7 +23,7 @@ nlohmann::json RunJson(const ocp::SolvedLap& s, const std::string& thermal_start
   for (Corner c : kAllCorners) {
     const int i = CornerIndex(c);
     // The state at the start line (periodic: the solution's own first node).
-    const ocp::CornerTrace& t = s.run.solution.corners[i];
+    const CornerTrace& t = s.run.solution.corners[i];
     const bool own = !t.tread_temp.empty();
     start["corners"][std::string(CornerName(c))] = {
         {"tread_temp_C", RoundSignificant(KelvinToCelsius(own ? t.tread_temp.front()
@@ -44,7 +37,7 @@ nlohmann::json RunJson(const ocp::SolvedLap& s, const std::string& thermal_start
                                               : s.run.start.brakes[i].calliper_temp))}};
   }
   nlohmann::json turns = nlohmann::json::array();
-  for (const ocp::TurnApproach& t : s.approaches) {
+  for (const TurnApproach& t : s.approaches) {
     nlohmann::json j = {{"turn", t.turn},
                         {"entry_m", RoundSignificant(t.entry_m)},
                         {"min_speed_mps", RoundSignificant(t.min_speed_mps)},
@@ -89,58 +82,33 @@ nlohmann::json RunJson(const ocp::SolvedLap& s, const std::string& thermal_start
       {"constraints", s.run.solution.constraints}};
 }
 
-std::string Opt(const std::optional<double>& v, const char* fmtstr) {
-  return v ? fmt::format(fmt::runtime(fmtstr), *v) : std::string("-");
-}
-
-void PrintRun(const ocp::SolvedLap& s, const std::string& thermal_start) {
-  const ocp::OptimalLapFigures& f = s.figures;
-  fmt::print(
-      "  lap {:.3f} s, top speed {:.2f} m/s, slowest {:.2f} m/s, front discs peak {:.1f} "
-      "degC\n",
-      f.lap_time_s, f.top_speed_mps, f.min_speed_mps, f.max_front_disc_temp_C);
-  {
-    const ocp::LapSolution& sol = s.run.solution;
-    std::string carcass, disc;
-    for (int i = 0; i < 4 && !sol.corners[i].carcass_temp.empty(); ++i) {
-      carcass +=
-          fmt::format("{}{:.0f}", i ? "/" : "", KelvinToCelsius(sol.corners[i].carcass_temp[0]));
-      disc += fmt::format("{}{:.0f}", i ? "/" : "", KelvinToCelsius(sol.corners[i].disc_temp[0]));
+nlohmann::json OptimalRunsJson(const OptimalRuns& runs, const OptimalRunOptions& options,
+                               const std::string& track_name, const std::string& car_name,
+                               double wall_time_s,
+                               const std::optional<double>& mesh_check_delta_s) {
+  const std::vector<SolvedLap>& laps = runs.laps;
+  nlohmann::json j;
+  if (laps.size() == 2) {
+    j = {{"command", "lap --method ocp"},
+         {"unconstrained", SolvedLapJson(laps[0], options.thermal_start)},
+         {"constrained", SolvedLapJson(laps[1], options.thermal_start)},
+         {"delta_s", RoundSignificant(laps[1].figures.lap_time_s - laps[0].figures.lap_time_s)}};
+    // The headline keys of the unconstrained run at the top level too.
+    for (const char* k : {"lap_time_s", "solve_time_s", "ipopt_iterations", "status",
+                          "max_front_disc_temp_C", "top_speed_mps"}) {
+      j[k] = j["unconstrained"][k];
     }
-    fmt::print("  thermal start {} ({} QSS laps): carcass fl/fr/rl/rr {} degC, discs {} degC\n",
-               thermal_start, s.run.start_laps, carcass, disc);
+    j["limited_in_second_process"] = runs.limited_in_second_process;
+  } else {
+    j = SolvedLapJson(laps[0], options.thermal_start);
+    j["command"] = "optimise";
   }
-  fmt::print("  brake work {:.0f} kJ, of it against the engine (drive above 2%) {:.2f} kJ\n",
-             1e-3 * f.brake_energy_J, 1e-3 * f.brake_energy_under_drive_J);
-  for (const ocp::TurnApproach& t : s.approaches) {
-    fmt::print("  {}: lift at {} m, brake at {} m, slowest {:.2f} m/s at {:.0f} m\n", t.turn,
-               Opt(t.lift_m, "{:.0f}"), Opt(t.brake_m, "{:.0f}"), t.min_speed_mps,
-               t.min_speed_at_m);
-  }
-  fmt::print("  {:<6} {:>12} {:>12} {:>10}\n", "corner", "disc pk C", "tread pk C", "wear mm");
-  for (Corner c : kAllCorners) {
-    const int i = CornerIndex(c);
-    fmt::print("  {:<6} {:>12.1f} {:>12.1f} {:>10.5f}\n", CornerName(c), f.peak_disc_temp_C[i],
-               f.peak_tread_temp_C[i], f.wear_mm[i]);
-  }
-  fmt::print(
-      "  smooth-model effect on the temperatures (exact replay): tread {:.2f} K, disc {:.2f} "
-      "K\n",
-      s.run.max_tread_difference_K, s.run.max_disc_difference_K);
+  j["track"] = track_name;
+  j["car"] = car_name;
+  j["mesh_step_m"] = options.step_m;
+  j["wall_time_s"] = RoundSignificant(wall_time_s);
+  if (mesh_check_delta_s) j["mesh_check_delta_s"] = RoundSignificant(*mesh_check_delta_s);
+  return j;
 }
 
-void WriteRunCsv(const fs::path& path, const ocp::SolvedLap& s, const track::Track& track,
-                 const vehicle::Car& car) {
-  const sim::ColumnSet columns = ocp::OptimalLapColumns(s.run, track);
-  WriteCsv(
-      path,
-      {{"source", fmt::format("hotlap {} optimal lap", HOTLAP_VERSION)},
-       {"track", track.name()},
-       {"car", car.path.string()},
-       {"front_disc_limit_C",
-        s.front_disc_limit ? fmt::format("{:g}", KelvinToCelsius(*s.front_disc_limit)) : "none"},
-       {"status", s.run.solution.solve.message}},
-      columns.names, columns.values);
-}
-
-}  // namespace hotlap::app
+}  // namespace hotlap::ocp

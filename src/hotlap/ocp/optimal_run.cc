@@ -1,0 +1,49 @@
+#include "hotlap/ocp/optimal_run.h"
+
+#include <fmt/format.h>
+
+#include "hotlap/common/units.h"
+
+namespace hotlap::ocp {
+
+OptimalLapOptions MakeOptimalLapOptions(const OptimalRunOptions& a) {
+  OptimalLapOptions o;
+  o.step_m = a.step_m;
+  o.coarse_step_m = a.coarse_step_m;
+  o.steer_smoothing_weight = a.steer_smoothing;
+  o.pedal_smoothing_weight = a.pedal_smoothing;
+  o.convex_element_hessians = a.convex_element_hessians;
+  o.thermal_start = ParseThermalStart(a.thermal_start);
+  o.ambient_temp = CelsiusToKelvin(a.ambient_C);
+  o.track_temp = CelsiusToKelvin(a.track_C);
+  o.ipopt.max_iterations = a.max_iterations;
+  for (const auto& kv : a.ipopt_options) o.ipopt.extra.push_back(kv);
+  o.ipopt.print_level = a.ipopt_output ? 5 : 0;
+  o.second_process = a.second_process;
+  return o;
+}
+
+OptimalRuns SolveOptimalRuns(const vehicle::Car& car, const track::Track& track,
+                             const OptimalRunOptions& a, const LapStart* warm_start,
+                             const LapProgress& progress, const LapLog& log) {
+  OptimalRuns runs;
+  if (a.compare_disc_limit_C) {
+    DiscLimitComparison c =
+        CompareDiscLimit(car, track, MakeOptimalLapOptions(a),
+                         CelsiusToKelvin(*a.compare_disc_limit_C), progress, log);
+    runs.limited_in_second_process = c.limited_in_second_process;
+    runs.laps.push_back(std::move(c.free));
+    runs.laps.push_back(std::move(c.limited));
+    return runs;
+  }
+  OptimalLapOptions o = MakeOptimalLapOptions(a);
+  if (a.disc_limit_C) o.front_disc_limit = CelsiusToKelvin(*a.disc_limit_C);
+  if (warm_start) UseLapStart(*warm_start, track, o);
+  runs.laps.push_back(
+      SolveLap(car, track, o,
+               a.disc_limit_C ? fmt::format("discs <= {:g} degC", *a.disc_limit_C) : "optimal lap",
+               nullptr, progress, log));
+  return runs;
+}
+
+}  // namespace hotlap::ocp

@@ -1,0 +1,59 @@
+#pragma once
+/// @file
+/// The optimal lap as `hotlap optimise` and `hotlap lap --method ocp` run it, as a library call:
+/// plain options in the commands' units (degC, names), and one solve (with a front-disc limit or
+/// from a saved lap, if asked) or the disc-limit comparison. What is written and printed of the
+/// runs: optimal_run_output.h (CSV and HTML), optimal_run_json.h, optimal_run_text.h.
+///
+/// How to use:
+///
+///   ocp::OptimalRunOptions o;               // as the command line: step_m, disc limits, ...
+///   o.compare_disc_limit_C = 500;
+///   const ocp::OptimalRuns runs = ocp::SolveOptimalRuns(car, track, o);
+///   ocp::WriteOptimalRunFiles("out", runs.laps, car, track, o.step_m);
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "hotlap/ocp/disc_limit_comparison.h"
+#include "hotlap/ocp/lap_start_file.h"
+
+namespace hotlap::ocp {
+
+/// The options of an optimal-lap run, as the commands take them (docs/optimal-control.md).
+struct OptimalRunOptions {
+  double step_m = 3.0;                   ///< mesh spacing along the centre line, m
+  double coarse_step_m = 15.0;           ///< solve first on this mesh and start from it (0: off)
+  double steer_smoothing = -1.0;         ///< the steer's smoothness weight (< 0: the library's)
+  double pedal_smoothing = -1.0;         ///< the pedal's
+  bool convex_element_hessians = false;  ///< each element's negative curvature clipped
+  std::optional<double> disc_limit_C;    ///< one solve with this front-disc limit, degC
+  std::optional<double> compare_disc_limit_C;  ///< two solves: without, and with this limit
+  std::string thermal_start = "racing";        ///< a name of ParseThermalStart
+  double ambient_C = 25.0;
+  double track_C = 40.0;
+  int max_iterations = 1000;
+  bool ipopt_output = false;   ///< Ipopt's own iteration log
+  bool second_process = true;  ///< the comparison's limited lap beside the free one
+  std::vector<std::pair<std::string, std::string>> ipopt_options;  ///< passed to Ipopt as they are
+};
+
+/// The solver's options for `options` (mesh options.step_m; the disc limits are not set).
+OptimalLapOptions MakeOptimalLapOptions(const OptimalRunOptions& options);
+
+/// The solved laps of a run.
+struct OptimalRuns {
+  std::vector<SolvedLap> laps;             ///< one, or the comparison's free and limited laps
+  bool limited_in_second_process = false;  ///< DiscLimitComparison's
+};
+
+/// With options.compare_disc_limit_C the comparison (CompareDiscLimit); else one solve labelled
+/// "optimal lap" or, with options.disc_limit_C, "discs <= X degC", started from `warm_start` if
+/// not null (a saved lap, UseLapStart). InputError as those.
+OptimalRuns SolveOptimalRuns(const vehicle::Car& car, const track::Track& track,
+                             const OptimalRunOptions& options, const LapStart* warm_start = nullptr,
+                             const LapProgress& progress = {}, const LapLog& log = {});
+
+}  // namespace hotlap::ocp

@@ -1,0 +1,76 @@
+#include "hotlap/ocp/optimal_run_text.h"
+
+#include <iterator>
+
+#include <fmt/format.h>
+
+#include "hotlap/common/units.h"
+
+namespace hotlap::ocp {
+
+std::string OptionalText(const std::optional<double>& v, const char* format) {
+  return v ? fmt::format(fmt::runtime(format), *v) : std::string("-");
+}
+
+std::string SolvedLapText(const SolvedLap& s, const std::string& thermal_start) {
+  std::string text;
+  const auto out = std::back_inserter(text);
+  const OptimalLapFigures& f = s.figures;
+  fmt::format_to(
+      out,
+      "  lap {:.3f} s, top speed {:.2f} m/s, slowest {:.2f} m/s, front discs peak {:.1f} "
+      "degC\n",
+      f.lap_time_s, f.top_speed_mps, f.min_speed_mps, f.max_front_disc_temp_C);
+  {
+    const LapSolution& sol = s.run.solution;
+    std::string carcass, disc;
+    for (int i = 0; i < 4 && !sol.corners[i].carcass_temp.empty(); ++i) {
+      carcass +=
+          fmt::format("{}{:.0f}", i ? "/" : "", KelvinToCelsius(sol.corners[i].carcass_temp[0]));
+      disc += fmt::format("{}{:.0f}", i ? "/" : "", KelvinToCelsius(sol.corners[i].disc_temp[0]));
+    }
+    fmt::format_to(out,
+                   "  thermal start {} ({} QSS laps): carcass fl/fr/rl/rr {} degC, discs {} degC\n",
+                   thermal_start, s.run.start_laps, carcass, disc);
+  }
+  fmt::format_to(out,
+                 "  brake work {:.0f} kJ, of it against the engine (drive above 2%) {:.2f} kJ\n",
+                 1e-3 * f.brake_energy_J, 1e-3 * f.brake_energy_under_drive_J);
+  for (const TurnApproach& t : s.approaches) {
+    fmt::format_to(out, "  {}: lift at {} m, brake at {} m, slowest {:.2f} m/s at {:.0f} m\n",
+                   t.turn, OptionalText(t.lift_m, "{:.0f}"), OptionalText(t.brake_m, "{:.0f}"),
+                   t.min_speed_mps, t.min_speed_at_m);
+  }
+  fmt::format_to(out, "  {:<6} {:>12} {:>12} {:>10}\n", "corner", "disc pk C", "tread pk C",
+                 "wear mm");
+  for (Corner c : kAllCorners) {
+    const int i = CornerIndex(c);
+    fmt::format_to(out, "  {:<6} {:>12.1f} {:>12.1f} {:>10.5f}\n", CornerName(c),
+                   f.peak_disc_temp_C[i], f.peak_tread_temp_C[i], f.wear_mm[i]);
+  }
+  fmt::format_to(
+      out,
+      "  smooth-model effect on the temperatures (exact replay): tread {:.2f} K, disc {:.2f} "
+      "K\n",
+      s.run.max_tread_difference_K, s.run.max_disc_difference_K);
+  return text;
+}
+
+std::string DiscLimitCostText(const SolvedLap& free, const SolvedLap& limited) {
+  std::string text;
+  const auto out = std::back_inserter(text);
+  const double delta = limited.figures.lap_time_s - free.figures.lap_time_s;
+  fmt::format_to(out, "the {} limit costs {:.3f} s ({:.0f} ms); top speed {:.2f} -> {:.2f} m/s\n",
+                 limited.label, delta, 1e3 * delta, free.figures.top_speed_mps,
+                 limited.figures.top_speed_mps);
+  for (size_t t = 0; t < free.approaches.size() && t < limited.approaches.size(); ++t) {
+    const TurnApproach& x = free.approaches[t];
+    const TurnApproach& y = limited.approaches[t];
+    fmt::format_to(out, "  {}: lift {} -> {} m, brake {} -> {} m\n", x.turn,
+                   OptionalText(x.lift_m, "{:.0f}"), OptionalText(y.lift_m, "{:.0f}"),
+                   OptionalText(x.brake_m, "{:.0f}"), OptionalText(y.brake_m, "{:.0f}"));
+  }
+  return text;
+}
+
+}  // namespace hotlap::ocp
