@@ -53,6 +53,7 @@ inline SolvedLap MakeExampleSolvedLap(const std::string& label, double lap_time_
   s.approaches = {{.turn = "turn 1",
                    .entry_m = 150.0,
                    .lift_m = 120.0,
+                   .brake_m = std::nullopt,
                    .min_speed_mps = 60.0,
                    .min_speed_at_m = 100.0}};
   return s;

@@ -58,7 +58,14 @@ TEST(WriteAbsReport, AMissingFolderIsAnInputError) {
   const AbsEvent event = testing::MakeExampleAbsEvent();
   const AbsRunResult run = testing::MakeExampleAbsRun();
   const AbsMetrics m = testing::MakeExampleAbsMetrics();
-  const AbsReportInputs in{.config = &config, .event = &event, .run = &run, .metrics = &m};
+  const AbsReportInputs in{.config = &config,
+                           .event = &event,
+                           .run = &run,
+                           .metrics = &m,
+                           .summary = {},
+                           .comparison = nullptr,
+                           .series = nullptr,
+                           .csv = ""};
   EXPECT_TRUE(test::Contains(
       test::InputErrorOf([&] { WriteAbsReport(in, dir.path() / "no" / "r.html"); }), "r.html"));
 }
