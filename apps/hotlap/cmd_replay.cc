@@ -19,9 +19,9 @@
 #include "hotlap/common/output_folder.h"
 #include "hotlap/common/telemetry.h"
 #include "hotlap/common/units.h"
-#include "hotlap/report/html_report.h"
 #include "hotlap/sim/replay.h"
 #include "hotlap/sim/replay_io.h"
+#include "hotlap/sim/replay_report.h"
 
 namespace hotlap::app {
 
@@ -41,67 +41,6 @@ struct ReplayArgs {
 std::optional<double> ToKelvin(const std::optional<double>& celsius) {
   if (!celsius) return std::nullopt;
   return CelsiusToKelvin(*celsius);
-}
-
-nlohmann::json StatsJson(const sim::HistoryStats& s, bool kelvin) {
-  const double shift = kelvin ? kZeroCelsius : 0.0;
-  return {{"peak", RoundSignificant(s.peak - shift)},
-          {"mean", RoundSignificant(s.mean - shift)},
-          {"final", RoundSignificant(s.final - shift)}};
-}
-
-/// `--report`: the summary table and every history against time, one self-contained HTML file
-/// (docs/reports.md).
-void WriteReplayReport(const ReplayArgs& a, const vehicle::Car& car,
-                       const std::vector<std::pair<std::string, std::string>>& log_metadata,
-                       const sim::ReplayResult& result,
-                       const std::vector<std::vector<std::string>>& summary_rows) {
-  report::HtmlReport page("hotlap replay: " +
-                          std::filesystem::path(a.telemetry).filename().string());
-  page.AddMetadata("telemetry", a.telemetry);
-  page.AddMetadata("car", car.name + " (" + car.path.string() + ")");
-  page.AddMetadata("samples", std::to_string(result.time.size()));
-  page.AddMetadata("duration", fmt::format("{:.2f} s", result.time.back() - result.time.front()));
-  for (const auto& [key, value] : log_metadata) page.AddMetadata("log " + key, value);
-  page.AddMetadata("channels", a.out);
-
-  page.AddHeading("Summary");
-  page.AddTable({.title = "Per corner: peak / time-weighted mean / final",
-                 .header = {"corner", "tread \u00b0C", "carcass \u00b0C", "disc \u00b0C",
-                            "calliper \u00b0C", "wear mm", "min grip", "brake energy kJ"},
-                 .rows = summary_rows});
-
-  // One chart per quantity, the four corners in their fixed colours, all on one linked time axis.
-  const auto chart = [&](const char* title, const char* label, const char* unit,
-                         std::vector<double> sim::CornerHistory::*channel, double scale,
-                         double shift) {
-    report::LineChart c{.title = title,
-                        .x_axis = {.label = "time", .unit = "s"},
-                        .y_axis = {.label = label, .unit = unit},
-                        .x_link = "time"};
-    for (Corner corner : kAllCorners) {
-      std::vector<double> y = result.corners[CornerIndex(corner)].*channel;
-      for (double& v : y) v = v * scale + shift;
-      c.series.push_back({.label = std::string(CornerName(corner)),
-                          .x = result.time,
-                          .y = std::move(y),
-                          .corner = corner});
-    }
-    page.AddLineChart(c);
-  };
-  page.AddHeading("Tyres");
-  chart("Tread temperature", "tread", "\u00b0C", &sim::CornerHistory::tread_temp, 1.0,
-        -kZeroCelsius);
-  chart("Carcass temperature", "carcass", "\u00b0C", &sim::CornerHistory::carcass_temp, 1.0,
-        -kZeroCelsius);
-  chart("Wear", "wear", "mm", &sim::CornerHistory::wear, 1.0, 0.0);
-  chart("Grip factor", "grip factor", "", &sim::CornerHistory::grip_factor, 1.0, 0.0);
-  page.AddHeading("Brakes");
-  chart("Disc temperature", "disc", "\u00b0C", &sim::CornerHistory::disc_temp, 1.0, -kZeroCelsius);
-  chart("Calliper temperature", "calliper", "\u00b0C", &sim::CornerHistory::calliper_temp, 1.0,
-        -kZeroCelsius);
-  chart("Braking power", "braking power", "kW", &sim::CornerHistory::brake_power, 1e-3, 0.0);
-  page.Write(a.report);
 }
 
 int RunReplay(const ReplayArgs& a) {
@@ -141,48 +80,21 @@ int RunReplay(const ReplayArgs& a) {
              result.time.size(), duration, car.name);
   fmt::print("{:<6} {:>23} {:>23} {:>23} {:>23} {:>8} {:>6}\n", "corner", "tread degC pk/mean/end",
              "carcass degC", "disc degC", "calliper degC", "wear mm", "grip");
-  nlohmann::json corners;
-  std::vector<std::vector<std::string>> summary_rows;  // the printed table, for --report
   const std::array<sim::CornerReplaySummary, 4> summaries = sim::SummarizeReplay(result);
   for (Corner c : kAllCorners) {
-    const sim::CornerReplaySummary& cs = summaries[CornerIndex(c)];
-    const auto& [tread, carcass, disc, calliper, wear, min_grip, brake_energy] = cs;
-    const auto triple = [](const sim::HistoryStats& s) {
-      return fmt::format("{:.1f}/{:.1f}/{:.1f}", KelvinToCelsius(s.peak), KelvinToCelsius(s.mean),
-                         KelvinToCelsius(s.final));
-    };
+    const sim::CornerReplaySummary& s = summaries[CornerIndex(c)];
     fmt::print("{:<6} {:>23} {:>23} {:>23} {:>23} {:>8.4f} {:>6.3f}\n", CornerName(c),
-               triple(tread), triple(carcass), triple(disc), triple(calliper), wear, min_grip);
-    summary_rows.push_back({std::string(CornerName(c)), triple(tread), triple(carcass),
-                            triple(disc), triple(calliper), fmt::format("{:.4f}", wear),
-                            fmt::format("{:.3f}", min_grip),
-                            fmt::format("{:.1f}", brake_energy / 1e3)});
-    corners[std::string(CornerName(c))] = {
-        {"tread_temp_C", StatsJson(tread, true)},
-        {"carcass_temp_C", StatsJson(carcass, true)},
-        {"disc_temp_C", StatsJson(disc, true)},
-        {"calliper_temp_C", StatsJson(calliper, true)},
-        {"wear_mm", RoundSignificant(wear)},
-        {"min_grip_factor", RoundSignificant(min_grip)},
-        {"brake_energy_J", RoundSignificant(brake_energy)},
-    };
+               sim::TemperatureStatsText(s.tread), sim::TemperatureStatsText(s.carcass),
+               sim::TemperatureStatsText(s.disc), sim::TemperatureStatsText(s.calliper),
+               s.final_wear_mm, s.min_grip_factor);
   }
   fmt::print("wrote {} ({} columns) in {:.3f} s\n", a.out, columns.names.size(), elapsed);
   if (!a.json.empty()) {
-    const nlohmann::json summary = {
-        {"command", "replay"},
-        {"telemetry", a.telemetry},
-        {"car", car.name},
-        {"out", a.out},
-        {"samples", result.time.size()},
-        {"duration_s", RoundSignificant(duration)},
-        {"corners", corners},
-    };
-    WriteJsonFile(a.json, summary);
+    WriteJsonFile(a.json, sim::ReplayJson(result, summaries, a.telemetry, car.name, a.out));
     fmt::print("wrote {}\n", a.json);
   }
   if (!a.report.empty()) {
-    WriteReplayReport(a, car, log.metadata(), result, summary_rows);
+    sim::WriteReplayReport(a.report, a.telemetry, a.out, car, log.metadata(), result, summaries);
     fmt::print("wrote {}\n", a.report);
   }
   return 0;

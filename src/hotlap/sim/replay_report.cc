@@ -1,0 +1,114 @@
+#include "hotlap/sim/replay_report.h"
+
+#include <fmt/format.h>
+
+#include "hotlap/common/json_output.h"
+#include "hotlap/common/units.h"
+#include "hotlap/report/html_report.h"
+
+namespace hotlap::sim {
+
+namespace {
+
+nlohmann::json StatsJson(const HistoryStats& s, bool kelvin) {
+  const double shift = kelvin ? kZeroCelsius : 0.0;
+  return {{"peak", RoundSignificant(s.peak - shift)},
+          {"mean", RoundSignificant(s.mean - shift)},
+          {"final", RoundSignificant(s.final - shift)}};
+}
+
+}  // namespace
+
+std::string TemperatureStatsText(const HistoryStats& s) {
+  return fmt::format("{:.1f}/{:.1f}/{:.1f}", KelvinToCelsius(s.peak), KelvinToCelsius(s.mean),
+                     KelvinToCelsius(s.final));
+}
+
+nlohmann::json ReplayJson(const ReplayResult& result,
+                          const std::array<CornerReplaySummary, 4>& summaries,
+                          const std::string& telemetry, const std::string& car_name,
+                          const std::string& out_csv) {
+  nlohmann::json corners;
+  for (Corner c : kAllCorners) {
+    const CornerReplaySummary& s = summaries[CornerIndex(c)];
+    corners[std::string(CornerName(c))] = {
+        {"tread_temp_C", StatsJson(s.tread, true)},
+        {"carcass_temp_C", StatsJson(s.carcass, true)},
+        {"disc_temp_C", StatsJson(s.disc, true)},
+        {"calliper_temp_C", StatsJson(s.calliper, true)},
+        {"wear_mm", RoundSignificant(s.final_wear_mm)},
+        {"min_grip_factor", RoundSignificant(s.min_grip_factor)},
+        {"brake_energy_J", RoundSignificant(s.brake_energy_J)},
+    };
+  }
+  return {
+      {"command", "replay"},
+      {"telemetry", telemetry},
+      {"car", car_name},
+      {"out", out_csv},
+      {"samples", result.time.size()},
+      {"duration_s", RoundSignificant(result.time.back() - result.time.front())},
+      {"corners", corners},
+  };
+}
+
+void WriteReplayReport(const std::filesystem::path& path, const std::string& telemetry,
+                       const std::string& out_csv, const vehicle::Car& car,
+                       const std::vector<std::pair<std::string, std::string>>& log_metadata,
+                       const ReplayResult& result,
+                       const std::array<CornerReplaySummary, 4>& summaries) {
+  std::vector<std::vector<std::string>> rows;
+  for (Corner c : kAllCorners) {
+    const CornerReplaySummary& s = summaries[CornerIndex(c)];
+    rows.push_back({std::string(CornerName(c)), TemperatureStatsText(s.tread),
+                    TemperatureStatsText(s.carcass), TemperatureStatsText(s.disc),
+                    TemperatureStatsText(s.calliper), fmt::format("{:.4f}", s.final_wear_mm),
+                    fmt::format("{:.3f}", s.min_grip_factor),
+                    fmt::format("{:.1f}", s.brake_energy_J / 1e3)});
+  }
+  report::HtmlReport page("hotlap replay: " + std::filesystem::path(telemetry).filename().string());
+  page.AddMetadata("telemetry", telemetry);
+  page.AddMetadata("car", car.name + " (" + car.path.string() + ")");
+  page.AddMetadata("samples", std::to_string(result.time.size()));
+  page.AddMetadata("duration", fmt::format("{:.2f} s", result.time.back() - result.time.front()));
+  for (const auto& [key, value] : log_metadata) page.AddMetadata("log " + key, value);
+  page.AddMetadata("channels", out_csv);
+
+  page.AddHeading("Summary");
+  page.AddTable({.title = "Per corner: peak / time-weighted mean / final",
+                 .header = {"corner", "tread \u00b0C", "carcass \u00b0C", "disc \u00b0C",
+                            "calliper \u00b0C", "wear mm", "min grip", "brake energy kJ"},
+                 .rows = rows});
+
+  // One chart per quantity, the four corners in their fixed colours, all on one linked time axis.
+  const auto chart = [&](const char* title, const char* label, const char* unit,
+                         std::vector<double> CornerHistory::*channel, double scale, double shift) {
+    report::LineChart c{.title = title,
+                        .x_axis = {.label = "time", .unit = "s"},
+                        .y_axis = {.label = label, .unit = unit},
+                        .x_link = "time"};
+    for (Corner corner : kAllCorners) {
+      std::vector<double> y = result.corners[CornerIndex(corner)].*channel;
+      for (double& v : y) v = v * scale + shift;
+      c.series.push_back({.label = std::string(CornerName(corner)),
+                          .x = result.time,
+                          .y = std::move(y),
+                          .corner = corner});
+    }
+    page.AddLineChart(c);
+  };
+  page.AddHeading("Tyres");
+  chart("Tread temperature", "tread", "\u00b0C", &CornerHistory::tread_temp, 1.0, -kZeroCelsius);
+  chart("Carcass temperature", "carcass", "\u00b0C", &CornerHistory::carcass_temp, 1.0,
+        -kZeroCelsius);
+  chart("Wear", "wear", "mm", &CornerHistory::wear, 1.0, 0.0);
+  chart("Grip factor", "grip factor", "", &CornerHistory::grip_factor, 1.0, 0.0);
+  page.AddHeading("Brakes");
+  chart("Disc temperature", "disc", "\u00b0C", &CornerHistory::disc_temp, 1.0, -kZeroCelsius);
+  chart("Calliper temperature", "calliper", "\u00b0C", &CornerHistory::calliper_temp, 1.0,
+        -kZeroCelsius);
+  chart("Braking power", "braking power", "kW", &CornerHistory::brake_power, 1e-3, 0.0);
+  page.Write(path);
+}
+
+}  // namespace hotlap::sim

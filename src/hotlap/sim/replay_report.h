@@ -1,0 +1,38 @@
+#pragma once
+/// @file
+/// What `hotlap replay` writes of a replay besides its channels: the JSON summary
+/// (docs/json-output.md) and the HTML report (docs/reports.md), from the corners' summaries
+/// (SummarizeReplay).
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "hotlap/sim/replay.h"
+#include "hotlap/vehicle/car.h"
+
+namespace hotlap::sim {
+
+/// A temperature's statistics as "peak/mean/final" in degC, one decimal each.
+std::string TemperatureStatsText(const HistoryStats& stats);
+
+/// The summary: the inputs, samples and duration, and per corner each temperature's peak, mean and
+/// final value (degC), the wear, the lowest grip factor and the brake energy.
+nlohmann::json ReplayJson(const ReplayResult& result,
+                          const std::array<CornerReplaySummary, 4>& corners,
+                          const std::string& telemetry, const std::string& car_name,
+                          const std::string& out_csv);
+
+/// Writes the report to `path` atomically: the inputs (with the log's metadata), the per-corner
+/// summary table and every history against time, one chart per quantity.
+void WriteReplayReport(const std::filesystem::path& path, const std::string& telemetry,
+                       const std::string& out_csv, const vehicle::Car& car,
+                       const std::vector<std::pair<std::string, std::string>>& log_metadata,
+                       const ReplayResult& result,
+                       const std::array<CornerReplaySummary, 4>& corners);
+
+}  // namespace hotlap::sim
