@@ -13,6 +13,7 @@
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
+#include <numbers>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -171,6 +172,33 @@ void BM_MagicFormula61BatchViaTyreForceModel(benchmark::State& state) {
   state.SetLabel(internal::MathIsaName(internal::ActiveMathIsa()));
 }
 BENCHMARK(BM_MagicFormula61BatchViaTyreForceModel);
+
+// 2^20 points of the Gen-7-like car's left.tir through CalcTyreForcesBatch, already operating
+// points in SI (nothing converted or copied): the C++ batch rate that bench/python_tyre_bench.py
+// compares hotlap.tyre_forces with (its points are the same).
+void BM_TyreForcesMillionPoints(benchmark::State& state) {
+  const TyreForceModel<double> model = LoadTyreForceModel(
+      std::filesystem::path(HOTLAP_SOURCE_DIR) / "data/cars/gen7/tyres/left.tir");
+  const size_t n = size_t{1} << 20;
+  std::vector<TyreOperatingPoint<double>> points(n);
+  for (size_t i = 0; i < n; ++i) {
+    TyreOperatingPoint<double>& op = points[i];
+    op.fz = 2000.0 + 8000.0 * static_cast<double>(i % 1000) / 999.0;
+    op.slip_angle = (-10.0 + 20.0 * static_cast<double>((i * 7) % 1001) / 1000.0) *
+                    std::numbers::pi / 180.0;
+    op.slip_ratio = -0.2 + 0.4 * static_cast<double>((i * 13) % 1003) / 1002.0;
+    op.speed = 20.0;
+    op.tread_temp = 25.0 + 273.15;
+  }
+  std::vector<TyreForces<double>> out(n);
+  for (auto _ : state) {
+    CalcTyreForcesBatch(model, points, out);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * n));
+}
+BENCHMARK(BM_TyreForcesMillionPoints)->Unit(benchmark::kMillisecond);
 
 // Value and d/dkappa, d/dalpha of all five outputs.
 void BM_MagicFormula61CombinedJet2(benchmark::State& state) {

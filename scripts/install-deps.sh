@@ -29,11 +29,14 @@ packages=(
   libbenchmark-dev       # benchmarks in bench/
   libmumps-headers-dev   # dmumps_c.h: ocp_bench counts MUMPS factorisations (Ipopt's linear solver)
   python3 time           # bench/peer/run_peer_bench.sh: JSON parsing, GNU time for CPU seconds
+  pybind11-dev python3-dev python3-numpy  # the Python module `hotlap` (python/, docs/python.md)
 )
 if [ "$with_tests" -eq 1 ]; then
   packages+=(
     chromium             # headless browser: the tests check that HTML reports render without errors
     calculix-ccx         # CalculiX: implicit reference for the FE solver's pressed-block test
+    python3-pytest       # the Python package's tests (python/tests)
+    python3-matplotlib   # examples/python's tyre-curve plot, run by the tests
   )
 fi
 

@@ -13,6 +13,7 @@
 
 #include "commands.h"
 #include "hotlap/common/csv.h"
+#include "hotlap/common/data_path.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/json_output.h"
 #include "hotlap/common/output_folder.h"
@@ -76,7 +77,8 @@ int RunEval(const EvalArgs& a) {
   if (!(a.values[0] > 0.0))
     throw InputError(fmt::format("--fz-N must be > 0, got {:g}", a.values[0]));
 
-  const tyre::TyreForceModel<double> model = tyre::LoadTyreForceModel(a.params, a.model);
+  const tyre::TyreForceModel<double> model =
+      tyre::LoadTyreForceModel(ResolveTyreFile(a.params), a.model);
   std::optional<tyre::TyreCompound> compound;
   if (!a.compound.empty()) compound = tyre::LoadTyreCompound(a.compound);
   const tyre::TyreCompound* grip_of = compound ? &*compound : nullptr;
@@ -142,7 +144,9 @@ CommandRunner RegisterTyreCommand(CLI::App& app) {
   e->add_option("--model", eval->model, "mf (a .tir file), brush or unitire (YAML)")
       ->required()
       ->check(CLI::IsMember({"mf", "brush", "unitire"}));
-  e->add_option("--params", eval->params, "The model's parameter file")->required();
+  e->add_option("--params", eval->params,
+                "The model's parameter file, or a built-in tyre (e.g. gen7/left, brush_example)")
+      ->required();
   for (size_t i = 0; i < tyre::OperatingPointInputs().size(); ++i) {
     e->add_option(std::string("--") + tyre::OperatingPointInputs()[i].name, eval->values[i])
         ->capture_default_str();

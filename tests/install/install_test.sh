@@ -41,6 +41,12 @@ grep -q "^12," "$work/tyre.txt" || fail "tyre_curve printed no 12 deg row"
 "$work/examples/qss_lap" >"$work/qss.txt" || fail "qss_lap failed"
 grep -q "^lap 3: " "$work/qss.txt" || fail "qss_lap printed no third lap"
 "$prefix/bin/hotlap" track info --track darlington >/dev/null || fail "installed hotlap failed"
+# The installed Python package, when the build has it.
+if [ -d "$build/python/hotlap" ]; then
+  PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 -c \
+    "import hotlap; assert hotlap.__file__.startswith('$prefix'); assert hotlap.load_car('gen7').name == 'gen7'" ||
+    fail "the installed Python package does not import"
+fi
 
 # Every installed header in one translation unit, against the installed targets.
 mkdir -p "$work/headers"

@@ -84,4 +84,47 @@ fs::path ResolveTrackFile(std::string_view name_or_path) {
                    QuotedList(names) + ")");
 }
 
+fs::path ResolveTyreFile(std::string_view name_or_path) {
+  std::error_code ec;
+  const fs::path given(name_or_path);
+  // A file name (with its extension) or an absolute path is a path: the loader says if it is not
+  // there.
+  if (fs::is_regular_file(given, ec) || given.has_extension() || given.is_absolute()) return given;
+  // Built-in: DataDir()/tyres/NAME.{yaml,yml,tir}, or CAR/NAME for
+  // DataDir()/cars/CAR/tyres/NAME.tir.
+  const std::vector<std::string> extensions = {".yaml", ".yml", ".tir"};
+  const fs::path data = DataDir();
+  if (given.is_relative() && !name_or_path.empty()) {
+    for (const std::string& ext : extensions) {
+      const fs::path builtin = (data / "tyres" / given).string() + ext;
+      if (fs::is_regular_file(builtin, ec)) return builtin;
+    }
+    // A car's tyres folder also holds its thermal parameter files: only .tir files are models.
+    if (given.has_parent_path()) {
+      const fs::path builtin =
+          (data / "cars" / given.parent_path() / "tyres" / given.filename()).string() + ".tir";
+      if (fs::is_regular_file(builtin, ec)) return builtin;
+    }
+  }
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(data / "tyres", ec)) {
+    const std::string ext = entry.path().extension().string();
+    if (entry.is_regular_file(ec) &&
+        std::find(extensions.begin(), extensions.end(), ext) != extensions.end()) {
+      names.push_back(entry.path().stem().string());
+    }
+  }
+  for (const auto& car : fs::directory_iterator(data / "cars", ec)) {
+    for (const auto& entry : fs::directory_iterator(car.path() / "tyres", ec)) {
+      if (entry.is_regular_file(ec) && entry.path().extension() == ".tir") {
+        names.push_back(car.path().filename().string() + "/" + entry.path().stem().string());
+      }
+    }
+  }
+  std::sort(names.begin(), names.end());
+  throw InputError("no tyre '" + std::string(name_or_path) +
+                   "': not a tyre file, and not a built-in tyre (built-in: " + QuotedList(names) +
+                   ")");
+}
+
 }  // namespace hotlap

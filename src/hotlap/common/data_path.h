@@ -22,4 +22,11 @@ std::filesystem::path ResolveCarFile(std::string_view name_or_path);
 /// neither exists.
 std::filesystem::path ResolveTrackFile(std::string_view name_or_path);
 
+/// A tyre force model's file given as a built-in name ("brush_example" ->
+/// DataDir()/tyres/brush_example.yaml, any DataDir()/tyres/NAME.yaml, NAME.yml or NAME.tir; a
+/// car's tyre as CAR/NAME, "gen7/left" -> DataDir()/cars/gen7/tyres/left.tir) or a path (an
+/// existing file, or any name with an extension or absolute: returned as it is, for the loader
+/// to check). InputError listing the built-in tyres for a name that is neither.
+std::filesystem::path ResolveTyreFile(std::string_view name_or_path);
+
 }  // namespace hotlap

@@ -1,0 +1,118 @@
+// hotlap.optimal_lap: the minimum-time lap (one solve, or the disc-limit comparison) as
+// `hotlap optimise` / `hotlap lap --method ocp` run it, with the GIL released during the solve,
+// a progress callback and cancelling from Python (the callback returning False, or Ctrl-C).
+
+#include <chrono>
+#include <exception>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+#include <pybind11/functional.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "hotlap/common/error.h"
+#include "hotlap/ocp/optimal_output.h"
+#include "hotlap/ocp/optimal_run.h"
+#include "hotlap/ocp/optimal_run_json.h"
+#include "hotlap/track/track.h"
+#include "hotlap/vehicle/car.h"
+#include "py_convert.h"
+
+namespace hotlap::python {
+
+namespace {
+
+py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
+                    std::optional<double> disc_limit_C, std::optional<double> compare_disc_limit_C,
+                    double step_m, double coarse_step_m, const std::string& thermal_start,
+                    double ambient_C, double track_C, int max_iterations,
+                    const std::vector<std::pair<std::string, std::string>>& ipopt_options,
+                    const py::object& progress) {
+  ocp::OptimalRunOptions o;
+  o.step_m = step_m;
+  o.coarse_step_m = coarse_step_m;
+  o.disc_limit_C = disc_limit_C;
+  o.compare_disc_limit_C = compare_disc_limit_C;
+  o.thermal_start = thermal_start;
+  o.ambient_C = ambient_C;
+  o.track_C = track_C;
+  o.max_iterations = max_iterations;
+  o.ipopt_options = ipopt_options;
+  // One process: a fork beside Python's own threads is not safe (docs/python.md).
+  o.second_process = false;
+  if (disc_limit_C && compare_disc_limit_C) {
+    throw InputError("give disc_limit_C (one solve) or compare_disc_limit_C (two), not both");
+  }
+
+  // Called on the solving thread without the GIL: take it, call Python, and stop the solve when
+  // the callback returns False, raises, or Ctrl-C arrives (the error is raised after the solve).
+  std::exception_ptr callback_error;
+  bool cancelled = false;
+  const ocp::LapProgress on_iteration = [&](const std::string& label, int iteration,
+                                            double objective, double infeasibility,
+                                            double optimality) {
+    py::gil_scoped_acquire acquire;
+    if (callback_error || cancelled) return false;
+    if (PyErr_CheckSignals() != 0) {
+      callback_error = std::make_exception_ptr(py::error_already_set());
+      return false;
+    }
+    if (progress.is_none()) return true;
+    try {
+      const py::object go = progress(label, iteration, objective, infeasibility, optimality);
+      if (!go.is_none() && !go.cast<bool>()) {
+        cancelled = true;
+        return false;
+      }
+      return true;
+    } catch (...) {
+      callback_error = std::current_exception();
+      return false;
+    }
+  };
+  const auto started = std::chrono::steady_clock::now();
+  ocp::OptimalRuns runs;
+  {
+    py::gil_scoped_release release;
+    runs = ocp::SolveOptimalRuns(car, track, o, nullptr, on_iteration);
+  }
+  if (callback_error) std::rethrow_exception(callback_error);
+  const double wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  py::dict out;
+  out["summary"] = ToPython(ocp::OptimalRunsJson(runs, o, track.name(), car.name, wall_time_s));
+  py::dict laps;
+  for (const ocp::SolvedLap& lap : runs.laps) {
+    const sim::ColumnSet columns = ocp::OptimalLapColumns(lap.run, track);
+    laps[py::str(lap.label)] = ColumnsToDict(columns.names, columns.values);
+  }
+  out["channels"] = laps;
+  out["cancelled"] = cancelled;
+  return out;
+}
+
+}  // namespace
+
+void BindOcp(py::module_& m) {
+  const ocp::OptimalRunOptions defaults;  // the library's defaults are the module's
+  m.def("optimal_lap", &OptimalLap, py::arg("car"), py::arg("track"), py::kw_only(),
+        py::arg("disc_limit_C") = py::none(), py::arg("compare_disc_limit_C") = py::none(),
+        py::arg("step_m") = defaults.step_m, py::arg("coarse_step_m") = defaults.coarse_step_m,
+        py::arg("thermal_start") = defaults.thermal_start,
+        py::arg("ambient_temp_C") = defaults.ambient_C, py::arg("track_temp_C") = defaults.track_C,
+        py::arg("max_iterations") = defaults.max_iterations,
+        py::arg("ipopt_options") = std::vector<std::pair<std::string, std::string>>{},
+        py::arg("progress") = py::none(),
+        "The minimum-time lap with tyre and brake temperatures and wear as states: one solve "
+        "(optionally with a front-disc limit, degC), or with compare_disc_limit_C the free and "
+        "the limited lap. Returns {'summary': dict (the keys of `hotlap optimise --json`), "
+        "'channels': {label: {column: array}}, 'cancelled': bool}. progress(label, iteration, "
+        "objective_s, infeasibility, optimality) is called at every Ipopt iteration; returning "
+        "False stops the solve.");
+}
+
+}  // namespace hotlap::python

@@ -1,0 +1,165 @@
+// hotlap.load_car, load_track, replay and qss_lap: the models over a log or round a track, with
+// the same channels and summary keys as `hotlap replay` and `hotlap lap --method qss`.
+
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "hotlap/common/csv.h"
+#include "hotlap/common/data_path.h"
+#include "hotlap/common/error.h"
+#include "hotlap/common/telemetry.h"
+#include "hotlap/common/units.h"
+#include "hotlap/ocp/min_curvature_line.h"
+#include "hotlap/sim/lap_json.h"
+#include "hotlap/sim/lap_output.h"
+#include "hotlap/sim/lap_summary.h"
+#include "hotlap/sim/qss_lap.h"
+#include "hotlap/sim/replay.h"
+#include "hotlap/sim/replay_io.h"
+#include "hotlap/sim/replay_report.h"
+#include "hotlap/sim/road.h"
+#include "hotlap/track/racing_line.h"
+#include "hotlap/track/track_io.h"
+#include "hotlap/vehicle/car.h"
+#include "py_convert.h"
+
+namespace hotlap::python {
+
+namespace {
+
+std::optional<double> ToKelvin(const std::optional<double>& celsius) {
+  if (!celsius) return std::nullopt;
+  return CelsiusToKelvin(*celsius);
+}
+
+py::dict Replay(const vehicle::Car& car, const py::handle& telemetry, bool heat_flows,
+                double max_step_s, std::optional<double> tread_C, std::optional<double> carcass_C,
+                std::optional<double> disc_C, std::optional<double> calliper_C,
+                std::optional<double> ambient_C, std::optional<double> track_C) {
+  if (!(max_step_s > 0.0)) throw InputError(fmt::format("max_step_s {} must be > 0", max_step_s));
+  const Telemetry log = LogFrom(telemetry);
+  sim::InitialTemperatureOverrides overrides;
+  overrides.tread_temp = ToKelvin(tread_C);
+  overrides.carcass_temp = ToKelvin(carcass_C);
+  overrides.disc_temp = ToKelvin(disc_C);
+  overrides.calliper_temp = ToKelvin(calliper_C);
+  overrides.ambient_temp = ToKelvin(ambient_C);
+  overrides.track_temp = ToKelvin(track_C);
+  const sim::ReplayInputs inputs = sim::ReplayInputsFromTelemetry(log, overrides);
+  const sim::ReplayInitialState initial = sim::InitialStateFor(log, car, overrides);
+  sim::ReplayOptions options;
+  options.max_step_s = max_step_s;
+  options.record_heat_flows = heat_flows;
+  sim::ReplayResult result;
+  {
+    py::gil_scoped_release release;
+    result = sim::RunReplay(car, inputs, initial, options);
+  }
+  const sim::ColumnSet columns = sim::ReplayResultColumns(result, heat_flows);
+  py::dict out;
+  out["channels"] = ColumnsToDict(columns.names, columns.values);
+  out["summary"] = ToPython(
+      sim::ReplayJson(result, sim::SummarizeReplay(result), log.path().string(), car.name, ""));
+  return out;
+}
+
+py::dict QssLap(const vehicle::Car& car, const track::Track& track, int laps, double step_m,
+                const std::string& line, double line_margin_m, double ambient_C, double track_C,
+                std::optional<double> tread_C, std::optional<double> carcass_C,
+                std::optional<double> disc_C, std::optional<double> calliper_C) {
+  vehicle::RequireVehicle(car, "hotlap.qss_lap");
+  if (laps < 1 || laps > 1000) throw InputError(fmt::format("laps {} must be in [1, 1000]", laps));
+  if (!(step_m > 0.0)) throw InputError(fmt::format("step_m {} must be > 0", step_m));
+  // The line as `hotlap lap --line` takes it: centre, min-curvature, or a file with one.
+  std::vector<sim::RoadPoint> road;
+  if (line == "centre") {
+    road = sim::SampleRoad(track, step_m);
+  } else if (line == "min-curvature") {
+    road = sim::SampleRoadAlongLine(
+        track,
+        ocp::MinimumCurvatureLine(track,
+                                  {.step_m = std::max(step_m, 2.0), .margin_m = line_margin_m}),
+        step_m);
+  } else {
+    road = sim::SampleRoadAlongLine(
+        track, track::ReadRacingLine(line, track, std::max(step_m, 2.0)), step_m);
+  }
+  sim::QssOptions options;
+  options.laps = laps;
+  options.track_length = track.length_m();
+  options.ambient_temp = CelsiusToKelvin(ambient_C);
+  options.track_temp = CelsiusToKelvin(track_C);
+  const auto pick = [](const std::optional<double>& c, double kelvin) {
+    return c ? CelsiusToKelvin(*c) : kelvin;
+  };
+  for (int k = 0; k < 4; ++k) {
+    options.initial.tyres[k] = {pick(tread_C, car.initial.tread_temp),
+                                pick(carcass_C, car.initial.carcass_temp), 0.0};
+    options.initial.brakes[k] = {pick(disc_C, car.initial.disc_temp),
+                                 pick(calliper_C, car.initial.calliper_temp)};
+  }
+  sim::QssResult result;
+  {
+    py::gil_scoped_release release;
+    result = sim::RunQssLap(car, road, options);
+  }
+  const sim::ColumnSet columns =
+      sim::LapResultColumns(result, track, options.ambient_temp, options.track_temp);
+  py::dict out;
+  out["channels"] = ColumnsToDict(columns.names, columns.values);
+  out["summary"] = ToPython(sim::StintJson(sim::SummarizeStint(result), track, car.name, "", ""));
+  return out;
+}
+
+}  // namespace
+
+void BindSim(py::module_& m) {
+  py::class_<vehicle::Car>(m, "Car", "A car's parameter set (hotlap.load_car).")
+      .def_property_readonly("name", [](const vehicle::Car& c) { return c.name; })
+      .def_property_readonly("path", [](const vehicle::Car& c) { return c.path.string(); })
+      .def("__repr__", [](const vehicle::Car& c) {
+        return fmt::format("<hotlap.Car '{}' from {}>", c.name, c.path.string());
+      });
+  py::class_<track::Track>(m, "Track", "A closed track (hotlap.load_track).")
+      .def_property_readonly("name", [](const track::Track& t) { return t.name(); })
+      .def_property_readonly("length_m", &track::Track::length_m)
+      .def("__repr__", [](const track::Track& t) {
+        return fmt::format("<hotlap.Track '{}', {:.1f} m>", t.name(), t.length_m());
+      });
+  m.def(
+      "load_car",
+      [](const std::string& name_or_path) {
+        return vehicle::LoadCar(ResolveCarFile(name_or_path));
+      },
+      py::arg("name_or_path") = "gen7",
+      "A built-in car by name ('gen7') or a car.yaml (or its folder) by path.");
+  m.def(
+      "load_track", [](const std::string& name_or_path) { return track::LoadTrack(name_or_path); },
+      py::arg("name_or_path") = "darlington",
+      "A built-in track by name ('darlington') or a track file by path.");
+  m.def("replay", &Replay, py::arg("car"), py::arg("telemetry"), py::kw_only(),
+        py::arg("heat_flows") = false, py::arg("max_step_s") = 0.02,
+        py::arg("tread_temp_C") = py::none(), py::arg("carcass_temp_C") = py::none(),
+        py::arg("disc_temp_C") = py::none(), py::arg("calliper_temp_C") = py::none(),
+        py::arg("ambient_temp_C") = py::none(), py::arg("track_temp_C") = py::none(),
+        "The four tyre and four brake thermal models over a log (a CSV path or a dict of "
+        "arrays keyed by column names with units): {'channels': {column: array}, 'summary': "
+        "dict}, as `hotlap replay` writes them.");
+  m.def("qss_lap", &QssLap, py::arg("car"), py::arg("track"), py::kw_only(), py::arg("laps") = 1,
+        py::arg("step_m") = 1.0, py::arg("line") = "min-curvature", py::arg("line_margin_m") = 1.5,
+        py::arg("ambient_temp_C") = 25.0, py::arg("track_temp_C") = 40.0,
+        py::arg("tread_temp_C") = py::none(), py::arg("carcass_temp_C") = py::none(),
+        py::arg("disc_temp_C") = py::none(), py::arg("calliper_temp_C") = py::none(),
+        "Quasi-steady-state laps with the thermal models, on the minimum-curvature line, the "
+        "centre line ('centre') or a line from a file (as `hotlap lap --line`): {'channels', "
+        "'summary'} as `hotlap lap --method qss` writes them.");
+}
+
+}  // namespace hotlap::python

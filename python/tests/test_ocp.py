@@ -1,0 +1,54 @@
+import numpy as np
+import pytest
+
+import hotlap
+from conftest import read_csv, read_json
+
+# A coarse mesh and no coarse-to-fine stage: a few seconds a solve.
+MESH = dict(step_m=30.0, coarse_step_m=0.0)
+
+
+def test_optimal_lap_equals_the_command_line(cli, tmp_path):
+    cli("optimise", "--step-m", 30, "--coarse-step-m", 0, "--out", tmp_path / "o", "--json", tmp_path / "o.json")
+    expected = read_json(tmp_path / "o.json")
+    channels = read_csv(tmp_path / "o" / "optimal.csv")
+    calls = []
+    got = hotlap.optimal_lap(hotlap.load_car("gen7"), hotlap.load_track("darlington"),
+                             progress=lambda *a: calls.append(a), **MESH)
+    assert not got["cancelled"]
+    summary = got["summary"]
+    assert summary["lap_time_s"] == expected["lap_time_s"]
+    assert summary["ipopt_iterations"] == expected["ipopt_iterations"]
+    assert summary["corners"] == expected["corners"]
+    (label,) = got["channels"]
+    for name, values in channels.items():
+        np.testing.assert_allclose(got["channels"][label][name], values, rtol=1e-12, atol=1e-12,
+                                   err_msg=name)
+    # One call per Ipopt iteration (and the zeroth), with the lap's label.
+    assert len(calls) == expected["ipopt_iterations"] + 1
+    assert calls[-1][0] == label and calls[-1][1] == expected["ipopt_iterations"]
+
+
+def test_the_progress_callback_stops_the_solve():
+    got = hotlap.optimal_lap(hotlap.load_car("gen7"), hotlap.load_track("darlington"),
+                             progress=lambda label, iteration, *rest: iteration < 3, **MESH)
+    assert got["cancelled"]
+    assert got["summary"]["ipopt_iterations"] == 3
+
+
+def test_an_error_in_the_callback_is_raised_after_the_solve_stops():
+    def progress(label, iteration, *rest):
+        if iteration == 2:
+            raise KeyError("from the callback")
+
+    with pytest.raises(KeyError, match="from the callback"):
+        hotlap.optimal_lap(hotlap.load_car("gen7"), hotlap.load_track("darlington"),
+                           progress=progress, **MESH)
+
+
+def test_bad_options_raise_value_error():
+    car, track = hotlap.load_car("gen7"), hotlap.load_track("darlington")
+    with pytest.raises(ValueError, match="not both"):
+        hotlap.optimal_lap(car, track, disc_limit_C=500.0, compare_disc_limit_C=500.0, **MESH)
+    with pytest.raises(ValueError, match="no-such-option"):
+        hotlap.optimal_lap(car, track, ipopt_options=[("no-such-option", "1")], **MESH)

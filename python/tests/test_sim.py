@@ -1,0 +1,66 @@
+import numpy as np
+import pytest
+
+import hotlap
+from conftest import EXAMPLE_LOG, read_csv, read_json
+
+
+def test_replay_equals_the_command_lines_channels_and_summary(cli, tmp_path):
+    cli("replay", "--telemetry", EXAMPLE_LOG, "--out", tmp_path / "r.csv", "--json", tmp_path / "r.json")
+    expected = read_csv(tmp_path / "r.csv")
+    summary = read_json(tmp_path / "r.json")
+    got = hotlap.replay(hotlap.load_car("gen7"), str(EXAMPLE_LOG))
+    assert list(got["channels"]) == list(expected)
+    for name, values in expected.items():
+        np.testing.assert_array_equal(got["channels"][name], values, err_msg=name)
+    for key in ("samples", "duration_s", "corners", "car"):
+        assert got["summary"][key] == summary[key], key
+
+
+def test_replay_of_a_dict_of_arrays_equals_the_file():
+    log = read_csv(EXAMPLE_LOG)
+    car = hotlap.load_car("gen7")
+    from_dict = hotlap.replay(car, log)
+    from_file = hotlap.replay(car, str(EXAMPLE_LOG))
+    for name, values in from_file["channels"].items():
+        np.testing.assert_array_equal(from_dict["channels"][name], values, err_msg=name)
+
+
+def test_a_log_without_an_input_raises_the_command_lines_message(cli, tmp_path):
+    log = read_csv(EXAMPLE_LOG)
+    del log["fz_rr_N"]
+    path = tmp_path / "short.csv"
+    with open(path, "w") as f:
+        f.write(",".join(log) + "\n")
+        for row in zip(*log.values()):
+            f.write(",".join("" if np.isnan(v) else repr(float(v)) for v in row) + "\n")
+    message = cli("replay", "--telemetry", path, "--out", tmp_path / "o.csv", check=False).stderr
+    with pytest.raises(ValueError) as error:
+        hotlap.replay(hotlap.load_car("gen7"), str(path))
+    assert "missing column 'fz_rr_N'" in str(error.value)
+    assert str(error.value) in message
+    with pytest.raises(ValueError, match=r"<telemetry dict>: missing column 'fz_rr_N'"):
+        hotlap.replay(hotlap.load_car("gen7"), log)
+
+
+def test_qss_lap_equals_the_command_line(cli, tmp_path):
+    cli("lap", "--method", "qss", "--laps", 2, "--out", tmp_path / "q", "--json", tmp_path / "q.json")
+    expected = read_json(tmp_path / "q.json")
+    channels = read_csv(tmp_path / "q" / "lap.csv")
+    got = hotlap.qss_lap(hotlap.load_car("gen7"), hotlap.load_track("darlington"), laps=2)
+    for key, value in expected.items():
+        if key in ("out_csv", "out_report"):
+            continue
+        assert got["summary"][key] == value, key
+    for name, values in channels.items():
+        np.testing.assert_array_equal(got["channels"][name], values, err_msg=name)
+
+
+def test_loading_reports_what_is_wrong():
+    with pytest.raises(ValueError, match="no-such-car"):
+        hotlap.load_car("no-such-car")
+    with pytest.raises(ValueError, match="no-such-track"):
+        hotlap.load_track("no-such-track")
+    assert hotlap.load_track("darlington").length_m == pytest.approx(2198.0, abs=1.0)
+    assert hotlap.load_car().name == "gen7"
+    assert issubclass(hotlap.NumericalError, RuntimeError)
