@@ -109,8 +109,8 @@ TEST(DiscLimitComparisonTest, LimitBelowTheStartingDiscIsBadInput) {
 }
 
 // Coarse to fine, the limited lap is solved in a child process beside the free one: the same
-// laps as solving it afterwards in this process, to rounding (MUMPS with SCOTCH's ordering, used
-// for the fine solve, is not bit-reproducible between processes: 1e-14 relative on the point).
+// laps as solving it afterwards in this process, bit for bit (the fine solve's MUMPS ordering,
+// PORD, is reproducible; SCOTCH's differed by 1e-14 relative between processes).
 TEST(DiscLimitComparisonTest, SecondProcessGivesTheSameLaps) {
   const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
   const track::Track track = track::LoadTrack("darlington");
@@ -126,17 +126,16 @@ TEST(DiscLimitComparisonTest, SecondProcessGivesTheSameLaps) {
   const DiscLimitComparison one = CompareDiscLimit(car, track, o, CelsiusToKelvin(480.0));
   EXPECT_FALSE(one.limited_in_second_process);
   ASSERT_TRUE(two.converged() && one.converged());
-  EXPECT_NEAR(two.limited.run.solution.lap_time, one.limited.run.solution.lap_time, 1e-9);
-  EXPECT_NEAR(two.limited.run.solution.solve.iterations, one.limited.run.solution.solve.iterations,
-              2);
+  EXPECT_EQ(two.limited.run.solution.lap_time, one.limited.run.solution.lap_time);
+  EXPECT_EQ(two.limited.run.solution.solve.iterations, one.limited.run.solution.solve.iterations);
   EXPECT_EQ(two.limited.run.coarse.iterations, one.limited.run.coarse.iterations);
   EXPECT_GT(two.limited.run.coarse.iterations, 0);
   const std::vector<double>& disc2 = two.limited.run.solution.corners[0].disc_temp;
   const std::vector<double>& disc1 = one.limited.run.solution.corners[0].disc_temp;
   ASSERT_EQ(disc2.size(), disc1.size());
-  for (size_t k = 0; k < disc1.size(); ++k) EXPECT_NEAR(disc2[k], disc1[k], 1e-6) << k;
-  EXPECT_NEAR(two.free.run.solution.lap_time, one.free.run.solution.lap_time, 1e-9);
-  EXPECT_NEAR(two.delta_s(), one.delta_s(), 2e-9);
+  for (size_t k = 0; k < disc1.size(); ++k) EXPECT_EQ(disc2[k], disc1[k]) << k;
+  EXPECT_EQ(two.free.run.solution.lap_time, one.free.run.solution.lap_time);
+  EXPECT_EQ(two.delta_s(), one.delta_s());
 }
 
 }  // namespace
