@@ -30,6 +30,7 @@ packages=(
   libmumps-headers-dev   # dmumps_c.h: ocp_bench counts MUMPS factorisations (Ipopt's linear solver)
   python3 time           # bench/peer/run_peer_bench.sh: JSON parsing, GNU time for CPU seconds
   pybind11-dev python3-dev python3-numpy  # the Python module `hotlap` (python/, docs/python.md)
+  python3-distributed python3-yaml  # hotlap sweep: dask.distributed, YAML case tables (docs/sweeps.md)
 )
 if [ "$with_tests" -eq 1 ]; then
   packages+=(

@@ -41,4 +41,7 @@ CommandRunner RegisterAbsCommand(CLI::App& app);
 /// `hotlap fe inflate|footprint|roll|abs`: the finite-element tyre's steps (cmd_fe.cc).
 CommandRunner RegisterFeCommand(CLI::App& app);
 
+/// `hotlap sweep`: hands its arguments to the Python package's hotlap.sweep (cmd_sweep.cc).
+CommandRunner RegisterSweepCommand(CLI::App& app);
+
 }  // namespace hotlap::app

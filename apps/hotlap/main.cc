@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   add(&hotlap::app::RegisterSynthCommand);
   add(&hotlap::app::RegisterAbsCommand);
   add(&hotlap::app::RegisterFeCommand);
+  add(&hotlap::app::RegisterSweepCommand);
 
   try {
     app.parse(argc, argv);

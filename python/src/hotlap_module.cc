@@ -14,6 +14,7 @@ void BindTyre(py::module_& m);
 void BindSim(py::module_& m);
 void BindOcp(py::module_& m);
 void BindIdent(py::module_& m);
+void BindReport(py::module_& m);
 }  // namespace hotlap::python
 
 PYBIND11_MODULE(_hotlap, m) {
@@ -37,4 +38,5 @@ PYBIND11_MODULE(_hotlap, m) {
   hotlap::python::BindSim(m);
   hotlap::python::BindOcp(m);
   hotlap::python::BindIdent(m);
+  hotlap::python::BindReport(m);
 }

@@ -261,6 +261,40 @@
     return chart;
   }
 
+  // Every table sorts by a column when its header is clicked (again: the other way), numbers
+  // as numbers ("a/b/c" cells by their first number), other cells as text; empty cells last.
+  function sortKey(cell, numeric) {
+    const text = cell ? cell.textContent.trim() : '';
+    if (!numeric) return text;
+    const v = parseFloat(text);
+    return isFinite(v) ? v : NaN;
+  }
+  for (const table of document.querySelectorAll('table')) {
+    const body = table.tBodies[0];
+    if (!table.tHead || !body) continue;
+    table.tHead.querySelectorAll('th').forEach((th, column) => {
+      th.classList.add('sortable');
+      th.title = 'sort by this column';
+      th.addEventListener('click', () => {
+        const rows = Array.from(body.rows);
+        const numeric = rows.every((r) => !r.cells[column] || r.cells[column].classList.contains('num') ||
+          r.cells[column].textContent.trim() === '');
+        const up = th.getAttribute('aria-sort') !== 'ascending';
+        table.tHead.querySelectorAll('th').forEach((h) => h.removeAttribute('aria-sort'));
+        th.setAttribute('aria-sort', up ? 'ascending' : 'descending');
+        const keyed = rows.map((r, i) => ({ r, i, k: sortKey(r.cells[column], numeric) }));
+        keyed.sort((a, b) => {
+          const ea = numeric ? isNaN(a.k) : a.k === '';
+          const eb = numeric ? isNaN(b.k) : b.k === '';
+          if (ea !== eb) return ea ? 1 : -1;
+          const c = numeric ? a.k - b.k : a.k.localeCompare(b.k);
+          return (up ? c : -c) || a.i - b.i;
+        });
+        for (const { r } of keyed) body.appendChild(r);
+      });
+    });
+  }
+
   report.charts = [];
   for (const spec of data.charts) {
     try {

@@ -1,0 +1,117 @@
+"""hotlap.sweep on a real dask LocalCluster (two worker processes): the same results as a serial
+run, a killed worker's case run again, a failing case recorded, a resumed sweep redoing nothing."""
+
+import json
+import os
+import signal
+import threading
+import time
+
+import pytest
+
+import hotlap.sweep as sweep
+
+distributed = pytest.importorskip("distributed")
+
+QSS = [{"case": "c%d" % k, "method": "qss", "laps": 1, "ambient_temp_C": 15.0 + 5.0 * k} for k in range(4)]
+
+
+def _results(out):
+    """{case: (result.json without its timing, bytes of every other file)}."""
+    found = {}
+    for name in sorted(os.listdir(os.path.join(out, "cases"))):
+        folder = os.path.join(out, "cases", name)
+        with open(os.path.join(folder, "result.json")) as f:
+            result = json.load(f)
+        result.pop("elapsed_s")
+        files = {}
+        for file in sorted(os.listdir(folder)):
+            if file != "result.json":
+                with open(os.path.join(folder, file), "rb") as f:
+                    files[file] = f.read()
+        found[name] = (result, files)
+    return found
+
+
+def test_two_workers_give_the_serial_results_bit_for_bit(tmp_path):
+    parallel = sweep.sweep(QSS, tmp_path / "dask", local_workers=2, progress=None)
+    serial = sweep.sweep(QSS, tmp_path / "serial", shard=(1, 1), progress=None)
+    assert parallel["by_status"] == {"ok": 4} == serial["by_status"]
+    assert _results(tmp_path / "dask") == _results(tmp_path / "serial")
+    assert (tmp_path / "dask" / "report.html").stat().st_size > 10000
+    with open(tmp_path / "dask" / "results.csv") as f:
+        rows = f.read().splitlines()
+    assert rows[0].startswith("case,status,message,method,car,track,elapsed_s,hash,ambient_temp_C,laps,")
+    assert len(rows) == 5 and rows[1].startswith("c0,ok,,qss,gen7,darlington,")
+
+
+def test_a_failing_case_is_recorded_and_the_rest_finish(tmp_path):
+    cases = QSS[:2] + [{"case": "no-laps", "method": "qss", "laps": 0}, {"case": "later", "method": "stint"}]
+    summary = sweep.sweep(cases, tmp_path, local_workers=2, progress=None)
+    assert summary["by_status"] == {"ok": 2, "bad input": 1, "not available": 1}
+    with open(tmp_path / "cases" / "no-laps" / "result.json") as f:
+        result = json.load(f)
+    assert result["status"] == "bad input" and "laps 0 must be in [1, 1000]" in result["message"]
+
+
+def test_a_resumed_sweep_redoes_nothing(tmp_path):
+    sweep.sweep(QSS, tmp_path, shard=(1, 1), progress=None)
+    stamps = {n: os.stat(tmp_path / "cases" / n / "result.json").st_mtime_ns for n in ("c0", "c1", "c2", "c3")}
+    again = sweep.sweep(QSS, tmp_path, local_workers=2, progress=None)
+    assert again["skipped"] == 4 and again["ran"] == 0 and again["by_status"] == {"ok": 4}
+    assert stamps == {n: os.stat(tmp_path / "cases" / n / "result.json").st_mtime_ns for n in stamps}
+    # A changed case (its inputs' hash) is run again; the others are not.
+    changed = [dict(c) for c in QSS]
+    changed[2]["ambient_temp_C"] = 40.0
+    third = sweep.sweep(changed, tmp_path, shard=(1, 1), progress=None)
+    assert third["skipped"] == 3 and third["ran"] == 1
+
+
+def test_a_worker_killed_during_a_case_leaves_every_case_done(tmp_path):
+    import dask
+    from distributed import Client, LocalCluster
+
+    # Optimal laps on a coarse mesh: a few seconds each, long enough to be killed in.
+    cases = [{"case": "o%d" % k, "method": "ocp", "step_m": 30.0, "coarse_step_m": 0.0, "ambient_temp_C": 20.0 + k}
+             for k in range(3)]
+    with dask.config.set({"distributed.scheduler.allowed-failures": 2}):
+        cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)
+    client = Client(cluster)
+    killed = []
+
+    def kill_one_busy_worker():
+        deadline = time.monotonic() + 60
+        while time.monotonic() < deadline and not killed:
+            busy = [w for w, tasks in client.processing().items() if tasks]
+            if busy:
+                time.sleep(0.5)  # well inside the case
+                pid = client.run(os.getpid, workers=[busy[0]])[busy[0]]
+                os.kill(pid, signal.SIGKILL)
+                killed.append(pid)
+            time.sleep(0.05)
+
+    killer = threading.Thread(target=kill_one_busy_worker)
+    killer.start()
+    try:
+        summary = sweep.sweep(cases, tmp_path, scheduler=client, progress=None)
+    finally:
+        killer.join()
+        client.close()
+        cluster.close()
+    assert killed, "no worker was busy to kill"
+    assert summary["by_status"] == {"ok": 3} and summary["lost"] == []
+
+
+def test_case_tables_are_checked_with_suggestions(tmp_path):
+    table = tmp_path / "cases.csv"
+    table.write_text("case,method,ambient_temp,brake_system.front_share\na,qss,20,0.6\n")
+    with pytest.raises(ValueError, match=r"unknown column 'ambient_temp' \(did you mean 'ambient_temp_C'"):
+        sweep.sweep(table, tmp_path / "out", shard=(1, 1), progress=None)
+    with pytest.raises(ValueError, match="method 'lap' is not one of"):
+        sweep.resolve_cases([{"method": "lap"}])
+    with pytest.raises(ValueError, match="option disc_limit_C does not apply to method qss"):
+        sweep.resolve_cases([{"method": "qss", "disc_limit_C": 500}])
+    grid = tmp_path / "grid.yaml"
+    grid.write_text("base: {method: qss, laps: 1}\ngrid:\n  ambient_temp_C: [20, 30]\n  track_temp_C: [30, 40, 50]\n")
+    rows = sweep.read_cases(grid)
+    assert len(rows) == 6 and rows[1] == {"method": "qss", "laps": 1, "ambient_temp_C": 20, "track_temp_C": 40}
