@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -158,6 +159,75 @@ TEST_F(YamlReaderTest, FailNamesFileAndDottedField) {
   EXPECT_EQ(inner.Where("x"), path.string() + ": field 'outer.inner.x'");
   EXPECT_EQ(test::InputErrorOf([&] { inner.Fail("x", "too big"); }),
             path.string() + ": field 'outer.inner.x': too big");
+}
+
+// Overrides replace numbers before the getters read them, so the usual checks apply to the new
+// values; messages about an overridden field start with its label.
+TEST_F(YamlReaderTest, OverridesReplaceNumbersBeforeReading) {
+  const auto path = Write(
+      "name: demo\n"
+      "mass_kg: 2.5\n"
+      "outer: {inner: {depth_mm: 4, width_mm: 3}}\n");
+  YamlReader y = YamlReader::Load(path, {{"mass_kg", 7.25, "override 'm=7.25'"},
+                                         {"outer.inner.depth_mm", 1e-5, "override 'd'"}});
+  EXPECT_EQ(y.String("name"), "demo");
+  EXPECT_EQ(y.Number("mass_kg", Range::Positive("kg")), 7.25);
+  YamlReader outer = y.Map("outer");
+  YamlReader inner = outer.Map("inner");
+  EXPECT_EQ(inner.Number("depth_mm", Range::Positive("mm")), 1e-5);
+  EXPECT_EQ(inner.Number("width_mm", Range::Positive("mm")), 3.0);
+  EXPECT_EQ(test::InputErrorOf([&] { inner.Fail("depth_mm", "too deep"); }),
+            "override 'd': " + path.string() + ": field 'outer.inner.depth_mm': too deep");
+  // Another field of a file with overrides: the message lists them all.
+  EXPECT_EQ(test::InputErrorOf([&] { inner.Fail("width_mm", "wider than deep"); }),
+            "with override 'm=7.25', override 'd': " + path.string() +
+                ": field 'outer.inner.width_mm': wider than deep");
+
+  YamlReader out_of_range = YamlReader::Load(path, {{"mass_kg", -1, "override 'mass_kg=-1'"}});
+  EXPECT_EQ(test::InputErrorOf([&] { out_of_range.Number("mass_kg", Range::Positive("kg")); }),
+            "override 'mass_kg=-1': " + path.string() +
+                ": field 'mass_kg': value -1 is out of range: must be > 0 kg");
+  // Without overrides the messages are as before.
+  YamlReader plain = YamlReader::Load(path, {});
+  EXPECT_EQ(test::InputErrorOf([&] { plain.Fail("mass_kg", "x"); }),
+            path.string() + ": field 'mass_kg': x");
+}
+
+TEST_F(YamlReaderTest, OverrideOfAFieldThatIsNoNumberIsRefused) {
+  const auto path = Write("name: demo\nouter: {depth_mm: 4}\nrows: [1, 2]\n");
+  const auto error = [&](const std::string& field) {
+    return test::InputErrorOf([&] { YamlReader::Load(path, {{field, 1.0, "override 'X'"}}); });
+  };
+  EXPECT_EQ(error("outer.depht_mm"), "override 'X': " + path.string() +
+                                         " has no field 'outer.depht_mm' (did you mean "
+                                         "'outer.depth_mm'?)");
+  EXPECT_TRUE(Contains(error("name"), "field 'name' holds 'demo', not a number"));
+  EXPECT_TRUE(Contains(error("outer"), "field 'outer' is a mapping, not a number"));
+  EXPECT_TRUE(Contains(error("rows"), "field 'rows' is a list, not a number"));
+  EXPECT_TRUE(Contains(error("name.x"), "field 'name' is not a mapping: it has no field 'x'"));
+  EXPECT_TRUE(Contains(test::InputErrorOf([&] {
+                         YamlReader::Load(path, {{"outer.depth_mm", 1, "override 'A'"},
+                                                 {"outer.depth_mm", 2, "override 'B'"}});
+                       }),
+                       "override 'B': " + path.string() +
+                           ": field 'outer.depth_mm' is already set by override 'A'"));
+}
+
+TEST_F(YamlReaderTest, ListsTheScalarsAndReadsNumbersAsTheGettersDo) {
+  const auto path = Write("name: demo\nmass_kg: +2.5\nouter: {inner: {n: 1e-3}}\nrows: [1]\n");
+  const std::vector<YamlScalarField> fields = ListYamlScalars(path);
+  ASSERT_EQ(fields.size(), 3u);
+  EXPECT_EQ(fields[0].field, "name");
+  EXPECT_FALSE(fields[0].number);
+  EXPECT_EQ(fields[1].field, "mass_kg");
+  EXPECT_TRUE(fields[1].number);
+  EXPECT_EQ(fields[2].field, "outer.inner.n");
+  EXPECT_EQ(fields[2].text, "1e-3");
+  EXPECT_EQ(ParseYamlNumber("+2.5"), 2.5);
+  EXPECT_EQ(ParseYamlNumber("-1e3"), -1000.0);
+  for (const char* bad : {"", "+", "2.5kg", "nan", "inf", "0x10", " 1"}) {
+    EXPECT_FALSE(ParseYamlNumber(bad).has_value()) << bad;
+  }
 }
 
 }  // namespace

@@ -32,8 +32,11 @@ BrakeGeometry ReadGeometry(YamlReader& y) {
 
 }  // namespace
 
-BrakeFile LoadBrakeFile(const std::filesystem::path& path) {
-  YamlReader y = YamlReader::Load(path);
+BrakeFile LoadBrakeFile(const std::filesystem::path& path) { return LoadBrakeFile(path, {}); }
+
+BrakeFile LoadBrakeFile(const std::filesystem::path& path,
+                        const std::vector<YamlOverride>& overrides) {
+  YamlReader y = YamlReader::Load(path, overrides);
   BrakeFile out;
   out.path = path;
   out.name = y.String("name");

@@ -5,8 +5,10 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "hotlap/brake/brake_thermal.h"
+#include "hotlap/common/yaml_reader.h"
 
 namespace hotlap::brake {
 
@@ -26,5 +28,9 @@ struct BrakeFile {
 
 /// Loads a brake file (`model: two_mass_disc_calliper`).
 BrakeFile LoadBrakeFile(const std::filesystem::path& path);
+/// The same with numbers of the file replaced before it is read (YamlReader::Load), each checked
+/// as the file's own.
+BrakeFile LoadBrakeFile(const std::filesystem::path& path,
+                        const std::vector<YamlOverride>& overrides);
 
 }  // namespace hotlap::brake

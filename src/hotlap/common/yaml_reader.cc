@@ -31,10 +31,20 @@ std::string Range::Describe() const {
                      max_inclusive ? "]" : ")", u);
 }
 
-YamlReader::YamlReader(YAML::Node node, fs::path file, std::string prefix)
-    : node_(std::move(node)), file_(std::move(file)), prefix_(std::move(prefix)) {}
+std::optional<double> ParseYamlNumber(std::string_view text) {
+  double value = 0.0;
+  const char* begin = text.data();
+  const char* end = text.data() + text.size();
+  if (begin != end && *begin == '+') ++begin;
+  const auto [ptr, ec] = std::from_chars(begin, end, value);
+  if (begin == end || ec != std::errc() || ptr != end || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
 
-YamlReader YamlReader::Load(const fs::path& path) {
+namespace {
+
+// The file's top-level mapping; InputError if it cannot be read or parsed, or is not a mapping.
+YAML::Node ParseFile(const fs::path& path) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) {
     throw InputError(fmt::format("cannot read '{}': no such file", path.string()));
@@ -52,7 +62,120 @@ YamlReader YamlReader::Load(const fs::path& path) {
     throw InputError(fmt::format("{}: expected a mapping of 'field: value' lines at the top level",
                                  path.string()));
   }
-  return YamlReader(root, path, "");
+  return root;
+}
+
+void ListScalars(const YAML::Node& map, const std::string& prefix,
+                 std::vector<YamlScalarField>& out) {
+  for (const auto& kv : map) {
+    const std::string field = prefix + kv.first.as<std::string>();
+    if (kv.second.IsMap()) {
+      ListScalars(kv.second, field + ".", out);
+    } else if (kv.second.IsScalar()) {
+      out.push_back({field, kv.second.Scalar(), ParseYamlNumber(kv.second.Scalar()).has_value()});
+    }
+  }
+}
+
+std::vector<std::string> Split(const std::string& dotted) {
+  std::vector<std::string> parts;
+  size_t start = 0;
+  while (true) {
+    const size_t dot = dotted.find('.', start);
+    parts.push_back(dotted.substr(start, dot == std::string::npos ? dot : dot - start));
+    if (dot == std::string::npos) return parts;
+    start = dot + 1;
+  }
+}
+
+// Sets the number `o` names in `root` (the file's top-level mapping) to its value, as text the
+// reader parses back to the same double.
+void ApplyOverride(YAML::Node root, const fs::path& path, const YamlOverride& o) {
+  const std::vector<std::string> parts = Split(o.field);
+  YAML::Node node = root;
+  std::string walked;
+  for (size_t i = 0; i < parts.size(); ++i) {
+    const std::string& part = parts[i];
+    const std::string here = walked.empty() ? part : walked + "." + part;
+    const YAML::Node& parent = node;
+    const YAML::Node child = parent[part];
+    if (!child.IsDefined()) {
+      std::vector<std::string> keys;
+      for (const auto& kv : parent) keys.push_back(kv.first.as<std::string>());
+      std::string message = fmt::format("{}: {} has no field '{}'", o.label, path.string(), here);
+      const auto close = ClosestNames(part, keys);
+      if (!close.empty()) {
+        std::vector<std::string> full;
+        for (const std::string& k : close) full.push_back(walked.empty() ? k : walked + "." + k);
+        message += fmt::format(" (did you mean {}?)", QuotedList(full));
+      }
+      throw InputError(message);
+    }
+    if (i + 1 < parts.size()) {
+      if (!child.IsMap()) {
+        throw InputError(fmt::format("{}: {}: field '{}' is not a mapping: it has no field '{}'",
+                                     o.label, path.string(), here, parts[i + 1]));
+      }
+      node.reset(child);  // rebinds the handle (plain assignment would overwrite the parent)
+      walked = here;
+      continue;
+    }
+    if (!child.IsScalar()) {
+      throw InputError(fmt::format("{}: {}: field '{}' is a {}, not a number", o.label,
+                                   path.string(), here, child.IsMap() ? "mapping" : "list"));
+    }
+    if (!ParseYamlNumber(child.Scalar())) {
+      throw InputError(
+          fmt::format("{}: {}: field '{}' holds '{}', not a number: only numbers can be overridden",
+                      o.label, path.string(), here, child.Scalar()));
+    }
+    node[part] = fmt::format("{}", o.value);  // shortest text that reads back as this double
+  }
+}
+
+}  // namespace
+
+std::vector<YamlScalarField> ListYamlScalars(const fs::path& path) {
+  std::vector<YamlScalarField> out;
+  ListScalars(ParseFile(path), "", out);
+  return out;
+}
+
+YamlReader::YamlReader(YAML::Node node, fs::path file, std::string prefix,
+                       std::shared_ptr<const std::vector<YamlOverride>> overrides)
+    : node_(std::move(node)),
+      file_(std::move(file)),
+      prefix_(std::move(prefix)),
+      overrides_(std::move(overrides)) {}
+
+YamlReader YamlReader::Load(const fs::path& path) {
+  return YamlReader(ParseFile(path), path, "", nullptr);
+}
+
+YamlReader YamlReader::Load(const fs::path& path, std::vector<YamlOverride> overrides) {
+  YAML::Node root = ParseFile(path);
+  if (overrides.empty()) return YamlReader(root, path, "", nullptr);
+  for (size_t i = 0; i < overrides.size(); ++i) {
+    for (size_t k = 0; k < i; ++k) {
+      if (overrides[k].field == overrides[i].field) {
+        throw InputError(fmt::format("{}: {}: field '{}' is already set by {}", overrides[i].label,
+                                     path.string(), overrides[i].field, overrides[k].label));
+      }
+    }
+    ApplyOverride(root, path, overrides[i]);
+  }
+  return YamlReader(root, path, "",
+                    std::make_shared<const std::vector<YamlOverride>>(std::move(overrides)));
+}
+
+std::string YamlReader::OverridePrefix(const std::string& path) const {
+  if (!overrides_) return "";
+  for (const YamlOverride& o : *overrides_) {
+    if (o.field == path) return o.label + ": ";
+  }
+  std::string labels;
+  for (const YamlOverride& o : *overrides_) labels += (labels.empty() ? "" : ", ") + o.label;
+  return "with " + labels + ": ";
 }
 
 std::string YamlReader::Where(std::string_view key) const {
@@ -60,7 +183,7 @@ std::string YamlReader::Where(std::string_view key) const {
 }
 
 void YamlReader::Fail(std::string_view key, const std::string& message) const {
-  throw InputError(Where(key) + ": " + message);
+  throw InputError(OverridePrefix(prefix_ + std::string(key)) + Where(key) + ": " + message);
 }
 
 bool YamlReader::Has(std::string_view key) const { return node_[std::string(key)].IsDefined(); }
@@ -156,7 +279,7 @@ YamlReader YamlReader::Map(std::string_view key) {
   if (!Has(key)) FailMissing(key, "a mapping");
   const YAML::Node value = Get(key);
   if (!value.IsMap()) Fail(key, "expected a mapping of 'field: value' lines");
-  return YamlReader(value, file_, prefix_ + std::string(key) + ".");
+  return YamlReader(value, file_, prefix_ + std::string(key) + ".", overrides_);
 }
 
 std::vector<YamlReader> YamlReader::MapList(std::string_view key, size_t min_items) {
@@ -169,7 +292,7 @@ std::vector<YamlReader> YamlReader::MapList(std::string_view key, size_t min_ite
   for (size_t i = 0; i < value.size(); ++i) {
     const std::string item_key = fmt::format("{}[{}]", key, i);
     if (!value[i].IsMap()) Fail(item_key, "expected a mapping of 'field: value' pairs");
-    items.push_back(YamlReader(value[i], file_, prefix_ + item_key + "."));
+    items.push_back(YamlReader(value[i], file_, prefix_ + item_key + ".", overrides_));
   }
   return items;
 }

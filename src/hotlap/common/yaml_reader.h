@@ -8,9 +8,14 @@
 /// Units live in the key (`tread_mass_kg`); a key with the wrong unit suffix therefore shows up
 /// as a missing field plus an unknown key, and the message says both. Every message names the
 /// file, the field (dotted path), the value and the allowed range.
+///
+/// Overrides: YamlReader::Load can replace numbers of the file before it is read (a car parameter
+/// set by its dotted key, vehicle/car_override.h), so an overridden value meets the very checks a
+/// value in the file would; messages about an overridden field start with its override's label.
 
 #include <filesystem>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -47,11 +52,40 @@ struct Range {
   static constexpr double kInf = std::numeric_limits<double>::infinity();
 };
 
+/// One number of a YAML file replaced before the file is read.
+struct YamlOverride {
+  std::string field;   ///< dotted path through the file's mappings, e.g. "chassis.mass_kg"
+  double value = 0.0;  ///< in the field's own unit, as the file writes it
+  std::string label;   ///< how messages name it, e.g. "override 'chassis.mass_kg=1600'"
+};
+
+/// One scalar of a YAML file: its dotted path through the file's mappings (lists are not
+/// entered), its text, and whether that text reads as a number (as YamlReader reads numbers).
+struct YamlScalarField {
+  std::string field;
+  std::string text;
+  bool number = false;
+};
+
+/// The number `text` reads as in a parameter file (an optional '+', then std::from_chars' format;
+/// finite only), or nullopt.
+std::optional<double> ParseYamlNumber(std::string_view text);
+
+/// Every scalar of the file at `path`, in file order; InputError as YamlReader::Load.
+std::vector<YamlScalarField> ListYamlScalars(const std::filesystem::path& path);
+
 /// A mapping node of one YAML file, read strictly.
 class YamlReader {
  public:
   /// Parses `path`; InputError if it cannot be read or parsed, or is not a mapping.
   static YamlReader Load(const std::filesystem::path& path);
+  /// Parses `path` and replaces the numbers `overrides` name, each of which must be a number in
+  /// the file (InputError starting with its label otherwise: a field the file does not have, with
+  /// the closest ones it has; a text value; a mapping; a field given twice). The getters then
+  /// check the new values as the file's own, and every message about an overridden field starts
+  /// with that override's label (about another field of a file with overrides: with all their
+  /// labels, as a check across fields may fail because of one).
+  static YamlReader Load(const std::filesystem::path& path, std::vector<YamlOverride> overrides);
 
   /// Required number within `range`.
   double Number(std::string_view key, const Range& range);
@@ -82,7 +116,11 @@ class YamlReader {
   const std::filesystem::path& file() const { return file_; }
 
  private:
-  YamlReader(YAML::Node node, std::filesystem::path file, std::string prefix);
+  YamlReader(YAML::Node node, std::filesystem::path file, std::string prefix,
+             std::shared_ptr<const std::vector<YamlOverride>> overrides);
+  // "LABEL: " for a message about the field at `path` (the whole dotted path) when overrides
+  // were applied; "" otherwise.
+  std::string OverridePrefix(const std::string& path) const;
   YAML::Node Get(std::string_view key);  // marks as read; fails if missing
   [[noreturn]] void FailMissing(std::string_view key, const std::string& expected) const;
   double ToNumber(const YAML::Node& node, std::string_view key) const;
@@ -92,6 +130,7 @@ class YamlReader {
   std::filesystem::path file_;
   std::string prefix_;  // "" at top level, "outer.inner." below
   std::vector<std::string> read_keys_;
+  std::shared_ptr<const std::vector<YamlOverride>> overrides_;  // null without overrides
 };
 
 }  // namespace hotlap

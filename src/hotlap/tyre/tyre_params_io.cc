@@ -80,8 +80,11 @@ TyreCompound LoadTyreCompound(const std::filesystem::path& path) {
   return TyreCompound{name, grip, wear, std::move(table), q_ref};
 }
 
-TyreFile LoadTyreFile(const std::filesystem::path& path) {
-  YamlReader y = YamlReader::Load(path);
+TyreFile LoadTyreFile(const std::filesystem::path& path) { return LoadTyreFile(path, {}); }
+
+TyreFile LoadTyreFile(const std::filesystem::path& path,
+                      const std::vector<YamlOverride>& overrides) {
+  YamlReader y = YamlReader::Load(path, overrides);
   TyreFile out;
   out.path = path;
   out.name = y.String("name");

@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "hotlap/common/yaml_reader.h"
 #include "hotlap/tyre/compound.h"
 #include "hotlap/tyre/tyre_thermal.h"
 
@@ -27,5 +29,9 @@ TyreCompound LoadTyreCompound(const std::filesystem::path& path);
 
 /// Loads a tyre file (`model: two_mass_thermal`) and the compound file it names.
 TyreFile LoadTyreFile(const std::filesystem::path& path);
+/// The same with numbers of the tyre file (not of its compound file) replaced before it is read
+/// (YamlReader::Load), each checked as the file's own.
+TyreFile LoadTyreFile(const std::filesystem::path& path,
+                      const std::vector<YamlOverride>& overrides);
 
 }  // namespace hotlap::tyre
