@@ -1,30 +1,51 @@
 #include "hotlap/vehicle/car.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
+#include "hotlap/brake/brake_thermal_fields.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
 #include "hotlap/common/yaml_reader.h"
 
 namespace hotlap::vehicle {
 
-Car LoadCar(const std::filesystem::path& path) {
-  YamlReader y = YamlReader::Load(path);
+namespace {
+
+// The duct factor: hA = z' L L' z times `factor`, every Cholesky entry times its square root.
+void ScaleConvection(brake::BrakeThermalParams<double>& p, double factor) {
+  for (const brake::BrakeThermalField& f : brake::BrakeThermalFields()) {
+    if (f.polynomial) f.Of(p) *= std::sqrt(factor);
+  }
+}
+
+}  // namespace
+
+Car LoadCar(const std::filesystem::path& path) { return LoadCar(path, {}); }
+
+Car LoadCar(const std::filesystem::path& path, const std::vector<CarOverride>& overrides) {
+  const CarOverridePlan plan = PlanCarOverrides(path, overrides);
+  YamlReader y = YamlReader::Load(path, plan.car);
   Car car;
   car.path = path;
+  car.overrides = overrides;
   car.name = y.String("name");
   y.Choice("model", {"stock_car"});
   {
     YamlReader tyres = y.Map("tyres");
     for (Corner c : kAllCorners) {
-      car.tyres[CornerIndex(c)] = tyre::LoadTyreFile(tyres.FilePath(CornerName(c)));
+      const int i = CornerIndex(c);
+      car.tyres[i] = tyre::LoadTyreFile(tyres.FilePath(CornerName(c)), plan.tyres[i]);
     }
     tyres.Finish();
   }
   {
     YamlReader brakes = y.Map("brakes");
     for (Corner c : kAllCorners) {
-      car.brakes[CornerIndex(c)] = brake::LoadBrakeFile(brakes.FilePath(CornerName(c)));
+      const int i = CornerIndex(c);
+      car.brakes[i] = brake::LoadBrakeFile(brakes.FilePath(CornerName(c)), plan.brakes[i]);
+      if (plan.duct_factor[i]) ScaleConvection(car.brakes[i].params, *plan.duct_factor[i]);
     }
     brakes.Finish();
   }

@@ -10,10 +10,12 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "hotlap/brake/brake_params_io.h"
 #include "hotlap/common/corner.h"
 #include "hotlap/tyre/tyre_params_io.h"
+#include "hotlap/vehicle/car_override.h"
 #include "hotlap/vehicle/vehicle_params.h"
 
 namespace hotlap::vehicle {
@@ -33,6 +35,9 @@ struct Car {
   std::array<brake::BrakeFile, 4> brakes;  ///< indexed by CornerIndex
   InitialTemperatures initial;
   std::optional<VehicleParams> vehicle;  ///< absent for a thermal-only car file
+  /// The overrides the car was loaded with, as given (empty: the files' values); the summaries
+  /// record them (OverridesJson).
+  std::vector<CarOverride> overrides;
 
   const tyre::TyreFile& tyre(Corner c) const { return tyres[CornerIndex(c)]; }
   const brake::BrakeFile& brake(Corner c) const { return brakes[CornerIndex(c)]; }
@@ -41,6 +46,12 @@ struct Car {
 /// Loads a car.yaml and every file it refers to (paths relative to the car file). The vehicle
 /// sections (chassis, aero, powertrain, brake_system, tyre_forces) are all present or all absent.
 Car LoadCar(const std::filesystem::path& path);
+/// The same with parameters overridden by their dotted keys (car_override.h, docs/overrides.md):
+/// each value replaces the file's before the file is read, so it is checked as the file's own
+/// (messages start with "override 'KEY=VALUE'"); a corner's brake and tyre files are read for that
+/// corner alone, so corners sharing a file get their own values. InputError for any override
+/// PlanCarOverrides refuses.
+Car LoadCar(const std::filesystem::path& path, const std::vector<CarOverride>& overrides);
 
 /// The car's vehicle parameters; InputError naming the car file and what `purpose` needs if the
 /// file has none.
