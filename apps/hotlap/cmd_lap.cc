@@ -168,7 +168,7 @@ int RunLap(const LapArgs& a) {
   fmt::print("wrote {} and {} in {:.2f} s\n", csv.string(), html.string(), elapsed);
 
   if (!a.json.empty()) {
-    WriteJsonFile(a.json, sim::StintJson(stint, track, car.name, csv.string(), html.string()));
+    WriteJsonFile(a.json, sim::StintJson(stint, track, car, csv.string(), html.string()));
     fmt::print("wrote {}\n", a.json);
   }
   return 0;

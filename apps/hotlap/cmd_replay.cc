@@ -90,7 +90,7 @@ int RunReplay(const ReplayArgs& a) {
   }
   fmt::print("wrote {} ({} columns) in {:.3f} s\n", a.out, columns.names.size(), elapsed);
   if (!a.json.empty()) {
-    WriteJsonFile(a.json, sim::ReplayJson(result, summaries, a.telemetry, car.name, a.out));
+    WriteJsonFile(a.json, sim::ReplayJson(result, summaries, a.telemetry, car, a.out));
     fmt::print("wrote {}\n", a.json);
   }
   if (!a.report.empty()) {

@@ -137,7 +137,7 @@ int RunOptimal(const OptimalArgs& a) {
   for (const ocp::SolvedLap& s : runs.laps) ok = ok && s.run.solution.solve.ok();
   if (!a.json.empty()) {
     WriteJsonFile(a.json,
-                  ocp::OptimalRunsJson(runs, o, track.name(), car.name, elapsed, mesh_delta));
+                  ocp::OptimalRunsJson(runs, o, track.name(), car, elapsed, mesh_delta));
     fmt::print("wrote {}\n", a.json);
   }
   return ok ? 0 : 3;

@@ -84,7 +84,7 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
   const double wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   py::dict out;
-  out["summary"] = ToPython(ocp::OptimalRunsJson(runs, o, track.name(), car.name, wall_time_s));
+  out["summary"] = ToPython(ocp::OptimalRunsJson(runs, o, track.name(), car, wall_time_s));
   py::dict laps;
   for (const ocp::SolvedLap& lap : runs.laps) {
     const sim::ColumnSet columns = ocp::OptimalLapColumns(lap.run, track);

@@ -66,7 +66,7 @@ py::dict Replay(const vehicle::Car& car, const py::handle& telemetry, bool heat_
   py::dict out;
   out["channels"] = ColumnsToDict(columns.names, columns.values);
   out["summary"] = ToPython(
-      sim::ReplayJson(result, sim::SummarizeReplay(result), log.path().string(), car.name, ""));
+      sim::ReplayJson(result, sim::SummarizeReplay(result), log.path().string(), car, ""));
   return out;
 }
 
@@ -114,7 +114,7 @@ py::dict QssLap(const vehicle::Car& car, const track::Track& track, int laps, do
       sim::LapResultColumns(result, track, options.ambient_temp, options.track_temp);
   py::dict out;
   out["channels"] = ColumnsToDict(columns.names, columns.values);
-  out["summary"] = ToPython(sim::StintJson(sim::SummarizeStint(result), track, car.name, "", ""));
+  out["summary"] = ToPython(sim::StintJson(sim::SummarizeStint(result), track, car, "", ""));
   return out;
 }
 

@@ -41,12 +41,15 @@ TEST(SolvedLapJson, HoldsTheSolveFiguresTurnsAndStart) {
 TEST(OptimalRunsJson, OneSolveAndTheComparison) {
   OptimalRunOptions o;
   o.step_m = 30.0;
+  vehicle::Car car;
+  car.name = "gen7";
   OptimalRuns one;
   one.laps = {testing::MakeExampleSolvedLap("optimal lap", 30.0)};
-  nlohmann::json j = OptimalRunsJson(one, o, "darlington", "gen7", 12.3456789012, 0.0123);
+  nlohmann::json j = OptimalRunsJson(one, o, "darlington", car, 12.3456789012, 0.0123);
   EXPECT_EQ(j["command"], "optimise");
   EXPECT_EQ(j["track"], "darlington");
   EXPECT_EQ(j["car"], "gen7");
+  EXPECT_EQ(j["overrides"], nlohmann::json::object());
   EXPECT_EQ(j["mesh_step_m"], 30.0);
   EXPECT_EQ(j["wall_time_s"], 12.3456789);
   EXPECT_EQ(j["mesh_check_delta_s"], 0.0123);
@@ -56,12 +59,14 @@ TEST(OptimalRunsJson, OneSolveAndTheComparison) {
   two.laps = {testing::MakeExampleSolvedLap("no limit", 30.0),
               testing::MakeExampleSolvedLap("discs <= 500 degC", 30.25, 500.0)};
   two.limited_in_second_process = true;
-  j = OptimalRunsJson(two, o, "darlington", "gen7", 1.0);
+  car.overrides = {{"brake_system.front_share", 0.55}};
+  j = OptimalRunsJson(two, o, "darlington", car, 1.0);
   EXPECT_EQ(j["command"], "lap --method ocp");
   EXPECT_EQ(j["delta_s"], 0.25);
   EXPECT_EQ(j["lap_time_s"], 30.0);
   EXPECT_EQ(j["constrained"]["front_disc_limit_C"], 500.0);
   EXPECT_EQ(j["limited_in_second_process"], true);
+  EXPECT_EQ(j["overrides"], nlohmann::json({{"brake_system.front_share", 0.55}}));
   EXPECT_FALSE(j.contains("mesh_check_delta_s"));
 }
 

@@ -14,12 +14,17 @@ namespace {
 TEST(StintJson, HoldsTheLapsZonesAndCorners) {
   const track::Track track = track::LoadTrack("darlington");
   const StintSummary stint = SummarizeStint(testing::MakeExampleQssResult(2));
-  const nlohmann::json j = StintJson(stint, track, "gen7", "out/lap.csv", "out/lap.html");
+  vehicle::Car car;
+  car.name = "gen7";
+  car.overrides = {{"chassis.mass_kg", 1600.0}, {"brakes.fl.duct_factor", 0.5}};
+  const nlohmann::json j = StintJson(stint, track, car, "out/lap.csv", "out/lap.html");
   EXPECT_EQ(j["command"], "lap");
   EXPECT_EQ(j["method"], "qss");
   EXPECT_EQ(j["track"], "darlington");
   EXPECT_NEAR(j["track_length_m"].get<double>(), track.length_m(), 1e-6);
   EXPECT_EQ(j["car"], "gen7");
+  EXPECT_EQ(j["overrides"],
+            nlohmann::json({{"chassis.mass_kg", 1600.0}, {"brakes.fl.duct_factor", 0.5}}));
   ASSERT_EQ(j["laps"].size(), 2u);
   EXPECT_EQ(j["laps"][0]["lap_time_s"], 2.3);
   EXPECT_EQ(j["lap_time_s"], 2.4);

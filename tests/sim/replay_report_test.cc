@@ -33,9 +33,13 @@ TEST(ReplayReport, TextAndJsonOfTheSummaries) {
   const ReplayResult r = ExampleReplay();
   const auto summaries = SummarizeReplay(r);
   EXPECT_EQ(TemperatureStatsText(summaries[3].tread), "94.0/92.5/92.0");
-  const nlohmann::json j = ReplayJson(r, summaries, "log.csv", "gen7", "out.csv");
+  vehicle::Car car;
+  car.name = "gen7";
+  const nlohmann::json j = ReplayJson(r, summaries, "log.csv", car, "out.csv");
   EXPECT_EQ(j["command"], "replay");
   EXPECT_EQ(j["telemetry"], "log.csv");
+  EXPECT_EQ(j["car"], "gen7");
+  EXPECT_EQ(j["overrides"], nlohmann::json::object());  // none given
   EXPECT_EQ(j["out"], "out.csv");
   EXPECT_EQ(j["samples"], 3);
   EXPECT_EQ(j["duration_s"], 2.0);

@@ -83,7 +83,7 @@ nlohmann::json SolvedLapJson(const SolvedLap& s, const std::string& thermal_star
 }
 
 nlohmann::json OptimalRunsJson(const OptimalRuns& runs, const OptimalRunOptions& options,
-                               const std::string& track_name, const std::string& car_name,
+                               const std::string& track_name, const vehicle::Car& car,
                                double wall_time_s,
                                const std::optional<double>& mesh_check_delta_s) {
   const std::vector<SolvedLap>& laps = runs.laps;
@@ -104,7 +104,8 @@ nlohmann::json OptimalRunsJson(const OptimalRuns& runs, const OptimalRunOptions&
     j["command"] = "optimise";
   }
   j["track"] = track_name;
-  j["car"] = car_name;
+  j["car"] = car.name;
+  j["overrides"] = vehicle::OverridesJson(car.overrides);
   j["mesh_step_m"] = options.step_m;
   j["wall_time_s"] = RoundSignificant(wall_time_s);
   if (mesh_check_delta_s) j["mesh_check_delta_s"] = RoundSignificant(*mesh_check_delta_s);

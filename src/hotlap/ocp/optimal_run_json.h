@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "hotlap/ocp/optimal_run.h"
+#include "hotlap/vehicle/car.h"
 
 namespace hotlap::ocp {
 
@@ -19,10 +20,10 @@ nlohmann::json SolvedLapJson(const SolvedLap& lap, const std::string& thermal_st
 
 /// The run's summary: one lap's object with "command": "optimise", or for the comparison both
 /// ("unconstrained", "constrained"), "delta_s" and the free lap's headline keys at the top level;
-/// then the track, car, mesh spacing, `wall_time_s` and, where given, the mesh check's change of
-/// the lap time.
+/// then the track, car (its name and overrides), mesh spacing, `wall_time_s` and, where given, the
+/// mesh check's change of the lap time.
 nlohmann::json OptimalRunsJson(const OptimalRuns& runs, const OptimalRunOptions& options,
-                               const std::string& track_name, const std::string& car_name,
+                               const std::string& track_name, const vehicle::Car& car,
                                double wall_time_s,
                                const std::optional<double>& mesh_check_delta_s = std::nullopt);
 

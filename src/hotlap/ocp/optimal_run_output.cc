@@ -1,6 +1,8 @@
 #include "hotlap/ocp/optimal_run_output.h"
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -15,15 +17,18 @@ namespace fs = std::filesystem;
 void WriteSolvedLapCsv(const fs::path& path, const SolvedLap& s, const track::Track& track,
                        const vehicle::Car& car) {
   const sim::ColumnSet columns = OptimalLapColumns(s.run, track);
-  WriteCsv(
-      path,
-      {{"source", fmt::format("hotlap {} optimal lap", HOTLAP_VERSION)},
-       {"track", track.name()},
-       {"car", car.path.string()},
-       {"front_disc_limit_C",
-        s.front_disc_limit ? fmt::format("{:g}", KelvinToCelsius(*s.front_disc_limit)) : "none"},
-       {"status", s.run.solution.solve.message}},
-      columns.names, columns.values);
+  std::vector<std::pair<std::string, std::string>> metadata = {
+      {"source", fmt::format("hotlap {} optimal lap", HOTLAP_VERSION)},
+      {"track", track.name()},
+      {"car", car.path.string()}};
+  if (!car.overrides.empty()) {
+    metadata.emplace_back("overrides", vehicle::OverridesText(car.overrides));
+  }
+  metadata.emplace_back(
+      "front_disc_limit_C",
+      s.front_disc_limit ? fmt::format("{:g}", KelvinToCelsius(*s.front_disc_limit)) : "none");
+  metadata.emplace_back("status", s.run.solution.solve.message);
+  WriteCsv(path, metadata, columns.names, columns.values);
 }
 
 std::vector<fs::path> WriteOptimalRunFiles(const fs::path& out, const std::vector<SolvedLap>& runs,
@@ -42,6 +47,7 @@ std::vector<fs::path> WriteOptimalRunFiles(const fs::path& out, const std::vecto
   }
   report::HtmlReport page(fmt::format("hotlap optimal lap: {} on {}", car.name, track.name()));
   page.AddMetadata("car", car.path.string());
+  if (!car.overrides.empty()) page.AddMetadata("overrides", vehicle::OverridesText(car.overrides));
   page.AddMetadata("track", fmt::format("{} ({:.1f} m)", track.name(), track.length_m()));
   page.AddMetadata("mesh", fmt::format("{:g} m, trapezoidal collocation, Ipopt", step_m));
   page.AddMetadata("version", HOTLAP_VERSION);

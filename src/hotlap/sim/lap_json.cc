@@ -6,7 +6,7 @@
 namespace hotlap::sim {
 
 nlohmann::json StintJson(const StintSummary& stint, const track::Track& track,
-                         const std::string& car_name, const std::string& out_csv,
+                         const vehicle::Car& car, const std::string& out_csv,
                          const std::string& out_report) {
   nlohmann::json laps = nlohmann::json::array();
   for (const LapFigures& f : stint.laps) {
@@ -40,7 +40,8 @@ nlohmann::json StintJson(const StintSummary& stint, const track::Track& track,
           {"method", "qss"},
           {"track", track.name()},
           {"track_length_m", RoundSignificant(track.length_m())},
-          {"car", car_name},
+          {"car", car.name},
+          {"overrides", vehicle::OverridesJson(car.overrides)},
           {"laps", laps},
           {"lap_time_s", RoundSignificant(last.lap_time_s)},
           {"top_speed_mps", RoundSignificant(last.top_speed)},

@@ -33,6 +33,7 @@ void WriteLapReport(const std::filesystem::path& path, const LapReportSettings& 
   page.AddMetadata("method", "quasi-steady-state (docs/lap-simulation.md)");
   page.AddMetadata("line", a.line);
   page.AddMetadata("car", car.path.string());
+  if (!car.overrides.empty()) page.AddMetadata("overrides", vehicle::OverridesText(car.overrides));
   page.AddMetadata("track", fmt::format("{} ({:.1f} m)", track.name(), track.length_m()));
   page.AddMetadata("laps", std::to_string(a.laps));
   page.AddMetadata("air / track", fmt::format("{:g} / {:g} \u00b0C", a.ambient_C, a.track_C));

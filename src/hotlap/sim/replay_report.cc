@@ -26,7 +26,7 @@ std::string TemperatureStatsText(const HistoryStats& s) {
 
 nlohmann::json ReplayJson(const ReplayResult& result,
                           const std::array<CornerReplaySummary, 4>& summaries,
-                          const std::string& telemetry, const std::string& car_name,
+                          const std::string& telemetry, const vehicle::Car& car,
                           const std::string& out_csv) {
   nlohmann::json corners;
   for (Corner c : kAllCorners) {
@@ -44,7 +44,8 @@ nlohmann::json ReplayJson(const ReplayResult& result,
   return {
       {"command", "replay"},
       {"telemetry", telemetry},
-      {"car", car_name},
+      {"car", car.name},
+      {"overrides", vehicle::OverridesJson(car.overrides)},
       {"out", out_csv},
       {"samples", result.time.size()},
       {"duration_s", RoundSignificant(result.time.back() - result.time.front())},
@@ -69,6 +70,7 @@ void WriteReplayReport(const std::filesystem::path& path, const std::string& tel
   report::HtmlReport page("hotlap replay: " + std::filesystem::path(telemetry).filename().string());
   page.AddMetadata("telemetry", telemetry);
   page.AddMetadata("car", car.name + " (" + car.path.string() + ")");
+  if (!car.overrides.empty()) page.AddMetadata("overrides", vehicle::OverridesText(car.overrides));
   page.AddMetadata("samples", std::to_string(result.time.size()));
   page.AddMetadata("duration", fmt::format("{:.2f} s", result.time.back() - result.time.front()));
   for (const auto& [key, value] : log_metadata) page.AddMetadata("log " + key, value);

@@ -20,11 +20,12 @@ namespace hotlap::sim {
 /// A temperature's statistics as "peak/mean/final" in degC, one decimal each.
 std::string TemperatureStatsText(const HistoryStats& stats);
 
-/// The summary: the inputs, samples and duration, and per corner each temperature's peak, mean and
-/// final value (degC), the wear, the lowest grip factor and the brake energy.
+/// The summary: the inputs (the car by its name and overrides), samples and duration, and per
+/// corner each temperature's peak, mean and final value (degC), the wear, the lowest grip factor
+/// and the brake energy.
 nlohmann::json ReplayJson(const ReplayResult& result,
                           const std::array<CornerReplaySummary, 4>& corners,
-                          const std::string& telemetry, const std::string& car_name,
+                          const std::string& telemetry, const vehicle::Car& car,
                           const std::string& out_csv);
 
 /// Writes the report to `path` atomically: the inputs (with the log's metadata), the per-corner

@@ -160,6 +160,10 @@ SynthLog SynthesizeLog(const vehicle::Car& car, std::span<const RoadPoint> road,
       {"rolling_radius_noise_mm", fmt::format("{:g}", 1e3 * o.radius_noise_m)},
       {"seed", std::to_string(o.seed)},
   };
+  if (!car.overrides.empty()) {
+    log.metadata.insert(log.metadata.begin() + 2,
+                        {"overrides", vehicle::OverridesText(car.overrides)});
+  }
   return log;
 }
 
