@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -42,6 +43,7 @@ struct LapArgs {
   double line_margin_m = 1.5;
   std::string track = "darlington";
   std::string car = "gen7";
+  std::vector<std::string> set;  // --set KEY=VALUE
   int laps = 1;
   std::string out;
   std::string json;
@@ -61,6 +63,7 @@ int RunLap(const LapArgs& a) {
     OptimalArgs o;
     o.track = a.track;
     o.car = a.car;
+    o.set = a.set;
     o.out = a.out;
     o.json = a.json;
     o.run.compare_disc_limit_C = a.compare_disc_limit_C;
@@ -78,7 +81,8 @@ int RunLap(const LapArgs& a) {
   }
   const auto started = std::chrono::steady_clock::now();
   // Everything that can fail on input is read before the output folder is touched.
-  const vehicle::Car car = vehicle::LoadCar(ResolveCarFile(a.car));
+  const vehicle::Car car =
+      vehicle::LoadCar(ResolveCarFile(a.car), vehicle::ParseCarOverrides(a.set));
   vehicle::RequireVehicle(car, "`hotlap lap`");
   const track::Track track = track::LoadTrack(a.track);
   std::vector<sim::RoadPoint> road;
@@ -158,12 +162,13 @@ int RunLap(const LapArgs& a) {
   const fs::path csv = fs::path(a.out) / "lap.csv", html = fs::path(a.out) / "lap.html";
   const sim::ColumnSet columns =
       sim::LapResultColumns(result, track, options.ambient_temp, options.track_temp);
-  WriteCsv(csv,
-           {{"source", fmt::format("hotlap {} lap --method qss", HOTLAP_VERSION)},
-            {"track", track.name()},
-            {"car", car.path.string()},
-            {"laps", std::to_string(a.laps)}},
-           columns.names, columns.values);
+  std::vector<std::pair<std::string, std::string>> metadata = {
+      {"source", fmt::format("hotlap {} lap --method qss", HOTLAP_VERSION)},
+      {"track", track.name()},
+      {"car", car.path.string()},
+      {"laps", std::to_string(a.laps)}};
+  if (!a.set.empty()) metadata.emplace_back("overrides", vehicle::OverridesText(car.overrides));
+  WriteCsv(csv, metadata, columns.names, columns.values);
   sim::WriteLapReport(html, {a.line, a.laps, a.ambient_C, a.track_C}, car, track, columns, stint);
   fmt::print("wrote {} and {} in {:.2f} s\n", csv.string(), html.string(), elapsed);
 
@@ -194,6 +199,7 @@ CommandRunner RegisterLapCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--car", args->car, "Built-in car name or path to a car.yaml")
       ->capture_default_str();
+  AddSetOption(sub, args->set);
   sub->add_option("--laps", args->laps, "Laps in the stint (thermal state carried over)")
       ->capture_default_str();
   sub->add_option("--out", args->out, "Output folder: lap.csv and lap.html")->required();

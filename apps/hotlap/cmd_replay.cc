@@ -31,6 +31,7 @@ struct ReplayArgs {
   std::string telemetry;
   std::string out;
   std::string car = "gen7";
+  std::vector<std::string> set;  // --set KEY=VALUE
   std::string json;
   std::string report;
   bool heat_flows = false;
@@ -49,7 +50,8 @@ int RunReplay(const ReplayArgs& a) {
   if (!a.report.empty()) CheckOutputFolder(a.report, "--report");
   const auto started = std::chrono::steady_clock::now();
 
-  const vehicle::Car car = vehicle::LoadCar(ResolveCarFile(a.car));
+  const vehicle::Car car =
+      vehicle::LoadCar(ResolveCarFile(a.car), vehicle::ParseCarOverrides(a.set));
   const Telemetry log = Telemetry::Read(a.telemetry);
   sim::InitialTemperatureOverrides overrides;
   overrides.tread_temp = ToKelvin(a.tread_C);
@@ -73,6 +75,7 @@ int RunReplay(const ReplayArgs& a) {
   metadata.emplace_back("source", fmt::format("hotlap {} replay", HOTLAP_VERSION));
   metadata.emplace_back("telemetry", a.telemetry);
   metadata.emplace_back("car", car.path.string());
+  if (!a.set.empty()) metadata.emplace_back("overrides", vehicle::OverridesText(car.overrides));
   WriteCsv(a.out, metadata, columns.names, columns.values);
 
   const double duration = result.time.back() - result.time.front();
@@ -111,6 +114,7 @@ CommandRunner RegisterReplayCommand(CLI::App& app) {
   sub->add_option("--out", args->out, "Output channels CSV")->required();
   sub->add_option("--car", args->car, "Built-in car name or path to a car.yaml")
       ->capture_default_str();
+  AddSetOption(sub, args->set);
   sub->add_flag("--heat-flows", args->heat_flows, "Also write q1..q7 of every tyre, W");
   sub->add_option("--json", args->json, "Write the summary as JSON (docs/json-output.md)");
   sub->add_option("--report", args->report,

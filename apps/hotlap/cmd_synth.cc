@@ -26,6 +26,7 @@ namespace {
 
 struct SynthArgs {
   std::string car = "gen7", params, track = "darlington", out, json;
+  std::vector<std::string> set;  // --set KEY=VALUE
   int laps = 1;
   double rate_hz = 50.0, noise_C = 0.5, lag_s = 0.2, wear_noise_mm = 1e-4, radius_noise_mm = 0.1;
   double ambient_C = 25.0, track_C = 40.0, step_m = 1.0;
@@ -35,7 +36,7 @@ struct SynthArgs {
 int RunSynth(const SynthArgs& a) {
   CheckOutputFolder(a.out, "--out");
   if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
-  vehicle::Car car = vehicle::LoadCar(ResolveCarFile(a.car));
+  vehicle::Car car = vehicle::LoadCar(ResolveCarFile(a.car), vehicle::ParseCarOverrides(a.set));
   std::string params_name = "the car's";
   if (!a.params.empty()) {
     const sim::ParameterOverrides overrides = sim::LoadParameterOverrides(a.params);
@@ -81,6 +82,7 @@ int RunSynth(const SynthArgs& a) {
   if (!a.json.empty()) {
     WriteJsonFile(a.json, {{"command", "synth"},
                            {"car", car.name},
+                           {"overrides", vehicle::OverridesJson(car.overrides)},
                            {"params", a.params},
                            {"track", track.name()},
                            {"out", a.out},
@@ -106,6 +108,7 @@ CommandRunner RegisterSynthCommand(CLI::App& app) {
       "synth", "Make a synthetic measured log: lap simulation, true parameters, sensor lag, noise");
   sub->add_option("--car", a->car, "Built-in car name or path to a car.yaml")
       ->capture_default_str();
+  AddSetOption(sub, a->set);
   sub->add_option("--params", a->params,
                   "Parameter file with the true values (model: parameter_overrides)");
   sub->add_option("--track", a->track, "Built-in track name or track file")->capture_default_str();

@@ -3,6 +3,8 @@
 /// Each subcommand registers its options on the app and returns the function that runs it.
 
 #include <functional>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -10,6 +12,18 @@ namespace hotlap::app {
 
 /// Runs a parsed subcommand; returns the process exit code.
 using CommandRunner = std::function<int()>;
+
+/// `--set KEY=VALUE` (repeatable) on the commands that take `--car`: car parameters overridden by
+/// their dotted keys, read by vehicle::ParseCarOverrides (docs/overrides.md).
+inline CLI::Option* AddSetOption(CLI::App* sub, std::vector<std::string>& set) {
+  return sub
+      ->add_option("--set", set,
+                   "Override a car parameter: KEY=VALUE in the key's own unit, repeatable "
+                   "(e.g. chassis.mass_kg=1600, brakes.fl.duct_factor=0.8; "
+                   "docs/overrides.md)")
+      ->type_name("KEY=VALUE")
+      ->allow_extra_args(false);
+}
 
 /// `hotlap replay`: thermal and wear models over a telemetry log.
 CommandRunner RegisterReplayCommand(CLI::App& app);

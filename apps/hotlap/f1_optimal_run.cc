@@ -23,6 +23,12 @@ namespace hotlap::app {
 namespace fs = std::filesystem;
 
 int RunF1Optimal(const OptimalArgs& a, const fs::path& car_file) {
+  if (!a.set.empty()) {
+    throw InputError(
+        fmt::format("--set does not apply to the car '{}' (the limebeer-2014-f1 model "
+                    "has no dotted keys to override; docs/f1-peer.md)",
+                    a.car));
+  }
   const auto started = std::chrono::steady_clock::now();
   const vehicle::F1CarParams car = vehicle::LoadF1Car(car_file);
   const track::Track track = track::LoadTrack(a.track);

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "commands.h"
 #include "optimal_runs.h"
 
 namespace hotlap::app {
@@ -11,6 +12,7 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
   sub->add_option("--track", a.track, "Built-in track name or a .yaml/.csv/.xml file")
       ->capture_default_str();
   sub->add_option("--car", a.car, "Built-in car name or path to a car.yaml")->capture_default_str();
+  AddSetOption(sub, a.set);
   sub->add_option("--out", a.out, "Output folder")->required();
   sub->add_option("--json", a.json, "Write the summary as JSON (docs/json-output.md)");
   a.stock_car_only.push_back(

@@ -80,7 +80,7 @@ int RunOptimal(const OptimalArgs& a) {
   if (f1) return RunF1Optimal(a, car_file);
   const ocp::OptimalRunOptions o = RunOptions(a);
   const auto started = std::chrono::steady_clock::now();
-  const vehicle::Car car = vehicle::LoadCar(car_file);
+  const vehicle::Car car = vehicle::LoadCar(car_file, vehicle::ParseCarOverrides(a.set));
   vehicle::RequireVehicle(car, "the optimal lap");
   const track::Track track = track::LoadTrack(a.track);
   if (fs::exists(a.out) && !fs::is_directory(a.out)) {
@@ -136,8 +136,7 @@ int RunOptimal(const OptimalArgs& a) {
   bool ok = true;
   for (const ocp::SolvedLap& s : runs.laps) ok = ok && s.run.solution.solve.ok();
   if (!a.json.empty()) {
-    WriteJsonFile(a.json,
-                  ocp::OptimalRunsJson(runs, o, track.name(), car, elapsed, mesh_delta));
+    WriteJsonFile(a.json, ocp::OptimalRunsJson(runs, o, track.name(), car, elapsed, mesh_delta));
     fmt::print("wrote {}\n", a.json);
   }
   return ok ? 0 : 3;

@@ -16,6 +16,7 @@ namespace hotlap::app {
 struct OptimalArgs {
   std::string track = "darlington";
   std::string car = "gen7";
+  std::vector<std::string> set;  ///< --set KEY=VALUE: car parameters overridden
   std::string out;
   std::string json;
   /// The library's options, filled by CLI11 (the Hessian, the second process and the Ipopt

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -183,6 +184,12 @@ TEST_F(LapCommandTest, BadInputFailsCleanlyWithoutOutput) {
       {"optimise --warm-start " + (dir() / "missing.bin").string(), "missing.bin"},
       {"optimise --car f1-2014 --warm-start " + backwards.string(), "does not apply"},
       {"optimise --save-solution " + (dir() / "no" / "such" / "x.bin").string(), "--save-solution"},
+      // Overrides: checked before any work, for the QSS and the optimal lap alike.
+      {"lap --set chassis.mass=1600", "did you mean 'chassis.mass_kg'?"},
+      {"lap --set chassis.mass_kg", "expected KEY=VALUE"},
+      {"lap --method ocp --set brake_system.front_share=1.2", "must be in [0, 1]"},
+      {"optimise --set brakes.rl.duct_factor=-1", "override 'brakes.rl.duct_factor=-1'"},
+      {"optimise --car f1-2014 --set chassis.mass_kg=700", "--set does not apply"},
   };
   for (const Case& c : cases) {
     const RunResult r = Run(c.args + " --out " + out.string() + " --json " + json.string());
@@ -191,6 +198,31 @@ TEST_F(LapCommandTest, BadInputFailsCleanlyWithoutOutput) {
     EXPECT_FALSE(fs::exists(out)) << c.args;
     EXPECT_FALSE(fs::exists(json)) << c.args;
   }
+}
+
+// --set changes the car the lap is driven with (a heavier car is slower, a front disc with half the
+// cooling runs hotter) and the outputs record it; without it the record is empty.
+TEST_F(LapCommandTest, SetOverridesTheCar) {
+  const fs::path plain = dir() / "plain", set = dir() / "set";
+  ASSERT_EQ(Run("lap --step-m 2 --out " + plain.string() + " --json " + plain.string() + ".json")
+                .exit_code,
+            0);
+  const RunResult r =
+      Run("lap --step-m 2 --set chassis.mass_kg=1700 --set brakes.fl.duct_factor=0.5 "
+          "--out " +
+          set.string() + " --json " + set.string() + ".json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json a = Json(plain.string() + ".json"), b = Json(set.string() + ".json");
+  EXPECT_EQ(a["overrides"], nlohmann::json::object());
+  EXPECT_EQ(b["overrides"],
+            nlohmann::json({{"chassis.mass_kg", 1700.0}, {"brakes.fl.duct_factor", 0.5}}));
+  EXPECT_GT(b["lap_time_s"].get<double>(), a["lap_time_s"].get<double>() + 0.05);
+  EXPECT_GT(b["corners"]["fl"]["peak_disc_temp_C"].get<double>(),
+            a["corners"]["fl"]["peak_disc_temp_C"].get<double>());
+  const CsvTable t = ReadCsv(set / "lap.csv");
+  std::map<std::string, std::string> meta(t.metadata.begin(), t.metadata.end());
+  EXPECT_EQ(meta["overrides"], "chassis.mass_kg=1700, brakes.fl.duct_factor=0.5");
+  EXPECT_TRUE(test::Contains(test::ReadTextFile(set / "lap.html"), "brakes.fl.duct_factor=0.5"));
 }
 
 // A lap saved with --save-solution starts another solve: on the same mesh it is already solved (a

@@ -112,6 +112,34 @@ TEST_F(ReplayCommandTest, WritesDocumentedColumnsAndMatchingJson) {
             j["corners"]["rl"]["wear_mm"].get<double>());
 }
 
+// --set replays the log with the car changed: half the front-left duct, a hotter front-left disc
+// and the other discs as they were; the summary records the override.
+TEST_F(ReplayCommandTest, SetOverridesTheCar) {
+  const fs::path a = dir_ / "a.json", b = dir_ / "b.json";
+  ASSERT_EQ(Run("replay --telemetry " + kExample.string() + " --out " + (dir_ / "a.csv").string() +
+                " --json " + a.string())
+                .exit_code,
+            0);
+  const RunResult r =
+      Run("replay --telemetry " + kExample.string() + " --out " + (dir_ / "b.csv").string() +
+          " --json " + b.string() + " --set brakes.fl.duct_factor=0.5");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json ja = nlohmann::json::parse(ReadTextFile(a));
+  const nlohmann::json jb = nlohmann::json::parse(ReadTextFile(b));
+  EXPECT_EQ(ja["overrides"], nlohmann::json::object());
+  EXPECT_EQ(jb["overrides"], nlohmann::json({{"brakes.fl.duct_factor", 0.5}}));
+  EXPECT_GT(jb["corners"]["fl"]["disc_temp_C"]["final"].get<double>(),
+            ja["corners"]["fl"]["disc_temp_C"]["final"].get<double>() + 1.0);
+  for (const char* c : {"fr", "rl", "rr"}) EXPECT_EQ(jb["corners"][c], ja["corners"][c]) << c;
+}
+
+TEST_F(ReplayCommandTest, OverrideOutOfRangeIsNamed) {
+  ExpectCleanFailure(
+      "replay --telemetry " + kExample.string() + " --set brakes.rr.mass_participation=0",
+      {"override 'brakes.rr.mass_participation=0'", "brakes/rear.yaml",
+       "field 'mass_participation'", "out of range"});
+}
+
 TEST_F(ReplayCommandTest, MissingColumnIsNamed) {
   const fs::path log = EditedLog([](std::string s) {
     return std::regex_replace(s, std::regex("fz_rl_N"), "fz_rl_unknown_thing");

@@ -3,6 +3,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -75,6 +76,19 @@ TEST_F(SynthCommandTest, ParamsChangeTheTruth) {
   const auto b = nlohmann::json::parse(ReadTextFile(P("b.json")));
   EXPECT_GT(b["corners"]["rr"]["peak_tread_temp_C"].get<double>(),
             a["corners"]["rr"]["peak_tread_temp_C"].get<double>() + 1.0);
+  EXPECT_EQ(a["overrides"], nlohmann::json::object());
+
+  // The same value set with --set: the same truth, and the override recorded.
+  ASSERT_EQ(Run("synth --rate-hz 10 --set tyres.rr.heat_generation.p1=0.6 --out " +
+                P("c.csv").string() + " --json " + P("c.json").string()),
+            0)
+      << err_;
+  const auto c = nlohmann::json::parse(ReadTextFile(P("c.json")));
+  EXPECT_EQ(c["corners"], b["corners"]);
+  EXPECT_EQ(c["overrides"], nlohmann::json({{"tyres.rr.heat_generation.p1", 0.6}}));
+  const hotlap::Telemetry log = hotlap::Telemetry::Read(P("c.csv"));
+  std::map<std::string, std::string> meta(log.metadata().begin(), log.metadata().end());
+  EXPECT_EQ(meta["overrides"], "tyres.rr.heat_generation.p1=0.6");
 }
 
 TEST_F(SynthCommandTest, BadInputFailsCleanly) {
@@ -86,6 +100,9 @@ TEST_F(SynthCommandTest, BadInputFailsCleanly) {
   EXPECT_EQ(Run("synth --track nowhere --out " + P("x.csv").string()), 2);
   EXPECT_TRUE(Contains(err_, "nowhere")) << err_;
   EXPECT_EQ(Run("synth --out " + P("no/x.csv").string()), 2);
+  EXPECT_EQ(Run("synth --set tyres.rr.heat_generation.p1=1.5 --out " + P("x.csv").string()), 2);
+  EXPECT_TRUE(Contains(err_, "override 'tyres.rr.heat_generation.p1=1.5': ")) << err_;
+  EXPECT_TRUE(Contains(err_, "must be in [0, 1]")) << err_;
   EXPECT_FALSE(fs::exists(P("x.csv")));
 }
 
