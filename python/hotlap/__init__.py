@@ -29,6 +29,7 @@ from ._hotlap import (  # noqa: F401  (the public API)
     load_track,
     load_tyre,
     optimal_lap,
+    override_keys,
     qss_lap,
     replay,
 )
@@ -46,6 +47,7 @@ __all__ = [
     "load_track",
     "load_tyre",
     "optimal_lap",
+    "override_keys",
     "qss_lap",
     "replay",
     "tyre_forces",

@@ -65,8 +65,8 @@ py::dict Replay(const vehicle::Car& car, const py::handle& telemetry, bool heat_
   const sim::ColumnSet columns = sim::ReplayResultColumns(result, heat_flows);
   py::dict out;
   out["channels"] = ColumnsToDict(columns.names, columns.values);
-  out["summary"] = ToPython(
-      sim::ReplayJson(result, sim::SummarizeReplay(result), log.path().string(), car, ""));
+  out["summary"] =
+      ToPython(sim::ReplayJson(result, sim::SummarizeReplay(result), log.path().string(), car, ""));
   return out;
 }
 
@@ -118,13 +118,47 @@ py::dict QssLap(const vehicle::Car& car, const track::Track& track, int laps, do
   return out;
 }
 
+// {key: number} (or None) as the car's overrides, in the dict's order.
+std::vector<vehicle::CarOverride> OverridesFrom(const py::handle& overrides) {
+  std::vector<vehicle::CarOverride> out;
+  if (overrides.is_none()) return out;
+  if (!py::isinstance<py::dict>(overrides)) {
+    throw InputError(fmt::format("overrides must be a dict {{key: number}}, not {}",
+                                 std::string(py::str(overrides.get_type().attr("__name__")))));
+  }
+  for (const auto& [key, value] : overrides.cast<py::dict>()) {
+    if (!py::isinstance<py::str>(key)) {
+      throw InputError(
+          fmt::format("overrides: the key {} is not a string (a dotted key, e.g. "
+                      "'chassis.mass_kg')",
+                      std::string(py::repr(key))));
+    }
+    const std::string name = key.cast<std::string>();
+    if (py::isinstance<py::bool_>(value) ||
+        !(py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value))) {
+      throw InputError(fmt::format("override '{}': the value {} is not a number", name,
+                                   std::string(py::repr(value))));
+    }
+    out.push_back({name, value.cast<double>()});
+  }
+  return out;
+}
+
 }  // namespace
 
 void BindSim(py::module_& m) {
   py::class_<vehicle::Car>(m, "Car", "A car's parameter set (hotlap.load_car).")
       .def_property_readonly("name", [](const vehicle::Car& c) { return c.name; })
       .def_property_readonly("path", [](const vehicle::Car& c) { return c.path.string(); })
+      .def_property_readonly(
+          "overrides",
+          [](const vehicle::Car& c) { return ToPython(vehicle::OverridesJson(c.overrides)); },
+          "The overrides the car was loaded with, {key: value}.")
       .def("__repr__", [](const vehicle::Car& c) {
+        if (!c.overrides.empty()) {
+          return fmt::format("<hotlap.Car '{}' from {} with {}>", c.name, c.path.string(),
+                             vehicle::OverridesText(c.overrides));
+        }
         return fmt::format("<hotlap.Car '{}' from {}>", c.name, c.path.string());
       });
   py::class_<track::Track>(m, "Track", "A closed track (hotlap.load_track).")
@@ -135,11 +169,21 @@ void BindSim(py::module_& m) {
       });
   m.def(
       "load_car",
+      [](const std::string& name_or_path, const py::object& overrides) {
+        return vehicle::LoadCar(ResolveCarFile(name_or_path), OverridesFrom(overrides));
+      },
+      py::arg("name_or_path") = "gen7", py::arg("overrides") = py::none(),
+      "A built-in car by name ('gen7') or a car.yaml (or its folder) by path; `overrides` "
+      "{key: number} sets car parameters by their dotted keys, in the key's own unit, checked "
+      "as the files' values are (docs/overrides.md), e.g. {'chassis.mass_kg': 1600, "
+      "'brakes.fl.duct_factor': 0.8}.");
+  m.def(
+      "override_keys",
       [](const std::string& name_or_path) {
-        return vehicle::LoadCar(ResolveCarFile(name_or_path));
+        return vehicle::OverrideKeys(ResolveCarFile(name_or_path));
       },
       py::arg("name_or_path") = "gen7",
-      "A built-in car by name ('gen7') or a car.yaml (or its folder) by path.");
+      "Every key load_car's overrides (and --set) accept for this car, in file order.");
   m.def(
       "load_track", [](const std::string& name_or_path) { return track::LoadTrack(name_or_path); },
       py::arg("name_or_path") = "darlington",

@@ -64,3 +64,39 @@ def test_loading_reports_what_is_wrong():
     assert hotlap.load_track("darlington").length_m == pytest.approx(2198.0, abs=1.0)
     assert hotlap.load_car().name == "gen7"
     assert issubclass(hotlap.NumericalError, RuntimeError)
+
+
+def test_load_car_with_overrides_equals_the_command_lines_set(cli, tmp_path):
+    overrides = {"chassis.mass_kg": 1650, "brakes.fl.duct_factor": 0.5}
+    sets = [arg for key, value in overrides.items() for arg in ("--set", "%s=%s" % (key, value))]
+    cli("lap", "--method", "qss", "--step-m", 2, *sets, "--out", tmp_path / "q", "--json", tmp_path / "q.json")
+    expected = read_json(tmp_path / "q.json")
+    car = hotlap.load_car("gen7", overrides=overrides)
+    assert car.overrides == {"chassis.mass_kg": 1650.0, "brakes.fl.duct_factor": 0.5}
+    assert hotlap.load_car().overrides == {}
+    track = hotlap.load_track("darlington")
+    got = hotlap.qss_lap(car, track, step_m=2)
+    for key, value in expected.items():
+        if key in ("out_csv", "out_report"):
+            continue
+        assert got["summary"][key] == value, key
+    assert expected["overrides"] == car.overrides
+    plain = hotlap.qss_lap(hotlap.load_car(), track, step_m=2)
+    assert got["summary"]["lap_time_s"] > plain["summary"]["lap_time_s"]
+
+
+def test_load_car_overrides_are_refused_with_the_command_lines_messages(cli, tmp_path):
+    message = cli("lap", "--set", "chassis.mass=1600", "--out", tmp_path / "o", check=False).stderr
+    with pytest.raises(ValueError) as error:
+        hotlap.load_car(overrides={"chassis.mass": 1600})
+    assert "did you mean 'chassis.mass_kg'?" in str(error.value)
+    assert str(error.value) in message
+    with pytest.raises(ValueError, match=r"override 'chassis.mass_kg=50': .* must be in \[100, 5000\] kg"):
+        hotlap.load_car(overrides={"chassis.mass_kg": 50})
+    with pytest.raises(ValueError, match="is not a number"):
+        hotlap.load_car(overrides={"chassis.mass_kg": "1600"})
+    with pytest.raises(ValueError, match="must be a dict"):
+        hotlap.load_car(overrides=[("chassis.mass_kg", 1600)])
+    keys = hotlap.override_keys("gen7")
+    assert "chassis.mass_kg" in keys and "brakes.rr.duct_factor" in keys
+    assert "tyre_forces.fl.file" not in keys
