@@ -306,13 +306,14 @@ def sweep(cases, out, *, local_workers=None, scheduler=None, shard=None, progres
     lost = []
     interrupted = False
 
-    def record(result):
+    def record(result, slots=1):
+        # slots: cases that can run at once (the workers); running = those of the rest that do.
         nonlocal done, failed
         done += 1
         if result["status"] != "ok":
             failed += 1
         if progress:
-            progress(_progress_line(len(todo), done, len(todo) - done, failed, started))
+            progress(_progress_line(len(todo), done, min(len(todo) - done, slots), failed, started))
 
     try:
         if shard is not None or not todo:
@@ -322,9 +323,10 @@ def sweep(cases, out, *, local_workers=None, scheduler=None, shard=None, progres
             lost = _run_on_dask(todo, out, local_workers, scheduler, worker_retries, record)
     except KeyboardInterrupt:
         interrupted = True
-        if progress:
-            progress("stopped: %d of %d cases done; the table holds what finished" % (done, len(todo)))
     summary = merge(out, resolved if shard is None else mine, write_report=shard is None)
+    if interrupted and progress:
+        progress("stopped: %d of %d cases done, in results.csv; the same command again does the rest"
+                 % (summary["results"], summary["cases"]))
     summary.update(skipped=skipped, ran=done, lost=lost, interrupted=interrupted,
                    wall_time_s=round(time.monotonic() - started, 3),
                    shard=None if shard is None else "%d/%d" % shard)
@@ -365,11 +367,12 @@ def _run_on_dask(todo, out, local_workers, scheduler, worker_retries, record):
         futures = {client.submit(run_case, case, os.path.abspath(out), pure=False, key="hotlap-case-%s-%s" % (case["case"], case["hash"])): case for case in todo}
         for future in as_completed(futures):
             case = futures[future]
+            slots = max(1, sum(w.get("nthreads", 1) for w in client.scheduler_info()["workers"].values()))
             try:
-                record(future.result())
+                record(future.result(), slots)
             except KilledWorker:
                 lost.append(case["case"])
-                record({"status": "worker died"})
+                record({"status": "worker died"}, slots)
     finally:
         if own_client:
             client.close()

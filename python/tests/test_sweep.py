@@ -46,12 +46,30 @@ def test_two_workers_give_the_serial_results_bit_for_bit(tmp_path):
 
 
 def test_a_failing_case_is_recorded_and_the_rest_finish(tmp_path):
-    cases = QSS[:2] + [{"case": "no-laps", "method": "qss", "laps": 0}, {"case": "later", "method": "stint"}]
+    cases = QSS[:2] + [{"case": "no-laps", "method": "qss", "laps": 0}, {"case": "later", "method": "stint"},
+                       {"case": "typo", "method": "qss", "laps": 1, "brakes.fl.duct_factr": 0.8}]
     summary = sweep.sweep(cases, tmp_path, local_workers=2, progress=None)
-    assert summary["by_status"] == {"ok": 2, "bad input": 1, "not available": 1}
+    assert summary["by_status"] == {"ok": 2, "bad input": 2, "not available": 1}
     with open(tmp_path / "cases" / "no-laps" / "result.json") as f:
         result = json.load(f)
     assert result["status"] == "bad input" and "laps 0 must be in [1, 1000]" in result["message"]
+    with open(tmp_path / "cases" / "typo" / "result.json") as f:
+        result = json.load(f)
+    assert result["status"] == "bad input" and "brakes.fl.duct_factor" in result["message"]
+
+
+def test_overrides_vary_the_car(tmp_path):
+    cases = [{"case": "d%d" % k, "method": "qss", "laps": 1, "brakes.fl.duct_factor": f} for k, f in enumerate((0.5, 1.0, 2.0))]
+    summary = sweep.sweep(cases, tmp_path, shard=(1, 1), progress=None)
+    assert summary["by_status"] == {"ok": 3}
+    disc = []
+    for k in range(3):
+        with open(tmp_path / "cases" / ("d%d" % k) / "result.json") as f:
+            result = json.load(f)
+        assert result["summary"]["overrides.brakes.fl.duct_factor"] == (0.5, 1.0, 2.0)[k]
+        disc.append(result["summary"]["corners.fl.peak_disc_temp_C"])
+    # Less cooling air, a hotter front-left disc.
+    assert disc[0] > disc[1] > disc[2]
 
 
 def test_a_resumed_sweep_redoes_nothing(tmp_path):
