@@ -177,15 +177,15 @@ BENCHMARK(BM_MagicFormula61BatchViaTyreForceModel);
 // points in SI (nothing converted or copied): the C++ batch rate that bench/python_tyre_bench.py
 // compares hotlap.tyre_forces with (its points are the same).
 void BM_TyreForcesMillionPoints(benchmark::State& state) {
-  const TyreForceModel<double> model = LoadTyreForceModel(
-      std::filesystem::path(HOTLAP_SOURCE_DIR) / "data/cars/gen7/tyres/left.tir");
+  const TyreForceModel<double> model = LoadTyreForceModel(std::filesystem::path(HOTLAP_SOURCE_DIR) /
+                                                          "data/cars/gen7/tyres/left.tir");
   const size_t n = size_t{1} << 20;
   std::vector<TyreOperatingPoint<double>> points(n);
   for (size_t i = 0; i < n; ++i) {
     TyreOperatingPoint<double>& op = points[i];
     op.fz = 2000.0 + 8000.0 * static_cast<double>(i % 1000) / 999.0;
-    op.slip_angle = (-10.0 + 20.0 * static_cast<double>((i * 7) % 1001) / 1000.0) *
-                    std::numbers::pi / 180.0;
+    op.slip_angle =
+        (-10.0 + 20.0 * static_cast<double>((i * 7) % 1001) / 1000.0) * std::numbers::pi / 180.0;
     op.slip_ratio = -0.2 + 0.4 * static_cast<double>((i * 13) % 1003) / 1002.0;
     op.speed = 20.0;
     op.tread_temp = 25.0 + 273.15;
