@@ -292,7 +292,12 @@ def sweep(cases, out, *, local_workers=None, scheduler=None, shard=None, progres
     rows = read_cases(cases) if not isinstance(cases, list) else cases
     resolved = resolve_cases(rows, source)
     out = os.fspath(out)
-    os.makedirs(out, exist_ok=True)
+    if os.path.exists(out) and not os.path.isdir(out):
+        raise ValueError("--out %s: exists and is not a folder" % out)
+    try:
+        os.makedirs(os.path.join(out, "cases"), exist_ok=True)
+    except OSError as e:
+        raise ValueError("--out %s: cannot create the folder: %s" % (out, e.strerror or e)) from None
     mine = resolved
     if shard is not None:
         i, n = shard

@@ -129,6 +129,10 @@ def test_case_tables_are_checked_with_suggestions(tmp_path):
         sweep.resolve_cases([{"method": "lap"}])
     with pytest.raises(ValueError, match="option disc_limit_C does not apply to method qss"):
         sweep.resolve_cases([{"method": "qss", "disc_limit_C": 500}])
+    afile = tmp_path / "afile"
+    afile.write_text("")
+    with pytest.raises(ValueError, match="exists and is not a folder"):
+        sweep.sweep(QSS[:1], afile, shard=(1, 1), progress=None)
     grid = tmp_path / "grid.yaml"
     grid.write_text("base: {method: qss, laps: 1}\ngrid:\n  ambient_temp_C: [20, 30]\n  track_temp_C: [30, 40, 50]\n")
     rows = sweep.read_cases(grid)
