@@ -10,7 +10,10 @@
 #include <fmt/format.h>
 
 #include "hotlap/common/csv.h"
+#include "hotlap/common/data_path.h"
 #include "hotlap/common/error.h"
+#include "hotlap/common/lap_select.h"
+#include "hotlap/common/motec_csv.h"
 #include "hotlap/common/string_match.h"
 
 namespace hotlap {
@@ -222,13 +225,26 @@ double ConvertSiToCanonical(std::string_view quantity, double value_si) {
   return (value_si - canonical.offset) / canonical.scale;
 }
 
-Telemetry Telemetry::Read(const std::filesystem::path& path, std::string_view index_quantity) {
+Telemetry Telemetry::Read(const std::filesystem::path& path, std::string_view index_quantity,
+                          const TelemetryReadOptions& options) {
   if (index_quantity != "time" && index_quantity != "distance") {
     throw std::invalid_argument(
         "Telemetry::Read: index quantity must be 'time' or 'distance', not '" +
         std::string(index_quantity) + "'");
   }
-  return FromTable(ReadCsv(path), index_quantity);
+  if (!IsMotecCsv(path)) {
+    CsvTable table = ReadCsv(path);
+    if (options.lap) SelectLap(table, *options.lap);
+    return FromTable(std::move(table), index_quantity);
+  }
+  const std::filesystem::path map_path =
+      options.channel_map.empty() ? MotecChannelMapPath(DataDir()) : options.channel_map;
+  MotecTable motec = ReadMotecCsv(path, LoadMotecChannelMap(map_path));
+  if (options.lap) SelectLap(motec.table, *options.lap);
+  Telemetry log = FromTable(std::move(motec.table), index_quantity);
+  log.source_names_ = std::move(motec.sources);
+  log.channel_map_ = map_path;
+  return log;
 }
 
 Telemetry Telemetry::FromTable(CsvTable table, std::string_view index_quantity) {
@@ -331,8 +347,9 @@ const Telemetry::StoredChannel& Telemetry::Get(std::string_view quantity,
                                                std::optional<Corner> corner) const {
   if (const StoredChannel* channel = Find(quantity, corner)) return *channel;
   const std::vector<std::string> expected = ExpectedColumns(KnownQuantity(quantity), corner);
-  throw InputError(fmt::format("{}: missing column {}; {}", path_.string(), QuotedList(expected),
-                               ClosestText(expected, columns_)));
+  throw InputError(fmt::format("{}: missing column {}; {}{}", path_.string(), QuotedList(expected),
+                               ClosestText(expected, columns_),
+                               SourceText({ChannelKey(quantity, corner)})));
 }
 
 bool Telemetry::Has(std::string_view quantity, std::optional<Corner> corner) const {
@@ -391,7 +408,26 @@ std::vector<double> Telemetry::CornerSpeed(Corner corner) const {
       fmt::format("{}: missing the speed at {}: expected {}, or the whole-car {}; ", path_.string(),
                   CornerName(corner), QuotedList(expected), QuotedList(whole_car));
   expected.insert(expected.end(), whole_car.begin(), whole_car.end());
-  throw InputError(message + ClosestText(expected, columns_));
+  throw InputError(message + ClosestText(expected, columns_) +
+                   SourceText({ChannelKey("speed", corner), "speed"}));
+}
+
+std::string Telemetry::SourceText(const std::vector<std::string>& keys) const {
+  if (channel_map_.empty()) return {};
+  std::vector<std::string> names;
+  for (const std::string& key : keys) {
+    if (const auto it = source_names_.find(key); it != source_names_.end()) {
+      names.insert(names.end(), it->second.begin(), it->second.end());
+    }
+  }
+  if (names.empty()) {
+    return fmt::format(
+        " (no MoTeC channel maps to it in the channel map '{}'; add one there or "
+        "give --channel-map)",
+        channel_map_.string());
+  }
+  return fmt::format(" (the MoTeC channels that map to it, by the channel map '{}': {})",
+                     channel_map_.string(), QuotedList(names));
 }
 
 std::optional<double> Telemetry::FirstValue(std::string_view quantity,

@@ -70,6 +70,15 @@ std::string_view CanonicalUnit(std::string_view quantity);
 /// internal unit. NaN stays NaN. Throws std::invalid_argument for an unknown quantity.
 double ConvertSiToCanonical(std::string_view quantity, double value_si);
 
+/// How a log is read, beyond its path (the `--channel-map` and `--lap` options).
+struct TelemetryReadOptions {
+  /// The MoTeC channel map for a MoTeC i2 CSV export (motec_channel_map.h); empty: the shipped
+  /// DataDir()/motec_channels.yaml.
+  std::filesystem::path channel_map;
+  /// Keep only this lap's rows (the `lap` column; a MoTeC export's comes from its beacons).
+  std::optional<int> lap;
+};
+
 /// A telemetry log with every known channel converted to internal SI units on read:
 /// time s, distance m, speed m/s (kph, mph converted), forces N (kN converted), slip_angle rad
 /// (deg converted), slip_ratio 1, temperatures K (C converted: +273.15), wear mm (kept in mm),
@@ -84,8 +93,13 @@ class Telemetry {
   /// increasing (the error names the file, the line and both values where it is not). Two columns
   /// of the same quantity and corner (e.g. `speed_mps` and `speed_kph`) are an InputError naming
   /// both.
-  static Telemetry Read(const std::filesystem::path& path,
-                        std::string_view index_quantity = "time");
+  ///
+  /// A MoTeC i2 CSV export (first record `"Format","MoTeC CSV File"`, docs/telemetry-formats.md)
+  /// is read through `options.channel_map` into the same channels as a hotlap CSV of the same
+  /// numbers; a missing channel's message then also names the MoTeC channels that map to it.
+  /// `options.lap` keeps one lap's rows (SelectLap).
+  static Telemetry Read(const std::filesystem::path& path, std::string_view index_quantity = "time",
+                        const TelemetryReadOptions& options = {});
 
   /// The same from a table already in memory (e.g. columns handed over from Python): the rules of
   /// Read() from the channel names on, plus equal column lengths, unique names and at least one
@@ -155,6 +169,8 @@ class Telemetry {
   const StoredChannel* Find(std::string_view quantity, std::optional<Corner> corner) const;
   // Find(), or the InputError that lists the expected names and the closest found.
   const StoredChannel& Get(std::string_view quantity, std::optional<Corner> corner) const;
+  // For a MoTeC export, " (the MoTeC channels that map to it ...)" for these channel keys; "".
+  std::string SourceText(const std::vector<std::string>& keys) const;
   // The channel's values with the NaN gaps filled (see FilledChannel).
   std::vector<double> Fill(const StoredChannel& channel) const;
 
@@ -167,6 +183,9 @@ class Telemetry {
   // Known channels keyed by "<quantity>" or "<quantity>_<corner>".
   std::map<std::string, StoredChannel, std::less<>> channels_;
   std::vector<std::pair<std::string, std::vector<double>>> unknown_columns_;
+  // For a MoTeC export: channel key -> the MoTeC names that map to it, and the map's path.
+  std::map<std::string, std::vector<std::string>, std::less<>> source_names_;
+  std::filesystem::path channel_map_;
 };
 
 }  // namespace hotlap

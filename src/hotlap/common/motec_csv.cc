@@ -1,0 +1,337 @@
+#include "hotlap/common/motec_csv.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <optional>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "hotlap/common/error.h"
+#include "hotlap/common/read_file.h"
+#include "hotlap/common/string_match.h"
+#include "hotlap/common/telemetry.h"
+
+namespace hotlap {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr std::string_view kSpace = " \t\r\f\v";
+
+std::string_view Trim(std::string_view s) {
+  const size_t begin = s.find_first_not_of(kSpace);
+  if (begin == std::string_view::npos) return {};
+  return s.substr(begin, s.find_last_not_of(kSpace) - begin + 1);
+}
+
+// The cells of one record: comma separated, each optionally in double quotes ("" inside quotes
+// is one quote), space around a cell ignored.
+std::vector<std::string> SplitRecord(std::string_view line, const std::string& where) {
+  std::vector<std::string> cells;
+  size_t i = 0;
+  while (true) {
+    while (i < line.size() && kSpace.find(line[i]) != std::string_view::npos) ++i;
+    std::string cell;
+    if (i < line.size() && line[i] == '"') {
+      ++i;
+      while (true) {
+        if (i >= line.size()) {
+          throw InputError(
+              fmt::format("{}: cell {} has no closing quote", where, cells.size() + 1));
+        }
+        if (line[i] == '"') {
+          if (i + 1 < line.size() && line[i + 1] == '"') {
+            cell += '"';
+            i += 2;
+            continue;
+          }
+          ++i;
+          break;
+        }
+        cell += line[i++];
+      }
+      while (i < line.size() && kSpace.find(line[i]) != std::string_view::npos) ++i;
+      if (i < line.size() && line[i] != ',') {
+        throw InputError(
+            fmt::format("{}: text after the closing quote of cell {}", where, cells.size() + 1));
+      }
+    } else {
+      const size_t comma = line.find(',', i);
+      cell = std::string(Trim(line.substr(i, comma == std::string_view::npos ? comma : comma - i)));
+      i = comma == std::string_view::npos ? line.size() : comma;
+    }
+    cells.push_back(std::move(cell));
+    if (i >= line.size()) return cells;
+    ++i;  // the comma
+  }
+}
+
+// A number cell, or nullopt for text that is not a finite number.
+std::optional<double> ParseNumber(std::string_view text) {
+  text = Trim(text);
+  if (text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+') text.remove_prefix(1);
+  double value = kNaN;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size() ||
+      !std::isfinite(value)) {
+    return std::nullopt;
+  }
+  return value;
+}
+
+struct Record {
+  int line = 0;
+  std::vector<std::string> cells;
+};
+
+// The non-blank records of the file, in order.
+std::vector<Record> ReadRecords(const std::filesystem::path& path) {
+  const std::string text = ReadWholeFile(path);
+  std::string_view rest = text;
+  if (rest.substr(0, 3) == "\xEF\xBB\xBF") rest.remove_prefix(3);
+  std::vector<Record> records;
+  int line_number = 0;
+  while (!rest.empty()) {
+    const size_t newline = rest.find('\n');
+    std::string_view line = rest.substr(0, newline);
+    rest.remove_prefix(newline == std::string_view::npos ? rest.size() : newline + 1);
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    if (Trim(line).empty()) continue;
+    std::vector<std::string> cells =
+        SplitRecord(line, fmt::format("{}:{}", path.string(), line_number));
+    // A record of empty cells only (",,,") is blank too.
+    if (std::all_of(cells.begin(), cells.end(), [](const std::string& c) { return c.empty(); })) {
+      continue;
+    }
+    records.push_back({line_number, std::move(cells)});
+  }
+  return records;
+}
+
+// The key/value pairs of a metadata record: each run of non-empty cells is a key and its values
+// ("Session","Race","","Origin Time","0.000","s" gives Session: Race and Origin Time: 0.000 s).
+void AddMetadata(const Record& record, std::vector<std::pair<std::string, std::string>>& metadata) {
+  size_t i = 0;
+  const std::vector<std::string>& cells = record.cells;
+  while (i < cells.size()) {
+    if (cells[i].empty()) {
+      ++i;
+      continue;
+    }
+    std::string key = cells[i++];
+    std::replace(key.begin(), key.end(), ':', '-');  // a metadata key holds no colon
+    std::string value;
+    // The first value may be empty ("Comment",""): a key's values run to the next empty cell
+    // after at least one cell.
+    bool first = true;
+    while (i < cells.size() && (!cells[i].empty() || first)) {
+      if (!cells[i].empty()) value += (value.empty() ? "" : " ") + cells[i];
+      first = false;
+      ++i;
+    }
+    metadata.emplace_back(std::move(key), std::move(value));
+  }
+}
+
+std::vector<double> ParseBeacons(const Record& record, const std::string& file) {
+  std::vector<double> beacons;
+  for (size_t i = 1; i < record.cells.size(); ++i) {
+    if (record.cells[i].empty()) continue;
+    const std::optional<double> t = ParseNumber(record.cells[i]);
+    if (!t) {
+      throw InputError(fmt::format("{}:{}: Beacon Markers (column {}): '{}' is not a number", file,
+                                   record.line, i + 1, record.cells[i]));
+    }
+    if (!beacons.empty() && !(*t > beacons.back())) {
+      throw InputError(fmt::format(
+          "{}:{}: Beacon Markers (column {}): {} s must follow {} s (they are lap crossing times, "
+          "increasing)",
+          file, record.line, i + 1, *t, beacons.back()));
+    }
+    beacons.push_back(*t);
+  }
+  return beacons;
+}
+
+// A channel of the export and what becomes of it.
+struct ChannelPlan {
+  std::string name;
+  std::string unit;
+  const MotecChannelEntry* entry = nullptr;  // nullptr: carried through unmapped
+  MotecConversion conversion;
+};
+
+}  // namespace
+
+bool IsMotecCsv(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (!in || !std::getline(in, line)) return false;
+  std::string_view first = line;
+  if (first.substr(0, 3) == "\xEF\xBB\xBF") first.remove_prefix(3);
+  try {
+    const std::vector<std::string> cells = SplitRecord(first, path.string());
+    return cells.size() >= 2 && cells[0] == "Format" && cells[1] == "MoTeC CSV File";
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+int MotecLapAt(double t, const std::vector<double>& beacons) {
+  return 1 +
+         static_cast<int>(std::upper_bound(beacons.begin(), beacons.end(), t) - beacons.begin());
+}
+
+MotecTable ReadMotecCsv(const std::filesystem::path& path, const MotecChannelMap& map) {
+  const std::string file = path.string();
+  const std::vector<Record> records = ReadRecords(path);
+
+  // Metadata up to the channel names row (first cell "Time").
+  MotecTable out;
+  CsvTable& table = out.table;
+  table.path = path;
+  std::vector<double> beacons;
+  size_t r = 0;
+  for (; r < records.size() && records[r].cells[0] != "Time"; ++r) {
+    if (records[r].cells[0] == "Beacon Markers") beacons = ParseBeacons(records[r], file);
+    AddMetadata(records[r], table.metadata);
+  }
+  if (r == records.size()) {
+    throw InputError(fmt::format(
+        "{}: no channel names row (a record whose first cell is \"Time\") after the metadata",
+        file));
+  }
+  const Record& names = records[r];
+  if (r + 1 == records.size()) {
+    throw InputError(fmt::format("{}:{}: no units row under the channel names", file, names.line));
+  }
+  const Record& units = records[r + 1];
+  const size_t width = names.cells.size();
+  auto check_width = [&](const Record& record, std::string_view what) {
+    if (record.cells.size() != width) {
+      throw InputError(fmt::format("{}:{}: {} has {} cells, but the channel names row (line {}) {}",
+                                   file, record.line, what, record.cells.size(), names.line,
+                                   width));
+    }
+  };
+  // A units row of numbers only is a data row: the units row is missing.
+  if (std::all_of(units.cells.begin(), units.cells.end(),
+                  [](const std::string& c) { return c.empty() || ParseNumber(c); })) {
+    throw InputError(fmt::format(
+        "{}:{}: expected the units row (\"s\",\"km/h\",...) under the channel names (line {}), "
+        "found numbers",
+        file, units.line, names.line));
+  }
+  check_width(units, "the units row");
+  if (r + 2 == records.size()) {
+    throw InputError(fmt::format("{}:{}: no data rows under the units row", file, units.line));
+  }
+
+  // Which channel becomes which column: a mapped name (the first in map order of those that give
+  // one hotlap channel), "Time" and "Distance" also without a map entry; the rest unmapped.
+  static const MotecChannelEntry kTime{"Time", "time", std::nullopt};
+  static const MotecChannelEntry kDistance{"Distance", "distance", std::nullopt};
+  std::vector<ChannelPlan> plans(width);
+  for (size_t c = 0; c < width; ++c) {
+    plans[c].name = names.cells[c];
+    plans[c].unit = units.cells[c];
+    if (plans[c].name.empty()) {
+      throw InputError(fmt::format("{}:{}: channel {} has no name", file, names.line, c + 1));
+    }
+    for (size_t d = 0; d < c; ++d) {
+      if (plans[d].name == plans[c].name) {
+        throw InputError(fmt::format("{}:{}: channel '{}' (column {}) is also column {}", file,
+                                     names.line, plans[c].name, c + 1, d + 1));
+      }
+    }
+    plans[c].entry = map.Find(plans[c].name);
+    if (plans[c].entry == nullptr && plans[c].name == "Time") plans[c].entry = &kTime;
+    if (plans[c].entry == nullptr && plans[c].name == "Distance") plans[c].entry = &kDistance;
+  }
+  auto map_rank = [&](const MotecChannelEntry* e) {
+    for (size_t i = 0; i < map.entries.size(); ++i) {
+      if (&map.entries[i] == e) return i;
+    }
+    return map.entries.size();  // the built-in Time and Distance
+  };
+  for (size_t c = 0; c < width; ++c) {
+    for (size_t d = 0; d < width && plans[c].entry != nullptr; ++d) {
+      const MotecChannelEntry* other = plans[d].entry;
+      if (d != c && other != nullptr && other->quantity == plans[c].entry->quantity &&
+          other->corner == plans[c].entry->corner && map_rank(other) < map_rank(plans[c].entry)) {
+        plans[c].entry = nullptr;  // another name for the same channel comes first in the map
+      }
+    }
+  }
+  std::vector<std::string> unmapped;
+  for (size_t c = 0; c < width; ++c) {
+    ChannelPlan& plan = plans[c];
+    if (plan.entry == nullptr) {
+      table.columns.push_back(plan.name);
+      unmapped.push_back(plan.name);
+      continue;
+    }
+    const std::string& quantity = plan.entry->quantity;
+    plan.conversion = MotecConversionFor(
+        plan.unit, quantity,
+        fmt::format("{}:{}: channel '{}' (column {})", file, units.line, plan.name, c + 1));
+    table.columns.push_back(ChannelColumn(quantity, plan.entry->corner, CanonicalUnit(quantity)));
+  }
+
+  // Data rows.
+  table.values.assign(width, {});
+  for (size_t d = r + 2; d < records.size(); ++d) {
+    const Record& row = records[d];
+    check_width(row, "this row");
+    for (size_t c = 0; c < width; ++c) {
+      double value = kNaN;
+      if (!row.cells[c].empty()) {
+        const std::optional<double> number = ParseNumber(row.cells[c]);
+        if (!number) {
+          throw InputError(fmt::format("{}:{}: channel '{}' (column {}): '{}' is not a number",
+                                       file, row.line, plans[c].name, c + 1, row.cells[c]));
+        }
+        value = plans[c].entry != nullptr ? plans[c].conversion.Apply(*number) : *number;
+      }
+      table.values[c].push_back(value);
+    }
+    table.line_numbers.push_back(row.line);
+  }
+
+  // Lap numbers from the beacons, by the logged time.
+  std::vector<double> laps;
+  int last_lap = 0;
+  for (size_t i = 0; i < table.line_numbers.size(); ++i) {
+    const double t = table.values[0][i];
+    if (std::isnan(t)) {
+      throw InputError(
+          fmt::format("{}:{}: channel 'Time' (column 1) is empty", file, table.line_numbers[i]));
+    }
+    const int lap = MotecLapAt(t, beacons);  // Time is converted to s
+    laps.push_back(lap);
+    last_lap = std::max(last_lap, lap);
+  }
+  table.columns.push_back("lap");
+  table.values.push_back(std::move(laps));
+  table.metadata.emplace_back("laps", std::to_string(last_lap));
+  if (!unmapped.empty()) {
+    std::string list;
+    for (const std::string& name : unmapped) list += (list.empty() ? "" : ", ") + name;
+    table.metadata.emplace_back("unmapped channels", list);
+  }
+  table.metadata.emplace_back("channel map", map.path.string());
+
+  // Which MoTeC names would give each hotlap channel, for the missing-channel messages.
+  for (const MotecChannelEntry& e : map.entries) {
+    std::string key = e.quantity;
+    if (e.corner) key += "_" + std::string(CornerName(*e.corner));
+    out.sources[key].push_back(e.motec_name);
+  }
+  return out;
+}
+
+}  // namespace hotlap
