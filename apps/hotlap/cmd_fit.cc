@@ -36,6 +36,8 @@ namespace fs = std::filesystem;
 using ident::CarFitKind;
 
 struct FitArgs {
+  std::string channel_map;  // --channel-map
+  std::optional<int> lap;   // --lap
   std::string telemetry, car = "gen7", corners = "all", out, report, json, truth;
   std::string loss = "huber", initial_state = "fitted";
   std::string wear_per_lap;  // tyre only
@@ -108,7 +110,7 @@ int RunFit(const FitArgs& a, CarFitKind kind) {
   const auto started = std::chrono::steady_clock::now();
 
   const vehicle::Car car = vehicle::LoadCar(ResolveCarFile(a.car));
-  const Telemetry log = Telemetry::Read(a.telemetry);
+  const Telemetry log = Telemetry::Read(a.telemetry, "time", {a.channel_map, a.lap});
   ident::CarFitOptions options = a.options;
   options.kind = kind;
   options.corners = ident::ParseCornerList(a.corners, "--corners");
@@ -167,8 +169,10 @@ int RunFit(const FitArgs& a, CarFitKind kind) {
 
 void AddCommonOptions(CLI::App* sub, FitArgs& a) {
   ident::FitOptions& solver = a.options.fit.solver;
-  sub->add_option("--telemetry", a.telemetry, "Logged channels (CSV, docs/telemetry-csv.md)")
+  sub->add_option("--telemetry", a.telemetry,
+                  "Logged channels (CSV or MoTeC i2 CSV, docs/telemetry-formats.md)")
       ->required();
+  AddTelemetryReadOptions(sub, a.channel_map, a.lap);
   sub->add_option("--car", a.car, "Built-in car name or path to a car.yaml (the starting values)")
       ->capture_default_str();
   sub->add_option("--corners", a.corners, "Corners to fit: all, or a list such as fl,rr")

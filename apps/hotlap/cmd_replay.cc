@@ -29,6 +29,8 @@ namespace {
 
 struct ReplayArgs {
   std::string telemetry;
+  std::string channel_map;  // --channel-map
+  std::optional<int> lap;   // --lap
   std::string out;
   std::string car = "gen7";
   std::vector<std::string> set;  // --set KEY=VALUE
@@ -52,7 +54,7 @@ int RunReplay(const ReplayArgs& a) {
 
   const vehicle::Car car =
       vehicle::LoadCar(ResolveCarFile(a.car), vehicle::ParseCarOverrides(a.set));
-  const Telemetry log = Telemetry::Read(a.telemetry);
+  const Telemetry log = Telemetry::Read(a.telemetry, "time", {a.channel_map, a.lap});
   sim::InitialTemperatureOverrides overrides;
   overrides.tread_temp = ToKelvin(a.tread_C);
   overrides.carcass_temp = ToKelvin(a.carcass_C);
@@ -109,8 +111,10 @@ CommandRunner RegisterReplayCommand(CLI::App& app) {
   auto args = std::make_shared<ReplayArgs>();
   CLI::App* sub = app.add_subcommand(
       "replay", "Run the tyre and brake thermal and wear models over a telemetry log");
-  sub->add_option("--telemetry", args->telemetry, "Input log (CSV, docs/telemetry-csv.md)")
+  sub->add_option("--telemetry", args->telemetry,
+                  "Input log (CSV or MoTeC i2 CSV, docs/telemetry-formats.md)")
       ->required();
+  AddTelemetryReadOptions(sub, args->channel_map, args->lap);
   sub->add_option("--out", args->out, "Output channels CSV")->required();
   sub->add_option("--car", args->car, "Built-in car name or path to a car.yaml")
       ->capture_default_str();

@@ -3,6 +3,7 @@
 /// Each subcommand registers its options on the app and returns the function that runs it.
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,19 @@ inline CLI::Option* AddSetOption(CLI::App* sub, std::vector<std::string>& set) {
                    "docs/overrides.md)")
       ->type_name("KEY=VALUE")
       ->allow_extra_args(false);
+}
+
+/// `--channel-map FILE` and `--lap N` on the commands that take `--telemetry`: the MoTeC channel
+/// map of a MoTeC i2 CSV export, and one lap's samples (Telemetry::Read,
+/// docs/telemetry-formats.md).
+inline void AddTelemetryReadOptions(CLI::App* sub, std::string& channel_map,
+                                    std::optional<int>& lap) {
+  sub->add_option("--channel-map", channel_map,
+                  "MoTeC channel map (YAML) for a MoTeC i2 CSV log; default "
+                  "data/motec_channels.yaml (docs/telemetry-formats.md)");
+  sub->add_option("--lap", lap,
+                  "Use only this lap's samples (the log's 'lap' column; a MoTeC "
+                  "export's from its Beacon Markers)");
 }
 
 /// `hotlap replay`: thermal and wear models over a telemetry log.
