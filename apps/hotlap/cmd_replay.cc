@@ -83,6 +83,9 @@ int RunReplay(const ReplayArgs& a) {
   const double duration = result.time.back() - result.time.front();
   fmt::print("hotlap replay: {} ({} samples, {:.2f} s of log) with car '{}'\n", a.telemetry,
              result.time.size(), duration, car.name);
+  for (const auto& [key, value] : log.metadata()) {
+    if (key == "unmapped channels") fmt::print("MoTeC channels not mapped (kept): {}\n", value);
+  }
   fmt::print("{:<6} {:>23} {:>23} {:>23} {:>23} {:>8} {:>6}\n", "corner", "tread degC pk/mean/end",
              "carcass degC", "disc degC", "calliper degC", "wear mm", "grip");
   const std::array<sim::CornerReplaySummary, 4> summaries = sim::SummarizeReplay(result);
