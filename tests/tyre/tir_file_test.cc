@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -138,7 +140,7 @@ TEST(TirFileTest, ConvertsUnitsToSi) {
   text = test::ReplaceOnce(text, "FNOMIN = 6752", "FNOMIN = 6.752");
   text = test::ReplaceOnce(text, "LONGVL = 16.6", "LONGVL = 16600");
   text = test::ReplaceOnce(text, "VERTICAL_STIFFNESS = 314931.2969",
-                           "VERTICAL_STIFFNESS = 0.3149312969");  // kN/mm
+                           "VERTICAL_STIFFNESS = 0.3149312969");              // kN/mm
   text = test::ReplaceOnce(text, "INFLPRES = 260000", "INFLPRES = 0.00026");  // kN/mm^2
   text = test::ReplaceOnce(text, "ALPMAX = 0.96", "ALPMAX = 55");
   const MagicFormulaParams<double> p = ParseTirFile(text, "units.tir").params;
@@ -178,7 +180,8 @@ TEST(TirFileTest, MissingFileNamesTheFile) {
 TEST(TirFileTest, MalformedLinesNameFileAndLine) {
   ExpectParseError(test::ReplaceOnce(kMinimal, "PCY1 = 1.4759", "PCY1 1.4759"),
                    {"bad.tir:23:", "KEY = value"});
-  ExpectParseError(test::ReplaceOnce(kMinimal, "PCY1 = 1.4759", "PCY1 ="), {"bad.tir:23:", "no value"});
+  ExpectParseError(test::ReplaceOnce(kMinimal, "PCY1 = 1.4759", "PCY1 = 1.4759 N"),
+                   {"bad.tir:23:", "PCY1", "not a number"});
   ExpectParseError(test::ReplaceOnce(kMinimal, "PCY1 = 1.4759", "= 1.4759"), {"bad.tir:23:"});
   ExpectParseError(test::ReplaceOnce(kMinimal, "PCY1 = 1.4759", "PCY1 = 1.47x"),
                    {"bad.tir:23:", "PCY1", "not a number"});
@@ -191,6 +194,83 @@ TEST(TirFileTest, MalformedLinesNameFileAndLine) {
                    {"bad.tir:3:", "unterminated"});
   ExpectParseError(test::ReplaceOnce(kMinimal, "LENGTH = 'meter'", "LENGTH = 'furlong'"),
                    {"bad.tir:5:", "furlong", "'mm'"});
+}
+
+// `text` with the whole line that starts with `key` (the first after `after`) replaced by `to`
+// ("" removes the line).
+std::string ReplaceLine(const std::string& text, const std::string& key, const std::string& to,
+                        const std::string& after = "") {
+  const size_t at = text.find("\n" + key + " ", text.find(after));
+  if (at == std::string::npos) throw std::runtime_error("test: no line " + key);
+  const size_t end = text.find('\n', at + 1);
+  return text.substr(0, at + 1) + (to.empty() ? "" : to + "\n") + text.substr(end + 1);
+}
+
+// `text` with the section `[name]` (header to the next header) moved to the end.
+std::string MoveSectionToEnd(const std::string& text, const std::string& name) {
+  const size_t at = text.find("[" + name + "]");
+  const size_t end = text.find("\n[", at);
+  return text.substr(0, at) + text.substr(end + 1) + "\n" + text.substr(at, end + 1 - at);
+}
+
+// As real tools write them: keys with empty values (some with a comment after), '$' and '!'
+// comments anywhere and sections out of order load as the same file with those keys left out,
+// with one warning listing the empty keys; forces agree exactly on a grid.
+TEST(TirFileTest, EmptyValuesAndOddCommentsReadAsTheKeysAbsent) {
+  const std::string original = test::ReadTextFile(TirPath("mfeval/MagicFormula61_Parameters.tir"));
+  std::string removed = ReplaceLine(original, "ROAD_INCREMENT", "");
+  removed = ReplaceLine(removed, "WIDTH", "");
+  removed = ReplaceLine(removed, "INFLPRES", "");
+  removed = ReplaceLine(removed, "MASS", "", "[INERTIA]");
+  std::string odd = ReplaceLine(original, "ROAD_INCREMENT", "ROAD_INCREMENT           =");
+  odd = ReplaceLine(odd, "WIDTH", "  WIDTH =    $ left empty by the fitting tool");
+  odd = ReplaceLine(odd, "INFLPRES", "INFLPRES =! empty too");
+  odd = ReplaceLine(odd, "MASS", "MASS                     =", "[INERTIA]");
+  odd = test::ReplaceOnce(odd, "[VERTICAL]", "  $ an indented comment\n[VERTICAL]   ! trailing");
+  odd = test::ReplaceOnce(odd, "\nPCY1 ", "\n! a comment line\nPCY1 ");
+  odd = MoveSectionToEnd(odd, "MODEL");
+  odd = MoveSectionToEnd(odd, "UNITS");
+  ASSERT_NE(odd.find("[VERTICAL]   ! trailing"), std::string::npos);
+  const TirFile a = ParseTirFile(odd, "odd.tir");
+  const TirFile b = ParseTirFile(removed, "removed.tir");
+  EXPECT_TRUE(b.warnings.empty()) << b.warnings.front();
+  ASSERT_EQ(a.warnings.size(), 1u);
+  EXPECT_TRUE(test::Contains(a.warnings[0],
+                             "odd.tir: keys without a value, taken as absent "
+                             "(defaults used): ROAD_INCREMENT, WIDTH, INFLPRES, "
+                             "MASS"));
+  EXPECT_EQ(a.defaulted, b.defaulted);
+  for (const auto& info : MagicFormulaParamTable()) {
+    EXPECT_EQ(a.params.*info.field, b.params.*info.field) << info.name;
+  }
+  for (double fz : {1000.0, 4000.0, 8000.0}) {
+    for (double alpha : {-0.2, -0.03, 0.0, 0.05, 0.2}) {
+      for (double kappa : {-0.1, 0.0, 0.08}) {
+        for (double camber : {0.0, 0.05}) {
+          const TyreOperatingPoint<double> op{fz, kappa, alpha, camber, 20.0, 0.0, 0.0};
+          const auto fa = CalcMagicFormula(a.params, op, {});
+          const auto fb = CalcMagicFormula(b.params, op, {});
+          EXPECT_EQ(fa.fx, fb.fx);
+          EXPECT_EQ(fa.fy, fb.fy);
+          EXPECT_EQ(fa.mz, fb.mz);
+        }
+      }
+    }
+  }
+}
+
+// Keys that are neither coefficients nor known keys of the format are kept and listed once in
+// one warning; a value that is not a number is still an error naming the file and line.
+TEST(TirFileTest, UnknownKeysAreWarnedNotRefused) {
+  const std::string text = test::ReplaceOnce(
+      kMinimal, "PCY1 = 1.4759", "PCY1 = 1.4759\nPKY11 = 3 $ misspelt\nMY_NOTE = 'x'\nPKY11 = 4");
+  const TirFile tir = ParseTirFile(text, "x.tir");
+  ASSERT_EQ(tir.warnings.size(), 1u);
+  EXPECT_EQ(tir.warnings[0], "x.tir: unknown keys, not used: PKY11, MY_NOTE");
+  EXPECT_EQ(tir.params.PCY1, 1.4759);
+  EXPECT_TRUE(ParseTirFile(kMinimal, "x.tir").warnings.empty());
+  ExpectParseError(test::ReplaceOnce(kMinimal, "PCY1 = 1.4759", "PCY1 = abc $ not a number"),
+                   {"bad.tir:23:", "PCY1", "'abc'", "not a number"});
 }
 
 TEST(TirFileTest, UnsupportedOrMissingFittypIsAnError) {
@@ -214,7 +294,8 @@ TEST(TirFileTest, UnsupportedOrMissingFittypIsAnError) {
        {std::pair{"5", MagicFormulaVersion::kMf52}, std::pair{"6", MagicFormulaVersion::kMf52},
         std::pair{"21", MagicFormulaVersion::kMf52}, std::pair{"61", MagicFormulaVersion::kMf61},
         std::pair{"62", MagicFormulaVersion::kMf62}}) {
-    const std::string text = test::ReplaceOnce(kMinimal, "FITTYP = 61", std::string("FITTYP = ") + fittyp);
+    const std::string text =
+        test::ReplaceOnce(kMinimal, "FITTYP = 61", std::string("FITTYP = ") + fittyp);
     EXPECT_EQ(ParseTirFile(text, "x.tir").params.version, version) << fittyp;
   }
 }
@@ -239,16 +320,39 @@ TEST(TirFileTest, TableListsEveryFieldOnce) {
   for (const auto& info : table) EXPECT_EQ(back.*info.field, p.*info.field) << info.name;
 }
 
+// What standard readers (MF-Tyre, mfeval) expect of each line: a '$' or '!' comment, a
+// [SECTION], or KEY = a finite number or a quoted string, never an empty value.
+void ExpectStandardLines(const std::string& text, const std::string& name) {
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '$' || line[0] == '!' || line[0] == '[') continue;
+    const size_t eq = line.find('=');
+    ASSERT_NE(eq, std::string::npos) << name << ": " << line;
+    std::string value = line.substr(eq + 1, line.find('$') - eq - 1);
+    value.erase(0, value.find_first_not_of(' '));
+    value.erase(value.find_last_not_of(' ') + 1);
+    ASSERT_FALSE(value.empty()) << name << ": " << line;
+    if (value.front() == '\'') continue;
+    size_t used = 0;
+    const double number = std::stod(value, &used);
+    EXPECT_EQ(used, value.size()) << name << ": " << line;
+    EXPECT_TRUE(std::isfinite(number)) << name << ": " << line;
+  }
+}
+
 TEST(TirFileTest, WriterRoundTripsExactly) {
   test::TempDir dir;
-  for (const char* name : {"mfeval/MagicFormula52_Parameters.tir",
-                           "mfeval/MagicFormula61_Parameters.tir",
-                           "mfeval/MagicFormula62_Parameters.tir", "chrono/HMMWV_Pac02Tire.tir"}) {
+  for (const char* name :
+       {"mfeval/MagicFormula52_Parameters.tir", "mfeval/MagicFormula61_Parameters.tir",
+        "mfeval/MagicFormula62_Parameters.tir", "chrono/HMMWV_Pac02Tire.tir"}) {
     const MagicFormulaParams<double> original = LoadMagicFormula(TirPath(name));
     const auto path = dir.path() / "written.tir";
     WriteTirFile(path, original);
     const TirFile back = ReadTirFile(path);
     EXPECT_TRUE(back.defaulted.empty()) << name;
+    EXPECT_TRUE(back.warnings.empty()) << name << ": " << back.warnings.front();
+    ExpectStandardLines(test::ReadTextFile(path), name);
     EXPECT_EQ(back.params.version, original.version) << name;
     for (const auto& info : MagicFormulaParamTable()) {
       EXPECT_EQ(back.params.*info.field, original.*info.field) << name << " " << info.name;

@@ -6,9 +6,11 @@
 #include <optional>
 #include <sstream>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "hotlap/common/atomic_file.h"
 #include "hotlap/common/error.h"
@@ -89,11 +91,11 @@ struct UnitName {
 
 // Accepted spellings of each [UNITS] entry (compared in lower case).
 constexpr UnitName kLengthUnits[] = {
-    {"meter", 1.0},         {"meters", 1.0},      {"metre", 1.0},       {"metres", 1.0},
-    {"m", 1.0},             {"millimeter", 1e-3}, {"millimeters", 1e-3}, {"millimetre", 1e-3},
-    {"mm", 1e-3},           {"centimeter", 1e-2}, {"centimeters", 1e-2}, {"cm", 1e-2},
-    {"kilometer", 1e3},     {"km", 1e3},          {"inch", 0.0254},     {"inches", 0.0254},
-    {"in", 0.0254},         {"foot", 0.3048},     {"feet", 0.3048},     {"ft", 0.3048}};
+    {"meter", 1.0},     {"meters", 1.0},      {"metre", 1.0},        {"metres", 1.0},
+    {"m", 1.0},         {"millimeter", 1e-3}, {"millimeters", 1e-3}, {"millimetre", 1e-3},
+    {"mm", 1e-3},       {"centimeter", 1e-2}, {"centimeters", 1e-2}, {"cm", 1e-2},
+    {"kilometer", 1e3}, {"km", 1e3},          {"inch", 0.0254},      {"inches", 0.0254},
+    {"in", 0.0254},     {"foot", 0.3048},     {"feet", 0.3048},      {"ft", 0.3048}};
 constexpr UnitName kForceUnits[] = {{"newton", 1.0},
                                     {"newtons", 1.0},
                                     {"n", 1.0},
@@ -104,26 +106,20 @@ constexpr UnitName kForceUnits[] = {{"newton", 1.0},
                                     {"lbf", 4.4482216152605},
                                     {"kilogram_force", kGravity},
                                     {"kgf", kGravity}};
-constexpr UnitName kAngleUnits[] = {{"radian", 1.0},          {"radians", 1.0},
-                                    {"rad", 1.0},             {"degree", kPi / 180.0},
-                                    {"degrees", kPi / 180.0}, {"deg", kPi / 180.0}};
-constexpr UnitName kMassUnits[] = {{"kg", 1.0},
-                                   {"kilogram", 1.0},
-                                   {"kilograms", 1.0},
-                                   {"gram", 1e-3},
-                                   {"grams", 1e-3},
-                                   {"g", 1e-3},
-                                   {"tonne", 1e3},
-                                   {"pound_mass", 0.45359237},
-                                   {"lbm", 0.45359237},
-                                   {"slug", 14.593902937206}};
-constexpr UnitName kTimeUnits[] = {{"second", 1.0},     {"seconds", 1.0}, {"s", 1.0},
-                                   {"sec", 1.0},        {"millisecond", 1e-3}, {"ms", 1e-3},
-                                   {"minute", 60.0},    {"min", 60.0},    {"hour", 3600.0},
-                                   {"h", 3600.0}};
-constexpr UnitName kPressureUnits[] = {{"pascal", 1.0}, {"pa", 1.0},    {"kilopascal", 1e3},
-                                       {"kpa", 1e3},    {"megapascal", 1e6}, {"mpa", 1e6},
-                                       {"bar", 1e5},    {"psi", 6894.757293168361}};
+constexpr UnitName kAngleUnits[] = {
+    {"radian", 1.0},         {"radians", 1.0},         {"rad", 1.0},
+    {"degree", kPi / 180.0}, {"degrees", kPi / 180.0}, {"deg", kPi / 180.0}};
+constexpr UnitName kMassUnits[] = {{"kg", 1.0},         {"kilogram", 1.0},
+                                   {"kilograms", 1.0},  {"gram", 1e-3},
+                                   {"grams", 1e-3},     {"g", 1e-3},
+                                   {"tonne", 1e3},      {"pound_mass", 0.45359237},
+                                   {"lbm", 0.45359237}, {"slug", 14.593902937206}};
+constexpr UnitName kTimeUnits[] = {
+    {"second", 1.0}, {"seconds", 1.0}, {"s", 1.0},    {"sec", 1.0},     {"millisecond", 1e-3},
+    {"ms", 1e-3},    {"minute", 60.0}, {"min", 60.0}, {"hour", 3600.0}, {"h", 3600.0}};
+constexpr UnitName kPressureUnits[] = {
+    {"pascal", 1.0},     {"pa", 1.0},  {"kilopascal", 1e3}, {"kpa", 1e3},
+    {"megapascal", 1e6}, {"mpa", 1e6}, {"bar", 1e5},        {"psi", 6894.757293168361}};
 
 template <size_t N>
 double UnitFactor(const TirEntry& entry, const UnitName (&units)[N], const std::string& file) {
@@ -132,7 +128,8 @@ double UnitFactor(const TirEntry& entry, const UnitName (&units)[N], const std::
     if (u.name == name) return u.to_si;
   }
   std::string allowed;
-  for (const UnitName& u : units) allowed += (allowed.empty() ? "'" : ", '") + std::string(u.name) + "'";
+  for (const UnitName& u : units)
+    allowed += (allowed.empty() ? "'" : ", '") + std::string(u.name) + "'";
   throw InputError(fmt::format("{}:{}: unit {} = '{}' is not known; allowed: {}", file, entry.line,
                                entry.key, entry.value, allowed));
 }
@@ -161,8 +158,147 @@ TirUnits ReadUnits(const std::vector<TirEntry>& entries, const std::string& file
   return units;
 }
 
-// The entries of the file, in order; throws on a line that is none of the accepted kinds.
-std::vector<TirEntry> ParseEntries(std::string_view text, const std::string& file) {
+// Keys of the standard MF-Tyre / ADAMS / PAC2002 files that this reader knows and does not use
+// (header, inertia, structural, contact, turn-slip and test-record keys); other keys outside the
+// coefficient table are warned about, as a misspelt coefficient would be.
+constexpr std::string_view kKnownUnusedKeys[] = {"FILE_TYPE",
+                                                 "FILE_VERSION",
+                                                 "FILE_FORMAT",
+                                                 "FITTYP",
+                                                 "PROPERTY_FILE_FORMAT",
+                                                 "USE_MODE",
+                                                 "USER_SUB_ID",
+                                                 "N_TIRE_STATES",
+                                                 "TYRESIDE",
+                                                 "MESSAGES",
+                                                 "FE_METHOD",
+                                                 "CONTACT_MODEL",
+                                                 "BELT_DYNAMICS",
+                                                 "DYNAMIC_STIFFNESS",
+                                                 "DYNAMIC_DAMPING",
+                                                 "INFLATION_PRESSURE",
+                                                 "IP",
+                                                 "IP_NOM",
+                                                 "MASS",
+                                                 "IXX",
+                                                 "IYY",
+                                                 "BELT_MASS",
+                                                 "BELT_IXX",
+                                                 "BELT_IYY",
+                                                 "GRAVITY",
+                                                 "MBELT",
+                                                 "LONGITUDINAL_STIFFNESS",
+                                                 "LATERAL_STIFFNESS",
+                                                 "YAW_STIFFNESS",
+                                                 "FREQ_LONG",
+                                                 "FREQ_LAT",
+                                                 "FREQ_YAW",
+                                                 "FREQ_WINDUP",
+                                                 "DAMP_LONG",
+                                                 "DAMP_LAT",
+                                                 "DAMP_YAW",
+                                                 "DAMP_WINDUP",
+                                                 "DAMP_RESIDUAL",
+                                                 "DAMP_VLOW",
+                                                 "Q_BVX",
+                                                 "Q_BVT",
+                                                 "PCFX1",
+                                                 "PCFX2",
+                                                 "PCFX3",
+                                                 "PCFY1",
+                                                 "PCFY2",
+                                                 "PCFY3",
+                                                 "PCMZ1",
+                                                 "VERTICAL_DAMPING",
+                                                 "BOTTOM_OFFST",
+                                                 "BOTTOM_STIFF",
+                                                 "BOTTOMING_RADIUS",
+                                                 "Q_RA1",
+                                                 "Q_RA2",
+                                                 "Q_RB1",
+                                                 "Q_RB2",
+                                                 "ELLIPS_SHIFT",
+                                                 "ELLIPS_LENGTH",
+                                                 "ELLIPS_HEIGHT",
+                                                 "ELLIPS_ORDER",
+                                                 "ELLIPS_MAX_STEP",
+                                                 "ELLIPS_NWIDTH",
+                                                 "ELLIPS_NLENGTH",
+                                                 "ENV_C1",
+                                                 "ENV_C2",
+                                                 "Q_CAM",
+                                                 "Q_CAM1",
+                                                 "Q_CAM2",
+                                                 "Q_CAM3",
+                                                 "Q_FCY2",
+                                                 "Q_FYS1",
+                                                 "Q_FYS2",
+                                                 "Q_FYS3",
+                                                 "MC_CONTOUR_A",
+                                                 "MC_CONTOUR_B",
+                                                 "ROAD_INCREMENT",
+                                                 "ROAD_DIRECTION",
+                                                 "HMAX_LOCAL",
+                                                 "TIME_SWITCH_INTEG",
+                                                 "PDXP1",
+                                                 "PDXP2",
+                                                 "PDXP3",
+                                                 "PKYP1",
+                                                 "PDYP1",
+                                                 "PDYP2",
+                                                 "PDYP3",
+                                                 "PDYP4",
+                                                 "PHYP1",
+                                                 "PHYP2",
+                                                 "PHYP3",
+                                                 "PHYP4",
+                                                 "PECP1",
+                                                 "PECP2",
+                                                 "QDTP1",
+                                                 "QCRP1",
+                                                 "QCRP2",
+                                                 "QBRP1",
+                                                 "QDRP1",
+                                                 "LGAX",
+                                                 "LGAY",
+                                                 "LGAZ",
+                                                 "LGYR",
+                                                 "LCZ",
+                                                 "LKG",
+                                                 "LIP",
+                                                 "LSGKP",
+                                                 "LSGAL",
+                                                 "PTX1",
+                                                 "PTX2",
+                                                 "PTX3",
+                                                 "PTX4",
+                                                 "PTY1",
+                                                 "PTY2",
+                                                 "PTY3",
+                                                 "QTZ1",
+                                                 "QPX1",
+                                                 "QPZ1",
+                                                 "QPZ2",
+                                                 "MFSAFE1",
+                                                 "MFSAFE2",
+                                                 "MFSAFE3",
+                                                 "DATESTAMP",
+                                                 "TEST_DEVICE",
+                                                 "TEST_NUMBER",
+                                                 "TYPE_TEST_NUMBER",
+                                                 "CONSTRUCTION",
+                                                 "TIRE_DASH",
+                                                 "TIRE_DOT"};
+
+// ", "-separated `names`.
+std::string JoinNames(const std::vector<std::string>& names) {
+  return fmt::format("{}", fmt::join(names, ", "));
+}
+
+// The entries of the file, in order; throws on a line that is none of the accepted kinds. Keys
+// with an empty value go to `empty` instead (taken as absent, as MF-Tyre and mfeval take them).
+std::vector<TirEntry> ParseEntries(std::string_view text, const std::string& file,
+                                   std::vector<std::string>& empty) {
   std::vector<TirEntry> entries;
   std::string section;
   int line_no = 0;
@@ -199,7 +335,10 @@ std::vector<TirEntry> ParseEntries(std::string_view text, const std::string& fil
     e.line = line_no;
     if (!IsKey(e.key)) fail("'" + e.key + "' is not a key (letters, digits and '_')");
     std::string_view value = Trim(s.substr(eq + 1));
-    if (value.empty()) fail(e.key + " has no value");
+    if (value.empty()) {
+      empty.push_back(e.key);
+      continue;
+    }
     if (value.front() == '\'' || value.front() == '"') {
       if (value.size() < 2 || value.back() != value.front()) fail("unterminated string");
       value = value.substr(1, value.size() - 2);
@@ -239,9 +378,10 @@ MagicFormulaVersion ReadVersion(TirFile& tir, const std::string& file) {
         break;
     }
   }
-  throw InputError(fmt::format(
-      "{}:{}: FITTYP = {} is not supported; supported: 5, 6 or 21 (MF 5.2), 61 (MF 6.1), 62 (MF 6.2)",
-      file, fittyp->line, fittyp->value));
+  throw InputError(
+      fmt::format("{}:{}: FITTYP = {} is not supported; supported: 5, 6 or 21 (MF 5.2), 61 (MF "
+                  "6.1), 62 (MF 6.2)",
+                  file, fittyp->line, fittyp->value));
 }
 
 // Fills the coefficients from the entries, converting to SI.
@@ -258,8 +398,8 @@ void ReadParams(TirFile& tir, const std::string& file) {
     }
     const std::optional<double> value = e.quoted ? std::nullopt : ParseNumber(e.value);
     if (!value) {
-      throw InputError(fmt::format("{}:{}: {} = '{}' is not a number", file, e.line, e.key,
-                                   e.value));
+      throw InputError(
+          fmt::format("{}:{}: {} = '{}' is not a number", file, e.line, e.key, e.value));
     }
     given[i] = &e;
     tir.params.*info.field = *value * tir.units.ToSi(info.quantity);
@@ -278,6 +418,23 @@ void ReadParams(TirFile& tir, const std::string& file) {
   for (size_t i = 0; i < table.size(); ++i) {
     if (given[i] == nullptr) tir.defaulted.emplace_back(table[i].name);
   }
+}
+
+// One warning naming every key outside the coefficient table and the known unused keys.
+void WarnUnknownKeys(TirFile& tir) {
+  std::unordered_set<std::string_view> known(std::begin(kKnownUnusedKeys),
+                                             std::end(kKnownUnusedKeys));
+  for (const MagicFormulaParamInfo& info : MagicFormulaParamTable()) known.insert(info.name);
+  std::vector<std::string> unknown;
+  for (const TirEntry& e : tir.entries) {
+    if (e.section == "UNITS" || known.contains(e.key)) continue;
+    if (std::find(unknown.begin(), unknown.end(), e.key) == unknown.end()) {
+      unknown.push_back(e.key);
+    }
+  }
+  if (unknown.empty()) return;
+  tir.warnings.push_back(
+      fmt::format("{}: unknown keys, not used: {}", tir.path.string(), JoinNames(unknown)));
 }
 
 }  // namespace
@@ -314,11 +471,17 @@ TirFile ParseTirFile(std::string_view text, const std::filesystem::path& path) {
   const std::string file = path.string();
   TirFile tir;
   tir.path = path;
-  tir.entries = ParseEntries(text, file);
+  std::vector<std::string> empty;
+  tir.entries = ParseEntries(text, file, empty);
+  if (!empty.empty()) {
+    tir.warnings.push_back(fmt::format(
+        "{}: keys without a value, taken as absent (defaults used): {}", file, JoinNames(empty)));
+  }
   tir.units = ReadUnits(tir.entries, file);
   tir.params = MagicFormulaDefaults();
   tir.params.version = ReadVersion(tir, file);
   ReadParams(tir, file);
+  WarnUnknownKeys(tir);
   return tir;
 }
 

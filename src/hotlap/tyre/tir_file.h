@@ -24,6 +24,11 @@
 /// example 'mm', 'kN' and 'deg' work. Magic Formula coefficients are dimensionless and are never
 /// converted.
 ///
+/// As real tools write them: a key with an empty value (`ROAD_INCREMENT =`, `WIDTH =  $ note`)
+/// is absent, as MF-Tyre and mfeval take it (the default is used; TirFile::warnings lists all
+/// such keys in one warning); sections may come in any order; a key that is neither a
+/// coefficient nor a known key of the format is kept and listed in one warning, not refused.
+///
 /// Pitfalls: PAC2002 files give the pressures as IP and IP_NOM in [TIRE_CONDITIONS]; they are read
 /// as INFLPRES and NOMPRES when those are absent (mfeval ignores them; the forces are the same
 /// because PAC2002 has no pressure terms). Keys this reader does not use (inertia, structural,
@@ -67,9 +72,12 @@ struct TirFile {
   int fittyp = 0;                    ///< FITTYP as written; 0 when absent
   std::string property_file_format;  ///< PROPERTY_FILE_FORMAT as written (may be empty)
   TirUnits units;
-  std::vector<TirEntry> entries;        ///< every `KEY = value` line, in file order
-  MagicFormulaParams<double> params;    ///< coefficients in SI; defaults where the file has none
-  std::vector<std::string> defaulted;   ///< coefficients the file did not give
+  std::vector<TirEntry> entries;       ///< every `KEY = value` line, in file order
+  MagicFormulaParams<double> params;   ///< coefficients in SI; defaults where the file has none
+  std::vector<std::string> defaulted;  ///< coefficients the file did not give
+  /// At most two: the keys written without a value (`WIDTH =`), which are taken as absent, and
+  /// the keys neither a coefficient nor a known key of the format (e.g. a misspelt coefficient).
+  std::vector<std::string> warnings;
 
   /// The last entry with this key (case-insensitive), or nullptr.
   const TirEntry* Find(std::string_view key) const;
