@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <gtest/gtest.h>
 
 #include "hotlap/common/error.h"
@@ -178,6 +180,76 @@ TEST(MagicFormulaFitTest, BaseCoefficientsTheFitDoesNotFreeAreKept) {
   EXPECT_EQ(fit.params.QDZ1, base.QDZ1);
   EXPECT_EQ(fit.params.UNLOADED_RADIUS, base.UNLOADED_RADIUS);
   for (const MagicFormulaFitMetrics& m : fit.metrics) EXPECT_LT(m.rms_rel_peak, 0.01) << m.channel;
+}
+
+// A steady-state cornering run as a rig gives it: side slip only (no Fx), +80 N of Fy at zero
+// slip at every load (the usual offset), 1.5% noise and a light load group (0.1 x the tyre's
+// FNOMIN) where small slip angles give less force than the offset. The sign of the cornering
+// stiffness comes from all the data, so the start and the fit keep ISO's negative Fy for
+// positive alpha, and the fitted tyre passes the plausibility check over 0.1-2 x FNOMIN.
+TEST(MagicFormulaFitTest, OffsetsNoiseAndALightLoadKeepTheIsoSign) {
+  const MagicFormulaParams<double> truth = Truth();
+  const double fz0 = truth.FNOMIN;
+  const std::vector<double> loads = {0.1 * fz0, 0.4 * fz0, 0.8 * fz0, 1.2 * fz0};
+  const std::vector<double> cambers = {0.0};
+  std::vector<double> one_sided = {0.25, 0.5, 1.0};
+  for (double a = 2.0; a <= 12.0; a += 1.0) one_sided.push_back(a);
+  for (const std::vector<double>& alphas : {Degrees(one_sided), Degrees(Range(-12, 12, 0.5))}) {
+    auto samples = SynthesizeMagicFormulaRigData(truth, loads, cambers, alphas, {}, 10.0,
+                                                 CelsiusToKelvin(60), 0.015, 11);
+    for (RigSample& s : samples) {
+      s.fy += 80.0;
+      s.fx.reset();
+    }
+    const MagicFormulaFitResult fit = FitMagicFormula(samples, {});
+    const std::string what = fmt::format("{} slip angles", alphas.size());
+    EXPECT_LT(fit.initial_guess.PKY1, 0.0) << what;
+    EXPECT_LT(fit.params.PKY1, 0.0) << what;
+    EXPECT_EQ(fit.plausibility.lateral_sign, -1.0) << what;
+    EXPECT_TRUE(fit.plausibility.passed)
+        << what << ": " << fmt::format("{}", fmt::join(fit.plausibility.failures, "; "));
+    EXPECT_DOUBLE_EQ(fit.plausibility.fz_min_N, 0.1 * fit.params.FNOMIN);
+    EXPECT_GT(fit.plausibility.peak_mu_y_min, 0.3) << what;
+    // PKY4 atan(Fz / (PKY2 Fz0)) stays inside (0, pi) up to 2 x FNOMIN.
+    EXPECT_LT(fit.params.PKY4 * std::atan(2.0 / (fit.params.PKY2 * fit.params.LFZO)), kPi) << what;
+    // RMS per load group: four lateral groups, each near the noise level.
+    ASSERT_EQ(fit.metrics.size(), 4u) << what;
+    for (const MagicFormulaFitMetrics& m : fit.metrics) {
+      EXPECT_EQ(m.channel, "fy");
+      EXPECT_LT(m.rms_rel_peak, 0.08) << what << " at " << m.fz_N << " N";
+    }
+    for (double fz = 0.1 * fz0; fz <= 2.0 * fz0; fz += 0.1 * fz0) {
+      const auto f = tyre::CalcMagicFormula(fit.params, Point(fz, 0.0, DegToRad(1.0), 0.0), {});
+      EXPECT_LT(f.fy, 0.0) << what << " at " << fz << " N";
+    }
+  }
+}
+
+// The check fails, saying why, on hand-made implausible sets, and passes the real tyre.
+TEST(MagicFormulaFitTest, PlausibilityCheckFailsOnImplausibleCoefficients) {
+  const MagicFormulaParams<double> truth = Truth();
+  const MagicFormulaPlausibility good = CheckMagicFormulaPlausibility(truth, DegToRad(15), 0.3);
+  EXPECT_TRUE(good.passed) << fmt::format("{}", fmt::join(good.failures, "; "));
+  EXPECT_GT(good.peak_mu_y_min, 0.5);
+
+  MagicFormulaParams<double> wrong_sign = truth;
+  wrong_sign.PKY1 = 28.3;  // ISO wants negative
+  const MagicFormulaPlausibility a = CheckMagicFormulaPlausibility(wrong_sign, DegToRad(15));
+  EXPECT_FALSE(a.passed);
+  ASSERT_EQ(a.failures.size(), 1u);
+  EXPECT_NE(a.failures[0].find("Fy stiffness"), std::string::npos) << a.failures[0];
+  EXPECT_NE(a.failures[0].find("is not negative as the data's"), std::string::npos);
+
+  MagicFormulaParams<double> past_pi = truth;  // the fit: PKY4 2.40 with PKY2 at 0.05
+  past_pi.PKY4 = 2.4;
+  past_pi.PKY2 = 0.05;
+  const MagicFormulaPlausibility b = CheckMagicFormulaPlausibility(past_pi, DegToRad(15));
+  EXPECT_FALSE(b.passed);
+  ASSERT_EQ(b.failures.size(), 1u);
+  EXPECT_NE(b.failures[0].find("PKY4 atan(Fz / (PKY2 Fz0)) = "), std::string::npos)
+      << b.failures[0];
+  EXPECT_NE(b.failures[0].find("outside (0, pi): the cornering stiffness changes sign"),
+            std::string::npos);
 }
 
 TEST(MagicFormulaFitTest, WarnsAboutTemperaturesAndCombinedSamples) {

@@ -5,11 +5,13 @@
 #include <limits>
 #include <stdexcept>
 #include <string_view>
+#include <utility>
 
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
 #include "hotlap/common/median.h"
+#include "hotlap/common/units.h"
 #include "hotlap/ident/multi_start_solve.h"
 #include "hotlap/ident/rig_fit_common.h"
 #include "hotlap/tyre/magic_formula.h"
@@ -24,9 +26,10 @@ using tyre::MagicFormulaParams;
 #define HOTLAP_MF_FITTABLE(X)                                                                     \
   X(PCY1)                                                                                         \
   X(PDY1)                                                                                         \
-  X(PDY2) X(PDY3) X(PEY1) X(PEY2) X(PEY3) X(PKY1) X(PKY2) X(PKY4) X(PKY6) X(PKY7) X(PHY1) X(PHY2) \
-      X(PVY1) X(PVY2) X(PVY3) X(PVY4) X(PCX1) X(PDX1) X(PDX2) X(PDX3) X(PEX1) X(PEX2) X(PEX3)     \
-          X(PEX4) X(PKX1) X(PKX2) X(PKX3) X(PHX1) X(PHX2) X(PVX1) X(PVX2)
+  X(PDY2)                                                                                         \
+  X(PDY3) X(PEY1) X(PEY2) X(PEY3) X(PKY1) X(PKY2) X(PKY4) X(PKY6) X(PKY7) X(PHY1) X(PHY2) X(PVY1) \
+      X(PVY2) X(PVY3) X(PVY4) X(PCX1) X(PDX1) X(PDX2) X(PDX3) X(PEX1) X(PEX2) X(PEX3) X(PEX4)     \
+          X(PKX1) X(PKX2) X(PKX3) X(PHX1) X(PHX2) X(PVX1) X(PVX2)
 
 enum class Coef {
 #define HOTLAP_ENUM(name) name,
@@ -114,6 +117,36 @@ std::vector<CurveEstimate> EstimateCurves(const std::vector<const RigSample*>& s
   return out;
 }
 
+// The sign of dF/dslip from all the data: the least-squares slope of F on slip over every load
+// group together, each group's mean slip and force removed (its offset), zero-camber samples
+// only where there are any. `fallback` where the data give no slope.
+double PooledSlopeSign(const std::vector<const RigSample*>& samples, Channel channel,
+                       double fallback) {
+  std::vector<const RigSample*> flat;
+  for (const RigSample* s : samples) {
+    if (std::abs(s->camber) <= 1e-4) flat.push_back(s);
+  }
+  if (flat.empty()) flat = samples;
+  const internal::ValueGroups groups = GroupLoads(flat);
+  const size_t n = groups.mean.size();
+  std::vector<double> mean_x(n, 0.0), mean_y(n, 0.0), count(n, 0.0);
+  for (size_t i = 0; i < flat.size(); ++i) {
+    const size_t g = static_cast<size_t>(groups.index[i]);
+    mean_x[g] += Slip(*flat[i], channel);
+    mean_y[g] += Measured(*flat[i], channel);
+    count[g] += 1.0;
+  }
+  double sxy = 0.0, sxx = 0.0;
+  for (size_t i = 0; i < flat.size(); ++i) {
+    const size_t g = static_cast<size_t>(groups.index[i]);
+    const double dx = Slip(*flat[i], channel) - mean_x[g] / count[g];
+    sxy += dx * (Measured(*flat[i], channel) - mean_y[g] / count[g]);
+    sxx += dx * dx;
+  }
+  if (!(sxx > 0.0) || sxy == 0.0 || !std::isfinite(sxy)) return fallback;
+  return sxy < 0.0 ? -1.0 : 1.0;
+}
+
 // Starting lateral coefficients from the curves: friction line in dfz, cornering stiffness law
 // K = PKY1 Fz0 sin(2 atan(Fz / (PKY2 Fz0))), i.e. Fz/K linear in Fz^2.
 // Where the non-estimated coefficients start.
@@ -122,7 +155,7 @@ enum class Start {
   kFromBase,  // as the base file has them: only friction and stiffness come from the data
 };
 
-void GuessLateral(const std::vector<CurveEstimate>& curves, Start start,
+void GuessLateral(const std::vector<CurveEstimate>& curves, double sign, Start start,
                   MagicFormulaParams<double>& p) {
   if (curves.empty()) return;
   const double fz0 = p.FNOMIN * p.LFZO;
@@ -136,8 +169,7 @@ void GuessLateral(const std::vector<CurveEstimate>& curves, Start start,
   const auto [mu0, mu1] = internal::LineFit(dfz, mu);
   p.PDY1 = std::clamp(mu0, 0.2, 3.5);
   p.PDY2 = curves.size() >= 2 ? std::clamp(mu1 / 1.0, -0.9, 0.9) : p.PDY2;
-  const double sign = curves.front().slope < 0.0 ? -1.0 : 1.0;  // ISO-W: negative
-  if (start == Start::kGeneric) p.PKY4 = 2.0;
+  if (start == Start::kGeneric) p.PKY4 = 2.0;  // sign: PooledSlopeSign, ISO negative
   const auto [a, b] = internal::LineFit(fz2, fz_over_k);
   if (start == Start::kGeneric && curves.size() >= 2 && a > 0.0 && b > 0.0) {
     const double pky1 = 1.0 / (2.0 * fz0 * std::sqrt(a * b));
@@ -191,9 +223,22 @@ void GuessLongitudinal(const std::vector<CurveEstimate>& curves, Start start,
   }
 }
 
-// The free coefficients of one channel, by what the samples can identify.
+// Largest value of PKY4 atan(Fz / (PKY2 Fz0)) the bounds allow for Fz up to 2 FNOMIN.
+constexpr double kMaxStiffnessAngle = kPi - 0.05;
+constexpr double kPky4Max = 2.9;
+
+// Lower bound of PKY2 that keeps PKY4 atan(2 FNOMIN / (PKY2 FNOMIN LFZO)) <= kMaxStiffnessAngle
+// for every PKY4 up to `pky4_max` (atan < pi/2, so none is needed when pky4_max <= 2 or so).
+double Pky2Lower(double pky4_max, double lfzo) {
+  const double atan_max = kMaxStiffnessAngle / pky4_max;
+  if (atan_max >= 0.5 * kPi) return 0.05;
+  return std::clamp(2.0 / (lfzo * std::tan(atan_max)), 0.05, 9.0);
+}
+
+// The free coefficients of one channel, by what the samples can identify; `p` gives PKY4 and
+// LFZO for PKY2's bound where PKY4 is not free.
 std::vector<Free> FreeSet(Channel channel, size_t loads, bool camber, bool both_signs,
-                          double stiffness_sign) {
+                          double stiffness_sign, const MagicFormulaParams<double>& p) {
   std::vector<Free> f;
   if (channel == Channel::kLateral) {
     const double lo = stiffness_sign < 0.0 ? -300.0 : 0.5;
@@ -203,11 +248,11 @@ std::vector<Free> FreeSet(Channel channel, size_t loads, bool camber, bool both_
     if (loads >= 2) {
       f.insert(f.end(), {{Coef::PDY2, -1.0, 1.0},
                          {Coef::PEY2, -20.0, 20.0},
-                         {Coef::PKY2, 0.05, 10.0},
+                         {Coef::PKY2, Pky2Lower(loads >= 3 ? kPky4Max : p.PKY4, p.LFZO), 10.0},
                          {Coef::PHY2, -0.1, 0.1},
                          {Coef::PVY2, -0.5, 0.5}});
     }
-    if (loads >= 3) f.push_back({Coef::PKY4, 1.0, 5.0});
+    if (loads >= 3) f.push_back({Coef::PKY4, 1.0, kPky4Max});
     if (both_signs) f.push_back({Coef::PEY3, -1.0, 1.0});
     if (camber) {
       f.insert(f.end(),
@@ -321,7 +366,149 @@ std::vector<MagicFormulaFitMetrics> Metrics(const MagicFormulaParams<double>& pa
   return rows;
 }
 
+// "NAME = value at its lower/upper bound" for each free coefficient within a millionth of the
+// bounds' span of one of them.
+void AddAtBounds(const std::vector<Free>& free, MagicFormulaParams<double>& p,
+                 std::vector<std::string>& out) {
+  for (const Free& f : free) {
+    const double value = Field(p, f.coef);
+    const double tol = 1e-6 * (f.upper - f.lower);
+    if (std::abs(value - f.lower) <= tol || std::abs(value - f.upper) <= tol) {
+      const bool lower = std::abs(value - f.lower) <= tol;
+      out.push_back(fmt::format("{} = {:.6g} at its {} bound", CoefName(f.coef), value,
+                                lower ? "lower" : "upper"));
+    }
+  }
+}
+
+double LargestSlip(const std::vector<const RigSample*>& samples, Channel channel) {
+  double largest = 0.0;
+  for (const RigSample* s : samples) largest = std::max(largest, std::abs(Slip(*s, channel)));
+  return largest;
+}
+
+// The plausibility check of the fitted coefficients over the data's slip ranges.
+void CheckFit(const std::vector<const RigSample*>& lateral,
+              const std::vector<const RigSample*>& longitudinal, MagicFormulaFitResult& result) {
+  const double sign = result.plausibility.lateral_sign;
+  std::vector<std::string> at_bounds = std::move(result.plausibility.at_bounds);
+  result.plausibility =
+      CheckMagicFormulaPlausibility(result.params, LargestSlip(lateral, Channel::kLateral),
+                                    LargestSlip(longitudinal, Channel::kLongitudinal), sign);
+  result.plausibility.at_bounds = std::move(at_bounds);
+}
+
+tyre::TyreOperatingPoint<double> CheckPoint(const MagicFormulaParams<double>& p, double fz,
+                                            double alpha, double kappa) {
+  tyre::TyreOperatingPoint<double> op;
+  op.fz = fz;
+  op.slip_angle = alpha;
+  op.slip_ratio = kappa;
+  op.speed = std::max(p.LONGVL, 1.0);
+  return op;
+}
+
+// Fy (lateral) or Fx at one load and slip.
+double CheckForce(const MagicFormulaParams<double>& p, double fz, double slip, Channel channel) {
+  const bool lateral = channel == Channel::kLateral;
+  const tyre::TyreForces<double> f =
+      tyre::CalcMagicFormula(p, CheckPoint(p, fz, lateral ? slip : 0.0, lateral ? 0.0 : slip), {});
+  return lateral ? f.fy : f.fx;
+}
+
+// One channel to check: which, over which slips, and the sign F must have for positive slip.
+struct ChannelCheck {
+  Channel channel;
+  double slip_max;
+  double sign;  // expected sign of F for positive slip
+};
+
+// The largest |F|/Fz over +-slip_max (NaN if any force is not finite).
+double PeakMu(const MagicFormulaParams<double>& p, double fz, const ChannelCheck& c) {
+  double peak = 0.0;
+  constexpr int kSteps = 40;
+  for (int i = 0; i <= kSteps; ++i) {
+    const double slip = c.slip_max * (2.0 * i / kSteps - 1.0);
+    const double f = CheckForce(p, fz, slip, c.channel);
+    if (!std::isfinite(f)) return std::nan("");
+    peak = std::max(peak, std::abs(f) / fz);
+  }
+  return peak;
+}
+
+// The failure at one load, or "" when that load passes.
+std::string CheckLoad(const MagicFormulaParams<double>& p, double fz, const ChannelCheck& c,
+                      double& peak_mu) {
+  const bool lateral = c.channel == Channel::kLateral;
+  const char* force = lateral ? "Fy" : "Fx";
+  const char* sign = c.sign < 0.0 ? "negative" : "positive";
+  const double fz0 = p.FNOMIN * p.LFZO;
+  if (lateral && p.PKY2 != 0.0) {
+    const double angle = p.PKY4 * std::atan(fz / (p.PKY2 * fz0));
+    if (!(angle > 0.0 && angle < kPi)) {
+      return fmt::format(
+          "PKY4 atan(Fz / (PKY2 Fz0)) = {:.4g} at Fz = {:.0f} N is outside (0, pi): the cornering "
+          "stiffness changes sign (PKY4 = {:.4g}, PKY2 = {:.4g})",
+          angle, fz, p.PKY4, p.PKY2);
+    }
+  }
+  constexpr double h = 1e-4;
+  const double stiffness =
+      (CheckForce(p, fz, h, c.channel) - CheckForce(p, fz, -h, c.channel)) / (2.0 * h);
+  if (!(stiffness * c.sign > 0.0)) {
+    return fmt::format("{} stiffness {:.4g} N/{} at Fz = {:.0f} N is not {} as the data's", force,
+                       stiffness, lateral ? "rad" : "unit slip", fz, sign);
+  }
+  const double small = std::min(lateral ? DegToRad(1.0) : 0.01, c.slip_max);
+  const double f = CheckForce(p, fz, small, c.channel);
+  if (!(f * c.sign > 0.0)) {
+    return fmt::format("{} = {:.4g} N at Fz = {:.0f} N and {} = +{:.3g}{} is not {} as the data's",
+                       force, f, fz, lateral ? "alpha" : "kappa",
+                       lateral ? small * 180.0 / kPi : small, lateral ? " deg" : "", sign);
+  }
+  peak_mu = PeakMu(p, fz, c);
+  if (!(std::isfinite(peak_mu) && peak_mu > 0.0)) {
+    return fmt::format("peak |{}|/Fz = {} at Fz = {:.0f} N is not finite and positive", force,
+                       peak_mu, fz);
+  }
+  return {};
+}
+
 }  // namespace
+
+MagicFormulaPlausibility CheckMagicFormulaPlausibility(const MagicFormulaParams<double>& params,
+                                                       double slip_angle_max, double slip_ratio_max,
+                                                       double lateral_sign) {
+  MagicFormulaPlausibility out;
+  out.fz_min_N = 0.1 * params.FNOMIN;
+  out.fz_max_N = 2.0 * params.FNOMIN;
+  out.slip_angle_max_rad = slip_angle_max;
+  out.slip_ratio_max = slip_ratio_max;
+  out.lateral_sign = lateral_sign;
+  std::vector<ChannelCheck> checks;
+  if (slip_angle_max > 0.0) checks.push_back({Channel::kLateral, slip_angle_max, lateral_sign});
+  if (slip_ratio_max > 0.0) checks.push_back({Channel::kLongitudinal, slip_ratio_max, 1.0});
+  out.peak_mu_y_min = std::numeric_limits<double>::infinity();
+  constexpr int kLoads = 20;
+  for (const ChannelCheck& c : checks) {
+    for (int i = 0; i < kLoads; ++i) {
+      const double fz = out.fz_min_N + (out.fz_max_N - out.fz_min_N) * i / (kLoads - 1);
+      double peak_mu = 0.0;
+      const std::string failure = CheckLoad(params, fz, c, peak_mu);
+      if (!failure.empty()) {
+        out.failures.push_back(failure);
+        break;  // the lightest failing load of each channel says why
+      }
+      if (c.channel == Channel::kLateral) {
+        out.peak_mu_y_min = std::min(out.peak_mu_y_min, peak_mu);
+        out.peak_mu_y_max = std::max(out.peak_mu_y_max, peak_mu);
+      }
+    }
+  }
+  if (!std::isfinite(out.peak_mu_y_min)) out.peak_mu_y_min = 0.0;
+  out.passed = out.failures.empty();
+  return out;
+}
 
 MagicFormulaFitResult FitMagicFormula(std::span<const RigSample> samples,
                                       const MagicFormulaFitOptions& options) {
@@ -384,8 +571,10 @@ MagicFormulaFitResult FitMagicFormula(std::span<const RigSample> samples,
       return;
     }
     const std::vector<CurveEstimate> curves = EstimateCurves(chosen, channel);
+    const double sign = PooledSlopeSign(chosen, channel, channel == Channel::kLateral ? -1.0 : 1.0);
     if (channel == Channel::kLateral) {
-      GuessLateral(curves, start, p);
+      result.plausibility.lateral_sign = sign;
+      GuessLateral(curves, sign, start, p);
     } else {
       GuessLongitudinal(curves, start, p);
     }
@@ -395,11 +584,11 @@ MagicFormulaFitResult FitMagicFormula(std::span<const RigSample> samples,
       negative = negative || Slip(*s, channel) < 0.0;
       positive = positive || Slip(*s, channel) > 0.0;
     }
-    const double sign = curves.empty() || curves.front().slope < 0.0 ? -1.0 : 1.0;
     const std::vector<Free> free =
-        FreeSet(channel, GroupLoads(chosen).mean.size(), camber, negative && positive, sign);
+        FreeSet(channel, GroupLoads(chosen).mean.size(), camber, negative && positive, sign, p);
     for (const Free& f : free) result.fitted_coefficients.emplace_back(CoefName(f.coef));
     const ChannelFit fit = FitChannel(chosen, channel, free, options.max_iterations, p);
+    AddAtBounds(free, p, result.plausibility.at_bounds);
     result.converged = result.converged && fit.converged;
     result.iterations += fit.iterations;
   };
@@ -407,13 +596,15 @@ MagicFormulaFitResult FitMagicFormula(std::span<const RigSample> samples,
   // The initial guess is the base with both channels' data estimates (recorded before fitting).
   {
     MagicFormulaParams<double> guess = p;
-    GuessLateral(EstimateCurves(lateral, Channel::kLateral), start, guess);
+    GuessLateral(EstimateCurves(lateral, Channel::kLateral),
+                 PooledSlopeSign(lateral, Channel::kLateral, -1.0), start, guess);
     GuessLongitudinal(EstimateCurves(longitudinal, Channel::kLongitudinal), start, guess);
     result.initial_guess = guess;
   }
   fit_channel(lateral, Channel::kLateral);
   fit_channel(longitudinal, Channel::kLongitudinal);
   result.params = p;
+  CheckFit(lateral, longitudinal, result);
   result.lateral_samples = static_cast<int>(lateral.size());
   result.longitudinal_samples = static_cast<int>(longitudinal.size());
   for (auto [chosen, channel] :

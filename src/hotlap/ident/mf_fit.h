@@ -25,6 +25,14 @@
 /// Everything else (dimensions, ranges, aligning moment, combined-slip and rolling coefficients)
 /// is taken from `options.base` unchanged.
 ///
+/// Physically plausible by construction where bounds allow, checked after: the sign of the
+/// cornering stiffness is that of the least-squares slope of Fy on alpha over every zero-camber
+/// load group together, each group's mean removed (its offset), so one group's offset or noise
+/// cannot flip it; PKY4 is bounded to [1, 2.9] and PKY2 from below so that PKY4 atan(Fz / (PKY2
+/// Fz0)) stays at or below pi - 0.05 up to Fz = 2 FNOMIN (at zero camber and nominal pressure):
+/// the stiffness cannot change sign over 0-2 x FNOMIN. Every fit ends with
+/// CheckMagicFormulaPlausibility (result.plausibility).
+///
 /// Pitfall: the Magic Formula has no temperature. Rig data at several tread temperatures is fitted
 /// as one tyre, with a warning; fit the temperature-dependent UniTire model for that.
 
@@ -58,6 +66,30 @@ struct MagicFormulaFitMetrics {
   double rms_rel_peak = 0.0;  ///< rms_N / peak_N
 };
 
+/// Whether a Magic Formula tyre is physically plausible over loads 0.1-2 x FNOMIN (20 loads) at
+/// zero camber: for each load, the cornering stiffness dFy/dalpha at 0 and Fy at a small positive
+/// slip angle (1 degree, or the range's end if smaller) have `lateral_sign` (ISO: negative Fy for
+/// positive alpha), `PKY4 atan(Fz / (PKY2 Fz0))` lies inside (0, pi) (outside it the stiffness
+/// changes sign), and the peak |Fy|/Fz over the slip angles +-slip_angle_max is finite and
+/// positive; with `slip_ratio_max` > 0 the same for Fx (positive for positive slip ratio).
+struct MagicFormulaPlausibility {
+  bool passed = true;
+  double fz_min_N = 0.0;               ///< 0.1 x FNOMIN
+  double fz_max_N = 0.0;               ///< 2 x FNOMIN
+  double slip_angle_max_rad = 0.0;     ///< slip angles checked: +-this
+  double slip_ratio_max = 0.0;         ///< slip ratios checked: +-this (0: Fx not checked)
+  double lateral_sign = -1.0;          ///< expected sign of Fy for positive alpha
+  double peak_mu_y_min = 0.0;          ///< smallest peak |Fy|/Fz over the loads
+  double peak_mu_y_max = 0.0;          ///< largest peak |Fy|/Fz over the loads
+  std::vector<std::string> failures;   ///< why it failed, one line per kind of failure
+  std::vector<std::string> at_bounds;  ///< fitted coefficients that stopped at a bound (a fit's)
+};
+
+/// Checks `params` as MagicFormulaPlausibility describes; `lateral_sign` -1 is ISO.
+MagicFormulaPlausibility CheckMagicFormulaPlausibility(
+    const tyre::MagicFormulaParams<double>& params, double slip_angle_max,
+    double slip_ratio_max = 0.0, double lateral_sign = -1.0);
+
 /// The outcome of FitMagicFormula.
 struct MagicFormulaFitResult {
   tyre::MagicFormulaParams<double> params;         ///< fitted coefficients
@@ -69,6 +101,9 @@ struct MagicFormulaFitResult {
   int iterations = 0;                 ///< summed over channels and starts
   int lateral_samples = 0;            ///< pure side-slip samples used
   int longitudinal_samples = 0;       ///< pure longitudinal-slip samples used
+  /// The fitted tyre checked over 0.1-2 x FNOMIN and the data's slip range, with the sign the
+  /// data have (see lateral_sign) and every coefficient that stopped at a bound.
+  MagicFormulaPlausibility plausibility;
 };
 
 /// Fits the pure-slip coefficients (see the file comment). InputError if the samples hold no
