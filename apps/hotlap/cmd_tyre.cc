@@ -18,12 +18,19 @@
 #include "hotlap/common/json_output.h"
 #include "hotlap/common/output_folder.h"
 #include "hotlap/common/units.h"
+#include "hotlap/tyre/tir_file.h"
 #include "hotlap/tyre/tyre_force_model.h"
 #include "hotlap/tyre/tyre_force_params_io.h"
 #include "hotlap/tyre/tyre_grid.h"
 #include "hotlap/tyre/tyre_params_io.h"
 
 namespace hotlap::app {
+
+void PrintTirWarnings(const std::string& path) {
+  for (const std::string& w : tyre::ReadTirFile(path).warnings) {
+    std::fprintf(stderr, "hotlap: warning: %s\n", w.c_str());
+  }
+}
 
 namespace {
 
@@ -79,6 +86,7 @@ int RunEval(const EvalArgs& a) {
 
   const tyre::TyreForceModel<double> model =
       tyre::LoadTyreForceModel(ResolveTyreFile(a.params), a.model);
+  if (model.kind() == "mf") PrintTirWarnings(model.path.string());
   std::optional<tyre::TyreCompound> compound;
   if (!a.compound.empty()) compound = tyre::LoadTyreCompound(a.compound);
   const tyre::TyreCompound* grip_of = compound ? &*compound : nullptr;

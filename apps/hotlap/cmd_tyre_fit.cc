@@ -116,6 +116,29 @@ int RunFitUniTire(const FitArgs& a) {
   return fit.converged ? 0 : 3;
 }
 
+// Prints the plausibility check and returns it as the JSON's `plausibility`.
+nlohmann::json PrintPlausibility(const ident::MagicFormulaPlausibility& c) {
+  fmt::print("plausibility over Fz {:.0f}-{:.0f} N, |alpha| <= {:.3g} deg{}: {}\n", c.fz_min_N,
+             c.fz_max_N, c.slip_angle_max_rad * 180.0 / kPi,
+             c.slip_ratio_max > 0.0 ? fmt::format(", |kappa| <= {:.3g}", c.slip_ratio_max) : "",
+             c.passed ? "passed" : "FAILED");
+  for (const std::string& f : c.failures) fmt::print("  failed: {}\n", f);
+  for (const std::string& b : c.at_bounds) fmt::print("  at a bound: {}\n", b);
+  if (c.slip_angle_max_rad > 0.0 && c.passed) {
+    fmt::print("  peak |Fy|/Fz {:.3f}-{:.3f}\n", c.peak_mu_y_min, c.peak_mu_y_max);
+  }
+  return {{"passed", c.passed},
+          {"fz_min_N", RoundSignificant(c.fz_min_N)},
+          {"fz_max_N", RoundSignificant(c.fz_max_N)},
+          {"slip_angle_max_rad", RoundSignificant(c.slip_angle_max_rad)},
+          {"slip_ratio_max", RoundSignificant(c.slip_ratio_max)},
+          {"lateral_sign", c.lateral_sign},
+          {"peak_mu_y_min", RoundSignificant(c.peak_mu_y_min)},
+          {"peak_mu_y_max", RoundSignificant(c.peak_mu_y_max)},
+          {"failures", c.failures},
+          {"at_bounds", c.at_bounds}};
+}
+
 int RunFitMagicFormula(const FitArgs& a) {
   if (!a.fit_temps_C.empty() || !a.predict_temps_C.empty()) {
     throw InputError(
@@ -124,12 +147,16 @@ int RunFitMagicFormula(const FitArgs& a) {
   }
   const std::vector<ident::RigSample> samples = ident::ReadRigCsv(a.data);
   ident::MagicFormulaFitOptions options;
-  if (!a.base.empty()) options.base = tyre::LoadMagicFormula(a.base);
+  if (!a.base.empty()) {
+    options.base = tyre::LoadMagicFormula(a.base);
+    PrintTirWarnings(a.base);
+  }
   fmt::print("hotlap tyre fit: Magic Formula pure-slip coefficients to {} ({} samples){}\n", a.data,
              samples.size(), a.base.empty() ? "" : ", starting from " + a.base);
   std::fflush(stdout);
   const ident::MagicFormulaFitResult fit = ident::FitMagicFormula(samples, options);
-  for (const std::string& w : fit.warnings) fmt::print("warning: {}\n", w);
+  for (const std::string& w : fit.warnings)
+    std::fprintf(stderr, "hotlap: warning: %s\n", w.c_str());
   fmt::print(
       "{} after {} iterations; {} free coefficients ({} side-slip, {} longitudinal samples)\n",
       fit.converged ? "converged" : "NOT converged", fit.iterations, fit.fitted_coefficients.size(),
@@ -163,6 +190,7 @@ int RunFitMagicFormula(const FitArgs& a) {
                        {"peak_N", RoundSignificant(m.peak_N)},
                        {"rms_rel_peak", RoundSignificant(m.rms_rel_peak)}});
   }
+  const nlohmann::json plausibility = PrintPlausibility(fit.plausibility);
   tyre::WriteTirFile(
       a.out, fit.params,
       fmt::format("pure-slip coefficients fitted by hotlap {} tyre fit to {}\nfree: {}",
@@ -178,8 +206,14 @@ int RunFitMagicFormula(const FitArgs& a) {
                            {"iterations", fit.iterations},
                            {"coefficients", coefficients},
                            {"metrics", metrics},
+                           {"plausibility", plausibility},
                            {"warnings", fit.warnings}});
     fmt::print("wrote {}\n", a.json);
+  }
+  if (!fit.plausibility.passed) {
+    std::fprintf(stderr, "hotlap: the fitted tyre is not physically plausible: %s\n",
+                 fmt::format("{}", fmt::join(fit.plausibility.failures, "; ")).c_str());
+    return 3;
   }
   return fit.converged ? 0 : 3;
 }

@@ -44,6 +44,10 @@ CommandRunner RegisterReplayCommand(CLI::App& app);
 
 /// `hotlap tyre eval|fit`: tyre force models at a point or over a sweep, and fitted to rig data.
 CommandRunner RegisterTyreCommand(CLI::App& app);
+/// Prints the warnings of reading the `.tir` file `path` (tyre::TirFile::warnings) to stderr as
+/// `hotlap: warning: ...` lines (cmd_tyre.cc).
+void PrintTirWarnings(const std::string& path);
+
 /// `tyre fit` under the `tyre` command (cmd_tyre_fit.cc); its runner runs the fit.
 CommandRunner RegisterTyreFitSubcommand(CLI::App* tyre);
 

@@ -17,6 +17,7 @@
 #include "hotlap/ident/mf_fit.h"
 #include "hotlap/ident/rig_data.h"
 #include "hotlap/ident/unitire_fit.h"
+#include "hotlap/tyre/tir_file.h"
 #include "hotlap/tyre/tyre_force_model.h"
 #include "hotlap/tyre/tyre_force_params_io.h"
 #include "test_util.h"
@@ -137,6 +138,11 @@ TEST_F(TyreCommandTest, FitMagicFormulaWritesATirFile) {
   ASSERT_TRUE(j["coefficients"].contains("PKX1"));
   ASSERT_EQ(j["metrics"].size(), 6u);
   for (const auto& m : j["metrics"]) EXPECT_LT(m["rms_rel_peak"].get<double>(), 0.015) << m;
+  ASSERT_TRUE(j.contains("plausibility"));
+  EXPECT_TRUE(j["plausibility"]["passed"].get<bool>()) << j["plausibility"];
+  EXPECT_EQ(j["plausibility"]["lateral_sign"].get<double>(), -1.0);
+  EXPECT_TRUE(j["plausibility"]["failures"].empty());
+  EXPECT_TRUE(test::Contains(r.out, "plausibility over Fz"));
   const tyre::TyreForceModel<double> fitted = tyre::LoadTyreForceModel(out, "mf");
   tyre::TyreOperatingPoint<double> op;
   op.fz = truth.FNOMIN;
@@ -144,6 +150,52 @@ TEST_F(TyreCommandTest, FitMagicFormulaWritesATirFile) {
   op.speed = 10.0;
   const double fy_truth = tyre::CalcMagicFormula(truth, op, {}).fy;
   EXPECT_NEAR(tyre::CalcTyreForces(fitted, op).fy, fy_truth, 0.02 * std::abs(fy_truth));
+}
+
+// A base whose stiffness load law passes pi inside 0.1-2 x FNOMIN, with data at one load (so
+// PKY2 and PKY4 stay the base's): the fit fails the plausibility check, exits 3 with the reason,
+// and still writes its .tir and JSON.
+TEST_F(TyreCommandTest, FitThatFailsThePlausibilityCheckExits3WithItsFiles) {
+  tyre::MagicFormulaParams<double> base = tyre::LoadMagicFormula(kTir);
+  const std::vector<double> loads = {base.FNOMIN}, cambers = {0.0};
+  std::vector<double> alphas;
+  for (double a = -10.0; a <= 10.0; a += 1.0) alphas.push_back(a * 3.14159265358979323846 / 180);
+  const auto samples = ident::SynthesizeMagicFormulaRigData(base, loads, cambers, alphas, {}, 10.0,
+                                                            CelsiusToKelvin(50), 0.01, 3);
+  const fs::path rig = dir() / "rig.csv", base_tir = dir() / "base.tir";
+  ident::WriteRigCsv(rig, {{"source", "synthesized"}}, samples);
+  base.PKY4 = 5.0;
+  base.PKY2 = 0.5;
+  tyre::WriteTirFile(base_tir, base);
+  const fs::path out = dir() / "fitted.tir", json = dir() / "fit.json";
+  const RunResult r =
+      Run("tyre fit --model mf --data " + rig.string() + " --base " + base_tir.string() +
+          " --out " + out.string() + " --json " + json.string());
+  EXPECT_EQ(r.exit_code, 3) << r.out << r.err;
+  EXPECT_TRUE(test::Contains(r.err,
+                             "hotlap: the fitted tyre is not physically plausible: PKY4 "
+                             "atan(Fz / (PKY2 Fz0))"));
+  ASSERT_TRUE(fs::exists(out));
+  const nlohmann::json j = Json(json);
+  EXPECT_FALSE(j["plausibility"]["passed"].get<bool>());
+  ASSERT_EQ(j["plausibility"]["failures"].size(), 1u);
+  EXPECT_TRUE(
+      test::Contains(j["plausibility"]["failures"][0].get<std::string>(), "outside (0, pi)"));
+}
+
+// tyre eval reads a .tir with empty values and unknown keys, warning on stderr.
+TEST_F(TyreCommandTest, EvalWarnsAboutEmptyValuesAndUnknownKeys) {
+  std::string text = test::ReadTextFile(kTir);
+  text = test::ReplaceOnce(text, "0.255          $Nominal", "               $Nominal");
+  text = test::ReplaceOnce(text, "[MODEL]", "[MODEL]\nMY_TOOL_KEY = 3");
+  const fs::path tir = test::WriteTextFile(dir() / "odd.tir", text);
+  const RunResult r = Run("tyre eval --model mf --params " + tir.string() + " --fz-N 4000");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(test::Contains(r.err, "hotlap: warning: " + tir.string() +
+                                        ": keys without a value, taken as absent (defaults "
+                                        "used): WIDTH\n"));
+  EXPECT_TRUE(test::Contains(
+      r.err, "hotlap: warning: " + tir.string() + ": unknown keys, not used: MY_TOOL_KEY\n"));
 }
 
 TEST_F(TyreCommandTest, BadInputFailsCleanlyWithoutOutput) {
