@@ -237,8 +237,8 @@ TEST(TirFileTest, EmptyValuesAndOddCommentsReadAsTheKeysAbsent) {
   ASSERT_EQ(a.warnings.size(), 1u);
   EXPECT_TRUE(test::Contains(a.warnings[0],
                              "odd.tir: keys without a value, taken as absent "
-                             "(defaults used): ROAD_INCREMENT, WIDTH, INFLPRES, "
-                             "MASS"));
+                             "(defaults used): WIDTH, INFLPRES, MASS, "
+                             "ROAD_INCREMENT"));  // file order: [MODEL] was moved last
   EXPECT_EQ(a.defaulted, b.defaulted);
   for (const auto& info : MagicFormulaParamTable()) {
     EXPECT_EQ(a.params.*info.field, b.params.*info.field) << info.name;
