@@ -26,10 +26,9 @@ using tyre::MagicFormulaParams;
 #define HOTLAP_MF_FITTABLE(X)                                                                     \
   X(PCY1)                                                                                         \
   X(PDY1)                                                                                         \
-  X(PDY2)                                                                                         \
-  X(PDY3) X(PEY1) X(PEY2) X(PEY3) X(PKY1) X(PKY2) X(PKY4) X(PKY6) X(PKY7) X(PHY1) X(PHY2) X(PVY1) \
-      X(PVY2) X(PVY3) X(PVY4) X(PCX1) X(PDX1) X(PDX2) X(PDX3) X(PEX1) X(PEX2) X(PEX3) X(PEX4)     \
-          X(PKX1) X(PKX2) X(PKX3) X(PHX1) X(PHX2) X(PVX1) X(PVX2)
+  X(PDY2) X(PDY3) X(PEY1) X(PEY2) X(PEY3) X(PKY1) X(PKY2) X(PKY4) X(PKY6) X(PKY7) X(PHY1) X(PHY2) \
+      X(PVY1) X(PVY2) X(PVY3) X(PVY4) X(PCX1) X(PDX1) X(PDX2) X(PDX3) X(PEX1) X(PEX2) X(PEX3)     \
+          X(PEX4) X(PKX1) X(PKX2) X(PKX3) X(PHX1) X(PHX2) X(PVX1) X(PVX2)
 
 enum class Coef {
 #define HOTLAP_ENUM(name) name,
