@@ -4,6 +4,8 @@
 #include "hotlap/common/read_file.h"
 
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -34,6 +36,20 @@ TEST(ReadWholeFile, ErrorsNameTheFileAndTheReason) {
   };
   expect(dir.path() / "missing.csv", "No such file or directory");
   expect(dir.path(), "it is a folder, not a file");
+}
+
+TEST(TextLinesTest, DropsTheByteOrderMarkAndCarriageReturnsAndNumbersEveryLine) {
+  const std::vector<std::string_view> lines = TextLines(
+      "\xEF\xBB\xBF"
+      "a,b\r\n\r\n  c \nlast");
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines[0], "a,b");
+  EXPECT_EQ(lines[1], "");      // blank lines keep their place: line 2
+  EXPECT_EQ(lines[2], "  c ");  // nothing else trimmed
+  EXPECT_EQ(lines[3], "last");  // no final line end
+  EXPECT_EQ(TextLines("x\n").size(), 1u);
+  EXPECT_TRUE(TextLines("").empty());
+  EXPECT_EQ(TextLines("a\rb\n")[0], "a\rb");  // a lone CR inside a line stays
 }
 
 }  // namespace

@@ -102,21 +102,14 @@ size_t CsvTable::RowCount() const { return line_numbers.size(); }
 CsvTable ReadCsv(const std::filesystem::path& path) {
   const std::string text = ReadWholeFile(path);
   const std::string file = path.string();
-  std::string_view rest = text;
-  if (rest.substr(0, 3) == "\xEF\xBB\xBF") rest.remove_prefix(3);
 
   CsvTable table;
   table.path = path;
   bool have_header = false;
   int header_line = 0;
   int line_number = 0;
-  while (!rest.empty()) {
-    // Next line, without its "\n" or "\r\n".
-    const size_t newline = rest.find('\n');
-    std::string_view line = rest.substr(0, newline);
-    rest.remove_prefix(newline == std::string_view::npos ? rest.size() : newline + 1);
+  for (const std::string_view line : TextLines(text)) {
     ++line_number;
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
 
     const std::string_view trimmed = Trim(line);
     if (trimmed.empty()) continue;

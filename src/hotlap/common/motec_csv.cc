@@ -90,16 +90,10 @@ struct Record {
 // The non-blank records of the file, in order.
 std::vector<Record> ReadRecords(const std::filesystem::path& path) {
   const std::string text = ReadWholeFile(path);
-  std::string_view rest = text;
-  if (rest.substr(0, 3) == "\xEF\xBB\xBF") rest.remove_prefix(3);
   std::vector<Record> records;
   int line_number = 0;
-  while (!rest.empty()) {
-    const size_t newline = rest.find('\n');
-    std::string_view line = rest.substr(0, newline);
-    rest.remove_prefix(newline == std::string_view::npos ? rest.size() : newline + 1);
+  for (const std::string_view line : TextLines(text)) {
     ++line_number;
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (Trim(line).empty()) continue;
     std::vector<std::string> cells =
         SplitRecord(line, fmt::format("{}:{}", path.string(), line_number));
