@@ -46,12 +46,9 @@ std::string Figure(const std::optional<double>& x, const char* format) {
 
 int RunAbsCommand(const AbsArgs& a) {
   // Everything checked before any work: the output folder, the configuration, the options.
+  // The folder is created with the outputs, so a refusal leaves nothing behind.
   const fs::path out(a.out);
-  std::error_code ec;
-  fs::create_directories(out, ec);
-  if (!fs::is_directory(out)) {
-    throw InputError(fmt::format("--out: cannot create the folder '{}'", a.out));
-  }
+  CheckOutputDirectory(out, "--out");
   if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
   const sim::AbsConfig config =
       sim::LoadAbsConfig(a.config.empty() ? sim::DefaultAbsConfigPath() : fs::path(a.config));
@@ -72,6 +69,7 @@ int RunAbsCommand(const AbsArgs& a) {
     series = sim::RunAbsStopSeries(config, event);
   }
 
+  CreateOutputDirectory(out, "--out");
   const fs::path csv = out / "abs.csv", html = out / "abs_report.html";
   sim::WriteAbsCsv(csv, config, event, run);
   const bool with_abs = event.control == sim::AbsControl::kAbs;
@@ -124,9 +122,8 @@ CommandRunner RegisterAbsCommand(CLI::App& app) {
   sub->add_option("--config", args->config,
                   "ABS configuration file (default: the shipped data/abs/paper.yaml)");
   sub->add_option("--speed-mps", args->speed_mps, "Initial speed, m/s (default: the file's)")
-      ->check(CLI::PositiveNumber);
-  sub->add_option("--duration-s", args->duration_s, "Longest time simulated, s")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
+  sub->add_option("--duration-s", args->duration_s, "Longest time simulated, s")->check(kPositive);
   sub->add_option("--surface", args->surface, "A friction law or surface of the file");
   sub->add_flag("--no-abs", args->no_abs, "The driver's pressure alone (the wheel may lock)");
   sub->add_flag("--drum", args->drum, "Hold the vehicle speed (drum) instead of a quarter car");

@@ -98,12 +98,9 @@ nlohmann::json Restart(const std::string& file, const fe::CheckpointKey& key, fe
 }
 
 int RunFeCommand(const FeArgs& a) {
+  // Checked before any work, created once the input is accepted (nothing left on refusal).
   const fs::path out(a.out);
-  std::error_code ec;
-  fs::create_directories(out, ec);
-  if (!fs::is_directory(out)) {
-    throw InputError(fmt::format("--out: cannot create the folder '{}'", a.out));
-  }
+  CheckOutputDirectory(out, "--out");
   if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
   fe::FeConfig config = fe::LoadFeConfig(a.config);
   const int last = a.step == "inflate" ? 0 : a.step == "footprint" ? 1 : a.step == "roll" ? 2 : 3;
@@ -145,6 +142,7 @@ int RunFeCommand(const FeArgs& a) {
   }
   const bool restarted = !a.restart.empty();
   if (restarted) j = Restart(a.restart, key, run, *stop);
+  CreateOutputDirectory(out, "--out");
   const long steps_at_start = solver.steps();
 
   const auto wall0 = std::chrono::steady_clock::now();
@@ -269,16 +267,16 @@ CommandRunner RegisterFeCommand(CLI::App& app) {
   sub->add_option("--json", args->json, "Write the summary as JSON (docs/fe-tyre.md)");
   sub->add_option("--duration-s", args->duration_s,
                   "Simulated time of the last step (roll or abs), s (default: the file's)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   sub->add_option("--threads", args->threads,
                   "Threads of the solver's element loop (default: all cores, OpenMP's default)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   sub->add_option("--kernel", args->kernel,
                   "Element loop: auto | portable | avx2 (default: HOTLAP_FE_KERNEL, else auto)")
       ->check(CLI::IsMember({"auto", "portable", "avx2"}));
   sub->add_option("--checkpoint-every-s", args->checkpoint_every_s,
                   "abs: write <out>/abs_checkpoint.bin every S of simulated time and at the end")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   sub->add_option("--restart", args->restart,
                   "abs: continue from a checkpoint file (same configuration files and mesh)");
   return [args] { return RunFeCommand(*args); };

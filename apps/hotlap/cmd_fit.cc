@@ -111,6 +111,7 @@ int RunFit(const FitArgs& a, CarFitKind kind) {
 
   const vehicle::Car car = vehicle::LoadCar(ResolveCarFile(a.car));
   const Telemetry log = Telemetry::Read(a.telemetry, "time", {a.channel_map, a.lap});
+  for (const std::string& w : log.warnings()) fmt::print(stderr, "hotlap: warning: {}\n", w);
   ident::CarFitOptions options = a.options;
   options.kind = kind;
   options.corners = ident::ParseCornerList(a.corners, "--corners");
@@ -157,7 +158,9 @@ int RunFit(const FitArgs& a, CarFitKind kind) {
   fmt::print("wrote {} (and the folder {})\n", a.out,
              (fs::path(a.out).parent_path() / fs::path(a.out).stem()).string());
   if (!a.json.empty()) {
-    WriteJsonFile(a.json, ident::FitRunJson(run));
+    nlohmann::json json = ident::FitRunJson(run);
+    json["telemetry_warnings"] = log.warnings();
+    WriteJsonFile(a.json, json);
     fmt::print("wrote {}\n", a.json);
   }
   if (!a.report.empty()) {
@@ -186,32 +189,32 @@ void AddCommonOptions(CLI::App* sub, FitArgs& a) {
   sub->add_option("--loss", a.loss, "Robust loss: huber, cauchy or none")->capture_default_str();
   sub->add_option("--loss-scale", solver.loss_scale, "Where the loss starts, in noise levels")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   sub->add_option("--max-relative-ci", solver.max_relative_ci,
                   "Well determined: 95% half-width at most this fraction of the value")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   sub->add_option("--starts", a.options.fit.random_starts,
                   "Seeded random starting points besides the guesses")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNonNegative);
   sub->add_option("--seed", a.options.fit.seed, "Seed of the random starts")->capture_default_str();
   sub->add_option("--threads", a.threads, "Corners fitted at once (0: one per core)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNonNegative);
 }
 
 void AddThermalOptions(CLI::App* sub, FitArgs& a) {
   sub->add_option("--sensor-lag-s", a.options.fit.sensor_lag_s,
                   "First-order lag of the temperature sensors, modelled in the fit")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNonNegative);
   sub->add_option("--initial-state", a.initial_state,
                   "fitted (initial temperatures fitted too) or measured (first samples)")
       ->capture_default_str();
   sub->add_option("--max-step-s", a.options.fit.max_step_s, "Longest RK4 sub-step, s")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   sub->add_option("--ambient-temp-C", a.ambient_C, "Air temperature if not logged");
   sub->add_option("--track-temp-C", a.track_C, "Track temperature if not logged");
 }
@@ -232,10 +235,10 @@ CommandRunner RegisterFitCommand(CLI::App& app) {
   tyre->add_option("--wear-sd-mm", args->options.wear_sd_mm,
                    "Standard deviation of a --wear-per-lap-mm value, mm per lap")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   tyre->add_option("--laps", args->options.laps,
                    "Laps in the log, for --wear-per-lap-mm (default: the log's '# laps:', else 1)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   CLI::App* contact = fit->add_subcommand(
       "contact-length", "Fit p_cp1, p_cp2 of the contact length to measured rolling radii");
   AddCommonOptions(contact, *args);

@@ -212,10 +212,10 @@ CommandRunner RegisterLapCommand(CLI::App& app) {
   sub->add_option("--line-margin-m", args->line_margin_m,
                   "Space the racing line keeps from each edge, m")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   sub->add_option("--step-m", args->step_m, "Distance between road points, m")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   sub->add_option("--ambient-temp-C", args->ambient_C, "Air temperature")->capture_default_str();
   sub->add_option("--track-temp-C", args->track_C, "Track surface temperature")
       ->capture_default_str();

@@ -55,6 +55,7 @@ int RunReplay(const ReplayArgs& a) {
   const vehicle::Car car =
       vehicle::LoadCar(ResolveCarFile(a.car), vehicle::ParseCarOverrides(a.set));
   const Telemetry log = Telemetry::Read(a.telemetry, "time", {a.channel_map, a.lap});
+  for (const std::string& w : log.warnings()) fmt::print(stderr, "hotlap: warning: {}\n", w);
   sim::InitialTemperatureOverrides overrides;
   overrides.tread_temp = ToKelvin(a.tread_C);
   overrides.carcass_temp = ToKelvin(a.carcass_C);
@@ -98,7 +99,9 @@ int RunReplay(const ReplayArgs& a) {
   }
   fmt::print("wrote {} ({} columns) in {:.3f} s\n", a.out, columns.names.size(), elapsed);
   if (!a.json.empty()) {
-    WriteJsonFile(a.json, sim::ReplayJson(result, summaries, a.telemetry, car, a.out));
+    nlohmann::json json = sim::ReplayJson(result, summaries, a.telemetry, car, a.out);
+    json["telemetry_warnings"] = log.warnings();
+    WriteJsonFile(a.json, json);
     fmt::print("wrote {}\n", a.json);
   }
   if (!a.report.empty()) {
@@ -128,7 +131,7 @@ CommandRunner RegisterReplayCommand(CLI::App& app) {
                   "Write an HTML report: summary and interactive charts (docs/reports.md)");
   sub->add_option("--max-step-s", args->max_step_s, "Longest RK4 sub-step, s")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   sub->add_option("--tread-temp-C", args->tread_C, "Initial tread temperature if not logged");
   sub->add_option("--carcass-temp-C", args->carcass_C, "Initial carcass temperature if not logged");
   sub->add_option("--disc-temp-C", args->disc_C, "Initial disc temperature if not logged");

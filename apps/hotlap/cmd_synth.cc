@@ -112,25 +112,21 @@ CommandRunner RegisterSynthCommand(CLI::App& app) {
   sub->add_option("--params", a->params,
                   "Parameter file with the true values (model: parameter_overrides)");
   sub->add_option("--track", a->track, "Built-in track name or track file")->capture_default_str();
-  sub->add_option("--laps", a->laps, "Laps to simulate")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  sub->add_option("--rate-hz", a->rate_hz, "Logging rate")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+  sub->add_option("--laps", a->laps, "Laps to simulate")->capture_default_str()->check(kPositive);
+  sub->add_option("--rate-hz", a->rate_hz, "Logging rate")->capture_default_str()->check(kPositive);
   sub->add_option("--noise-C", a->noise_C, "Standard deviation of every temperature sensor, degC")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNonNegative);
   sub->add_option("--lag-s", a->lag_s, "First-order time constant of every temperature sensor")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNonNegative);
   sub->add_option("--wear-noise-mm", a->wear_noise_mm, "Standard deviation of the wear channel")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNonNegative);
   sub->add_option("--radius-noise-mm", a->radius_noise_mm,
                   "Standard deviation of the rolling radius")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNonNegative);
   sub->add_option("--seed", a->seed, "Seed of the noise")->capture_default_str();
   sub->add_option("--ambient-temp-C", a->ambient_C, "Air temperature")->capture_default_str();
   sub->add_option("--track-temp-C", a->track_C, "Track surface temperature")->capture_default_str();

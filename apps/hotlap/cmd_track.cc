@@ -116,7 +116,7 @@ CommandRunner RegisterTrackCommand(CLI::App& app) {
                    "Write the sampled ribbon as CSV indexed by distance_m (docs/tracks.md)");
   info->add_option("--step-m", info_args->step_m, "Sampling step of --out, m")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   return [info, info_args] {
     if (info->parsed()) return RunTrackInfo(*info_args);
     return 1;

@@ -167,7 +167,7 @@ CommandRunner RegisterTyreCommand(CLI::App& app) {
                 "Compound YAML: scale Fx, Fy, Mz by its g(T_tread) h(wear)");
   e->add_option("--wear-mm", eval->wear_mm, "Tread depth lost, for --compound")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNonNegative);
   e->add_option("--json", eval->json, "Write the summary as JSON (docs/json-output.md)");
 
   const CommandRunner run_fit = RegisterTyreFitSubcommand(tyre);

@@ -245,7 +245,7 @@ CommandRunner RegisterTyreFitSubcommand(CLI::App* tyre) {
   f->add_option("--temp-tolerance-K", fit->temp_tolerance_K,
                 "Samples this close to a temperature belong to it")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   f->add_option("--out", fit->out, "Fitted parameter file (.yaml for unitire, .tir for mf)")
       ->required();
   f->add_option("--base", fit->base,

@@ -2,6 +2,7 @@
 /// @file
 /// Each subcommand registers its options on the app and returns the function that runs it.
 
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <string>
@@ -75,5 +76,26 @@ CommandRunner RegisterFeCommand(CLI::App& app);
 
 /// `hotlap sweep`: hands its arguments to the Python package's hotlap.sweep (cmd_sweep.cc).
 CommandRunner RegisterSweepCommand(CLI::App& app);
+
+/// Option checks with plain messages ("must be positive, not -5"); CLI11's own PositiveNumber and
+/// NonNegativeNumber print their range's bound as a 300-digit number.
+inline const CLI::Validator kPositive(
+    [](std::string& text) -> std::string {
+      double v = 0.0;
+      if (!CLI::detail::lexical_cast(text, v) || !(v > 0.0) || !std::isfinite(v)) {
+        return "must be a positive number, not " + text;
+      }
+      return {};
+    },
+    "POSITIVE");
+inline const CLI::Validator kNonNegative(
+    [](std::string& text) -> std::string {
+      double v = 0.0;
+      if (!CLI::detail::lexical_cast(text, v) || !(v >= 0.0) || !std::isfinite(v)) {
+        return "must be zero or a positive number, not " + text;
+      }
+      return {};
+    },
+    "NONNEGATIVE");
 
 }  // namespace hotlap::app

@@ -53,7 +53,7 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
           ->capture_default_str());
   sub->add_option("--max-iterations", a.run.max_iterations, "Ipopt's iteration limit")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   a.stock_car_only.push_back(
       sub->add_flag("--mesh-check", a.mesh_check,
                     "Solve again on a mesh of half the spacing and report the lap time's change"));

@@ -234,18 +234,28 @@ TEST(MotecChannelMapTest, ShippedMapAndBadMaps) {
 
 TEST(MotecChannelMapTest, ACustomMapAndTheFirstOfTwoNamesForOneChannel) {
   test::TempDir dir;
-  // Map only the speed; Distance gives distance without an entry, like Time.
-  const fs::path map = WriteTextFile(dir.path() / "map.yaml",
-                                     "channels:\n  Engine RPM: speed\n  Ground Speed: speed\n");
   std::string text = ReadTextFile(kMotec);
   text = ReplaceOnce(text, "\"g\",\"rpm\"", "\"g\",\"m/s\"");
-  const Telemetry log =
-      Telemetry::Read(WriteTextFile(dir.path() / "m.csv", text), "time", {map, std::nullopt});
+  const fs::path log_path = WriteTextFile(dir.path() / "m.csv", text);
+  // Engine RPM (the file's last column) comes first in the map, so it is the speed: 8000 "m/s",
+  // which the physical limits refuse, naming the value.
+  const fs::path rpm_first = WriteTextFile(
+      dir.path() / "rpm_first.yaml", "channels:\n  Engine RPM: speed\n  Ground Speed: speed\n");
+  try {
+    Telemetry::Read(log_path, "time", {rpm_first, std::nullopt});
+    ADD_FAILURE() << "8000 m/s read as a speed";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(Contains(e.what(), "'speed_mps' is 8000")) << e.what();
+  }
+  // Map only the speed; Distance gives distance without an entry, like Time.
+  const fs::path map = WriteTextFile(dir.path() / "map.yaml",
+                                     "channels:\n  Ground Speed: speed\n  Engine RPM: speed\n");
+  const Telemetry log = Telemetry::Read(log_path, "time", {map, std::nullopt});
   EXPECT_EQ(log.ColumnOf("speed"), "speed_mps");
-  EXPECT_EQ(log.Channel("speed").front(), 8000.0);  // Engine RPM comes first in the map
+  EXPECT_LT(log.Channel("speed").front(), 150.0);  // Ground Speed, in km/h, converted
   EXPECT_TRUE(log.Has("distance"));
   EXPECT_FALSE(log.Has("fz", Corner::kFrontLeft));
-  EXPECT_TRUE(Contains(Value(log, "unmapped channels"), "Ground Speed"));
+  EXPECT_TRUE(Contains(Value(log, "unmapped channels"), "Engine RPM"));
 }
 
 }  // namespace

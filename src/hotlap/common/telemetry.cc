@@ -15,6 +15,7 @@
 #include "hotlap/common/lap_select.h"
 #include "hotlap/common/motec_csv.h"
 #include "hotlap/common/string_match.h"
+#include "hotlap/common/telemetry_limits.h"
 
 namespace hotlap {
 namespace {
@@ -309,6 +310,9 @@ Telemetry Telemetry::FromTable(CsvTable table, std::string_view index_quantity) 
     const UnitInfo& unit = *FindUnit(KnownQuantity(name->quantity), name->unit);
     std::vector<double> values = std::move(table.values[c]);
     for (double& v : values) v = v * unit.scale + unit.offset;
+    if (const std::optional<ChannelLimits> limits = LimitsOf(name->quantity)) {
+      log.ApplyLimits(*limits, column, name->unit, unit.scale, unit.offset, values);
+    }
     log.channels_.emplace(key, StoredChannel{column, std::move(values)});
   }
 
@@ -330,6 +334,37 @@ Telemetry Telemetry::FromTable(CsvTable table, std::string_view index_quantity) 
     }
   }
   return log;
+}
+
+void Telemetry::ApplyLimits(const ChannelLimits& limits, const std::string& column,
+                            const std::string& unit, double scale, double offset,
+                            std::vector<double>& values) {
+  const std::string file = path_.string();
+  // The limit in the column's own unit, for messages.
+  const auto in_unit = [&](double si) { return (si - offset) / scale; };
+  const std::string unit_text = unit == "1" ? std::string() : " " + unit;
+  size_t treated = 0;
+  int first_line = 0, last_line = 0;
+  for (size_t i = 0; i < values.size(); ++i) {
+    const double v = values[i];
+    if (std::isnan(v)) continue;
+    if (v < limits.refuse_below || v > limits.refuse_above) {
+      throw InputError(fmt::format("{}:{}: '{}' is {:g}{}: impossible ({}); fix or remove the row",
+                                   file, LineOf(i), column, in_unit(v), unit_text, limits.reason));
+    }
+    if (v < limits.physical_min) {
+      values[i] = limits.physical_min;
+      if (treated++ == 0) first_line = LineOf(i);
+      last_line = LineOf(i);
+    }
+  }
+  if (treated > 0) {
+    warnings_.push_back(fmt::format(
+        "{}: '{}': {} value{} from {:g} to below {:g}{} (lines {}-{}) taken as {:g}{}: {}", file,
+        column, treated, treated == 1 ? "" : "s", in_unit(limits.refuse_below),
+        in_unit(limits.physical_min), unit_text, first_line, last_line,
+        in_unit(limits.physical_min), unit_text, limits.treated_as));
+  }
 }
 
 const Telemetry::StoredChannel* Telemetry::Find(std::string_view quantity,

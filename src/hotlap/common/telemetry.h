@@ -30,6 +30,8 @@
 
 namespace hotlap {
 
+struct ChannelLimits;  // telemetry_limits.h
+
 /// A parsed column name `<quantity>[_<corner>][_<unit>]`.
 struct ChannelName {
   /// A known quantity of the spec's table, e.g. "fx", "tread_temp", "q3".
@@ -153,6 +155,12 @@ class Telemetry {
     return unknown_columns_;
   }
 
+  /// What was done to values just outside their physical range (a wheel in the air's negative
+  /// load, a speed signal's noise at standstill, a locked wheel's slip ratio past -1), one line
+  /// per column naming the file, the column, the rows and the treatment (telemetry_limits.h).
+  /// Values further out are refused by Read() and FromTable() instead.
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
   /// 1-based file line of row `row` (for messages). Throws std::out_of_range past the end.
   int LineOf(size_t row) const { return line_numbers_.at(row); }
 
@@ -171,6 +179,10 @@ class Telemetry {
   const StoredChannel& Get(std::string_view quantity, std::optional<Corner> corner) const;
   // For a MoTeC export, " (the MoTeC channels that map to it ...)" for these channel keys; "".
   std::string SourceText(const std::vector<std::string>& keys) const;
+  // Refuses values outside `limits` (InputError naming the file, line, column and value in the
+  // column's unit) and sets those just outside the physical range to it, adding a warning.
+  void ApplyLimits(const ChannelLimits& limits, const std::string& column, const std::string& unit,
+                   double scale, double offset, std::vector<double>& values);
   // The channel's values with the NaN gaps filled (see FilledChannel).
   std::vector<double> Fill(const StoredChannel& channel) const;
 
@@ -183,6 +195,7 @@ class Telemetry {
   // Known channels keyed by "<quantity>" or "<quantity>_<corner>".
   std::map<std::string, StoredChannel, std::less<>> channels_;
   std::vector<std::pair<std::string, std::vector<double>>> unknown_columns_;
+  std::vector<std::string> warnings_;
   // For a MoTeC export: channel key -> the MoTeC names that map to it, and the map's path.
   std::map<std::string, std::vector<std::string>, std::less<>> source_names_;
   std::filesystem::path channel_map_;

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
+#include "hotlap/common/read_file.h"
 #include "hotlap/common/string_match.h"
 
 namespace hotlap {
@@ -46,12 +47,18 @@ namespace {
 // The file's top-level mapping; InputError if it cannot be read or parsed, or is not a mapping.
 YAML::Node ParseFile(const fs::path& path) {
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) {
+  if (!fs::exists(path, ec)) {
     throw InputError(fmt::format("cannot read '{}': no such file", path.string()));
+  }
+  // A folder, an unreadable file: ReadWholeFile says which. A device or a pipe is read as it is.
+  const std::string text = ReadWholeFile(path);
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
+    throw InputError(fmt::format(
+        "{}: the file is empty; expected a mapping of 'field: value' lines", path.string()));
   }
   YAML::Node root;
   try {
-    root = YAML::LoadFile(path.string());
+    root = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     throw InputError(fmt::format("{}:{}:{}: YAML syntax error: {}", path.string(), e.mark.line + 1,
                                  e.mark.column + 1, e.msg));
