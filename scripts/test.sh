@@ -5,4 +5,6 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh --test  # --test: also Chromium (report tests), CalculiX (FE check)
 bash scripts/build.sh
 cd build
+# install-deps --test put CalculiX in place: its absence is then a failure, not a skip.
+export HOTLAP_REQUIRE_CALCULIX=1
 ctest --output-on-failure --parallel "$(nproc)" --timeout 900
