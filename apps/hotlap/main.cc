@@ -1,5 +1,6 @@
 // hotlap: race-car tyre and brake thermal management. main() parses and dispatches.
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <map>
@@ -11,6 +12,9 @@
 #include "hotlap/common/error.h"
 
 int main(int argc, char** argv) {
+  // A file-size limit (ulimit -f) makes a write fail with EFBIG, reported like a full disk, rather
+  // than kill the process mid-write.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"hotlap " HOTLAP_VERSION
                ": tyre and brake thermal models, fitting and lap simulation for race cars"};
   app.set_version_flag("--version", std::string(HOTLAP_VERSION));

@@ -55,18 +55,18 @@ TEST_F(RefusalTest, ImpossibleLogsAreRefusedBeforeAnyWork) {
                 "'speed_mps' is 1e+308 mps: impossible");
   ExpectRefusal("replay --telemetry " + LogWith("fz_fl_N", -3000.0, 10, 11).string() + outputs,
                 "'fz_fl_N' is -3000 N: impossible");
-  ExpectRefusal("replay --telemetry " + LogWith("slip_angle_fr_deg", 120.0, 10, 11).string() +
-                    outputs,
-                "+-90 degrees");
-  ExpectRefusal("fit tyre --telemetry " + LogWith("speed_mps", -50.0, 10, 11).string() +
-                    " --out " + Path("car.yaml") + " --report " + Path("report"),
+  ExpectRefusal(
+      "replay --telemetry " + LogWith("slip_angle_fr_deg", 120.0, 10, 11).string() + outputs,
+      "+-90 degrees");
+  ExpectRefusal("fit tyre --telemetry " + LogWith("speed_mps", -50.0, 10, 11).string() + " --out " +
+                    Path("car.yaml") + " --report " + Path("report"),
                 "'speed_mps' is -50 mps");
 }
 
 TEST_F(RefusalTest, AWheelInTheAirIsTreatedWithAWarningInTheJson) {
   const fs::path log = LogWith("fz_rl_N", -150.0, 100, 110);
-  const test::RunResult r = Run("replay --telemetry " + log.string() + " --out " +
-                                Path("out.csv") + " --json " + Path("out.json"));
+  const test::RunResult r = Run("replay --telemetry " + log.string() + " --out " + Path("out.csv") +
+                                " --json " + Path("out.json"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(Contains(r.err, "hotlap: warning: ")) << r.err;
   EXPECT_TRUE(Contains(r.err, "'fz_rl_N': 10 values")) << r.err;
@@ -84,6 +84,44 @@ TEST_F(RefusalTest, CommandsThatWriteAFolderLeaveNoneWhenTheyRefuse) {
                 "no such file");
   ExpectRefusal("fe inflate --config " + dir().string() + " --out " + Path("out"),
                 "it is a folder, not a file");
+}
+
+// An optimal-control request that cannot be met is said in words. A limit below where the discs
+// start is refused before any solve; a solve that stops unconverged keeps its last point, writes
+// its files, says how far that point is from a lap the car can drive, and exits 3.
+TEST_F(RefusalTest, AnOptimalLapThatCannotBeSolvedIsReportedInWordsWithItsPointKept) {
+  ExpectRefusal("optimise --disc-limit-C 300 --step-m 30 --coarse-step-m 0 --out " + Path("out"),
+                "disc starts at");
+  const test::RunResult r =
+      Run("optimise --disc-limit-C 500 --step-m 30 --coarse-step-m 0 --max-iterations 3 --out " +
+          Path("out") + " --json " + Path("out.json"));
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_TRUE(Contains(r.out + r.err, "stopped at the iteration limit")) << r.out << r.err;
+  EXPECT_TRUE(Contains(r.out + r.err, "kept the last point")) << r.out << r.err;
+  EXPECT_TRUE(fs::exists(dir() / "out" / "optimal.csv"));
+  const nlohmann::json j = Json(dir() / "out.json");
+  EXPECT_EQ(j.at("status"), "failed");
+  EXPECT_GT(j.at("constraint_violation").get<double>(), 1e-6);
+}
+
+// The disk fills while the channels are written (a file-size limit stands in for it): exit 2 with
+// the system's reason, the previous output intact and no temporary left beside it.
+TEST_F(RefusalTest, AFullDiskLeavesThePreviousOutputIntact) {
+  test::WriteTextFile(dir() / "out.csv", "previous\n");
+  // ulimit -f counts 1024-byte blocks in bash, 512 in dash: the channels file is far larger.
+  const test::RunResult r =
+      Run("--version >/dev/null; ulimit -f 64; exec " + std::string(HOTLAP_BINARY) +
+          " replay --telemetry " + kExample.string() + " --out " + Path("out.csv") + " --json " +
+          Path("out.json"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(test::ReadTextFile(dir() / "out.csv"), "previous\n");
+  EXPECT_TRUE(Contains(r.err, "write failed: File too large")) << r.err;
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(dir())) {
+    files += e.path().filename().string().find(".tmp") != std::string::npos;
+  }
+  EXPECT_EQ(files, 0) << "a temporary was left";
+  EXPECT_FALSE(fs::exists(dir() / "out.json"));
 }
 
 TEST_F(RefusalTest, ABadOptionIsExit2WithAPlainMessage) {

@@ -3,13 +3,18 @@
 // data/fe/paper_235_75r15.yaml, everything else as shipped); the documented outputs exist, the
 // JSON holds the documented keys, and a bad configuration gives one clear message and exit code 2.
 
+#include <signal.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -162,6 +167,62 @@ TEST_F(FeCommandTest, RunStoppedAtACheckpointAndRestartedEqualsAStraightRun) {
   }
   EXPECT_GT(j["abs"]["max_brake_torque_Nm"].get<double>(), 0.0);
   EXPECT_EQ(j["performance"]["threads"].get<int>(), 2);
+}
+
+// Faults survived (issue 25): `kill -9` in the middle of a checkpointed braking step leaves a
+// whole checkpoint no older than one checkpoint interval behind the run, and the run continued
+// from it ends bit for bit where the run straight through ends.
+TEST_F(FeCommandTest, KilledRunRestartsFromItsLastCheckpointLosingAtMostOneInterval) {
+  const fs::path cfg = CoarseConfig(), straight = dir_ / "straight", killed = dir_ / "killed",
+                 resumed = dir_ / "resumed";
+  const std::string common = "abs --config " + cfg.string() + " --duration-s 0.3 --threads 1 ";
+  ASSERT_EQ(Run(common + "--out " + straight.string() + " --checkpoint-every-s 1"), 0) << err_;
+
+  // The run to kill, as its own process (exec: the pid is hotlap's, not a shell's).
+  const double interval_s = 0.01;
+  const fs::path err = dir_ / "killed_stderr.txt", checkpoint = killed / "abs_checkpoint.bin";
+  const std::string command = "exec env OMP_WAIT_POLICY=passive " + std::string(HOTLAP_BINARY) +
+                              " fe " + common + "--out " + killed.string() +
+                              " --checkpoint-every-s 0.01 >/dev/null 2>" + err.string();
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  // Killed 0.3 s (wall) after its first checkpoint, when it has written several.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(checkpoint) && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it was killed";
+  ASSERT_TRUE(fs::exists(checkpoint));
+
+  // The latest simulated time the killed run reported reaching.
+  double reached_s = 0.0;
+  const std::string killed_err = ReadTextFile(err);
+  const std::regex progress(R"(fe abs: t = ([0-9.]+) s)");
+  for (auto it = std::sregex_iterator(killed_err.begin(), killed_err.end(), progress);
+       it != std::sregex_iterator(); ++it) {
+    reached_s = std::max(reached_s, std::stod((*it)[1]));
+  }
+  ASSERT_EQ(Run(common + "--out " + resumed.string() + " --checkpoint-every-s 1 --restart " +
+                checkpoint.string()),
+            0)
+      << err_;
+  std::smatch m;
+  ASSERT_TRUE(
+      std::regex_search(err_, m, std::regex(R"(restarting from '.*' at t = ([0-9.e-]+) s)")))
+      << err_;
+  const double checkpoint_s = std::stod(m[1]);
+  EXPECT_GE(checkpoint_s, reached_s - interval_s - 1e-9)
+      << "the surviving checkpoint is more than one interval behind the run";
+  EXPECT_TRUE(ReadTextFile(straight / "abs_checkpoint.bin") ==
+              ReadTextFile(resumed / "abs_checkpoint.bin"));
 }
 
 // A damaged checkpoint, one of another configuration, and --restart on another step: exit 2 with

@@ -55,6 +55,13 @@ SolvedLap SolveLap(const vehicle::Car& car, const track::Track& track, OptimalLa
                     "minimum-curvature line, {:.3f} s on this lap's line)",
                     label, r.message, r.iterations, r.solve_seconds, s.figures.lap_time_s,
                     s.run.qss_lap_time, s.run.qss_on_line_lap_time));
+    if (!r.ok()) {
+      log(fmt::format(
+          "{}: kept the last point (its files are written): largest constraint violation {:.2g} "
+          "(scaled; about 1e-7 or less on a lap the car can drive), so read its lap time as an "
+          "unfinished solve's, not a lap",
+          label, r.primal_infeasibility));
+    }
   }
   return s;
 }

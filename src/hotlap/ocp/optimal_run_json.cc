@@ -63,6 +63,7 @@ nlohmann::json SolvedLapJson(const SolvedLap& s, const std::string& thermal_star
            : nlohmann::json()},
       {"status", r.ok() ? "converged" : "failed"},
       {"message", r.message},
+      {"constraint_violation", RoundSignificant(r.primal_infeasibility)},
       {"front_disc_limit_C",
        s.front_disc_limit ? nlohmann::json(RoundSignificant(KelvinToCelsius(*s.front_disc_limit)))
                           : nlohmann::json()},
