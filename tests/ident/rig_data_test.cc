@@ -79,6 +79,13 @@ TEST(RigDataTest, BadFilesNameTheProblem) {
                         "slip_angle_deg,slip_angle_rad,fz_N,fy_N,mz_Nm,tread_temp_C\n"
                         "1,0.01,4000,-100,2,25\n")),
       "are both slip_angle"));
+  // Physically impossible values, as a log's (common/telemetry_limits.h), in the column's unit.
+  EXPECT_TRUE(test::Contains(ErrorOf(dir.Write("f.csv", good_header + "100,4000,-100,2,25\n")),
+                             "f.csv:2: 'slip_angle_deg' is 100 deg: impossible"));
+  EXPECT_TRUE(test::Contains(ErrorOf(dir.Write("g.csv", good_header + "1,2e5,-100,2,25\n")),
+                             "'fz_N' is 200000 N: impossible"));
+  EXPECT_TRUE(test::Contains(ErrorOf(dir.Write("h.csv", good_header + "1,4000,-100,2,2500\n")),
+                             "'tread_temp_C' is 2500 C: impossible"));
 }
 
 }  // namespace

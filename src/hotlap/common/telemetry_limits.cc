@@ -48,4 +48,9 @@ std::optional<ChannelLimits> LimitsOf(std::string_view quantity) {
   return std::nullopt;
 }
 
+bool IsRefused(std::string_view quantity, double si_value) {
+  const std::optional<ChannelLimits> limits = LimitsOf(quantity);
+  return limits && (si_value < limits->refuse_below || si_value > limits->refuse_above);
+}
+
 }  // namespace hotlap

@@ -10,6 +10,7 @@
 #include "hotlap/common/csv.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/string_match.h"
+#include "hotlap/common/telemetry_limits.h"
 #include "hotlap/common/units.h"
 
 namespace hotlap::ident {
@@ -120,6 +121,21 @@ std::vector<RigSample> ReadRigCsv(const std::filesystem::path& path) {
     s.camber = value("camber", r).value_or(0.0);
     s.speed = value("speed", r).value_or(kRigSpeed);
     s.fx = value("fx", r);
+    // Physically impossible values (telemetry_limits.h), as a log's are refused.
+    for (const auto& [quantity, v] : {std::pair<const char*, double>{"slip_angle", s.slip_angle},
+                                      {"fz", s.fz},
+                                      {"tread_temp", s.tread_temp},
+                                      {"slip_ratio", s.slip_ratio},
+                                      {"speed", s.speed}}) {
+      const auto column = found.find(quantity);
+      if (column != found.end() && IsRefused(quantity, v)) {
+        const UnitConversion& u = *column->second.second;
+        throw InputError(fmt::format("{}:{}: '{}' is {:g}{}{}: impossible ({})", file,
+                                     table.line_numbers[r], table.columns[column->second.first],
+                                     (v - u.shift) / u.scale, u.unit[0] == '\0' ? "" : " ", u.unit,
+                                     LimitsOf(quantity)->reason));
+      }
+    }
     if (!(s.fz > 0.0)) {
       throw InputError(fmt::format("{}:{}: column '{}': load {:g} N must be > 0", file,
                                    table.line_numbers[r], table.columns[found.at("fz").first],
