@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -73,10 +74,33 @@ struct Builder {
   std::array<brake::BrakeThermalParams<SecondOrder<5>>, 4> brake_so;
   std::array<brake::BrakeThermalParams<Jet5>, 4> brake_jet;
   std::array<double, 4> rolling{};
+  // Each lap's vehicle (a stint's: its chassis mass falls with the fuel burnt); one for a lap.
+  std::deque<VehicleParams> lap_params;
+
+  // The vehicle of node k (the elements keep its address: lap_params never moves).
+  const VehicleParams& P(int k) const {
+    if (lap_params.size() == 1) return lap_params.front();
+    const double s = k * ds / track.length_m() * track.laps();
+    const int lap = std::clamp(static_cast<int>(s), 0, static_cast<int>(lap_params.size()) - 1);
+    return lap_params[lap];
+  }
 
   Builder(const vehicle::Car& c, const VehicleParams& vp, const track::Track& t,
           const LapProblemOptions& o, const sim::QssLap& g)
       : car(c), p(vp), track(t), options(o), guess(g) {
+    if (options.lap_mass_kg.empty()) {
+      lap_params.push_back(p);
+    } else {
+      if (static_cast<int>(options.lap_mass_kg.size()) != track.laps()) {
+        throw InputError(fmt::format("optimal lap: {} lap masses for a track of {} laps",
+                                     options.lap_mass_kg.size(), track.laps()));
+      }
+      for (double m : options.lap_mass_kg) {
+        if (!(m > 0.0)) throw InputError(fmt::format("optimal lap: a lap's mass is {} kg", m));
+        lap_params.push_back(p);
+        lap_params.back().chassis.mass = m;
+      }
+    }
     for (int k = 0; k < 4; ++k) {
       tyre_d[k] = car.tyres[k].params;
       tyre_d[k].smoothing = options.thermal_smoothing;
@@ -229,7 +253,7 @@ struct Builder {
       const int i = CornerIndex(c);
       // Slip angle and wheel speed.
       const int ra = nlp.AddConstraint(0, 0, 0.05), rv = nlp.AddConstraint(0, 0, 10.0);
-      nlp.AddElement(MakeElement<6, 2>(internal::KinematicsFn{&p, c}),
+      nlp.AddElement(MakeElement<6, 2>(internal::KinematicsFn{&P(k), c}),
                      {nv.u, nv.v, nv.r, nv.steer, nv.alpha[i], nv.vx[i]},
                      {{{ra, 1.0}}, {{rv, 1.0}}});
       // Tyre forces.
@@ -272,7 +296,7 @@ struct Builder {
       std::vector<int> in = {nv.steer};
       for (int i = 0; i < 4; ++i) in.push_back(nv.fx[i]);
       for (int i = 0; i < 4; ++i) in.push_back(nv.fy[i]);
-      nlp.AddElement(MakeElement<9, 3>(internal::TotalsFn{&p}), in,
+      nlp.AddElement(MakeElement<9, 3>(internal::TotalsFn{&P(k)}), in,
                      {{{rx, -1.0}}, {{ry, -1.0}}, {{rm, -1.0}}});
     }
     // Normal loads.
@@ -283,7 +307,7 @@ struct Builder {
         nlp.AddLinear(rz, nv.fz[i], 1.0);
         targets.push_back({{rz, -1.0}});
       }
-      nlp.AddElement(MakeElement<5, 4>(internal::LoadsFn{&p, road}),
+      nlp.AddElement(MakeElement<5, 4>(internal::LoadsFn{&P(k), road}),
                      {nv.u, nv.v, nv.n, nv.sum_fx, nv.sum_fy}, targets);
     }
     // dt/ds.
@@ -331,10 +355,10 @@ struct Builder {
       const NodeVars& nv = nodes[k];
       const NodeRoad& road = roads[k];
       nlp.AddElement(
-          MakeElement<10, 1>(internal::LongitudinalFn{&p, road, rolling}),
+          MakeElement<10, 1>(internal::LongitudinalFn{&P(k), road, rolling}),
           {nv.w, nv.sum_fx, nv.u, nv.v, nv.r, nv.xi, nv.fz[0], nv.fz[1], nv.fz[2], nv.fz[3]},
           {DefectTargets(k, 0)});
-      nlp.AddElement(MakeElement<5, 1>(internal::LateralFn{&p, road}),
+      nlp.AddElement(MakeElement<5, 1>(internal::LateralFn{&P(k), road}),
                      {nv.w, nv.sum_fy, nv.u, nv.r, nv.xi}, {DefectTargets(k, 1)});
       nlp.AddElement(MakeElement<2, 1>(internal::ScaledProductFn{inv_iz}), {nv.w, nv.yaw_moment},
                      {DefectTargets(k, 2)});

@@ -86,6 +86,10 @@ struct LapProblemOptions {
   /// The tyre thermal model's |x| made smooth for the optimiser (tyre_thermal.h); the solution is
   /// replayed through the exact model to report the difference.
   tyre::TyreThermalSmoothing thermal_smoothing{10.0, 1e-3};
+  /// A stint (ocp/stint.h) on a track made by track::Track::Repeated: the chassis mass of each
+  /// lap in turn, kg (the fuel burnt lap by lap), constant within a lap; empty: the car's mass
+  /// throughout. As many entries as the track has laps (InputError otherwise).
+  std::vector<double> lap_mass_kg;
   /// A starting point for every variable (a SolveResult::x of the same problem size, e.g. the
   /// solution with a disc limit as the start of the lap without it); empty: from the guess.
   /// Values are clipped to this problem's bounds.

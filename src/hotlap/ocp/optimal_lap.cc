@@ -120,6 +120,7 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
   lap.periodic_thermal = options.thermal_start == ThermalStart::kPeriodic;
   lap.initial = run.start;
   lap.start_point = options.start_point;
+  lap.lap_mass_kg = options.lap_mass_kg;
   lap.pedal_smoothing = options.pedal_smoothing;
   lap.convex_element_hessians = options.convex_element_hessians;
   lap.all_brake_states = options.all_brake_states;

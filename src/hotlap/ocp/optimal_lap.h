@@ -87,6 +87,9 @@ struct OptimalLapOptions {
   /// Start the solve here instead of the QSS guess: another solution's SolveResult::x on the same
   /// track, car and mesh (LapProblemOptions::start_point).
   std::vector<double> start_point;
+  /// A stint's chassis mass lap by lap (LapProblemOptions::lap_mass_kg; ocp/stint.h); empty: the
+  /// car's.
+  std::vector<double> lap_mass_kg;
   /// Ipopt's settings; the multipliers' step "min-dual-infeas" takes about a quarter fewer
   /// iterations on the lap than Ipopt's default (docs/optimal-control.md, "Speed").
   IpoptOptions ipopt = LapIpoptOptions();

@@ -240,6 +240,29 @@ Track Track::FromPieces(std::string name, const std::vector<RibbonPiece>& pieces
   return track;
 }
 
+Track Track::Repeated(int laps) const {
+  if (laps < 1) throw InputError(fmt::format("a track repeats 1 or more laps, not {}", laps));
+  Track t = *this;
+  t.length_ = length_ * laps;
+  t.winding_ = winding_ * laps;
+  t.laps_ = laps_ * laps;
+  const size_t n = pieces_.size();
+  t.pieces_.clear();
+  t.knots_.clear();
+  t.pieces_.reserve(n * laps);
+  t.knots_.reserve(n * laps + 1);
+  for (int lap = 0; lap < laps; ++lap) {
+    for (size_t i = 0; i < n; ++i) {
+      Piece piece = pieces_[i];
+      piece.heading0 += 2.0 * kPi * winding_ * lap;
+      t.pieces_.push_back(piece);
+      t.knots_.push_back(knots_[i] + length_ * lap);
+    }
+  }
+  t.knots_.push_back(t.length_);
+  return t;
+}
+
 double Track::Wrap(double s_m) const {
   double s = std::fmod(s_m, length_);
   if (s < 0.0) s += length_;

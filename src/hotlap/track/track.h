@@ -84,6 +84,13 @@ class Track {
                           const TrackStart& start,
                           const std::optional<ClosureError>& closure_before_correction = {});
 
+  /// The same ribbon driven `laps` times as one track (a stint: ocp/stint.h): length and winding
+  /// times `laps`, the centre line's position repeating and its heading continuing by the turns of
+  /// the laps before. InputError unless laps >= 1.
+  Track Repeated(int laps) const;
+  /// Laps this track repeats (1 unless made by Repeated()).
+  int laps() const { return laps_; }
+
   /// The track's name (from its file).
   const std::string& name() const { return name_; }
   /// Length of the centre line over one lap, m.
@@ -123,6 +130,7 @@ class Track {
   std::string name_;
   double length_ = 0.0;
   int winding_ = 0;
+  int laps_ = 1;
   ClosureError closure_before_;
   ClosureError spread_;
   std::vector<double> knots_;  // size pieces + 1

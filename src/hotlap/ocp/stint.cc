@@ -1,0 +1,253 @@
+#include "hotlap/ocp/stint.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "hotlap/common/error.h"
+#include "hotlap/common/units.h"
+
+namespace hotlap::ocp {
+namespace {
+
+// Linear interpolation of `values` (at the uniform nodes of `distance`) at distance s.
+double At(const std::vector<double>& distance, const std::vector<double>& values, double s) {
+  const auto it = std::upper_bound(distance.begin(), distance.end(), s);
+  if (it == distance.begin()) return values.front();
+  if (it == distance.end()) return values.back();
+  const size_t j = static_cast<size_t>(it - distance.begin());
+  const double w = (s - distance[j - 1]) / (distance[j] - distance[j - 1]);
+  return values[j - 1] + w * (values[j] - values[j - 1]);
+}
+
+// The thermal state at the last node of a solution: where the next lap starts.
+sim::ReplayInitialState EndState(const LapSolution& s) {
+  sim::ReplayInitialState e;
+  for (int c = 0; c < 4; ++c) {
+    const CornerTrace& t = s.corners[c];
+    e.tyres[c] = {t.tread_temp.back(), t.carcass_temp.back(), t.wear.back()};
+    e.brakes[c] = {t.disc_temp.back(), t.calliper_temp.back()};
+  }
+  return e;
+}
+
+vehicle::Car WithMass(const vehicle::Car& car, double mass_kg) {
+  vehicle::Car c = car;
+  c.vehicle->chassis.mass = mass_kg;
+  return c;
+}
+
+double Seconds(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+}  // namespace
+
+vehicle::Car StintCar(const vehicle::Car& car, double wear_scale) {
+  vehicle::Car c = car;
+  for (tyre::TyreFile& t : c.tyres) t.params.wear_coeff *= wear_scale;
+  return c;
+}
+
+std::vector<StintLap> StintLaps(const LapSolution& solution, const track::Track& single_track,
+                                int laps, double fuel_start_kg,
+                                const std::vector<double>& lap_mass_kg, double bsfc_kg_per_J,
+                                double driveline_efficiency) {
+  const std::vector<double>& d = solution.distance;
+  const double length = single_track.length_m();
+  std::vector<StintLap> out;
+  double fuel = fuel_start_kg;
+  for (int i = 0; i < laps; ++i) {
+    StintLap lap;
+    lap.lap = i + 1;
+    const double s0 = i * length, s1 = (i + 1) * length;
+    lap.time_s = At(d, solution.time, s1) - At(d, solution.time, s0);
+    lap.mass_kg = i < static_cast<int>(lap_mass_kg.size()) ? lap_mass_kg[i] : 0.0;
+    for (int c = 0; c < 4; ++c) lap.wear_end_mm[c] = At(d, solution.corners[c].wear, s1);
+    // Nodes of the lap: s0 <= d <= s1 (a node on the line belongs to both laps' peaks).
+    double burnt = 0.0;
+    for (size_t k = 0; k < d.size(); ++k) {
+      if (d[k] < s0 - 1e-9 || d[k] > s1 + 1e-9) continue;
+      lap.top_speed_mps = std::max(lap.top_speed_mps, std::hypot(solution.u[k], solution.v[k]));
+      for (int c = 0; c < 4; ++c) {
+        const CornerTrace& t = solution.corners[c];
+        lap.peak_tread_temp_K[c] = std::max(lap.peak_tread_temp_K[c], t.tread_temp[k]);
+        lap.peak_carcass_temp_K[c] = std::max(lap.peak_carcass_temp_K[c], t.carcass_temp[k]);
+        lap.peak_disc_temp_K[c] = std::max(lap.peak_disc_temp_K[c], t.disc_temp[k]);
+      }
+      // The engine's work over the interval to the next node, if it is in the lap.
+      if (k + 1 < d.size() && d[k + 1] <= s1 + 1e-9) {
+        const double dt = solution.time[k + 1] - solution.time[k];
+        burnt += 0.5 * (solution.drive_power[k] + solution.drive_power[k + 1]) * dt /
+                 driveline_efficiency * bsfc_kg_per_J;
+      }
+    }
+    lap.fuel_burnt_kg = fuel_start_kg > 0.0 ? burnt : 0.0;
+    fuel -= lap.fuel_burnt_kg;
+    lap.fuel_end_kg = fuel;
+    out.push_back(lap);
+  }
+  return out;
+}
+
+SolveResult ConcatenateLaps(const std::vector<const SolveResult*>& laps,
+                            const LapLayout& lap_layout) {
+  const LapLayout& L = lap_layout;
+  const int n_laps = static_cast<int>(laps.size());
+  const int I = L.intervals();
+  if (n_laps < 1 || I < 1) throw std::invalid_argument("ConcatenateLaps: no laps");
+  for (const SolveResult* r : laps) {
+    if (r->x.size() != static_cast<size_t>(L.variables()) ||
+        r->z_lower.size() != r->x.size() || r->z_upper.size() != r->x.size() ||
+        r->lambda.size() != static_cast<size_t>(L.rows())) {
+      throw std::invalid_argument("ConcatenateLaps: a lap's solve is not of the layout given");
+    }
+  }
+  const LapLayout S = L.WithNodes(n_laps * I + 1);
+  SolveResult out;
+  out.x.resize(S.variables());
+  out.z_lower.resize(S.variables());
+  out.z_upper.resize(S.variables());
+  out.lambda.resize(S.rows());
+  // The lap and its node for stint node k (the last node: the last lap's last).
+  const auto node = [&](int k) {
+    const int lap = std::min(k / I, n_laps - 1);
+    return std::pair{lap, k - lap * I};
+  };
+  const int vpn = L.vars_per_node, rpn = L.rows_per_node, dpi = L.defects_per_interval;
+  for (int k = 0; k < S.nodes; ++k) {
+    const auto [lap, local] = node(k);
+    for (int i = 0; i < vpn; ++i) {
+      out.x[k * vpn + i] = laps[lap]->x[local * vpn + i];
+      out.z_lower[k * vpn + i] = laps[lap]->z_lower[local * vpn + i];
+      out.z_upper[k * vpn + i] = laps[lap]->z_upper[local * vpn + i];
+    }
+    for (int i = 0; i < rpn; ++i) out.lambda[k * rpn + i] = laps[lap]->lambda[local * rpn + i];
+  }
+  // Rows after the node equations: defects per interval, the closure, then the rate blocks.
+  const int lap_defects = L.nodes * rpn, stint_defects = S.nodes * rpn;
+  const int lap_closure = lap_defects + I * dpi, stint_closure = stint_defects + S.intervals() * dpi;
+  const int lap_rates = lap_closure + L.closure_rows, stint_rates = stint_closure + S.closure_rows;
+  for (int j = 0; j < S.intervals(); ++j) {
+    const int lap = j / I, local = j % I;
+    for (int i = 0; i < dpi; ++i) {
+      out.lambda[stint_defects + j * dpi + i] = laps[lap]->lambda[lap_defects + local * dpi + i];
+    }
+    for (int b = 0; b < L.rate_blocks; ++b) {
+      for (int i = 0; i < 2; ++i) {
+        out.lambda[stint_rates + b * 2 * S.intervals() + 2 * j + i] =
+            laps[lap]->lambda[lap_rates + b * 2 * I + 2 * local + i];
+      }
+    }
+  }
+  for (int i = 0; i < L.closure_rows; ++i) {
+    out.lambda[stint_closure + i] = laps.back()->lambda[lap_closure + i];
+  }
+  return out;
+}
+
+StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
+                       const StintOptions& options, const StintLog& log) {
+  vehicle::RequireVehicle(car, "a stint");
+  if (options.laps < 1 || options.laps > 100) {
+    throw InputError(fmt::format("--laps: a stint is 1 to 100 laps, not {}", options.laps));
+  }
+  if (!(options.wear_scale >= 0.0) || !std::isfinite(options.wear_scale)) {
+    throw InputError(fmt::format("--wear-scale: {} is not a factor >= 0", options.wear_scale));
+  }
+  const double mass0 = car.vehicle->chassis.mass;
+  if (!(options.fuel_kg >= 0.0) || !(options.fuel_kg < 0.5 * mass0)) {
+    throw InputError(fmt::format("--fuel-kg: {} kg is not fuel a {:.0f} kg car carries",
+                                 options.fuel_kg, mass0));
+  }
+  if (options.lap.thermal_start == ThermalStart::kPeriodic) {
+    throw InputError("a stint's thermal states run on from lap to lap: not periodic");
+  }
+  const double eta = car.vehicle->powertrain.driveline_efficiency;
+  const auto say = [&](const std::string& text) {
+    if (log) log(text);
+  };
+
+  // Every lap of the same mesh: the single lap's spacing rounded to a whole number of intervals.
+  StintOptions o = options;
+  const int intervals = LapNodeCount(track, options.lap.step_m) - 1;
+  o.lap.step_m = track.length_m() / intervals;
+  const vehicle::Car worn = StintCar(car, options.wear_scale);
+  const LapWarmUp warm_up = RunLapWarmUp(worn, track, o.lap);
+
+  // The greedy driver: one optimal lap after another, each from the last one's end.
+  StintResult result;
+  const auto greedy_start = std::chrono::steady_clock::now();
+  sim::ReplayInitialState state = warm_up.start;
+  double fuel = options.fuel_kg;
+  std::vector<double> masses;
+  for (int i = 0; i < options.laps; ++i) {
+    const double mass = mass0 - (options.fuel_kg - fuel);
+    masses.push_back(mass);
+    LapWarmUp w = warm_up;
+    w.start = state;
+    OptimalLapRun run = RunOptimalLap(WithMass(worn, mass), track, o.lap, &w);
+    StintLap lap = StintLaps(run.solution, track, 1, fuel, {mass}, o.bsfc_kg_per_J, eta)[0];
+    lap.lap = i + 1;
+    if (options.fuel_kg > 0.0 && lap.fuel_end_kg < 0.0) {
+      throw InputError(fmt::format("--fuel-kg: {} kg runs out on lap {} of {}", options.fuel_kg,
+                                   i + 1, options.laps));
+    }
+    fuel = lap.fuel_end_kg;
+    say(fmt::format("greedy lap {} of {}: {:.3f} s ({}, {} iterations)", i + 1, options.laps,
+                    lap.time_s, run.solution.solve.message, run.solution.solve.iterations));
+    state = EndState(run.solution);
+    result.greedy_total_time_s += lap.time_s;
+    result.greedy_laps.push_back(lap);
+    result.greedy_runs.push_back(std::move(run));
+  }
+  result.greedy_solve_time_s = Seconds(greedy_start);
+
+  // The stint, from the greedy laps' point and multipliers with their fuel plan.
+  const track::Track stint_track = track.Repeated(options.laps);
+  StintOptions so = o;
+  so.lap.lap_mass_kg = options.fuel_kg > 0.0 ? masses : std::vector<double>{};
+  bool all_ok = true;
+  std::vector<const SolveResult*> solves;
+  for (const OptimalLapRun& r : result.greedy_runs) {
+    all_ok = all_ok && r.solution.solve.ok();
+    solves.push_back(&r.solution.solve);
+  }
+  if (all_ok) {
+    const SolveResult start = ConcatenateLaps(solves, result.greedy_runs.front().solution.layout);
+    so.lap.start_point = start.x;
+    so.lap.ipopt.warm_z_lower = start.z_lower;
+    so.lap.ipopt.warm_z_upper = start.z_upper;
+    so.lap.ipopt.warm_lambda = start.lambda;
+  }
+  // The stint's own guess: QSS laps over the whole stint (only used if a greedy lap failed).
+  LapWarmUp stint_warm = warm_up;
+  if (!all_ok) {
+    OptimalLapOptions qss_only = so.lap;
+    qss_only.thermal_start = ThermalStart::kCar;
+    stint_warm = RunLapWarmUp(worn, stint_track, qss_only);
+    stint_warm.start = warm_up.start;
+  }
+  say(fmt::format("the stint: {} laps as one problem, from the greedy laps...", options.laps));
+  const auto stint_start = std::chrono::steady_clock::now();
+  result.run = RunOptimalLap(worn, stint_track, so.lap, &stint_warm);
+  result.solve_time_s = Seconds(stint_start);
+  result.ipopt_iterations = result.run.solution.solve.iterations;
+  result.laps = StintLaps(result.run.solution, track, options.laps, options.fuel_kg, masses,
+                          o.bsfc_kg_per_J, eta);
+  for (size_t i = 0; i < result.laps.size(); ++i) {
+    result.total_time_s += result.laps[i].time_s;
+    result.fuel_plan_error_kg =
+        std::max(result.fuel_plan_error_kg,
+                 std::abs(result.laps[i].fuel_burnt_kg - result.greedy_laps[i].fuel_burnt_kg));
+  }
+  say(fmt::format("the stint: {} after {} iterations in {:.1f} s: {:.3f} s against the greedy "
+                  "{:.3f} s",
+                  result.run.solution.solve.message, result.ipopt_iterations, result.solve_time_s,
+                  result.total_time_s, result.greedy_total_time_s));
+  return result;
+}
+
+}  // namespace hotlap::ocp
