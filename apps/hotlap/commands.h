@@ -77,6 +77,9 @@ CommandRunner RegisterFeCommand(CLI::App& app);
 /// `hotlap sweep`: hands its arguments to the Python package's hotlap.sweep (cmd_sweep.cc).
 CommandRunner RegisterSweepCommand(CLI::App& app);
 
+/// `hotlap stint`: a stint as one optimal-control problem against the greedy driver.
+CommandRunner RegisterStintCommand(CLI::App& app);
+
 /// Option checks with plain messages ("must be positive, not -5"); CLI11's own PositiveNumber and
 /// NonNegativeNumber print their range's bound as a 300-digit number.
 inline const CLI::Validator kPositive(

@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   add(&hotlap::app::RegisterAbsCommand);
   add(&hotlap::app::RegisterFeCommand);
   add(&hotlap::app::RegisterSweepCommand);
+  add(&hotlap::app::RegisterStintCommand);
 
   try {
     app.parse(argc, argv);

@@ -77,11 +77,13 @@ TEST_F(StintTest, TwoLapsContinuousAndNoSlowerThanTheGreedyDriver) {
   // The greedy laps are a feasible point of the same problem (but for the jumps at the line):
   // the stint is never slower by more than the solver's tolerance.
   EXPECT_LE(r.total_time_s, r.greedy_total_time_s + 2e-3);
-  std::printf("stint %.4f (%.4f + %.4f) greedy %.4f (%.4f + %.4f) fuel %.3f %.3f err %.3f its %d %.1f s, greedy %.1f s\n",
-              r.total_time_s, r.laps[0].time_s, r.laps[1].time_s, r.greedy_total_time_s,
-              r.greedy_laps[0].time_s, r.greedy_laps[1].time_s, r.laps[0].fuel_burnt_kg,
-              r.laps[1].fuel_burnt_kg, r.fuel_plan_error_kg, r.ipopt_iterations, r.solve_time_s,
-              r.greedy_solve_time_s);
+  std::printf(
+      "stint %.4f (%.4f + %.4f) greedy %.4f (%.4f + %.4f) fuel %.3f %.3f err %.3f its %d %.1f s, "
+      "greedy %.1f s\n",
+      r.total_time_s, r.laps[0].time_s, r.laps[1].time_s, r.greedy_total_time_s,
+      r.greedy_laps[0].time_s, r.greedy_laps[1].time_s, r.laps[0].fuel_burnt_kg,
+      r.laps[1].fuel_burnt_kg, r.fuel_plan_error_kg, r.ipopt_iterations, r.solve_time_s,
+      r.greedy_solve_time_s);
 }
 
 }  // namespace

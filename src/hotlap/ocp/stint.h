@@ -47,11 +47,11 @@ struct StintOptions {
 
 /// One lap of a stint.
 struct StintLap {
-  int lap = 0;              ///< 1-based
-  double time_s = 0.0;      ///< lap time
+  int lap = 0;          ///< 1-based
+  double time_s = 0.0;  ///< lap time
   double top_speed_mps = 0.0;
-  double mass_kg = 0.0;     ///< the car's mass over the lap
-  double fuel_end_kg = 0.0; ///< fuel aboard at the end of the lap
+  double mass_kg = 0.0;      ///< the car's mass over the lap
+  double fuel_end_kg = 0.0;  ///< fuel aboard at the end of the lap
   double fuel_burnt_kg = 0.0;
   std::array<double, 4> peak_tread_temp_K{}, peak_carcass_temp_K{}, peak_disc_temp_K{};
   std::array<double, 4> wear_end_mm{};  ///< tread depth lost since the stint's start
@@ -69,9 +69,9 @@ struct StintResult {
   /// The greatest difference between the fuel the stint's laps were given (the greedy plan) and
   /// the fuel they burn, kg.
   double fuel_plan_error_kg = 0.0;
-  double solve_time_s = 0.0;       ///< the stint's own solve
+  double solve_time_s = 0.0;  ///< the stint's own solve
   double greedy_solve_time_s = 0.0;
-  int ipopt_iterations = 0;        ///< the stint's own solve
+  int ipopt_iterations = 0;  ///< the stint's own solve
   bool ok() const { return run.solution.solve.ok(); }
 };
 

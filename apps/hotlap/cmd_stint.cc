@@ -1,0 +1,143 @@
+// `hotlap stint`: N laps as one optimal-control problem, with wear, carcass heat and fuel carried
+// from lap to lap, against the greedy driver's N single optimal laps (docs/optimal-control.md,
+// "Stints").
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "hotlap/common/data_path.h"
+#include "hotlap/common/error.h"
+#include "hotlap/common/json_output.h"
+#include "hotlap/common/output_folder.h"
+#include "hotlap/common/units.h"
+#include "hotlap/ocp/optimal_run.h"
+#include "hotlap/ocp/solver_memory.h"
+#include "hotlap/ocp/stint_output.h"
+#include "hotlap/track/track_io.h"
+#include "hotlap/vehicle/car.h"
+
+namespace hotlap::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct StintArgs {
+  std::string track = "darlington";
+  std::string car = "gen7";
+  std::vector<std::string> set;
+  int laps = 3;
+  double wear_scale = 1.0;
+  double fuel_kg = 40.0;
+  double bsfc_g_per_kWh = 300.0;
+  std::optional<double> disc_limit_C;
+  ocp::OptimalRunOptions run;
+  std::string out, json;
+};
+
+int RunStint(const StintArgs& a) {
+  const auto started = std::chrono::steady_clock::now();
+  CheckOutputDirectory(a.out, "--out");
+  if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
+  const vehicle::Car car =
+      vehicle::LoadCar(ResolveCarFile(a.car), vehicle::ParseCarOverrides(a.set));
+  vehicle::RequireVehicle(car, "a stint");
+  const track::Track track = track::LoadTrack(a.track);
+  ocp::StintOptions o;
+  o.laps = a.laps;
+  o.wear_scale = a.wear_scale;
+  o.fuel_kg = a.fuel_kg;
+  o.bsfc_kg_per_J = a.bsfc_g_per_kWh * 1e-3 / 3.6e6;
+  o.lap = ocp::MakeOptimalLapOptions(a.run);
+  if (a.disc_limit_C) {
+    if (!(*a.disc_limit_C > 0.0 && *a.disc_limit_C < 1500.0)) {
+      throw InputError(
+          fmt::format("--disc-limit-C: {:g} degC is not in (0, 1500)", *a.disc_limit_C));
+    }
+    o.lap.front_disc_limit = CelsiusToKelvin(*a.disc_limit_C);
+  }
+  ocp::KeepSolverMemory();
+  fmt::print("hotlap stint: {} laps of {} ({:.1f} m) with car '{}', wear x {:g}, {:g} kg of fuel\n",
+             a.laps, track.name(), track.length_m(), car.name, a.wear_scale, a.fuel_kg);
+  std::fflush(stdout);
+  const ocp::StintResult r = ocp::SolveStint(car, track, o, [](const std::string& line) {
+    fmt::print("  {}\n", line);
+    std::fflush(stdout);
+  });
+  fmt::print("{}", ocp::StintText(r));
+  CreateOutputDirectory(a.out, "--out");
+  for (const fs::path& p : ocp::WriteStintFiles(a.out, r, o, car, track)) {
+    fmt::print("wrote {}\n", p.string());
+  }
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  fmt::print("done in {:.1f} s\n", elapsed);
+  if (!a.json.empty()) {
+    WriteJsonFile(a.json, ocp::StintJson(r, o, track.name(), car, elapsed));
+    fmt::print("wrote {}\n", a.json);
+  }
+  return r.ok() ? 0 : 3;
+}
+
+}  // namespace
+
+CommandRunner RegisterStintCommand(CLI::App& app) {
+  auto a = std::make_shared<StintArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "stint",
+      "N laps as one optimal-control problem (wear, carcass heat and fuel carried lap to lap) "
+      "against the greedy driver's lap-by-lap optimal laps");
+  sub->add_option("--track", a->track, "Built-in track name or a track file")
+      ->capture_default_str();
+  sub->add_option("--car", a->car, "Built-in car name or path to a car.yaml")
+      ->capture_default_str();
+  AddSetOption(sub, a->set);
+  sub->add_option("--laps", a->laps, "Laps in the stint")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100));
+  sub->add_option("--wear-scale", a->wear_scale,
+                  "Wear rate times this: N laps stand for about N times this many laps of wear "
+                  "(0: no wear)")
+      ->capture_default_str()
+      ->check(kNonNegative);
+  sub->add_option("--fuel-kg", a->fuel_kg,
+                  "Fuel aboard at the start (in the car's mass), burnt with the engine's work; 0: "
+                  "mass constant")
+      ->capture_default_str()
+      ->check(kNonNegative);
+  sub->add_option("--bsfc-g-per-kWh", a->bsfc_g_per_kWh,
+                  "Brake-specific fuel consumption (assumed 300 g/kWh)")
+      ->capture_default_str()
+      ->check(kPositive);
+  sub->add_option("--disc-limit-C", a->disc_limit_C,
+                  "Front disc temperatures at most this on every lap, degC");
+  sub->add_option("--step-m", a->run.step_m, "Mesh spacing along the centre line, m")
+      ->capture_default_str()
+      ->check(CLI::Range(0.5, 50.0));
+  sub->add_option("--coarse-step-m", a->run.coarse_step_m,
+                  "The greedy laps coarse to fine from this spacing, m (0: off)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 100.0));
+  sub->add_option("--thermal-start", a->run.thermal_start,
+                  "Thermal states at the start: racing, warm or car (docs/optimal-control.md)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"racing", "warm", "car"}));
+  sub->add_option("--ambient-temp-C", a->run.ambient_C, "Air temperature")->capture_default_str();
+  sub->add_option("--track-temp-C", a->run.track_C, "Track surface temperature")
+      ->capture_default_str();
+  sub->add_option("--max-iterations", a->run.max_iterations, "Ipopt's iteration limit per solve")
+      ->capture_default_str()
+      ->check(kPositive);
+  sub->add_option("--out", a->out, "Output folder: stint.csv and stint.html")->required();
+  sub->add_option("--json", a->json, "Write the summary as JSON (docs/json-output.md)");
+  return [a] { return RunStint(*a); };
+}
+
+}  // namespace hotlap::app

@@ -1,0 +1,87 @@
+// `hotlap stint` end to end on a coarse 30 m mesh: two laps, the documented files and JSON keys,
+// the channels CSV with a lap column whose laps add up to the JSON's times, and bad options
+// refused before any work.
+
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "apps/run_hotlap.h"
+#include "hotlap/common/csv.h"
+#include "test_util.h"
+
+namespace hotlap {
+namespace {
+
+namespace fs = std::filesystem;
+using test::Contains;
+
+class StintCommandTest : public test::CommandTest {};
+
+TEST_F(StintCommandTest, TwoLapsWriteTheTableTheChannelsTheJsonAndTheReport) {
+  const fs::path out = dir() / "stint", json = dir() / "stint.json";
+  const test::RunResult r =
+      Run("stint --laps 2 --step-m 30 --coarse-step-m 0 --wear-scale 5 --out " + out.string() +
+          " --json " + json.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_TRUE(Contains(r.out, "greedy lap 2 of 2")) << r.out;
+  EXPECT_TRUE(Contains(r.out, "managing the stint gains")) << r.out;
+  const nlohmann::json j = Json(json);
+  EXPECT_EQ(j.at("command"), "stint");
+  EXPECT_EQ(j.at("status"), "converged");
+  ASSERT_EQ(j.at("laps").size(), 2u);
+  ASSERT_EQ(j.at("greedy_laps").size(), 2u);
+  double sum = 0.0, greedy = 0.0;
+  for (int i = 0; i < 2; ++i) {
+    const nlohmann::json& lap = j["laps"][i];
+    EXPECT_EQ(lap.at("lap"), i + 1);
+    sum += lap.at("lap_time_s").get<double>();
+    greedy += j["greedy_laps"][i].at("lap_time_s").get<double>();
+    for (const char* c : {"fl", "fr", "rl", "rr"}) {
+      for (const char* k :
+           {"peak_tread_temp_C", "peak_carcass_temp_C", "peak_disc_temp_C", "wear_mm"}) {
+        EXPECT_TRUE(lap.at("corners").at(c).at(k).is_number()) << c << " " << k;
+      }
+    }
+  }
+  EXPECT_NEAR(j.at("total_time_s").get<double>(), sum, 1e-6);
+  EXPECT_NEAR(j.at("greedy_total_time_s").get<double>(), greedy, 1e-6);
+  EXPECT_NEAR(j.at("managing_gain_s").get<double>(), greedy - sum, 1e-6);
+  // Wear and fuel carried from lap to lap: more worn and lighter at the end of lap 2.
+  EXPECT_GT(j["laps"][1]["corners"]["rr"]["wear_mm"].get<double>(),
+            j["laps"][0]["corners"]["rr"]["wear_mm"].get<double>());
+  EXPECT_LT(j["laps"][1]["fuel_end_kg"].get<double>(), j["laps"][0]["fuel_end_kg"].get<double>());
+  EXPECT_LT(j["laps"][1]["mass_kg"].get<double>(), j["laps"][0]["mass_kg"].get<double>());
+  for (const char* k : {"solve_time_s", "ipopt_iterations", "fuel_plan_error_kg"}) {
+    EXPECT_TRUE(j.at(k).is_number()) << k;
+  }
+
+  // The channels: one row per node of the whole stint, the lap column 1 then 2.
+  const CsvTable t = ReadCsv(out / "stint.csv");
+  const std::vector<double>& lap = t.values.at(t.ColumnIndex("lap"));
+  const std::vector<double>& time = t.values.at(t.ColumnIndex("time_s"));
+  EXPECT_EQ(lap.front(), 1.0);
+  EXPECT_EQ(lap.back(), 2.0);
+  EXPECT_NEAR(time.back() - time.front(), sum, 1e-6);
+  EXPECT_TRUE(fs::exists(out / "stint.html"));
+}
+
+TEST_F(StintCommandTest, BadOptionsAreRefusedBeforeAnyWork) {
+  const std::string out = " --out " + (dir() / "out").string();
+  for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
+           {"stint --laps 0" + out, "--laps"},
+           {"stint --wear-scale -1" + out, "--wear-scale"},
+           {"stint --fuel-kg 2000" + out, "--fuel-kg: 2000 kg"},
+           {"stint --thermal-start periodic" + out, "--thermal-start"},
+           {"stint --disc-limit-C 300 --step-m 30" + out, "disc starts at"}}) {
+    const test::RunResult r = Run(args);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+    EXPECT_TRUE(Contains(r.err, message)) << args << "\n" << r.err;
+    EXPECT_FALSE(fs::exists(dir() / "out")) << args;
+  }
+}
+
+}  // namespace
+}  // namespace hotlap
