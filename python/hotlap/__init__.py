@@ -32,6 +32,7 @@ from ._hotlap import (  # noqa: F401  (the public API)
     override_keys,
     qss_lap,
     replay,
+    stint,
 )
 from . import _hotlap
 
@@ -50,6 +51,7 @@ __all__ = [
     "override_keys",
     "qss_lap",
     "replay",
+    "stint",
     "tyre_forces",
 ]
 

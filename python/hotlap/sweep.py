@@ -1,7 +1,7 @@
 """Set-up sweeps: many cases of hotlap's laps, on dask.distributed or as shards of a Slurm array.
 
 A case is one row of a case table: the car and track, the method (``qss``, ``ocp``, ``compare``;
-``stint`` when it exists), the method's options, and any car parameter overridden by its dotted
+``stint``), the method's options, and any car parameter overridden by its dotted
 key (``brake_system.front_share``, ``brakes.fl.duct_factor``, ``tyre_forces.rr.pressure_kPa``:
 docs/overrides.md). Each case runs in a worker process of its own (Ipopt with MUMPS is not
 thread-safe: one solve per process at a time) and writes its folder ``OUT/cases/<case>/``
@@ -34,16 +34,18 @@ METHODS = ("qss", "ocp", "compare", "stint")
 
 # Case-table columns besides the car parameter overrides: name -> (type, methods it applies to).
 OPTIONS = {
-    "laps": (int, ("qss",)),
-    "step_m": (float, ("qss", "ocp", "compare")),
+    "laps": (int, ("qss", "stint")),
+    "step_m": (float, ("qss", "ocp", "compare", "stint")),
     "line": (str, ("qss",)),
-    "coarse_step_m": (float, ("ocp", "compare")),
-    "disc_limit_C": (float, ("ocp",)),
+    "coarse_step_m": (float, ("ocp", "compare", "stint")),
+    "disc_limit_C": (float, ("ocp", "stint")),
     "compare_disc_limit_C": (float, ("compare",)),
-    "thermal_start": (str, ("ocp", "compare")),
-    "max_iterations": (int, ("ocp", "compare")),
-    "ambient_temp_C": (float, ("qss", "ocp", "compare")),
-    "track_temp_C": (float, ("qss", "ocp", "compare")),
+    "wear_scale": (float, ("stint",)),
+    "fuel_kg": (float, ("stint",)),
+    "thermal_start": (str, ("ocp", "compare", "stint")),
+    "max_iterations": (int, ("ocp", "compare", "stint")),
+    "ambient_temp_C": (float, ("qss", "ocp", "compare", "stint")),
+    "track_temp_C": (float, ("qss", "ocp", "compare", "stint")),
 }
 BASE_COLUMNS = ("case", "car", "track", "method")
 DEFAULTS = {"car": "gen7", "track": "darlington", "method": "qss"}
@@ -209,14 +211,15 @@ def run_case(case, out):
         k: case[k] for k in ("car", "track", "method", "options", "overrides")}}
     channels = {}
     try:
-        if case["method"] == "stint":
-            raise NotImplementedError("method 'stint' is not available yet (a stint as one optimal-control problem, issue 20)")
         car = hotlap.load_car(case["car"], overrides=case["overrides"]) if case["overrides"] else hotlap.load_car(case["car"])
         track = hotlap.load_track(case["track"])
         options = dict(case["options"])
         if case["method"] == "qss":
             r = hotlap.qss_lap(car, track, **options)
             channels = {"lap.csv": r["channels"]}
+        elif case["method"] == "stint":
+            r = hotlap.stint(car, track, **options)
+            channels = {"stint.csv": r["channels"]}
         else:
             r = hotlap.optimal_lap(car, track, **options)
             channels = {"%s.csv" % label.replace(" ", "_").replace("<=", "le").replace("/", "_"): c
@@ -441,7 +444,7 @@ def _cell(v):
     return "" if v is None else repr(v) if isinstance(v, float) else v
 
 
-HEADLINE = ("lap_time_s", "delta_s", "top_speed_mps", "max_front_disc_temp_C",
+HEADLINE = ("lap_time_s", "total_time_s", "greedy_total_time_s", "managing_gain_s", "delta_s", "top_speed_mps", "max_front_disc_temp_C",
             "corners.fl.peak_disc_temp_C", "corners.fr.peak_disc_temp_C",
             "corners.fl.peak_tread_temp_C", "corners.rr.peak_tread_temp_C", "corners.rr.wear_total_mm",
             "corners.rr.wear_mm")

@@ -18,6 +18,8 @@
 #include "hotlap/ocp/optimal_output.h"
 #include "hotlap/ocp/optimal_run.h"
 #include "hotlap/ocp/optimal_run_json.h"
+#include "hotlap/ocp/stint_output.h"
+#include "hotlap/common/units.h"
 #include "hotlap/track/track.h"
 #include "hotlap/vehicle/car.h"
 #include "py_convert.h"
@@ -95,6 +97,39 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
   return out;
 }
 
+py::dict Stint(const vehicle::Car& car, const track::Track& track, int laps, double wear_scale,
+               double fuel_kg, std::optional<double> disc_limit_C, double step_m,
+               double coarse_step_m, const std::string& thermal_start, double ambient_C,
+               double track_C, int max_iterations) {
+  ocp::OptimalRunOptions run;
+  run.step_m = step_m;
+  run.coarse_step_m = coarse_step_m;
+  run.thermal_start = thermal_start;
+  run.ambient_C = ambient_C;
+  run.track_C = track_C;
+  run.max_iterations = max_iterations;
+  run.second_process = false;
+  ocp::StintOptions o;
+  o.laps = laps;
+  o.wear_scale = wear_scale;
+  o.fuel_kg = fuel_kg;
+  o.lap = ocp::MakeOptimalLapOptions(run);
+  if (disc_limit_C) o.lap.front_disc_limit = CelsiusToKelvin(*disc_limit_C);
+  const auto started = std::chrono::steady_clock::now();
+  ocp::StintResult r;
+  {
+    py::gil_scoped_release release;
+    r = ocp::SolveStint(car, track, o);
+  }
+  const double wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  py::dict out;
+  out["summary"] = ToPython(ocp::StintJson(r, o, track.name(), car, wall_time_s));
+  const sim::ColumnSet columns = ocp::StintColumns(r, track);
+  out["channels"] = ColumnsToDict(columns.names, columns.values);
+  return out;
+}
+
 }  // namespace
 
 void BindOcp(py::module_& m) {
@@ -113,6 +148,18 @@ void BindOcp(py::module_& m) {
         "'channels': {label: {column: array}}, 'cancelled': bool}. progress(label, iteration, "
         "objective_s, infeasibility, optimality) is called at every Ipopt iteration; returning "
         "False stops the solve.");
+  const ocp::StintOptions stint;
+  m.def("stint", &Stint, py::arg("car"), py::arg("track"), py::kw_only(),
+        py::arg("laps") = stint.laps, py::arg("wear_scale") = stint.wear_scale,
+        py::arg("fuel_kg") = stint.fuel_kg, py::arg("disc_limit_C") = py::none(),
+        py::arg("step_m") = defaults.step_m, py::arg("coarse_step_m") = defaults.coarse_step_m,
+        py::arg("thermal_start") = defaults.thermal_start,
+        py::arg("ambient_temp_C") = defaults.ambient_C, py::arg("track_temp_C") = defaults.track_C,
+        py::arg("max_iterations") = defaults.max_iterations,
+        "A stint of `laps` laps as one optimal-control problem (wear, carcass heat and fuel "
+        "carried lap to lap) and the greedy driver's single laps, as `hotlap stint` runs them. "
+        "Returns {'summary': dict (the keys of `hotlap stint --json`), 'channels': {column: "
+        "array} over the whole stint, with its lap column}.");
 }
 
 }  // namespace hotlap::python

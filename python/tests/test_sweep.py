@@ -46,10 +46,13 @@ def test_two_workers_give_the_serial_results_bit_for_bit(tmp_path):
 
 
 def test_a_failing_case_is_recorded_and_the_rest_finish(tmp_path):
-    cases = QSS[:2] + [{"case": "no-laps", "method": "qss", "laps": 0}, {"case": "later", "method": "stint"},
+    cases = QSS[:2] + [{"case": "no-laps", "method": "qss", "laps": 0},
+                       {"case": "worn-out", "method": "stint", "laps": 2, "wear_scale": -1.0},
                        {"case": "typo", "method": "qss", "laps": 1, "brakes.fl.duct_factr": 0.8}]
     summary = sweep.sweep(cases, tmp_path, local_workers=2, progress=None)
-    assert summary["by_status"] == {"ok": 2, "bad input": 2, "not available": 1}
+    assert summary["by_status"] == {"ok": 2, "bad input": 3}
+    with open(tmp_path / "cases" / "worn-out" / "result.json") as f:
+        assert "--wear-scale" in json.load(f)["message"]
     with open(tmp_path / "cases" / "no-laps" / "result.json") as f:
         result = json.load(f)
     assert result["status"] == "bad input" and "laps 0 must be in [1, 1000]" in result["message"]
@@ -137,3 +140,19 @@ def test_case_tables_are_checked_with_suggestions(tmp_path):
     grid.write_text("base: {method: qss, laps: 1}\ngrid:\n  ambient_temp_C: [20, 30]\n  track_temp_C: [30, 40, 50]\n")
     rows = sweep.read_cases(grid)
     assert len(rows) == 6 and rows[1] == {"method": "qss", "laps": 1, "ambient_temp_C": 20, "track_temp_C": 40}
+
+
+def test_a_stint_case_runs_and_reports_its_totals(tmp_path):
+    cases = [{"case": "s", "method": "stint", "laps": 2, "step_m": 30.0, "coarse_step_m": 0.0,
+              "wear_scale": 5.0, "fuel_kg": 20.0}]
+    summary = sweep.sweep(cases, tmp_path, shard=(1, 1), progress=None)
+    assert summary["by_status"] == {"ok": 1}
+    with open(tmp_path / "cases" / "s" / "result.json") as f:
+        result = json.load(f)
+    total = result["summary"]["total_time_s"]
+    assert 50.0 < total < 70.0
+    assert result["summary"]["greedy_total_time_s"] >= total - 2e-3
+    with open(tmp_path / "results.csv") as f:
+        header = f.readline().strip().split(",")
+    assert "total_time_s" in header and "managing_gain_s" in header
+    assert (tmp_path / "cases" / "s" / "stint.csv").stat().st_size > 10000
