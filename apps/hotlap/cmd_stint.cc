@@ -63,6 +63,15 @@ int RunStint(const StintArgs& a) {
     }
     o.lap.front_disc_limit = CelsiusToKelvin(*a.disc_limit_C);
   }
+  // Progress of every solve (the greedy laps' and the stint's), every tenth iteration.
+  o.lap.ipopt.on_iteration = [](int it, double objective, double infeasibility, double optimality) {
+    if (it % 10 == 0) {
+      fmt::print("    iteration {:4d}: objective {:.4f}, infeasibility {:.1e}, optimality {:.1e}\n",
+                 it, objective, infeasibility, optimality);
+      std::fflush(stdout);
+    }
+    return true;
+  };
   ocp::KeepSolverMemory();
   fmt::print("hotlap stint: {} laps of {} ({:.1f} m) with car '{}', wear x {:g}, {:g} kg of fuel\n",
              a.laps, track.name(), track.length_m(), car.name, a.wear_scale, a.fuel_kg);
