@@ -10,6 +10,7 @@
 
 #include "apps/run_hotlap.h"
 #include "hotlap/common/csv.h"
+#include "report/chromium.h"
 #include "test_util.h"
 
 namespace hotlap {
@@ -65,7 +66,13 @@ TEST_F(StintCommandTest, TwoLapsWriteTheTableTheChannelsTheJsonAndTheReport) {
   EXPECT_EQ(lap.front(), 1.0);
   EXPECT_EQ(lap.back(), 2.0);
   EXPECT_NEAR(time.back() - time.front(), sum, 1e-6);
-  EXPECT_TRUE(fs::exists(out / "stint.html"));
+  // The report: the fall-off, four per-corner charts and the two channel charts, drawn without
+  // a script error.
+  const std::string page = test::ReadTextFile(out / "stint.html");
+  EXPECT_TRUE(Contains(page, "Lap time, lap by lap"));
+  EXPECT_TRUE(Contains(page, "greedy (lap by lap)"));
+  EXPECT_TRUE(Contains(page, "Cumulative wear"));
+  EXPECT_TRUE(test::RenderedCleanly(test::RenderInChromium(out / "stint.html", dir()), 7));
 }
 
 TEST_F(StintCommandTest, BadOptionsAreRefusedBeforeAnyWork) {
