@@ -7,19 +7,15 @@
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
+#include "hotlap/common/interpolation.h"
 #include "hotlap/common/units.h"
 
 namespace hotlap::ocp {
 namespace {
 
-// Linear interpolation of `values` (at the uniform nodes of `distance`) at distance s.
+// `values` (at the nodes of `distance`) at distance s, linear between nodes.
 double At(const std::vector<double>& distance, const std::vector<double>& values, double s) {
-  const auto it = std::upper_bound(distance.begin(), distance.end(), s);
-  if (it == distance.begin()) return values.front();
-  if (it == distance.end()) return values.back();
-  const size_t j = static_cast<size_t>(it - distance.begin());
-  const double w = (s - distance[j - 1]) / (distance[j] - distance[j - 1]);
-  return values[j - 1] + w * (values[j] - values[j - 1]);
+  return InterpolateClamped<double>(distance, values, s);
 }
 
 // The thermal state at the last node of a solution: where the next lap starts.
