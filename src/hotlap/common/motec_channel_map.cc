@@ -49,6 +49,9 @@ constexpr std::array kUnits = {
     MotecUnit{"degC", Kind::kTemperature, 1.0, 0.0},
     MotecUnit{"C", Kind::kTemperature, 1.0, 0.0},
     MotecUnit{"K", Kind::kTemperature, 1.0, -273.15},
+    // The degree sign as .ld loggers write it (Latin-1 0xB0, read as UTF-8).
+    MotecUnit{"\u00B0C", Kind::kTemperature, 1.0, 0.0},
+    MotecUnit{"\u00B0F", Kind::kTemperature, 5.0 / 9.0, -32.0 * 5.0 / 9.0},
     MotecUnit{"g", Kind::kAcceleration, kStandardGravity, 0.0},
     MotecUnit{"m/s^2", Kind::kAcceleration, 1.0, 0.0},
     MotecUnit{"deg", Kind::kAngle, std::numbers::pi / 180.0, 0.0},
@@ -201,6 +204,60 @@ MotecConversion MotecConversionFor(std::string_view unit, std::string_view quant
   for (std::string_view u : MotecUnits()) all.emplace_back(u);
   throw InputError(fmt::format("{}: unknown unit '{}' (units read: {}; {} takes {})", where, unit,
                                QuotedList(all), quantity, QuotedList(takes)));
+}
+
+std::vector<MotecChannelPlan> PlanMotecChannels(const std::vector<std::string>& names,
+                                                const std::vector<std::string>& units,
+                                                const MotecChannelMap& map,
+                                                const std::function<std::string(size_t)>& where) {
+  // "Time" and "Distance" are time and distance also without a map entry.
+  static const MotecChannelEntry kTime{"Time", "time", std::nullopt};
+  static const MotecChannelEntry kDistance{"Distance", "distance", std::nullopt};
+  const size_t width = names.size();
+  std::vector<MotecChannelPlan> plans(width);
+  for (size_t c = 0; c < width; ++c) {
+    plans[c].entry = map.Find(names[c]);
+    if (plans[c].entry == nullptr && names[c] == "Time") plans[c].entry = &kTime;
+    if (plans[c].entry == nullptr && names[c] == "Distance") plans[c].entry = &kDistance;
+  }
+  auto map_rank = [&](const MotecChannelEntry* e) {
+    for (size_t i = 0; i < map.entries.size(); ++i) {
+      if (&map.entries[i] == e) return i;
+    }
+    return map.entries.size();  // the built-in Time and Distance
+  };
+  // Of the names that give one hotlap channel, the first in the map's order wins.
+  for (size_t c = 0; c < width; ++c) {
+    for (size_t d = 0; d < width && plans[c].entry != nullptr; ++d) {
+      const MotecChannelEntry* other = plans[d].entry;
+      if (d != c && other != nullptr && other->quantity == plans[c].entry->quantity &&
+          other->corner == plans[c].entry->corner && map_rank(other) < map_rank(plans[c].entry)) {
+        plans[c].entry = nullptr;
+      }
+    }
+  }
+  for (size_t c = 0; c < width; ++c) {
+    MotecChannelPlan& plan = plans[c];
+    if (plan.entry == nullptr) {
+      plan.column = names[c];
+      continue;
+    }
+    const std::string& quantity = plan.entry->quantity;
+    plan.conversion = MotecConversionFor(units[c], quantity, where(c));
+    plan.column = ChannelColumn(quantity, plan.entry->corner, CanonicalUnit(quantity));
+  }
+  return plans;
+}
+
+std::map<std::string, std::vector<std::string>, std::less<>> MotecSources(
+    const MotecChannelMap& map) {
+  std::map<std::string, std::vector<std::string>, std::less<>> sources;
+  for (const MotecChannelEntry& e : map.entries) {
+    std::string key = e.quantity;
+    if (e.corner) key += "_" + std::string(CornerName(*e.corner));
+    sources[key].push_back(e.motec_name);
+  }
+  return sources;
 }
 
 }  // namespace hotlap

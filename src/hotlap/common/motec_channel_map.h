@@ -11,7 +11,10 @@
 /// Pitfalls: several MoTeC names may map to one hotlap channel; the first of them in the map's
 /// order that the file has is used and the others are carried through unmapped.
 
+#include <cstddef>
 #include <filesystem>
+#include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -73,5 +76,31 @@ struct MotecConversion {
 /// or is of another kind than the quantity (e.g. "bar" for a speed), listing the units it takes.
 MotecConversion MotecConversionFor(std::string_view unit, std::string_view quantity,
                                    std::string_view where);
+
+/// What becomes of one channel of a MoTeC log (CSV export or `.ld`).
+struct MotecChannelPlan {
+  /// The map entry that gives its hotlap channel, or nullptr: carried through unmapped.
+  const MotecChannelEntry* entry = nullptr;
+  /// From the logged unit to the hotlap column's canonical unit (identity when unmapped).
+  MotecConversion conversion;
+  /// The hotlap column (e.g. `speed_mps`), or the MoTeC name when unmapped.
+  std::string column;
+};
+
+/// Plans a log's channels `names` (unique) with their logged `units`: a name in `map` becomes its
+/// hotlap channel in the canonical unit; `Time` and `Distance` are `time` and `distance` also
+/// without an entry; where several names give one hotlap channel, the first in the map's order
+/// that the log has wins and the others are carried through. The entries point into `map` (or to
+/// static built-ins): keep `map` alive. Throws MotecConversionFor's InputError for a mapped
+/// channel's unit, with `where(c)` naming channel c (e.g. "FILE:LINE: channel 'X' (column 3)").
+std::vector<MotecChannelPlan> PlanMotecChannels(const std::vector<std::string>& names,
+                                                const std::vector<std::string>& units,
+                                                const MotecChannelMap& map,
+                                                const std::function<std::string(size_t)>& where);
+
+/// For each hotlap channel key of the map (`speed`, `disc_temp_fl`, ...), the MoTeC names that
+/// would give it, in map order, for the missing-channel messages (Telemetry).
+std::map<std::string, std::vector<std::string>, std::less<>> MotecSources(
+    const MotecChannelMap& map);
 
 }  // namespace hotlap

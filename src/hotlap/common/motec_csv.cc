@@ -151,14 +151,6 @@ std::vector<double> ParseBeacons(const Record& record, const std::string& file) 
   return beacons;
 }
 
-// A channel of the export and what becomes of it.
-struct ChannelPlan {
-  std::string name;
-  std::string unit;
-  const MotecChannelEntry* entry = nullptr;  // nullptr: carried through unmapped
-  MotecConversion conversion;
-};
-
 }  // namespace
 
 bool IsMotecCsv(const std::filesystem::path& path) {
@@ -225,55 +217,30 @@ MotecTable ReadMotecCsv(const std::filesystem::path& path, const MotecChannelMap
     throw InputError(fmt::format("{}:{}: no data rows under the units row", file, units.line));
   }
 
-  // Which channel becomes which column: a mapped name (the first in map order of those that give
-  // one hotlap channel), "Time" and "Distance" also without a map entry; the rest unmapped.
-  static const MotecChannelEntry kTime{"Time", "time", std::nullopt};
-  static const MotecChannelEntry kDistance{"Distance", "distance", std::nullopt};
-  std::vector<ChannelPlan> plans(width);
+  // Which channel becomes which column (PlanMotecChannels).
+  std::vector<std::string> channel_names(width);
   for (size_t c = 0; c < width; ++c) {
-    plans[c].name = names.cells[c];
-    plans[c].unit = units.cells[c];
-    if (plans[c].name.empty()) {
+    channel_names[c] = names.cells[c];
+    if (channel_names[c].empty()) {
       throw InputError(fmt::format("{}:{}: channel {} has no name", file, names.line, c + 1));
     }
     for (size_t d = 0; d < c; ++d) {
-      if (plans[d].name == plans[c].name) {
+      if (channel_names[d] == channel_names[c]) {
         throw InputError(fmt::format("{}:{}: channel '{}' (column {}) is also column {}", file,
-                                     names.line, plans[c].name, c + 1, d + 1));
-      }
-    }
-    plans[c].entry = map.Find(plans[c].name);
-    if (plans[c].entry == nullptr && plans[c].name == "Time") plans[c].entry = &kTime;
-    if (plans[c].entry == nullptr && plans[c].name == "Distance") plans[c].entry = &kDistance;
-  }
-  auto map_rank = [&](const MotecChannelEntry* e) {
-    for (size_t i = 0; i < map.entries.size(); ++i) {
-      if (&map.entries[i] == e) return i;
-    }
-    return map.entries.size();  // the built-in Time and Distance
-  };
-  for (size_t c = 0; c < width; ++c) {
-    for (size_t d = 0; d < width && plans[c].entry != nullptr; ++d) {
-      const MotecChannelEntry* other = plans[d].entry;
-      if (d != c && other != nullptr && other->quantity == plans[c].entry->quantity &&
-          other->corner == plans[c].entry->corner && map_rank(other) < map_rank(plans[c].entry)) {
-        plans[c].entry = nullptr;  // another name for the same channel comes first in the map
+                                     names.line, channel_names[c], c + 1, d + 1));
       }
     }
   }
+  const std::vector<MotecChannelPlan> plans =
+      PlanMotecChannels(channel_names, units.cells, map, [&](size_t c) {
+        return fmt::format("{}:{}: channel '{}' (column {})", file, units.line, channel_names[c],
+                           c + 1);
+      });
   std::vector<std::string> unmapped;
   for (size_t c = 0; c < width; ++c) {
-    ChannelPlan& plan = plans[c];
-    if (plan.entry == nullptr) {
-      table.columns.push_back(plan.name);
-      unmapped.push_back(plan.name);
-      continue;
-    }
-    const std::string& quantity = plan.entry->quantity;
-    plan.conversion = MotecConversionFor(
-        plan.unit, quantity,
-        fmt::format("{}:{}: channel '{}' (column {})", file, units.line, plan.name, c + 1));
-    table.columns.push_back(ChannelColumn(quantity, plan.entry->corner, CanonicalUnit(quantity)));
+    table.columns.push_back(plans[c].column);
+    if (plans[c].entry == nullptr) unmapped.push_back(channel_names[c]);
+    out.channels.push_back({channel_names[c], units.cells[c], std::nan(""), 0});
   }
 
   // Data rows.
@@ -287,7 +254,7 @@ MotecTable ReadMotecCsv(const std::filesystem::path& path, const MotecChannelMap
         const std::optional<double> number = ParseNumber(row.cells[c]);
         if (!number) {
           throw InputError(fmt::format("{}:{}: channel '{}' (column {}): '{}' is not a number",
-                                       file, row.line, plans[c].name, c + 1, row.cells[c]));
+                                       file, row.line, channel_names[c], c + 1, row.cells[c]));
         }
         value = plans[c].entry != nullptr ? plans[c].conversion.Apply(*number) : *number;
       }
@@ -319,12 +286,7 @@ MotecTable ReadMotecCsv(const std::filesystem::path& path, const MotecChannelMap
   }
   table.metadata.emplace_back("channel map", map.path.string());
 
-  // Which MoTeC names would give each hotlap channel, for the missing-channel messages.
-  for (const MotecChannelEntry& e : map.entries) {
-    std::string key = e.quantity;
-    if (e.corner) key += "_" + std::string(CornerName(*e.corner));
-    out.sources[key].push_back(e.motec_name);
-  }
+  out.sources = MotecSources(map);
   return out;
 }
 

@@ -13,6 +13,7 @@
 /// Lap numbers: as i2 counts them, the samples before the first beacon are lap 1 (the out lap)
 /// and a sample at or after beacon k (and before beacon k + 1) is lap k + 1.
 
+#include <cstddef>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -23,13 +24,27 @@
 
 namespace hotlap {
 
-/// A MoTeC export as a hotlap table.
+/// One channel of a MoTeC log as logged, before mapping.
+struct MotecSourceChannel {
+  /// The MoTeC name, e.g. "Ground Speed".
+  std::string name;
+  /// The unit as logged, e.g. "km/h".
+  std::string unit;
+  /// The logged rate, Hz, where the format records it per channel (`.ld`); NaN otherwise.
+  double rate_hz;
+  /// The logged samples where the format records them per channel (`.ld`); 0 otherwise.
+  size_t samples = 0;
+};
+
+/// A MoTeC export (or `.ld` log, motec_ld_table.h) as a hotlap table.
 struct MotecTable {
   /// The table with hotlap column names; line numbers are the export's.
   CsvTable table;
   /// For each hotlap channel key (`speed`, `disc_temp_fl`, ...), the MoTeC names of the map that
   /// would give it, for the message when it is missing.
   std::map<std::string, std::vector<std::string>, std::less<>> sources;
+  /// The logged channel of each column of `table` but the last (`lap`), in column order.
+  std::vector<MotecSourceChannel> channels;
 };
 
 /// True if the file's first record (after a byte-order mark) is `"Format","MoTeC CSV File"`.
