@@ -173,7 +173,7 @@ int RunFit(const FitArgs& a, CarFitKind kind) {
 void AddCommonOptions(CLI::App* sub, FitArgs& a) {
   ident::FitOptions& solver = a.options.fit.solver;
   sub->add_option("--telemetry", a.telemetry,
-                  "Logged channels (CSV or MoTeC i2 CSV, docs/telemetry-formats.md)")
+                  "Logged channels (CSV, MoTeC i2 CSV or MoTeC .ld, docs/telemetry-formats.md)")
       ->required();
   AddTelemetryReadOptions(sub, a.channel_map, a.lap);
   sub->add_option("--car", a.car, "Built-in car name or path to a car.yaml (the starting values)")

@@ -118,7 +118,7 @@ CommandRunner RegisterReplayCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "replay", "Run the tyre and brake thermal and wear models over a telemetry log");
   sub->add_option("--telemetry", args->telemetry,
-                  "Input log (CSV or MoTeC i2 CSV, docs/telemetry-formats.md)")
+                  "Input log (CSV, MoTeC i2 CSV or MoTeC .ld, docs/telemetry-formats.md)")
       ->required();
   AddTelemetryReadOptions(sub, args->channel_map, args->lap);
   sub->add_option("--out", args->out, "Output channels CSV")->required();

@@ -104,26 +104,26 @@ TEST(MotecCsvTest, LapsSplitAtTheBeacons) {
   EXPECT_EQ(MotecLapAt(19.35, {9.65, 19.35}), 3);
   EXPECT_EQ(MotecLapAt(5.0, {}), 1);
 
-  const Telemetry lap2 = Telemetry::Read(kMotec, "time", {{}, 2});
+  const Telemetry lap2 = Telemetry::Read(kMotec, "time", {.lap = 2});
   EXPECT_NEAR(lap2.index().front(), 9.7, 1e-12);
   EXPECT_NEAR(lap2.index().back(), 19.3, 1e-12);
   EXPECT_EQ(lap2.size(), 97u);
-  const Telemetry lap1 = Telemetry::Read(kMotec, "time", {{}, 1});
-  const Telemetry lap3 = Telemetry::Read(kMotec, "time", {{}, 3});
+  const Telemetry lap1 = Telemetry::Read(kMotec, "time", {.lap = 1});
+  const Telemetry lap3 = Telemetry::Read(kMotec, "time", {.lap = 3});
   EXPECT_NEAR(lap1.index().back(), 9.6, 1e-12);
   EXPECT_NEAR(lap3.index().front(), 19.4, 1e-12);
   EXPECT_EQ(lap1.size() + lap2.size() + lap3.size(), 291u);
   EXPECT_EQ(lap2.LineOf(0), 18 + 97);  // the file's own line numbers
 
   // The same from the hotlap CSV's lap column.
-  EXPECT_EQ(Telemetry::Read(kEquivalent, "time", {{}, 2}).index(), lap2.index());
+  EXPECT_EQ(Telemetry::Read(kEquivalent, "time", {.lap = 2}).index(), lap2.index());
 }
 
 TEST(MotecCsvTest, LapOutOfRangeNamesTheLapsThereAre) {
-  const std::string m = ErrorOf([] { Telemetry::Read(kMotec, "time", {{}, 4}); });
+  const std::string m = ErrorOf([] { Telemetry::Read(kMotec, "time", {.lap = 4}); });
   EXPECT_TRUE(Contains(m, "darlington_i2.csv: --lap 4: no such lap; the log has laps 1 to 3"));
   const std::string none = ErrorOf([] {
-    Telemetry::Read(test::SourcePath("data/telemetry/darlington_example.csv"), "time", {{}, 1});
+    Telemetry::Read(test::SourcePath("data/telemetry/darlington_example.csv"), "time", {.lap = 1});
   });
   EXPECT_TRUE(Contains(none, "no 'lap' column"));
 }

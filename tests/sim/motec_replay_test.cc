@@ -39,7 +39,7 @@ TEST(MotecReplayTest, SameResultAsTheEquivalentHotlapCsv) {
 
 TEST(MotecReplayTest, OneLapReplays) {
   const Telemetry lap =
-      Telemetry::Read(test::SourcePath("tests/data/motec/darlington_i2.csv"), "time", {{}, 2});
+      Telemetry::Read(test::SourcePath("tests/data/motec/darlington_i2.csv"), "time", {.lap = 2});
   const ColumnSet result = Replay(lap);
   EXPECT_EQ(result.values[0].size(), 97u);
   EXPECT_NEAR(result.values[0].front(), 9.7, 1e-12);

@@ -12,8 +12,7 @@
 #include "hotlap/common/csv.h"
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/error.h"
-#include "hotlap/common/lap_select.h"
-#include "hotlap/common/motec_csv.h"
+#include "hotlap/common/log_table.h"
 #include "hotlap/common/string_match.h"
 #include "hotlap/common/telemetry_limits.h"
 
@@ -233,18 +232,10 @@ Telemetry Telemetry::Read(const std::filesystem::path& path, std::string_view in
         "Telemetry::Read: index quantity must be 'time' or 'distance', not '" +
         std::string(index_quantity) + "'");
   }
-  if (!IsMotecCsv(path)) {
-    CsvTable table = ReadCsv(path);
-    if (options.lap) SelectLap(table, *options.lap);
-    return FromTable(std::move(table), index_quantity);
-  }
-  const std::filesystem::path map_path =
-      options.channel_map.empty() ? MotecChannelMapPath(DataDir()) : options.channel_map;
-  MotecTable motec = ReadMotecCsv(path, LoadMotecChannelMap(map_path));
-  if (options.lap) SelectLap(motec.table, *options.lap);
-  Telemetry log = FromTable(std::move(motec.table), index_quantity);
-  log.source_names_ = std::move(motec.sources);
-  log.channel_map_ = map_path;
+  LogTable read = ReadLogTable(path, options);
+  Telemetry log = FromTable(std::move(read.table), index_quantity);
+  log.source_names_ = std::move(read.sources);
+  log.channel_map_ = std::move(read.channel_map);
   return log;
 }
 

@@ -77,8 +77,12 @@ struct TelemetryReadOptions {
   /// The MoTeC channel map for a MoTeC i2 CSV export (motec_channel_map.h); empty: the shipped
   /// DataDir()/motec_channels.yaml.
   std::filesystem::path channel_map;
-  /// Keep only this lap's rows (the `lap` column; a MoTeC export's comes from its beacons).
+  /// Keep only this lap's rows (the `lap` column; a MoTeC export's comes from its beacons, a
+  /// `.ld` log's from its `.ldx` file's).
   std::optional<int> lap;
+  /// The time base of a MoTeC `.ld` log, Hz; nullopt: its fastest channel's rate
+  /// (motec_ld_table.h).
+  std::optional<double> ld_rate_hz;
 };
 
 /// A telemetry log with every known channel converted to internal SI units on read:
@@ -96,9 +100,10 @@ class Telemetry {
   /// of the same quantity and corner (e.g. `speed_mps` and `speed_kph`) are an InputError naming
   /// both.
   ///
-  /// A MoTeC i2 CSV export (first record `"Format","MoTeC CSV File"`, docs/telemetry-formats.md)
-  /// is read through `options.channel_map` into the same channels as a hotlap CSV of the same
-  /// numbers; a missing channel's message then also names the MoTeC channels that map to it.
+  /// A MoTeC i2 CSV export (first record `"Format","MoTeC CSV File"`) or MoTeC `.ld` log
+  /// (docs/telemetry-formats.md; ReadLogTable in log_table.h tells them apart) is read through
+  /// `options.channel_map` into the same channels as a hotlap CSV of the same numbers; a missing
+  /// channel's message then also names the MoTeC channels that map to it.
   /// `options.lap` keeps one lap's rows (SelectLap).
   static Telemetry Read(const std::filesystem::path& path, std::string_view index_quantity = "time",
                         const TelemetryReadOptions& options = {});
