@@ -138,6 +138,12 @@ TEST(MotecLdTableTest, AChosenRate) {
   const MotecTable t = MotecLdTable(log, Map(), std::nullopt, {.rate_hz = 4.0});
   // 0 .. 1 s at 4 Hz: 0, 0.25, 0.5, 0.75, 1.
   EXPECT_EQ(t.table.values[1], (std::vector<double>{0, 2.5, 5, 7.5, 10}));
+  // A slow channel logged for long and a fast one: too many rows is refused, not allocated.
+  LdLog huge = log;
+  huge.channels.push_back(Channel("Engine RPM", "rpm", 1, std::vector<double>(200000, 1.0)));
+  huge.channels.push_back(Channel("Oil Temp", "degC", 65535, {1.0}));
+  EXPECT_TRUE(Contains(InputErrorOf([&] { MotecLdTable(huge, Map(), std::nullopt); }),
+                       "r.ld: 199999 s at 65535 Hz would be 1.311e+10 rows on the time base"));
   EXPECT_TRUE(
       Contains(InputErrorOf([&] { MotecLdTable(log, Map(), std::nullopt, {.rate_hz = 0.0}); }),
                "r.ld: time base rate 0 Hz"));

@@ -117,7 +117,17 @@ MotecTable MotecLdTable(const LdLog& log, const MotecChannelMap& map,
     }
     base_rate = *options.rate_hz;
   }
-  const auto count = static_cast<size_t>(std::floor(end_s * base_rate + 1e-9)) + 1;
+  // A bound on the table, so that a corrupted rate or count cannot ask for more memory than a
+  // real log needs (a day at 1 kHz is 86.4 million rows).
+  constexpr double kMaxRows = 1e8;
+  const double rows = std::floor(end_s * base_rate + 1e-9) + 1;
+  if (!(rows <= kMaxRows)) {
+    throw InputError(fmt::format(
+        "{}: {:.6g} s at {:g} Hz would be {:.4g} rows on the time base (at most {:g}): a corrupted "
+        "rate or sample count, or choose a lower time base rate",
+        file, end_s, base_rate, rows, kMaxRows));
+  }
+  const auto count = static_cast<size_t>(rows);
 
   // Time first, then the channels in list order.
   std::vector<std::string> names{"Time"};

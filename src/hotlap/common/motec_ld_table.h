@@ -53,8 +53,8 @@ std::optional<std::vector<double>> ReadLdxBeacons(const std::filesystem::path& l
 /// Session, Short Comment (those that are not empty), `Sample Rate` (the time base, Hz), `laps`,
 /// `lap source`, `unmapped channels`, `channel map`. Line numbers are the row numbers + 1. Throws
 /// ParseMotecLd's errors; InputError for a channel named `Time` (the time base's name), a log whose
-/// channels have no samples at all, an `options.rate_hz` that is not positive and finite, and the
-/// unit errors of a mapped channel
+/// channels have no samples at all, an `options.rate_hz` that is not positive and finite, a time
+/// base of more than 10^8 rows, and the unit errors of a mapped channel
 /// ("FILE: channel 'NAME' (descriptor at byte N): ...").
 MotecTable ReadMotecLdTable(const std::filesystem::path& path, const MotecChannelMap& map,
                             const LdTableOptions& options = {});
