@@ -33,11 +33,11 @@ inline CLI::Option* AddSetOption(CLI::App* sub, std::vector<std::string>& set) {
 inline void AddTelemetryReadOptions(CLI::App* sub, std::string& channel_map,
                                     std::optional<int>& lap) {
   sub->add_option("--channel-map", channel_map,
-                  "MoTeC channel map (YAML) for a MoTeC i2 CSV log; default "
+                  "MoTeC channel map (YAML) for a MoTeC i2 CSV or .ld log; default "
                   "data/motec_channels.yaml (docs/telemetry-formats.md)");
   sub->add_option("--lap", lap,
                   "Use only this lap's samples (the log's 'lap' column; a MoTeC "
-                  "export's from its Beacon Markers)");
+                  "export's from its Beacon Markers, a .ld log's from its .ldx)");
 }
 
 /// `hotlap replay`: thermal and wear models over a telemetry log.
@@ -73,6 +73,9 @@ CommandRunner RegisterAbsCommand(CLI::App& app);
 
 /// `hotlap fe inflate|footprint|roll|abs`: the finite-element tyre's steps (cmd_fe.cc).
 CommandRunner RegisterFeCommand(CLI::App& app);
+
+/// `hotlap log info|convert`: what a log holds, and a log as hotlap CSV (cmd_log.cc).
+CommandRunner RegisterLogCommand(CLI::App& app);
 
 /// `hotlap sweep`: hands its arguments to the Python package's hotlap.sweep (cmd_sweep.cc).
 CommandRunner RegisterSweepCommand(CLI::App& app);

@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
   add(&hotlap::app::RegisterSynthCommand);
   add(&hotlap::app::RegisterAbsCommand);
   add(&hotlap::app::RegisterFeCommand);
+  add(&hotlap::app::RegisterLogCommand);
   add(&hotlap::app::RegisterSweepCommand);
   add(&hotlap::app::RegisterStintCommand);
 
