@@ -76,13 +76,13 @@ double ConvertSiToCanonical(std::string_view quantity, double value_si);
 struct TelemetryReadOptions {
   /// The MoTeC channel map for a MoTeC i2 CSV export (motec_channel_map.h); empty: the shipped
   /// DataDir()/motec_channels.yaml.
-  std::filesystem::path channel_map;
+  std::filesystem::path channel_map{};
   /// Keep only this lap's rows (the `lap` column; a MoTeC export's comes from its beacons, a
   /// `.ld` log's from its `.ldx` file's).
-  std::optional<int> lap;
+  std::optional<int> lap{};
   /// The time base of a MoTeC `.ld` log, Hz; nullopt: its fastest channel's rate
   /// (motec_ld_table.h).
-  std::optional<double> ld_rate_hz;
+  std::optional<double> ld_rate_hz{};
 };
 
 /// A telemetry log with every known channel converted to internal SI units on read:
