@@ -15,6 +15,7 @@ void BindSim(py::module_& m);
 void BindOcp(py::module_& m);
 void BindIdent(py::module_& m);
 void BindReport(py::module_& m);
+void BindLog(py::module_& m);
 }  // namespace hotlap::python
 
 PYBIND11_MODULE(_hotlap, m) {
@@ -39,4 +40,5 @@ PYBIND11_MODULE(_hotlap, m) {
   hotlap::python::BindOcp(m);
   hotlap::python::BindIdent(m);
   hotlap::python::BindReport(m);
+  hotlap::python::BindLog(m);
 }

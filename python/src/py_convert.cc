@@ -1,10 +1,12 @@
 #include "py_convert.h"
 
+#include <algorithm>
 #include <cstring>
 #include <utility>
 
 #include "hotlap/common/csv.h"
 #include "hotlap/common/error.h"
+#include "hotlap/common/lap_select.h"
 
 namespace hotlap::python {
 
@@ -65,9 +67,16 @@ std::vector<double> ToVector(const py::handle& values, const std::string& what) 
   return std::vector<double>(a.data(), a.data() + a.size());
 }
 
-Telemetry LogFrom(const py::handle& telemetry) {
+TelemetryReadOptions ReadOptionsFrom(const py::object& channel_map, std::optional<int> lap) {
+  TelemetryReadOptions options;
+  if (!channel_map.is_none()) options.channel_map = py::str(channel_map).cast<std::string>();
+  options.lap = lap;
+  return options;
+}
+
+Telemetry LogFrom(const py::handle& telemetry, const TelemetryReadOptions& options) {
   if (py::isinstance<py::str>(telemetry) || py::hasattr(telemetry, "__fspath__")) {
-    return Telemetry::Read(py::str(telemetry).cast<std::string>());
+    return Telemetry::Read(py::str(telemetry).cast<std::string>(), "time", options);
   }
   if (!py::isinstance<py::dict>(telemetry)) {
     throw InputError("telemetry: a CSV path or a dict of {column: array}");
@@ -78,6 +87,13 @@ Telemetry LogFrom(const py::handle& telemetry) {
     const std::string name = py::str(key).cast<std::string>();
     table.columns.push_back(name);
     table.values.push_back(ToVector(value, "telemetry['" + name + "']"));
+  }
+  const size_t rows = table.values.empty() ? 0 : table.values.front().size();
+  const bool even = std::all_of(table.values.begin(), table.values.end(),
+                                [&](const std::vector<double>& v) { return v.size() == rows; });
+  if (options.lap && even) {  // uneven columns: FromTable says so
+    for (size_t i = 0; i < rows; ++i) table.line_numbers.push_back(static_cast<int>(i) + 2);
+    SelectLap(table, *options.lap);
   }
   return Telemetry::FromTable(std::move(table));
 }

@@ -4,6 +4,7 @@
 /// to dicts (the same keys as `--json`), column sets to dicts of NumPy arrays, and NumPy arrays
 /// (or sequences) to vectors of doubles.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,8 +33,14 @@ py::dict ColumnsToDict(const std::vector<std::string>& names,
 /// naming `what` if it is not one-dimensional or not numeric.
 std::vector<double> ToVector(const py::handle& values, const std::string& what);
 
-/// A log given as a CSV path (str or os.PathLike) or as {column name with unit: array}
-/// (docs/telemetry-csv.md), read by the library's rules; InputError as Telemetry::Read.
-Telemetry LogFrom(const py::handle& telemetry);
+/// A log given as a path (str or os.PathLike: hotlap CSV, MoTeC i2 CSV or MoTeC `.ld`,
+/// docs/telemetry-formats.md) or as {column name with unit: array} (docs/telemetry-csv.md), read
+/// by the library's rules; InputError as Telemetry::Read. `options` (channel map, lap, `.ld` time
+/// base) apply to a path; a dict takes only `options.lap` (its `lap` column).
+Telemetry LogFrom(const py::handle& telemetry, const TelemetryReadOptions& options = {});
+
+/// The read options from the keyword arguments `channel_map` (None or a path) and `lap` (None or
+/// an int), as `--channel-map` and `--lap`.
+TelemetryReadOptions ReadOptionsFrom(const py::object& channel_map, std::optional<int> lap);
 
 }  // namespace hotlap::python

@@ -39,7 +39,7 @@ py::dict Fit(const vehicle::Car& car, const py::handle& telemetry, const std::st
              const std::map<std::string, double>& wear_per_lap_mm, int threads,
              const std::string& out, double loss_scale, double max_relative_ci, int random_starts,
              uint64_t seed, double sensor_lag_s, double max_step_s, std::optional<int> laps,
-             double wear_sd_mm) {
+             double wear_sd_mm, const py::object& channel_map, std::optional<int> lap) {
   ident::CarFitOptions options;
   std::string command;
   if (kind == "tyre") {
@@ -52,7 +52,7 @@ py::dict Fit(const vehicle::Car& car, const py::handle& telemetry, const std::st
     throw InputError(fmt::format("kind '{}': one of 'tyre', 'contact-length', 'brake'", kind));
   }
   command = "fit " + kind;
-  const Telemetry log = LogFrom(telemetry);
+  const Telemetry log = LogFrom(telemetry, ReadOptionsFrom(channel_map, lap));
   options.corners = ident::ParseCornerList(corners, "corners");
   options.fit.solver.loss = ident::ParseLossKind(loss);
   const auto positive = [](double v, const char* name) {
@@ -143,9 +143,11 @@ void BindIdent(py::module_& m) {
         py::arg("random_starts") = defaults.fit.random_starts, py::arg("seed") = defaults.fit.seed,
         py::arg("sensor_lag_s") = defaults.fit.sensor_lag_s,
         py::arg("max_step_s") = defaults.fit.max_step_s, py::arg("laps") = py::none(),
-        py::arg("wear_sd_mm") = defaults.wear_sd_mm,
-        "Fits the car's 'tyre', 'contact-length' or 'brake' parameters to a log (a CSV path or "
-        "a dict of arrays). Returns {'summary': dict (the keys of `hotlap fit --json`), "
+        py::arg("wear_sd_mm") = defaults.wear_sd_mm, py::arg("channel_map") = py::none(),
+        py::arg("lap") = py::none(),
+        "Fits the car's 'tyre', 'contact-length' or 'brake' parameters to a log (a path to a "
+        "hotlap CSV, MoTeC i2 CSV or MoTeC .ld log, or a dict of arrays; channel_map and lap as "
+        "--channel-map and --lap). Returns {'summary': dict (the keys of `hotlap fit --json`), "
         "'channels': {corner: {quantity_measured_unit, quantity_model_unit: array}}, 'time_s': "
         "array}; with out='fitted/car.yaml' also writes the fitted car's files.");
 }

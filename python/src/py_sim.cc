@@ -42,9 +42,10 @@ std::optional<double> ToKelvin(const std::optional<double>& celsius) {
 py::dict Replay(const vehicle::Car& car, const py::handle& telemetry, bool heat_flows,
                 double max_step_s, std::optional<double> tread_C, std::optional<double> carcass_C,
                 std::optional<double> disc_C, std::optional<double> calliper_C,
-                std::optional<double> ambient_C, std::optional<double> track_C) {
+                std::optional<double> ambient_C, std::optional<double> track_C,
+                const py::object& channel_map, std::optional<int> lap) {
   if (!(max_step_s > 0.0)) throw InputError(fmt::format("max_step_s {} must be > 0", max_step_s));
-  const Telemetry log = LogFrom(telemetry);
+  const Telemetry log = LogFrom(telemetry, ReadOptionsFrom(channel_map, lap));
   sim::InitialTemperatureOverrides overrides;
   overrides.tread_temp = ToKelvin(tread_C);
   overrides.carcass_temp = ToKelvin(carcass_C);
@@ -193,9 +194,12 @@ void BindSim(py::module_& m) {
         py::arg("tread_temp_C") = py::none(), py::arg("carcass_temp_C") = py::none(),
         py::arg("disc_temp_C") = py::none(), py::arg("calliper_temp_C") = py::none(),
         py::arg("ambient_temp_C") = py::none(), py::arg("track_temp_C") = py::none(),
-        "The four tyre and four brake thermal models over a log (a CSV path or a dict of "
-        "arrays keyed by column names with units): {'channels': {column: array}, 'summary': "
-        "dict}, as `hotlap replay` writes them.");
+        py::arg("channel_map") = py::none(), py::arg("lap") = py::none(),
+        "The four tyre and four brake thermal models over a log (a path to a hotlap CSV, MoTeC "
+        "i2 CSV or MoTeC .ld log, or a dict of arrays keyed by column names with units): "
+        "{'channels': {column: array}, 'summary': dict}, as `hotlap replay` writes them. "
+        "channel_map: a MoTeC log's channel map (as --channel-map); lap: only that lap's samples "
+        "(as --lap).");
   m.def("qss_lap", &QssLap, py::arg("car"), py::arg("track"), py::kw_only(), py::arg("laps") = 1,
         py::arg("step_m") = 1.0, py::arg("line") = "min-curvature", py::arg("line_margin_m") = 1.5,
         py::arg("ambient_temp_C") = 25.0, py::arg("track_temp_C") = 40.0,
