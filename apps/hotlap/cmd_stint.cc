@@ -38,7 +38,11 @@ struct StintArgs {
   double fuel_kg = 40.0;
   double bsfc_g_per_kWh = 300.0;
   std::optional<double> disc_limit_C;
-  ocp::OptimalRunOptions run;
+  ocp::OptimalRunOptions run = [] {
+    ocp::OptimalRunOptions o;
+    o.step_m = ocp::StintOptions::kStintStepM;
+    return o;
+  }();
   std::string out, json;
 };
 

@@ -152,7 +152,7 @@ void BindOcp(py::module_& m) {
   m.def("stint", &Stint, py::arg("car"), py::arg("track"), py::kw_only(),
         py::arg("laps") = stint.laps, py::arg("wear_scale") = stint.wear_scale,
         py::arg("fuel_kg") = stint.fuel_kg, py::arg("disc_limit_C") = py::none(),
-        py::arg("step_m") = defaults.step_m, py::arg("coarse_step_m") = defaults.coarse_step_m,
+        py::arg("step_m") = stint.lap.step_m, py::arg("coarse_step_m") = defaults.coarse_step_m,
         py::arg("thermal_start") = defaults.thermal_start,
         py::arg("ambient_temp_C") = defaults.ambient_C, py::arg("track_temp_C") = defaults.track_C,
         py::arg("max_iterations") = defaults.max_iterations,

@@ -41,8 +41,14 @@ struct StintOptions {
   double bsfc_kg_per_J = 0.300 / 3.6e6;
   /// The single lap's options (mesh, disc limit, thermal start, temperatures, Ipopt): each lap of
   /// the stint is on the mesh of the single lap (its step rounded so that a lap is a whole number
-  /// of intervals).
-  OptimalLapOptions lap;
+  /// of intervals). The mesh is 6 m by default, not the single lap's 3 m: a stint is N laps'
+  /// programme, and the Gen-7-like car's Darlington lap on 6 m is within 1 ms of 3 m's.
+  OptimalLapOptions lap = [] {
+    OptimalLapOptions o;
+    o.step_m = kStintStepM;
+    return o;
+  }();
+  static constexpr double kStintStepM = 6.0;
 };
 
 /// One lap of a stint.
