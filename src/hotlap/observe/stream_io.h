@@ -1,0 +1,94 @@
+#pragma once
+/// @file
+/// The observer's line-at-a-time input and output (docs/observer.md, "Streaming"): a telemetry
+/// CSV (docs/telemetry-csv.md) read one line at a time from a file or a pipe, and the estimate
+/// CSV written one line at a time, flushed after every line.
+///
+/// The reader never reads ahead: Next() returns as soon as the line it needs has arrived, so a
+/// sample written into a pipe is estimated before the next one is sent. Each line goes through
+/// Telemetry::FromTable (the same channel names, units and physical limits as every command). An
+/// input channel (speed, forces, slips, ambient and track temperature) with an empty cell holds
+/// its last value (there is no later sample to interpolate to when live); an empty temperature
+/// cell is a dropout. The carcass_temp and wear columns of a log are not read: the car has no such
+/// sensor (a synthetic log's are its truth).
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <istream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hotlap/observe/car_observer.h"
+
+namespace hotlap::observe {
+
+/// Values used where the log has no such column, K.
+struct StreamDefaults {
+  double ambient_temp = 298.15;
+  double track_temp = 313.15;
+};
+
+class TelemetryLineReader {
+ public:
+  /// Reads from `in` (kept by reference); `source` names it in messages (a path or "stdin").
+  TelemetryLineReader(std::istream& in, std::string source, const StreamDefaults& defaults);
+
+  /// The next sample, or nullopt at the end of the input. The first call also reads the
+  /// `# key: value` lines and the header. InputError naming the source, the line and the column
+  /// for a missing header, a ragged row, a cell that is not a number, a missing channel, a time
+  /// that does not increase, or an input channel empty before its first value.
+  std::optional<ObserverSample> Next();
+
+  /// 1-based line of the last sample returned.
+  int line() const { return line_; }
+  /// What reading did to values just outside their physical range (telemetry.h), at most the
+  /// first 20 lines; warning_count() counts them all.
+  const std::vector<std::string>& warnings() const { return warnings_; }
+  long warning_count() const { return warning_count_; }
+  /// The header's metadata lines.
+  const std::vector<std::pair<std::string, std::string>>& metadata() const { return metadata_; }
+
+ private:
+  bool ReadHeader();
+
+  std::istream& in_;
+  std::string source_;
+  StreamDefaults defaults_;
+  int line_ = 0;
+  bool header_read_ = false;
+  std::vector<std::string> columns_;
+  std::vector<std::pair<std::string, std::string>> metadata_;
+  std::optional<ObserverSample> last_;
+  // Whether each corner input (6 per corner) and ambient, track have had a value.
+  std::vector<std::string> warnings_;
+  long warning_count_ = 0;
+};
+
+/// Writes CSV lines to a file (or standard output for "-") as they come, each flushed at once, so
+/// a reader of the file or the pipe sees every line as soon as it is written. Not atomic: the file
+/// grows as the run goes (a run that fails leaves the lines written so far).
+class LineCsvWriter {
+ public:
+  /// Opens (truncates) `path`, "-" for standard output. InputError naming the path and the
+  /// system's reason if it cannot.
+  explicit LineCsvWriter(const std::string& path);
+  ~LineCsvWriter();
+  LineCsvWriter(const LineCsvWriter&) = delete;
+  LineCsvWriter& operator=(const LineCsvWriter&) = delete;
+
+  void WriteHeader(const std::vector<std::string>& columns);
+  /// Numbers in shortest round-trip form, rounded to 9 significant digits; NaN as an empty cell.
+  void WriteRow(const std::vector<double>& values);
+  /// Closes the file (checked: InputError if the data could not be written).
+  void Close();
+
+ private:
+  void Put(const std::string& line);
+  std::string path_;
+  std::FILE* file_ = nullptr;
+  bool is_stdout_ = false;
+};
+
+}  // namespace hotlap::observe
