@@ -68,6 +68,9 @@ CommandRunner RegisterFitCommand(CLI::App& app);
 /// `hotlap synth`: a synthetic measured log from the lap simulation (docs/fitting.md).
 CommandRunner RegisterSynthCommand(CLI::App& app);
 
+/// `hotlap observe`: the live thermal and wear observer over a log or a stream (cmd_observe.cc).
+CommandRunner RegisterObserveCommand(CLI::App& app);
+
 /// `hotlap abs`: ABS braking of one wheel, with scenarios (cmd_abs.cc).
 CommandRunner RegisterAbsCommand(CLI::App& app);
 

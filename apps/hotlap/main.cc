@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   add(&hotlap::app::RegisterOptimiseCommand);
   add(&hotlap::app::RegisterFitCommand);
   add(&hotlap::app::RegisterSynthCommand);
+  add(&hotlap::app::RegisterObserveCommand);
   add(&hotlap::app::RegisterAbsCommand);
   add(&hotlap::app::RegisterFeCommand);
   add(&hotlap::app::RegisterLogCommand);

@@ -1,0 +1,241 @@
+// `hotlap observe`: the live thermal and wear observer over a log or a stream (docs/observer.md).
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "hotlap/common/data_path.h"
+#include "hotlap/common/error.h"
+#include "hotlap/common/json_output.h"
+#include "hotlap/common/output_folder.h"
+#include "hotlap/common/units.h"
+#include "hotlap/observe/car_observer.h"
+#include "hotlap/observe/observer_config.h"
+#include "hotlap/observe/stream_io.h"
+
+namespace hotlap::app {
+
+namespace {
+
+struct ObserveArgs {
+  std::string telemetry, out, json, config, noise_from_fit;
+  std::string car = "gen7";
+  std::vector<std::string> set;  // --set KEY=VALUE
+  bool p5_scale = false;
+  std::optional<double> tread_C, carcass_C, disc_C, calliper_C;
+  double ambient_C = 25.0, track_C = 40.0;
+};
+
+std::optional<double> ToKelvin(const std::optional<double>& celsius) {
+  if (!celsius) return std::nullopt;
+  return CelsiusToKelvin(*celsius);
+}
+
+nlohmann::json Num(double x) {
+  return std::isfinite(x) ? nlohmann::json(RoundSignificant(x, 6)) : nlohmann::json(nullptr);
+}
+
+int RunObserve(const ObserveArgs& a) {
+  if (a.out != "-") CheckOutputFolder(a.out, "--out");
+  if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
+  const auto started = std::chrono::steady_clock::now();
+  // With the estimates on standard output, everything else goes to standard error.
+  std::FILE* text = a.out == "-" ? stderr : stdout;
+
+  const vehicle::Car car =
+      vehicle::LoadCar(ResolveCarFile(a.car), vehicle::ParseCarOverrides(a.set));
+  observe::ObserverConfig config = observe::LoadObserverConfig(
+      a.config.empty() ? observe::DefaultObserverConfigPath() : std::filesystem::path(a.config));
+  if (a.p5_scale) config.p5_scale.estimate = true;
+  if (!a.noise_from_fit.empty()) observe::ApplyFitResidualNoise(a.noise_from_fit, config);
+  observe::ObserverStart start;
+  start.tread_temp = ToKelvin(a.tread_C);
+  start.carcass_temp = ToKelvin(a.carcass_C);
+  start.disc_temp = ToKelvin(a.disc_C);
+  start.calliper_temp = ToKelvin(a.calliper_C);
+
+  std::ifstream file;
+  std::istream* in = &std::cin;
+  if (a.telemetry != "-") {
+    file.open(a.telemetry);
+    if (!file) throw InputError(fmt::format("cannot read '{}'", a.telemetry));
+    in = &file;
+  }
+  observe::TelemetryLineReader reader(*in, a.telemetry == "-" ? "stdin" : a.telemetry,
+                                      {CelsiusToKelvin(a.ambient_C), CelsiusToKelvin(a.track_C)});
+  observe::CarObserver observer(car, config, start);
+  // The first sample is read before the output is opened, so a log refused at its header or
+  // first line leaves no file behind; from then on the estimates are written as they come.
+  std::optional<observe::ObserverSample> sample = reader.Next();
+  if (!sample) {
+    throw InputError(fmt::format("{}: no data lines after the header",
+                                 a.telemetry == "-" ? "stdin" : a.telemetry));
+  }
+  const double first_time = sample->time;
+  observe::LineCsvWriter writer(a.out);
+  writer.WriteHeader(observe::EstimateColumns(config.p5_scale.estimate));
+
+  std::vector<observe::DisagreementWarning> warnings;
+  for (; sample; sample = reader.Next()) {
+    std::vector<observe::DisagreementWarning> raised;
+    try {
+      raised = observer.Step(*sample);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}:{}: {}", a.telemetry == "-" ? "stdin" : a.telemetry,
+                                   reader.line(), e.what()));
+    }
+    writer.WriteRow(observe::EstimateRow(observer));
+    for (observe::DisagreementWarning& w : raised) {
+      fmt::print(stderr, "hotlap: warning: {}\n", w.message);
+      warnings.push_back(std::move(w));
+    }
+  }
+  writer.Close();
+  for (const std::string& w : reader.warnings()) fmt::print(stderr, "hotlap: warning: {}\n", w);
+  if (reader.warning_count() > static_cast<long>(reader.warnings().size())) {
+    fmt::print(stderr, "hotlap: warning: {} more such telemetry warnings\n",
+               reader.warning_count() - static_cast<long>(reader.warnings().size()));
+  }
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const double duration = observer.time() - first_time;
+
+  fmt::print(text, "hotlap observe: {} ({} samples, {:.2f} s of log) with car '{}', noise {}\n",
+             a.telemetry, observer.samples(), duration, car.name, config.source);
+  fmt::print(text, "{:<6} {:>16} {:>16} {:>20} {:>16} {:>16}\n", "corner", "tread degC",
+             "carcass degC", "wear mm", "disc degC", "calliper degC");
+  nlohmann::json corners = nlohmann::json::object();
+  bool all_consistent = true;
+  for (Corner c : kAllCorners) {
+    const observe::CornerEstimate e = observer.Estimate(c);
+    fmt::print(
+        text, "{:<6} {:>16} {:>16} {:>20} {:>16} {:>16}\n", CornerName(c),
+        fmt::format("{:.2f} +- {:.2f}", KelvinToCelsius(e.tread_temp), e.tread_temp_sd),
+        fmt::format("{:.2f} +- {:.2f}", KelvinToCelsius(e.carcass_temp), e.carcass_temp_sd),
+        fmt::format("{:.5f} +- {:.5f}", e.wear, e.wear_sd),
+        fmt::format("{:.1f} +- {:.1f}", KelvinToCelsius(e.disc_temp), e.disc_temp_sd),
+        fmt::format("{:.1f} +- {:.1f}", KelvinToCelsius(e.calliper_temp), e.calliper_temp_sd));
+    nlohmann::json j = {{"tread_temp_C", Num(KelvinToCelsius(e.tread_temp))},
+                        {"tread_temp_sd_C", Num(e.tread_temp_sd)},
+                        {"carcass_temp_C", Num(KelvinToCelsius(e.carcass_temp))},
+                        {"carcass_temp_sd_C", Num(e.carcass_temp_sd)},
+                        {"wear_mm", Num(e.wear)},
+                        {"wear_sd_mm", Num(e.wear_sd)},
+                        {"disc_temp_C", Num(KelvinToCelsius(e.disc_temp))},
+                        {"disc_temp_sd_C", Num(e.disc_temp_sd)},
+                        {"calliper_temp_C", Num(KelvinToCelsius(e.calliper_temp))},
+                        {"calliper_temp_sd_C", Num(e.calliper_temp_sd)}};
+    if (config.p5_scale.estimate) {
+      j["p5_scale"] = Num(e.p5_scale);
+      j["p5_scale_sd"] = Num(e.p5_scale_sd);
+    }
+    nlohmann::json sensors = nlohmann::json::object();
+    for (observe::Sensor s : observe::kAllSensors) {
+      const observe::SensorMonitor& m = observer.monitor(c, s);
+      if (m.readings == 0) continue;
+      const auto [lo, hi] = m.Bounds95();
+      all_consistent = all_consistent && m.Consistent();
+      sensors[std::string(observe::SensorQuantity(s))] = {
+          {"readings", m.readings},
+          {"used", m.used},
+          {"rejected", m.rejected},
+          {"missing", m.missing},
+          {"mean_nis", Num(m.MeanNis())},
+          {"nis_bounds95", {Num(lo), Num(hi)}},
+          {"consistent", m.Consistent()},
+          {"disagreements", m.disagreements},
+          {"disagree_time_s", Num(m.disagree_time_s)}};
+    }
+    j["sensors"] = sensors;
+    corners[std::string(CornerName(c))] = j;
+  }
+  fmt::print(text, "{:<6} {:<14} {:>8} {:>8} {:>8} {:>8} {:>9} {:>19} {}\n", "corner", "sensor",
+             "readings", "used", "rejected", "missing", "mean NIS", "95% bounds", "");
+  for (Corner c : kAllCorners) {
+    for (observe::Sensor s : observe::kAllSensors) {
+      const observe::SensorMonitor& m = observer.monitor(c, s);
+      if (m.readings == 0) continue;
+      const auto [lo, hi] = m.Bounds95();
+      fmt::print(text, "{:<6} {:<14} {:>8} {:>8} {:>8} {:>8} {:>9.3f} {:>19} {}\n", CornerName(c),
+                 observe::SensorQuantity(s), m.readings, m.used, m.rejected, m.missing, m.MeanNis(),
+                 fmt::format("[{:.3f}, {:.3f}]", lo, hi),
+                 m.Consistent() ? "consistent" : "INCONSISTENT");
+    }
+  }
+  fmt::print(text, "{} disagreement warning(s); wrote {} in {:.3f} s ({:.0f} times real time)\n",
+             warnings.size(), a.out == "-" ? "standard output" : a.out, elapsed,
+             elapsed > 0.0 ? duration / elapsed : 0.0);
+  if (!a.json.empty()) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const observe::DisagreementWarning& w : warnings) {
+      list.push_back({{"corner", std::string(CornerName(w.corner))},
+                      {"sensor", std::string(observe::SensorQuantity(w.sensor))},
+                      {"since_s", Num(w.since_s)},
+                      {"time_s", Num(w.time_s)},
+                      {"nis_average", Num(w.nis_average)},
+                      {"message", w.message}});
+    }
+    WriteJsonFile(a.json, {{"command", "observe"},
+                           {"telemetry", a.telemetry},
+                           {"car", car.name},
+                           {"overrides", vehicle::OverridesJson(car.overrides)},
+                           {"noise", config.source},
+                           {"p5_scale_estimated", config.p5_scale.estimate},
+                           {"out", a.out},
+                           {"samples", observer.samples()},
+                           {"duration_s", Num(duration)},
+                           {"wall_time_s", Num(elapsed)},
+                           {"consistent", all_consistent},
+                           {"corners", corners},
+                           {"disagreements", list},
+                           {"telemetry_warnings", reader.warnings()}});
+    fmt::print(text, "wrote {}\n", a.json);
+  }
+  return 0;
+}
+
+}  // namespace
+
+CommandRunner RegisterObserveCommand(CLI::App& app) {
+  auto a = std::make_shared<ObserveArgs>();
+  CLI::App* sub = app.add_subcommand(
+      "observe",
+      "Estimate carcass, wear and brake temperatures live from a log or a stream (Kalman filter)");
+  sub->add_option("--telemetry", a->telemetry,
+                  "Input log (CSV, docs/telemetry-csv.md), or - for a stream on standard input "
+                  "(header first, then one sample a line)")
+      ->required();
+  sub->add_option("--out", a->out,
+                  "Estimates CSV, one line per input line, written and flushed as it goes; - for "
+                  "standard output")
+      ->required();
+  sub->add_option("--car", a->car, "Built-in car name or path to a car.yaml")
+      ->capture_default_str();
+  AddSetOption(sub, a->set);
+  sub->add_option("--config", a->config,
+                  "Noise model (YAML, model: observer_noise); default data/observer/default.yaml");
+  sub->add_option("--noise-from-fit", a->noise_from_fit,
+                  "Sensor noise from a fit's residuals (hotlap fit ... --json FIT.json)");
+  sub->add_flag("--p5-scale", a->p5_scale,
+                "Also estimate a slowly drifting factor on p5 (tread-carcass conductance)");
+  sub->add_option("--json", a->json, "Write the summary as JSON (docs/json-output.md)");
+  sub->add_option("--tread-temp-C", a->tread_C, "Initial tread temperature if not logged");
+  sub->add_option("--carcass-temp-C", a->carcass_C, "Initial carcass temperature");
+  sub->add_option("--disc-temp-C", a->disc_C, "Initial disc temperature if not logged");
+  sub->add_option("--calliper-temp-C", a->calliper_C, "Initial calliper temperature if not logged");
+  sub->add_option("--ambient-temp-C", a->ambient_C, "Air temperature if not logged")
+      ->capture_default_str();
+  sub->add_option("--track-temp-C", a->track_C, "Track temperature if not logged")
+      ->capture_default_str();
+  return [a] { return RunObserve(*a); };
+}
+
+}  // namespace hotlap::app
