@@ -1,0 +1,167 @@
+// End-to-end tests of `hotlap observe`: a log file in, one estimate line per input line out, the
+// JSON summary; the stream through a pipe, one line at a time, answered line by line; refusals.
+
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "apps/run_hotlap.h"
+#include "hotlap/common/csv.h"
+#include "test_util.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using hotlap::test::Contains;
+using hotlap::test::ReadTextFile;
+
+class ObserveCommandTest : public hotlap::test::CommandTest {
+ protected:
+  // One lap at 20 Hz from synth, sensors without lag.
+  fs::path Log() {
+    const fs::path log = dir() / "log.csv";
+    if (!fs::exists(log)) {
+      const auto r = Run("synth --laps 1 --rate-hz 20 --lag-s 0 --out " + log.string());
+      EXPECT_EQ(r.exit_code, 0) << r.err;
+    }
+    return log;
+  }
+};
+
+TEST_F(ObserveCommandTest, WritesOneEstimateLinePerInputLineAndASummary) {
+  const fs::path log = Log(), est = dir() / "est.csv", json = dir() / "o.json";
+  const auto r = Run("observe --telemetry " + log.string() + " --out " + est.string() + " --json " +
+                     json.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const hotlap::CsvTable in = hotlap::ReadCsv(log), out = hotlap::ReadCsv(est);
+  EXPECT_EQ(out.RowCount(), in.RowCount());
+  EXPECT_EQ(out.Column("time_s"), in.Column("time_s"));
+  for (const char* c : {"carcass_temp_fl_C", "carcass_temp_fl_sd_C", "wear_rr_mm", "wear_rr_sd_mm",
+                        "disc_temp_rl_C", "disc_temp_rl_sd_C", "calliper_temp_fr_sd_C"}) {
+    EXPECT_GE(out.ColumnIndex(c), 0) << c;
+  }
+  // The carcass estimate follows the log's carcass channel (its truth plus noise; never read).
+  const auto& carcass = out.Column("carcass_temp_fl_C");
+  const auto& logged = in.Column("carcass_temp_fl_C");
+  EXPECT_NEAR(carcass.back(), logged.back(), 2.0);
+  EXPECT_TRUE(Contains(r.out, "mean NIS"));
+  EXPECT_TRUE(Contains(r.out, "0 disagreement warning(s)"));
+  const nlohmann::json j = Json(json);
+  EXPECT_EQ(j["command"], "observe");
+  EXPECT_EQ(j["samples"], in.RowCount());
+  EXPECT_TRUE(j["corners"]["fl"].contains("carcass_temp_sd_C"));
+  const nlohmann::json& tread = j["corners"]["fl"]["sensors"]["tread_temp"];
+  EXPECT_EQ(tread["readings"], in.RowCount());
+  EXPECT_EQ(tread["used"].get<long>() + tread["rejected"].get<long>() + 1, in.RowCount());
+  EXPECT_EQ(tread["nis_bounds95"].size(), 2u);
+  EXPECT_FALSE(j["corners"]["fl"]["sensors"].contains("carcass_temp"));
+  EXPECT_TRUE(j["disagreements"].is_array());
+}
+
+TEST_F(ObserveCommandTest, AnswersAStreamLineByLine) {
+  const std::vector<std::string> lines = [&] {
+    std::vector<std::string> out;
+    std::string text = ReadTextFile(Log());
+    size_t from = 0;
+    while (from < text.size()) {
+      const size_t end = text.find('\n', from);
+      const std::string line = text.substr(from, end - from);
+      if (!line.empty() && line[0] != '#') out.push_back(line);
+      from = end == std::string::npos ? text.size() : end + 1;
+    }
+    return out;
+  }();
+  ASSERT_GT(lines.size(), 30u);
+  int to_child[2], from_child[2];
+  ASSERT_EQ(pipe(to_child), 0);
+  ASSERT_EQ(pipe(from_child), 0);
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    dup2(to_child[0], 0);
+    dup2(from_child[1], 1);
+    const int null = open("/dev/null", O_WRONLY);
+    dup2(null, 2);
+    close(to_child[1]);
+    close(from_child[0]);
+    execl(HOTLAP_BINARY, HOTLAP_BINARY, "observe", "--telemetry", "-", "--out", "-",
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  close(to_child[0]);
+  close(from_child[1]);
+  std::signal(SIGPIPE, SIG_IGN);
+  std::string received;
+  // Reads until `count` lines have arrived in total, or fails after 20 s.
+  const auto wait_for_lines = [&](size_t count) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (static_cast<size_t>(std::count(received.begin(), received.end(), '\n')) < count) {
+      pollfd p{from_child[0], POLLIN, 0};
+      const int left = static_cast<int>(std::chrono::duration_cast<std::chrono::milliseconds>(
+                                            deadline - std::chrono::steady_clock::now())
+                                            .count());
+      if (left <= 0 || poll(&p, 1, left) <= 0) return false;
+      char buffer[4096];
+      const ssize_t n = read(from_child[0], buffer, sizeof buffer);
+      if (n <= 0) return false;
+      received.append(buffer, static_cast<size_t>(n));
+    }
+    return true;
+  };
+  const auto send = [&](const std::string& line) {
+    const std::string text = line + "\n";
+    return write(to_child[1], text.data(), text.size()) == static_cast<ssize_t>(text.size());
+  };
+  // The header and the first line answer with the estimate header and the first estimate (the
+  // first line is read before the output starts, so a refused log leaves nothing); then each
+  // line with one estimate line, before the next is sent (nothing buffered beyond the line).
+  ASSERT_TRUE(send(lines[0]));
+  ASSERT_TRUE(send(lines[1]));
+  ASSERT_TRUE(wait_for_lines(2)) << "no header and first estimate back";
+  const size_t fed = 30;
+  for (size_t k = 2; k <= fed; ++k) {
+    ASSERT_TRUE(send(lines[k]));
+    ASSERT_TRUE(wait_for_lines(k + 1)) << "no estimate for line " << k;
+    EXPECT_EQ(std::count(received.begin(), received.end(), '\n'), static_cast<long>(k + 1));
+  }
+  close(to_child[1]);
+  // At the end of input the summary follows on standard error; the estimates are complete.
+  char buffer[4096];
+  ssize_t n;
+  while ((n = read(from_child[0], buffer, sizeof buffer)) > 0) received.append(buffer, n);
+  close(from_child[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  EXPECT_EQ(std::count(received.begin(), received.end(), '\n'), static_cast<long>(fed + 1));
+  EXPECT_EQ(received.substr(0, received.find(',')), "time_s");
+}
+
+TEST_F(ObserveCommandTest, RefusesBadInputWithExitTwo) {
+  const fs::path log = Log();
+  auto r = Run("observe --telemetry " + log.string() + " --out " + (dir() / "e.csv").string() +
+               " --config " + (dir() / "missing.yaml").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Contains(r.err, "missing.yaml"));
+  hotlap::test::WriteTextFile(dir() / "short.csv", "time_s,speed_mps\n0,10\n");
+  r = Run("observe --telemetry " + (dir() / "short.csv").string() + " --out " +
+          (dir() / "e2.csv").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Contains(r.err, "fx_fl"));
+  EXPECT_FALSE(fs::exists(dir() / "e2.csv"));  // refused at the first line: no file
+  r = Run("observe --telemetry - --out " + (dir() / "e3.csv").string() + " </dev/null");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Contains(r.err, "no header"));
+  EXPECT_FALSE(fs::exists(dir() / "e3.csv"));
+}
+
+}  // namespace

@@ -1,0 +1,252 @@
+// The whole-car observer on short `hotlap synth` logs with known truth (the 30-lap acceptance
+// stint is bench/observe_bench.cc's BM_ObserverAcceptance30Laps, docs/observer.md): accuracy on
+// the deterministic truth, consistency on the stochastic truth, the gate, the disagreement
+// warning, dropouts, the p5 state and the estimate columns.
+
+#include "hotlap/observe/car_observer.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "hotlap/common/units.h"
+#include "hotlap/observe/observer_config.h"
+#include "hotlap/observe/synth_check.h"
+#include "hotlap/sim/road.h"
+#include "hotlap/sim/synth.h"
+#include "hotlap/track/track_io.h"
+#include "test_util.h"
+
+namespace hotlap::observe {
+namespace {
+
+const vehicle::Car& Gen7() {
+  static const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
+  return car;
+}
+
+ObserverConfig DefaultConfig() {
+  return LoadObserverConfig(test::SourcePath("data/observer/default.yaml"));
+}
+
+// Two laps of Darlington at 100 Hz, 0.5 degC sensors without lag (made once, about 0.3 s).
+const sim::SynthLog& TwoLaps() {
+  static const sim::SynthLog log = [] {
+    sim::SynthOptions o;
+    o.laps = 2;
+    o.rate_hz = 100.0;
+    o.temp_noise_K = 0.5;
+    o.sensor_lag_s = 0.0;
+    return sim::SynthesizeLog(Gen7(), sim::SampleRoad(track::LoadTrack("darlington"), 1.0), o);
+  }();
+  return log;
+}
+
+// The log's samples as the observer takes them: tread and disc read, nothing else.
+std::vector<ObserverSample> Samples(const sim::SynthLog& log) {
+  const sim::ReplayInputs& in = log.inputs;
+  const auto column = [&](const std::string& name) -> const std::vector<double>& {
+    for (size_t i = 0; i < log.columns.size(); ++i) {
+      if (log.columns[i] == name) return log.values[i];
+    }
+    throw std::runtime_error("no column " + name);
+  };
+  std::vector<ObserverSample> out(in.time.size());
+  for (size_t k = 0; k < in.time.size(); ++k) {
+    ObserverSample& s = out[k];
+    s.time = in.time[k];
+    s.ambient_temp = in.ambient_temp[k];
+    s.track_temp = in.track_temp[k];
+    for (Corner c : kAllCorners) {
+      const int i = CornerIndex(c);
+      const std::string n(CornerName(c));
+      const sim::CornerChannels& ch = in.corners[i];
+      s.inputs[i] = {ch.speed[k], ch.fx[k], ch.fy[k], ch.fz[k], ch.slip_angle[k], ch.slip_ratio[k]};
+      s.readings[i].tread_temp = CelsiusToKelvin(column("tread_temp_" + n + "_C")[k]);
+      s.readings[i].disc_temp = CelsiusToKelvin(column("disc_temp_" + n + "_C")[k]);
+    }
+  }
+  return out;
+}
+
+TEST(CarObserverTest, OnTheSynthTruthCarcassAndWearAreAccurate) {
+  const sim::SynthLog& log = TwoLaps();
+  SynthCheckOptions o;
+  o.score_from_s = log.lap_time_s;  // after the first lap
+  o.carcass_offset_K = 4.0;         // the observer starts 4 degC off the true carcass
+  const SynthCheck r = CheckObserverOnSynth(Gen7(), log, DefaultConfig(), o);
+  EXPECT_GT(r.scored, 3000);
+  EXPECT_NEAR(r.disc_missing_fraction, 0.2, 0.05);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_LT(r.carcass_rms_K[i], 1.0) << i;  // issue 26: under 1 degC after the first lap
+    EXPECT_GT(r.wear_truth_mm[i], 0.0);
+    EXPECT_NEAR(r.wear_estimate_mm[i], r.wear_truth_mm[i], 0.1 * r.wear_truth_mm[i]) << i;
+  }
+  EXPECT_EQ(r.rejected, 0);
+  EXPECT_EQ(r.warnings, 0);
+  // The innovations are about chi-square(1) (the deterministic truth has no process noise, so
+  // they may run slightly below 1).
+  EXPECT_GT(r.pooled_mean_nis, 0.95);
+  EXPECT_LT(r.pooled_mean_nis, r.pooled_nis_bounds95.second);
+}
+
+TEST(CarObserverTest, OnTheStochasticTruthTheBandsHoldTheTruthTwoThirdsOfTheTime) {
+  const sim::SynthLog& log = TwoLaps();
+  const ObserverConfig config = DefaultConfig();
+  SynthCheckOptions o;
+  o.stochastic_truth = true;
+  o.score_from_s = log.lap_time_s;
+  // Six seeds: on a two-lap log one run's fraction still swings by +-0.15 (the errors of one
+  // corner stay correlated for tens of seconds).
+  Coverage mean;
+  double nis = 0.0;
+  int consistent = 0, sensors = 0;
+  const int runs = 6;
+  for (int seed = 1; seed <= runs; ++seed) {
+    o.seed = seed;
+    const SynthCheck r = CheckObserverOnSynth(Gen7(), log, config, o);
+    mean.tread += r.coverage.tread / runs;
+    mean.carcass += r.coverage.carcass / runs;
+    mean.wear += r.coverage.wear / runs;
+    mean.disc += r.coverage.disc / runs;
+    mean.calliper += r.coverage.calliper / runs;
+    nis += r.pooled_mean_nis / runs;
+    consistent += r.sensors_consistent;
+    sensors += r.sensors;
+    EXPECT_GT(r.pooled_mean_nis, r.pooled_nis_bounds95.first) << seed;
+    EXPECT_LT(r.pooled_mean_nis, r.pooled_nis_bounds95.second) << seed;
+  }
+  // 68.3% for a consistent filter.
+  EXPECT_NEAR(mean.tread, 0.683, 0.07);
+  EXPECT_NEAR(mean.carcass, 0.683, 0.1);
+  EXPECT_NEAR(mean.disc, 0.683, 0.07);
+  EXPECT_NEAR(nis, 1.0, 0.01);
+  // 95% bounds: about one sensor in twenty outside.
+  EXPECT_GE(consistent, sensors * 85 / 100);
+}
+
+TEST(CarObserverTest, TheGateRejectsOutliersAsIfTheyWereMissing) {
+  const std::vector<ObserverSample> clean = Samples(TwoLaps());
+  std::vector<ObserverSample> spiked = clean, dropped = clean;
+  int spikes = 0;
+  for (size_t k = 500; k < spiked.size(); k += 300) {
+    spiked[k].readings[1].tread_temp += 40.0;  // 80 sigma
+    dropped[k].readings[1].tread_temp = std::nan("");
+    ++spikes;
+  }
+  CarObserver a(Gen7(), DefaultConfig()), b(Gen7(), DefaultConfig()), c(Gen7(), DefaultConfig());
+  double worst = 0.0, moved = 0.0;
+  for (size_t k = 0; k < clean.size(); ++k) {
+    a.Step(clean[k]);
+    b.Step(spiked[k]);
+    c.Step(dropped[k]);
+    const CornerEstimate eb = b.Estimate(Corner::kFrontRight), ec = c.Estimate(Corner::kFrontRight);
+    worst = std::max({worst, std::abs(eb.carcass_temp - ec.carcass_temp),
+                      std::abs(eb.tread_temp - ec.tread_temp)});
+    moved = std::max(moved, std::abs(a.Estimate(Corner::kFrontRight).tread_temp - eb.tread_temp));
+  }
+  EXPECT_EQ(b.monitor(Corner::kFrontRight, Sensor::kTread).rejected, spikes);
+  EXPECT_EQ(a.monitor(Corner::kFrontRight, Sensor::kTread).rejected, 0);
+  EXPECT_EQ(worst, 0.0);  // a rejected reading is as a missing one
+  EXPECT_LT(moved, 0.5);  // and the 40 degC spikes moved nothing by more than the noise
+  EXPECT_EQ(b.monitor(Corner::kFrontRight, Sensor::kTread).readings,
+            static_cast<long>(clean.size()));
+  EXPECT_EQ(c.monitor(Corner::kFrontRight, Sensor::kTread).missing, spikes);
+}
+
+TEST(CarObserverTest, ASensorThatDriftsOffIsWarnedAboutOnceAfterTheSetTime) {
+  std::vector<ObserverSample> samples = Samples(TwoLaps());
+  const double from = 20.0;  // s: the rear-left disc pyrometer reads 8 degC high (16 sigma)
+  for (ObserverSample& s : samples) {
+    if (s.time >= from) s.readings[2].disc_temp += 8.0;
+  }
+  const ObserverConfig config = DefaultConfig();
+  CarObserver observer(Gen7(), config);
+  std::vector<DisagreementWarning> warnings;
+  for (const ObserverSample& s : samples) {
+    for (DisagreementWarning& w : observer.Step(s)) warnings.push_back(w);
+  }
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0].corner, Corner::kRearLeft);
+  EXPECT_EQ(warnings[0].sensor, Sensor::kDisc);
+  EXPECT_GE(warnings[0].since_s, from);
+  EXPECT_LT(warnings[0].since_s, from + 2.0 * config.window_s);
+  EXPECT_NEAR(warnings[0].time_s - warnings[0].since_s, config.disagree_after_s, 0.05);
+  EXPECT_TRUE(test::Contains(warnings[0].message, "rl disc_temp"));
+  // Every reading after the fault is beyond the gate.
+  EXPECT_GT(observer.monitor(Corner::kRearLeft, Sensor::kDisc).rejected,
+            static_cast<long>(0.9 * (samples.back().time - from) * 100.0));
+  // Without the fault, no warning.
+  CarObserver clean(Gen7(), config);
+  for (const ObserverSample& s : Samples(TwoLaps())) EXPECT_TRUE(clean.Step(s).empty());
+}
+
+TEST(CarObserverTest, DropoutsAreCountedAndWidenTheBand) {
+  std::vector<ObserverSample> samples = Samples(TwoLaps());
+  const size_t gap_from = 2000, gap_to = 2300;  // 3 s without the front-left disc
+  CarObserver observer(Gen7(), DefaultConfig());
+  double sd_before = 0.0, sd_in_gap = 0.0;
+  for (size_t k = 0; k < samples.size(); ++k) {
+    if (k >= gap_from && k < gap_to) samples[k].readings[0].disc_temp = std::nan("");
+    observer.Step(samples[k]);
+    if (k == gap_from - 1) sd_before = observer.Estimate(Corner::kFrontLeft).disc_temp_sd;
+    if (k == gap_to - 1) sd_in_gap = observer.Estimate(Corner::kFrontLeft).disc_temp_sd;
+  }
+  EXPECT_EQ(observer.monitor(Corner::kFrontLeft, Sensor::kDisc).missing,
+            static_cast<long>(gap_to - gap_from));
+  EXPECT_GT(sd_in_gap, sd_before);
+  EXPECT_EQ(observer.monitor(Corner::kFrontLeft, Sensor::kCalliper).readings, 0);
+}
+
+TEST(CarObserverTest, TheP5StateFindsAConductanceTheCarFileHasWrong) {
+  // The truth's tread-carcass conductance is 25% above the car file's.
+  vehicle::Car truth_car = Gen7();
+  for (tyre::TyreFile& t : truth_car.tyres) t.params.p5 *= 1.25;
+  sim::SynthOptions so;
+  so.laps = 2;
+  so.rate_hz = 50.0;
+  so.temp_noise_K = 0.5;
+  so.sensor_lag_s = 0.0;
+  const sim::SynthLog log =
+      sim::SynthesizeLog(truth_car, sim::SampleRoad(track::LoadTrack("darlington"), 1.0), so);
+  ObserverConfig config = DefaultConfig();
+  config.p5_scale.estimate = true;
+  config.p5_scale.initial_sd = 0.3;
+  CarObserver observer(Gen7(), config);
+  for (const ObserverSample& s : Samples(log)) observer.Step(s);
+  for (Corner c : kAllCorners) {
+    const CornerEstimate e = observer.Estimate(c);
+    EXPECT_LT(e.p5_scale_sd, 0.1) << CornerName(c);
+    EXPECT_NEAR(e.p5_scale, 1.25, 3.0 * e.p5_scale_sd + 0.01) << CornerName(c);
+    EXPECT_NEAR(e.carcass_temp, log.truth.corners[CornerIndex(c)].carcass_temp.back(), 1.0);
+  }
+}
+
+TEST(CarObserverTest, EstimateColumnsAndRowAgree) {
+  const std::vector<std::string> names = EstimateColumns(false);
+  EXPECT_EQ(names.size(), 1u + 4u * 10u);
+  EXPECT_EQ(names[0], "time_s");
+  EXPECT_EQ(names[3], "carcass_temp_fl_C");
+  EXPECT_EQ(names[4], "carcass_temp_fl_sd_C");
+  EXPECT_EQ(EstimateColumns(true).size(), 1u + 4u * 12u);
+  CarObserver observer(Gen7(), DefaultConfig());
+  observer.Step(Samples(TwoLaps())[0]);
+  const std::vector<double> row = EstimateRow(observer);
+  ASSERT_EQ(row.size(), names.size());
+  EXPECT_EQ(row[0], TwoLaps().inputs.time[0]);
+  // The first reading starts the tread state, with the sensor's standard deviation.
+  EXPECT_NEAR(row[2], 0.5, 1e-12);
+}
+
+TEST(CarObserverTest, RefusesTimeThatDoesNotIncrease) {
+  CarObserver observer(Gen7(), DefaultConfig());
+  const std::vector<ObserverSample> samples = Samples(TwoLaps());
+  observer.Step(samples[1]);
+  const std::string message = test::InputErrorOf([&] { observer.Step(samples[0]); });
+  EXPECT_TRUE(test::Contains(message, "does not follow"));
+}
+
+}  // namespace
+}  // namespace hotlap::observe
