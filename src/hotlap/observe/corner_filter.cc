@@ -20,8 +20,8 @@ namespace {
 // wear rate from terms, tyre_thermal.cc); tests/observe/corner_filter_test.cc checks the
 // prediction against replay, so a model that starts reading another term fails there.
 template <class J>
-tyre::TyreInputTerms<J> Lift(const tyre::TyreInputTerms<double>& t, const J& p5_scale) {
-  tyre::TyreInputTerms<J> j;
+void LiftInto(const tyre::TyreInputTerms<double>& t, const J& p5_scale,
+              tyre::TyreInputTerms<J>& j) {
   j.input.ambient_temp = J(t.input.ambient_temp);
   j.input.track_temp = J(t.input.track_temp);
   j.q1 = J(t.q1);
@@ -35,23 +35,26 @@ tyre::TyreInputTerms<J> Lift(const tyre::TyreInputTerms<double>& t, const J& p5_
   j.inv_tread_capacity = J(t.inv_tread_capacity);
   j.inv_carcass_capacity = J(t.inv_carcass_capacity);
   j.wear_rate_factor = J(t.wear_rate_factor);
-  return j;
 }
 
+// The state-independent, input-dependent brake terms lifted into `j`, whose parameter-only
+// constants are already set (LiftConstants).
 template <class J>
-brake::BrakeInputTerms<J> Lift(const brake::BrakeInputTerms<double>& t) {
-  brake::BrakeInputTerms<J> j;
+void LiftInto(const brake::BrakeInputTerms<double>& t, brake::BrakeInputTerms<J>& j) {
   j.input = {J(t.input.speed), J(t.input.fx), J(t.input.cooling_air_temp)};
   j.power = J(t.power);
   j.disc_at_speed = {J(t.disc_at_speed.a), J(t.disc_at_speed.b)};
   j.calliper_at_speed = {J(t.calliper_at_speed.a), J(t.calliper_at_speed.b)};
   j.cooling_air_temp4 = J(t.cooling_air_temp4);
-  j.constants.pad_conductance = J(t.constants.pad_conductance);
-  j.constants.disc_radiation = J(t.constants.disc_radiation);
-  j.constants.calliper_radiation = J(t.constants.calliper_radiation);
-  j.constants.inv_disc_capacity = J(t.constants.inv_disc_capacity);
-  j.constants.inv_calliper_capacity = J(t.constants.inv_calliper_capacity);
-  return j;
+}
+
+template <class J>
+void LiftConstants(const brake::BrakeConstants<double>& c, brake::BrakeInputTerms<J>& j) {
+  j.constants.pad_conductance = J(c.pad_conductance);
+  j.constants.disc_radiation = J(c.disc_radiation);
+  j.constants.calliper_radiation = J(c.calliper_radiation);
+  j.constants.inv_disc_capacity = J(c.inv_disc_capacity);
+  j.constants.inv_calliper_capacity = J(c.inv_calliper_capacity);
 }
 
 void CheckTemperature(double temp, const char* what, double time) {
@@ -102,35 +105,35 @@ void TyreFilter::PredictWith(const sim::CornerSamples& in, const tyre::TyreTherm
   constexpr bool kFull = std::is_same_v<J, Jet5>;
   // The Jet slot of each state; the p5 factor only in the full path.
   constexpr int kSlots = kFull ? kStates : 2;
-  // Terms in double (for the next stage's series, as replay) and lifted.
-  struct Terms {
-    tyre::TyreInputTerms<double> value;
-    tyre::TyreInputTerms<J> jet;
-  };
+  // Terms in double (for the next stage's series, as replay) and lifted, in the slot ring.
+  using Terms = TermHandle<J>;
+  std::array<TermSlot<J>, 4>* slots;
+  if constexpr (kFull) {
+    slots = &slots5_;
+  } else {
+    slots = &slots2_;
+  }
   const J p5_scale = kFull ? J(x_.mean(kP5Scale), kP5Scale) : J(1.0);
   const auto terms_at = [&](size_t k, double f, const Terms* near) {
-    Terms t;
+    TermSlot<J>& slot = (*slots)[next_slot_];
+    next_slot_ = (next_slot_ + 1) % 4;
     const tyre::TyreInput<double> input = in.TyreInputAt<double>(k, f);
-    t.value = k == 0 && f == 0.0
-                  ? StartTerms(input)
-                  : tyre::CalcTyreInputTerms(params_, constants_, *compound_, input,
-                                             near != nullptr ? &near->value : nullptr);
-    t.jet = Lift<J>(t.value, p5_scale);
-    return t;
+    slot.value = k == 0 && f == 0.0
+                     ? StartTerms(input)
+                     : tyre::CalcTyreInputTerms(params_, constants_, *compound_, input,
+                                                near != nullptr ? &near->slot->value : nullptr);
+    LiftInto(slot.value, p5_scale, slot.jet);
+    // The last stage's terms are kept for the next interval's start.
+    if (k == 1) end_terms_ = slot.value;
+    return Terms{&slot};
   };
   const auto derivative = [&](const tyre::TyreState<J>& x, const Terms& t) {
-    return tyre::CalcTyreDerivatives(p, *compound_, x, t.jet);
+    return tyre::CalcTyreDerivatives(p, *compound_, x, t.slot->jet);
   };
   const tyre::TyreState<J> start{J(x_.mean(kTread), kTread), J(x_.mean(kCarcass), kCarcass),
                                  kFull ? J(x_.mean(kWear), kWear) : J(x_.mean(kWear))};
   tyre::TyreState<J> end = start;
-  // The last stage's terms are kept for the next interval's start.
-  const auto terms_kept = [&](size_t k, double f, const Terms* near) {
-    Terms t = terms_at(k, f, near);
-    if (k == 1) end_terms_ = t.value;
-    return t;
-  };
-  sim::IntegrateOverSamples(in, start, max_step_s_, terms_kept, derivative,
+  sim::IntegrateOverSamples(in, start, max_step_s_, terms_at, derivative,
                             [&](size_t k, const tyre::TyreState<J>& x) {
                               if (k == 1) end = x;
                             });
@@ -146,7 +149,13 @@ void TyreFilter::PredictWith(const sim::CornerSamples& in, const tyre::TyreTherm
   CheckTemperature(x_.mean(kTread), "tread", in.time[1]);
   CheckTemperature(x_.mean(kCarcass), "carcass", in.time[1]);
   const double dt = in.time[1] - in.time[0];
-  x_.cov = f_ * x_.cov * f_.transpose();
+  if constexpr (kFull) {
+    x_.cov = (f_ * x_.cov * f_.transpose()).eval();
+  } else {
+    // Without the p5 state its row and column of P stay zero: the 3x3 block alone.
+    const Eigen::Matrix3d f3 = f_.topLeftCorner<3, 3>();
+    x_.cov.topLeftCorner<3, 3>() = (f3 * x_.cov.topLeftCorner<3, 3>() * f3.transpose()).eval();
+  }
   x_.cov.diagonal() += q_ * dt;
 }
 
@@ -157,24 +166,31 @@ BrakeFilter::BrakeFilter(const brake::BrakeThermalParams<double>& params,
       constants_(brake::CalcBrakeConstants(params)),
       max_step_s_(max_step_s) {
   q_ << process.disc_temp, process.calliper_temp;
+  for (brake::BrakeInputTerms<Jet2>& slot : slots_) LiftConstants(constants_, slot);
 }
 
 void BrakeFilter::Predict(const sim::CornerSamples& in) {
   using J = Jet2;
-  const auto terms_at = [&](size_t k, double f, const brake::BrakeInputTerms<J>*) {
+  // Handles into the slot ring (as the tyre's); the parameter-only constants were lifted once.
+  struct Terms {
+    const brake::BrakeInputTerms<J>* slot = nullptr;
+  };
+  const auto terms_at = [&](size_t k, double f, const Terms*) {
+    brake::BrakeInputTerms<J>& slot = slots_[next_slot_];
+    next_slot_ = (next_slot_ + 1) % 4;
     const brake::BrakeInput<double> input = in.BrakeInputAt<double>(k, f);
     const brake::BrakeInput<double>& e = end_terms_.input;
     // The start is the last interval's end when the inputs are the same (consecutive samples).
-    if (k == 0 && f == 0.0 && have_end_terms_ && e.speed == input.speed && e.fx == input.fx &&
-        e.cooling_air_temp == input.cooling_air_temp) {
-      return Lift<J>(end_terms_);
-    }
-    const brake::BrakeInputTerms<double> t = brake::CalcBrakeInputTerms(params_, constants_, input);
+    const bool reuse = k == 0 && f == 0.0 && have_end_terms_ && e.speed == input.speed &&
+                       e.fx == input.fx && e.cooling_air_temp == input.cooling_air_temp;
+    const brake::BrakeInputTerms<double> t =
+        reuse ? end_terms_ : brake::CalcBrakeInputTerms(params_, constants_, input);
     if (k == 1) end_terms_ = t;
-    return Lift<J>(t);
+    LiftInto(t, slot);
+    return Terms{&slot};
   };
-  const auto derivative = [&](const brake::BrakeState<J>& x, const brake::BrakeInputTerms<J>& t) {
-    return brake::CalcBrakeDerivatives(params_jet_, x, t);
+  const auto derivative = [&](const brake::BrakeState<J>& x, const Terms& t) {
+    return brake::CalcBrakeDerivatives(params_jet_, x, *t.slot);
   };
   const brake::BrakeState<J> start{J(x_.mean(kDisc), kDisc), J(x_.mean(kCalliper), kCalliper)};
   brake::BrakeState<J> end = start;

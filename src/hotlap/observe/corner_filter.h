@@ -17,6 +17,8 @@
 /// Pitfall: the filter treats readings as the model's states (no sensor lag): a lagging sensor's
 /// readings trail the state by its time constant, which shows as disagreement.
 
+#include <algorithm>
+#include <array>
 #include <memory>
 
 #include <Eigen/Core>
@@ -45,8 +47,9 @@ struct Gaussian {
 };
 
 /// The Kalman update for a reading `z` of state `index` (H = e_index') with variance `r`: rejected
-/// when the normalised innovation squared exceeds gate_nis, else the Joseph-form update (keeps P
-/// symmetric and positive semi-definite).
+/// when the normalised innovation squared exceeds gate_nis, else x += k nu, P -= S k k' with
+/// k = P e_index / S: the rank-one form, symmetric by construction, and for a scalar reading the
+/// same as the Joseph form (P - k k' S = (I - k H) P (I - k H)' + r k k') to rounding.
 template <int N>
 UpdateOutcome UpdateScalar(Gaussian<N>& g, int index, double z, double r, double gate_nis) {
   UpdateOutcome out;
@@ -59,9 +62,9 @@ UpdateOutcome UpdateScalar(Gaussian<N>& g, int index, double z, double r, double
   }
   const Eigen::Matrix<double, N, 1> k = g.cov.col(index) / s;
   g.mean += k * out.innovation;
-  Eigen::Matrix<double, N, N> a = Eigen::Matrix<double, N, N>::Identity();
-  a.col(index) -= k;
-  g.cov = a * g.cov * a.transpose() + (r * k) * k.transpose();
+  g.cov.noalias() -= (s * k) * k.transpose();
+  // The read state's variance cannot go below zero however the rounding falls.
+  g.cov(index, index) = std::max(g.cov(index, index), 0.0);
   out.used = true;
   return out;
 }
@@ -97,6 +100,23 @@ class TyreFilter {
   // The input terms at the start of the interval: the last interval's end terms when its inputs
   // are those (consecutive samples), as replay reuses them; computed otherwise.
   tyre::TyreInputTerms<double> StartTerms(const tyre::TyreInput<double>& input);
+
+  // The input terms of one stage, in double and lifted into J. The integrator holds at most three
+  // stages' terms at a time (start, middle, end) and creates them in turn, so four slots used
+  // round robin never overwrite a live one; the integrator passes small handles instead of
+  // copying the terms.
+  template <class J>
+  struct TermSlot {
+    tyre::TyreInputTerms<double> value;
+    tyre::TyreInputTerms<J> jet;
+  };
+  template <class J>
+  struct TermHandle {
+    const TermSlot<J>* slot = nullptr;
+  };
+  std::array<TermSlot<Jet2>, 4> slots2_;
+  std::array<TermSlot<Jet5>, 4> slots5_;
+  int next_slot_ = 0;
 
   bool with_p5_;
   tyre::TyreThermalParams<double> params_;
@@ -138,6 +158,9 @@ class BrakeFilter {
   brake::BrakeConstants<double> constants_;
   bool have_end_terms_ = false;
   brake::BrakeInputTerms<double> end_terms_;
+  // The lifted terms of the stages, used round robin (as TyreFilter's).
+  std::array<brake::BrakeInputTerms<Jet2>, 4> slots_;
+  int next_slot_ = 0;
   Eigen::Matrix<double, kStates, 1> q_;
   double max_step_s_;
   Gaussian<kStates> x_;
