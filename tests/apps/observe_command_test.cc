@@ -162,6 +162,34 @@ TEST_F(ObserveCommandTest, RefusesBadInputWithExitTwo) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_TRUE(Contains(r.err, "no header"));
   EXPECT_FALSE(fs::exists(dir() / "e3.csv"));
+  // Refused further in (an impossible speed 20 rows down): the unfinished file is removed.
+  std::vector<std::string> lines;
+  {
+    const std::string text = hotlap::test::ReadTextFile(log);
+    for (size_t at = 0, end; at < text.size(); at = end + 1) {
+      end = text.find('\n', at);
+      lines.push_back(text.substr(at, end - at));
+    }
+  }
+  size_t h = 0;
+  while (lines.at(h).rfind("time_s,", 0) != 0) ++h;
+  int speed = 0;
+  for (size_t at = 0; lines[h].compare(at, 10, "speed_mps,") != 0;
+       at = lines[h].find(',', at) + 1) {
+    ++speed;
+  }
+  std::string& row = lines.at(h + 20);
+  size_t cell = 0;
+  for (int k = 0; k < speed; ++k) cell = row.find(',', cell) + 1;
+  row.replace(cell, row.find(',', cell) - cell, "-50");
+  std::string text;
+  for (const std::string& l : lines) text += l + "\n";
+  hotlap::test::WriteTextFile(dir() / "bad.csv", text);
+  r = Run("observe --telemetry " + (dir() / "bad.csv").string() + " --out " +
+          (dir() / "e4.csv").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Contains(r.err, "impossible")) << r.err;
+  EXPECT_FALSE(fs::exists(dir() / "e4.csv"));
 }
 
 }  // namespace

@@ -183,7 +183,11 @@ LineCsvWriter::LineCsvWriter(const std::string& path) : path_(path) {
 }
 
 LineCsvWriter::~LineCsvWriter() {
-  if (file_ != nullptr && !is_stdout_) std::fclose(file_);
+  // Not closed: the run stopped on an error, so the file is unfinished: removed, not left.
+  if (file_ != nullptr && !is_stdout_) {
+    std::fclose(file_);
+    std::remove(path_.c_str());
+  }
 }
 
 void LineCsvWriter::Put(const std::string& line) {

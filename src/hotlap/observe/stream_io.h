@@ -74,6 +74,8 @@ class LineCsvWriter {
   /// Opens (truncates) `path`, "-" for standard output. InputError naming the path and the
   /// system's reason if it cannot.
   explicit LineCsvWriter(const std::string& path);
+  /// Without Close() (an error stopped the run) the file is removed: an unfinished estimate
+  /// file is not left behind under its name (standard output is left as it is).
   ~LineCsvWriter();
   LineCsvWriter(const LineCsvWriter&) = delete;
   LineCsvWriter& operator=(const LineCsvWriter&) = delete;
