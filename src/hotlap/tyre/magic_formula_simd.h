@@ -25,9 +25,12 @@
 #include <cstddef>
 
 // libmvec's x86-64 names; other targets (and builds with -DHOTLAP_MF_NO_SIMD, to check that path)
-// evaluate the model with libm, one function at a time.
+// evaluate the model with libm, one function at a time. So does Clang (the sanitizer and fuzzing
+// builds, docs/reliability.md): it checks the AVX2 target of the generic lane templates where
+// GCC checks only the inlined callers, and refuses this file.
 #include <cstdlib>  // defines __GLIBC__ on glibc
-#if defined(__GNUC__) && defined(__x86_64__) && defined(__GLIBC__) && !defined(HOTLAP_MF_NO_SIMD)
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__GLIBC__) && \
+    !defined(HOTLAP_MF_NO_SIMD)
 #define HOTLAP_MF_SIMD 1
 #endif
 
