@@ -1,0 +1,142 @@
+#!/usr/bin/env bash
+# Builds (if needed) and runs hotlap's libFuzzer targets (fuzz/, docs/reliability.md).
+#
+#   bash scripts/fuzz.sh [TARGET|all] [SECONDS]   # default: all, 60 s each
+#   bash scripts/fuzz.sh --list                   # the targets
+#
+# TARGET is a name of fuzz/ without "_fuzz" (tir, telemetry_csv, ...). Targets run one after the
+# other (HOTLAP_FUZZ_JOBS=N: N at a time). Each grows its corpus in fuzz/corpus/TARGET (not in
+# git), starting from the seeds of the shipped data (made afresh in build-fuzz/seeds/TARGET);
+# what it finds (crash-*, leak-*, timeout-*, oom-*) goes to fuzz/findings/TARGET/ (not in git).
+# One line per run is appended to fuzz/stats.tsv (target, seconds, executions, corpus files,
+# outcome). Exits 1 if any target found something. Needs clang (scripts/install-deps.sh --fuzz).
+#
+# Environment: HOTLAP_FUZZ_BUILD (build folder, default build-fuzz), HOTLAP_FUZZ_NO_BUILD=1 (run
+# what is built), HOTLAP_FUZZ_ARGS (more libFuzzer options, e.g. "-max_len=4096").
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$PWD
+build=${HOTLAP_FUZZ_BUILD:-build-fuzz}
+jobs=${HOTLAP_FUZZ_JOBS:-1}
+
+targets_all=(telemetry_csv motec_csv motec_channel_map rig_csv car_yaml tyre_yaml compound_yaml
+  brake_yaml abs_yaml tir track_yaml tum_csv fastest_lap_xml fe_config fe_checkpoint)
+
+if [ "${1:-}" = "--list" ]; then
+  printf '%s\n' "${targets_all[@]}"
+  exit 0
+fi
+which=${1:-all}
+seconds=${2:-60}
+if [ "$which" = "all" ]; then
+  targets=("${targets_all[@]}")
+else
+  if [[ ! " ${targets_all[*]} " =~ " ${which} " ]]; then
+    echo "fuzz.sh: unknown target '$which'; targets: ${targets_all[*]}" >&2
+    exit 2
+  fi
+  targets=("$which")
+fi
+
+# Build: a Clang build with HOTLAP_FUZZ=ON of just the libraries the targets need.
+if [ ! -f "$build/build.ninja" ]; then
+  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+    -DHOTLAP_FUZZ=ON -DHOTLAP_BUILD_TESTS=OFF -DHOTLAP_BUILD_BENCH=OFF \
+    -DHOTLAP_BUILD_PYTHON=OFF >/dev/null
+fi
+build_targets=()
+for t in "${targets[@]}"; do build_targets+=(--target "${t}_fuzz"); done
+if [ -z "${HOTLAP_FUZZ_NO_BUILD:-}" ]; then
+  cmake --build "$build" --parallel "$(nproc)" "${build_targets[@]}"
+fi
+
+# The seeds of each target: shipped files it reads (a long CSV cut to its first lines, so inputs
+# stay small and runs fast), plus fuzz/seeds/TARGET where the data has no such file.
+seeds_of() {
+  case "$1" in
+    telemetry_csv) echo "head:data/telemetry/darlington_example.csv"
+      echo "head:tests/data/motec/darlington_i2_equivalent.csv" ;;
+    motec_csv) echo "head:tests/data/motec/darlington_i2.csv" ;;
+    motec_channel_map) echo data/motec_channels.yaml tests/data/motec_channels.yaml ;;
+    car_yaml) echo data/cars/gen7/car.yaml data/cars/f1-2014/car.yaml ;;
+    tyre_yaml) echo data/cars/gen7/tyres/f?.yaml data/cars/gen7/tyres/r?.yaml data/tyres/*.yaml \
+      data/abs/tyre_235_75r15_brush.yaml ;;
+    compound_yaml) echo data/cars/gen7/tyres/compound.yaml ;;
+    brake_yaml) echo data/cars/gen7/brakes/*.yaml data/abs/brake.yaml ;;
+    abs_yaml) echo data/abs/paper.yaml ;;
+    tir) echo data/cars/gen7/tyres/*.tir tests/data/tir/*/*.tir ;;
+    track_yaml) echo data/tracks/darlington.yaml ;;
+    tum_csv) echo data/tracks/*.csv ;;
+    fastest_lap_xml) echo data/tracks/catalunya-fl.xml ;;
+    fe_config) echo data/fe/*.yaml ;;
+  esac
+}
+dict_of() {
+  case "$1" in
+    *_csv) echo fuzz/dicts/csv.dict ;;
+    *_yaml | motec_channel_map | fe_config) echo fuzz/dicts/yaml.dict ;;
+    tir) echo fuzz/dicts/tir.dict ;;
+    *_xml) echo fuzz/dicts/xml.dict ;;
+  esac
+}
+
+run_one() {
+  local t=$1
+  local seeds=$build/seeds/$t corpus=fuzz/corpus/$t findings=fuzz/findings/$t
+  rm -rf "$seeds"
+  mkdir -p "$seeds" "$corpus" "$findings"
+  local s
+  for s in $(seeds_of "$t"); do
+    if [[ $s == head:* ]]; then
+      head -n 40 "${s#head:}" >"$seeds/$(basename "${s#head:}")"
+    else
+      cp "$s" "$seeds/"
+    fi
+  done
+  if [ -d "fuzz/seeds/$t" ]; then cp fuzz/seeds/"$t"/* "$seeds/"; fi
+  if [ "$t" = fe_checkpoint ]; then HOTLAP_FUZZ_WRITE_SEEDS=$seeds "$build/fuzz/${t}_fuzz"; fi
+  local dict
+  dict=$(dict_of "$t")
+  local log=$build/logs/$t.log
+  mkdir -p "$build/logs"
+  local rc=0
+  # -timeout: an input that takes 10 s is a hang. Leaks are findings (ASan's leak checker).
+  ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1} \
+    UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1} \
+    "$build/fuzz/${t}_fuzz" "$corpus" "$seeds" ${dict:+-dict=$dict} -max_total_time="$seconds" \
+    -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$findings/" \
+    ${HOTLAP_FUZZ_ARGS:-} >"$log" 2>&1 || rc=$?
+  local runs
+  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  local files
+  files=$(find "$corpus" -type f | wc -l)
+  local outcome=ok
+  if [ "$rc" -ne 0 ]; then outcome="FOUND (exit $rc; $log)"; fi
+  printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$(date -u +%FT%TZ)" "$t" "$seconds" "${runs:-?}" "$files" \
+    "$outcome" >>fuzz/stats.tsv
+  echo "fuzz: $t: ${runs:-?} executions in $seconds s, corpus $files files: $outcome"
+  if [ "$rc" -ne 0 ]; then
+    grep -m 3 -E "ERROR|SUMMARY|runtime error|terminate called" "$log" || true
+    return 1
+  fi
+}
+
+status=0
+if [ "$jobs" -le 1 ]; then
+  for t in "${targets[@]}"; do run_one "$t" || status=1; done
+else
+  running=0
+  for t in "${targets[@]}"; do
+    run_one "$t" &
+    running=$((running + 1))
+    if [ "$running" -ge "$jobs" ]; then
+      wait -n || status=1
+      running=$((running - 1))
+    fi
+  done
+  while [ "$running" -gt 0 ]; do
+    wait -n || status=1
+    running=$((running - 1))
+  done
+fi
+exit $status
