@@ -102,8 +102,10 @@ TEST(BrakeHydraulicsTest, DerivativesMatchCentralDifferences) {
   using J = hotlap::Jet2;
   const auto pd = Params();
   // In the linear part (small error) and on the rate limit.
-  for (const auto& [pressure, target] :
+  for (const auto& [pressure_case, target_case] :
        {std::pair{5 * kMPa, 5.2 * kMPa}, std::pair{5 * kMPa, 9 * kMPa}}) {
+    // Copies: Clang 14 cannot capture structured bindings in the lambdas below.
+    const double pressure = pressure_case, target = target_case;
     BrakeHydraulicsParams<J> p = pd.Cast<J>();
     p.time_constant.v[1] = 1.0;  // d/d(tau)
     const J rate = CalcPressureRate(p, J(pressure, 0), J(target));
