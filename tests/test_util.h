@@ -16,6 +16,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -140,5 +141,18 @@ class TempDir {
  private:
   std::filesystem::path path_;
 };
+
+/// The inputs the fuzzers found that once crashed, hung or leaked in a reader (fuzz/,
+/// docs/reliability.md): every file of tests/data/fuzz_regressions/TARGET, sorted. Each reader's
+/// test replays its target's files and expects an InputError from each.
+inline std::vector<std::filesystem::path> FuzzRegressions(const std::string& target) {
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(SourcePath("tests/data/fuzz_regressions/" + target))) {
+    files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
 
 }  // namespace hotlap::test

@@ -200,5 +200,13 @@ TEST_F(BadBrakeFileTest, YamlSyntaxError) {
   EXPECT_TRUE(Contains(m, "YAML syntax error"));
 }
 
+// What fuzz/brake_yaml_fuzz found (tests/data/fuzz_regressions/brake_yaml): each file is refused
+// with an InputError (a mapping as a key escaped as yaml-cpp's TypedBadConversion).
+TEST(BrakeParamsIoTest, FuzzRegressionsAreInputErrors) {
+  for (const auto& file : test::FuzzRegressions("brake_yaml")) {
+    EXPECT_THROW(LoadBrakeFile(file), InputError) << file;
+  }
+}
+
 }  // namespace
 }  // namespace hotlap::brake

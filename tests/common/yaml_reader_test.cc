@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "hotlap/common/error.h"
@@ -227,6 +228,43 @@ TEST_F(YamlReaderTest, ListsTheScalarsAndReadsNumbersAsTheGettersDo) {
   EXPECT_EQ(ParseYamlNumber("-1e3"), -1000.0);
   for (const char* bad : {"", "+", "2.5kg", "nan", "inf", "0x10", " 1"}) {
     EXPECT_FALSE(ParseYamlNumber(bad).has_value()) << bad;
+  }
+}
+
+// Found by fuzz/compound_yaml_fuzz and brake_yaml_fuzz: a key that is not a name (YAML's complex
+// keys, `? [a, b]: 1`, or an empty key) escaped as yaml-cpp's TypedBadConversion from the message
+// code; now every key is checked when the file is loaded.
+TEST_F(YamlReaderTest, KeyThatIsNotANameIsAnInputError) {
+  for (const std::string keys : {"? [a, b]\n: 1\n", "? {a: 1}\n: 2\n", "~: 1\n",
+                                 "outer:\n  ? [x]\n  : 1\n", "rows:\n  - {? [y]: 1}\n"}) {
+    const auto path = Write("name: x\n" + keys);
+    try {
+      YamlReader::Load(path);
+      ADD_FAILURE() << "no error for:\n" << keys;
+    } catch (const InputError& e) {
+      EXPECT_TRUE(Contains(e.what(), "a key must be a name")) << e.what();
+    }
+    EXPECT_THROW(ListYamlScalars(path), InputError) << keys;
+  }
+}
+
+TEST_F(YamlReaderTest, AliasesThatHoldThemselvesOrExplodeAreRefused) {
+  try {
+    YamlReader::Load(Write("name: x\na: &x [1, *x]\n"));
+  } catch (const InputError& e) {  // yaml-cpp may refuse the alias itself, or the walk may
+    SUCCEED() << e.what();         // meet the cycle: either way an InputError
+  }
+  std::string laughs = "name: x\nl0: &l0 [1, 1, 1, 1, 1, 1, 1, 1, 1, 1]\n";
+  for (int i = 1; i <= 7; ++i) {
+    laughs += fmt::format("l{}: &l{} [", i, i);
+    for (int k = 0; k < 10; ++k) laughs += fmt::format("{}*l{}", k == 0 ? "" : ", ", i - 1);
+    laughs += "]\n";
+  }
+  try {
+    YamlReader::Load(Write(laughs));
+    ADD_FAILURE() << "10^7 values by aliases accepted";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(Contains(e.what(), "more than 1000000 values")) << e.what();
   }
 }
 

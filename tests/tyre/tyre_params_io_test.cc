@@ -251,5 +251,13 @@ TEST_F(BadTyreFileTest, MissingCompoundField) {
   EXPECT_TRUE(Contains(m, "'wear_reference_power_kW'"));
 }
 
+// What fuzz/compound_yaml_fuzz found (tests/data/fuzz_regressions/compound_yaml): each file is
+// refused with an InputError (a mapping as a key escaped as yaml-cpp's TypedBadConversion).
+TEST(TyreParamsIoTest, FuzzRegressionsAreInputErrors) {
+  for (const fs::path& file : test::FuzzRegressions("compound_yaml")) {
+    EXPECT_THROW(LoadTyreCompound(file), InputError) << file;
+  }
+}
+
 }  // namespace
 }  // namespace hotlap::tyre

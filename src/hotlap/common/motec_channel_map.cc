@@ -10,6 +10,7 @@
 #include "hotlap/common/error.h"
 #include "hotlap/common/string_match.h"
 #include "hotlap/common/telemetry.h"
+#include "hotlap/common/yaml_reader.h"
 
 namespace hotlap {
 namespace {
@@ -127,6 +128,7 @@ MotecChannelMap LoadMotecChannelMap(const std::filesystem::path& path) {
     throw InputError(fmt::format(
         "{}: a channel map is a mapping 'channels: {{MoTeC name: hotlap channel}}'", file));
   }
+  CheckYamlKeys(root, path);  // every key a name, before the keys are read as text
   for (const auto& key : root) {
     if (key.first.as<std::string>() != "channels") {
       throw InputError(fmt::format("{}unknown key '{}' (the only key is 'channels')",

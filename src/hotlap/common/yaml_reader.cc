@@ -42,9 +42,52 @@ std::optional<double> ParseYamlNumber(std::string_view text) {
   return value;
 }
 
+// yaml-cpp's nodes of a file are a graph: an alias may point at the node that holds it (`&a [*a]`)
+// or repeat a large node many times. The walk below stops at this depth and this many nodes.
+constexpr int kMaxYamlDepth = 64;
+constexpr long kMaxYamlNodes = 1000000;
+
 namespace {
 
-// The file's top-level mapping; InputError if it cannot be read or parsed, or is not a mapping.
+void CheckYamlNode(const YAML::Node& node, const fs::path& path, int depth, long& nodes) {
+  const auto where = [&](const YAML::Node& n) {
+    const YAML::Mark mark = n.Mark().is_null() ? node.Mark() : n.Mark();
+    return fmt::format("{}:{}:{}", path.string(), mark.line + 1, mark.column + 1);
+  };
+  if (depth > kMaxYamlDepth) {
+    throw InputError(fmt::format("{}: nested deeper than {} levels (or an alias that holds itself)",
+                                 where(node), kMaxYamlDepth));
+  }
+  if (++nodes > kMaxYamlNodes) {
+    throw InputError(fmt::format("{}: more than {} values (aliases repeating large parts?)",
+                                 path.string(), kMaxYamlNodes));
+  }
+  if (node.IsMap()) {
+    for (const auto& kv : node) {
+      if (!kv.first.IsScalar()) {
+        throw InputError(fmt::format("{}: a key must be a name, not {}", where(kv.first),
+                                     kv.first.IsMap()        ? "a mapping"
+                                     : kv.first.IsSequence() ? "a list"
+                                                             : "empty"));
+      }
+      CheckYamlNode(kv.second, path, depth + 1, nodes);
+    }
+  } else if (node.IsSequence()) {
+    for (const auto& item : node) CheckYamlNode(item, path, depth + 1, nodes);
+  }
+}
+
+}  // namespace
+
+void CheckYamlKeys(const YAML::Node& root, const fs::path& path) {
+  long nodes = 0;
+  CheckYamlNode(root, path, 0, nodes);
+}
+
+namespace {
+
+// The file's top-level mapping; InputError if it cannot be read or parsed, or is not a mapping,
+// or has a key that is not a name (CheckYamlKeys).
 YAML::Node ParseFile(const fs::path& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) {
@@ -69,6 +112,7 @@ YAML::Node ParseFile(const fs::path& path) {
     throw InputError(fmt::format("{}: expected a mapping of 'field: value' lines at the top level",
                                  path.string()));
   }
+  CheckYamlKeys(root, path);
   return root;
 }
 

@@ -71,6 +71,13 @@ struct YamlScalarField {
 /// finite only), or nullopt.
 std::optional<double> ParseYamlNumber(std::string_view text);
 
+/// Checks what every reader of a YAML file takes for granted: every key of every mapping in
+/// `root` is a name (a scalar; not a mapping, a list or empty, as YAML's `? [a, b]: 1` allows),
+/// nesting is at most 64 deep (so an alias that holds itself, `&a [*a]`, is refused) and there are
+/// at most a million values. InputError "FILE:LINE:COLUMN: ..." otherwise. YamlReader::Load does
+/// this; a reader that loads YAML itself calls it.
+void CheckYamlKeys(const YAML::Node& root, const std::filesystem::path& path);
+
 /// Every scalar of the file at `path`, in file order; InputError as YamlReader::Load.
 std::vector<YamlScalarField> ListYamlScalars(const std::filesystem::path& path);
 
