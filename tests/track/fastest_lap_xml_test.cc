@@ -177,5 +177,19 @@ TEST_F(FastestLapErrorTest, WrongElementNamesItsLine) {
               {":47: <yaw> value 1: 'x' is not a finite number"});
 }
 
+// What fuzz/fastest_lap_xml_fuzz found (tests/data/fuzz_regressions/fastest_lap_xml): each file
+// is refused with an InputError naming it (curvature that closes into no loop escaped as the
+// track builder's NumericalError).
+TEST(FastestLapXmlTest, FuzzRegressionsAreInputErrors) {
+  for (const auto& file : test::FuzzRegressions("fastest_lap_xml")) {
+    try {
+      LoadFastestLapCircuit(file);
+      ADD_FAILURE() << file;
+    } catch (const InputError& e) {
+      EXPECT_TRUE(Contains(e.what(), file.string())) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace hotlap::track

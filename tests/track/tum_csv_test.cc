@@ -163,5 +163,18 @@ TEST_F(TumCsvErrorTest, OpenLoop) {
 
 TEST_F(TumCsvErrorTest, TooFewPoints) { ExpectError(CircleCsv(10), {"10 points", "at least 20"}); }
 
+// What fuzz/tum_csv_fuzz found (tests/data/fuzz_regressions/tum_csv): each file is refused with
+// an InputError naming it (a point 2500 km out made a track of a million pieces, out of memory).
+TEST(TumCsvTest, FuzzRegressionsAreInputErrors) {
+  for (const auto& file : test::FuzzRegressions("tum_csv")) {
+    try {
+      LoadTumTrack(file);
+      ADD_FAILURE() << file;
+    } catch (const InputError& e) {
+      EXPECT_TRUE(Contains(e.what(), file.string())) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace hotlap::track

@@ -144,7 +144,13 @@ Track LoadFastestLapCircuit(const std::filesystem::path& path) {
   samples.width_left_m = nl;
   samples.width_right_m = nr;
   samples.start = {x[0], -y[0], 0.0, -yaw[0]};
-  return TrackFromCurvature(path.stem().string(), samples);
+  try {
+    return TrackFromCurvature(path.stem().string(), samples);
+  } catch (const NumericalError& e) {
+    // Curvature that closes into no loop (a fraction of a turn) is a fault of the file.
+    throw InputError(
+        fmt::format("{}: no track can be built from this circuit: {}", path.string(), e.what()));
+  }
 }
 
 }  // namespace hotlap::track

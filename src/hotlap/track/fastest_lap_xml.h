@@ -23,7 +23,8 @@ namespace hotlap::track {
 /// Reads the circuit. The track is named after the file's stem. Throws InputError naming the
 /// file, line and element for a missing element, a count that differs from `number_of_points`, a
 /// value that is not a number, arc lengths that do not start at 0 and increase to below
-/// `track_length`, or a non-positive width.
+/// `track_length`, or a non-positive width; and, naming the file, for curvature from which no
+/// closed track can be built (TrackFromCurvature's NumericalError, e.g. a fraction of a turn).
 Track LoadFastestLapCircuit(const std::filesystem::path& path);
 
 }  // namespace hotlap::track

@@ -19,6 +19,10 @@ namespace {
 // oval's 160 m.
 constexpr double kMaxPieceLength = 2.5;
 
+// Longest track: 100 km, four times the Nuerburgring's combined loop. A longer one (a point of a
+// file a million metres out) would be subdivided into more pieces than memory holds.
+constexpr double kMaxTrackLength = 1e5;
+
 // 8-point Gauss-Legendre on [-1, 1]: exact for polynomials of degree 15.
 constexpr std::array<double, 4> kGaussX = {0.1834346424956498, 0.5255324099163290,
                                            0.7966664774136267, 0.9602898564975363};
@@ -78,6 +82,7 @@ struct Sub {
 // Splits the pieces into pieces of at most kMaxPieceLength; every channel stays the same cubic.
 std::vector<Sub> Subdivide(const std::string& name, const std::vector<RibbonPiece>& pieces) {
   std::vector<Sub> subs;
+  double length = 0.0;
   for (size_t i = 0; i < pieces.size(); ++i) {
     const RibbonPiece& p = pieces[i];
     if (!(p.length_m > 0.0) || !std::isfinite(p.length_m) || !AllFinite(p.curvature) ||
@@ -85,6 +90,11 @@ std::vector<Sub> Subdivide(const std::string& name, const std::vector<RibbonPiec
         !AllFinite(p.width_right)) {
       throw NumericalError(fmt::format(
           "track '{}': piece {} has a non-positive length or a non-finite value", name, i));
+    }
+    length += p.length_m;
+    if (!(length <= kMaxTrackLength)) {
+      throw NumericalError(fmt::format("track '{}': longer than {:g} km (pieces 0 to {})", name,
+                                       kMaxTrackLength / 1e3, i));
     }
     const auto kappa = CubicFromHermite(p.curvature, p.length_m);
     const auto bank = CubicFromHermite(p.bank, p.length_m);

@@ -132,7 +132,15 @@ CentreLinePoints ReadTumCentreLine(const std::filesystem::path& path) {
 }
 
 Track LoadTumTrack(const std::filesystem::path& path, const CentreLineOptions& options) {
-  return TrackFromCentreLine(path.stem().string(), ReadTumCentreLine(path), options);
+  const CentreLinePoints points = ReadTumCentreLine(path);
+  try {
+    return TrackFromCentreLine(path.stem().string(), points, options);
+  } catch (const NumericalError& e) {
+    // Points that no closed ribbon fits (a loop that turns a fraction of a turn, a point far
+    // out) are a fault of the file.
+    throw InputError(
+        fmt::format("{}: no track can be built from these points: {}", path.string(), e.what()));
+  }
 }
 
 }  // namespace hotlap::track

@@ -23,7 +23,9 @@ namespace hotlap::track {
 /// loop).
 CentreLinePoints ReadTumCentreLine(const std::filesystem::path& path);
 
-/// ReadTumCentreLine, then TrackFromCentreLine; the track is named after the file's stem.
+/// ReadTumCentreLine, then TrackFromCentreLine; the track is named after the file's stem. Points
+/// from which no closed track can be built (TrackFromCentreLine's NumericalError, e.g. a track
+/// over 100 km long) are an InputError naming the file.
 Track LoadTumTrack(const std::filesystem::path& path, const CentreLineOptions& options = {});
 
 }  // namespace hotlap::track
