@@ -22,6 +22,6 @@ endif()
 if(HOTLAP_SANITIZE)
   set(hotlap_sanitize_flags -fsanitize=address,undefined -fno-sanitize-recover=undefined
     -fno-omit-frame-pointer)
-  add_compile_options(${hotlap_sanitize_flags} -g)
+  add_compile_options(${hotlap_sanitize_flags})
   add_link_options(-fsanitize=address,undefined)
 endif()

@@ -3,6 +3,7 @@
 #
 #   bash scripts/fuzz.sh [TARGET|all] [SECONDS]   # default: all, 60 s each
 #   bash scripts/fuzz.sh --list                   # the targets
+#   bash scripts/fuzz.sh --summary                # fuzz/stats.tsv per target (runs, minutes, ...)
 #
 # TARGET is a name of fuzz/ without "_fuzz" (tir, telemetry_csv, ...). Targets run one after the
 # other (HOTLAP_FUZZ_JOBS=N: N at a time). Each grows its corpus in fuzz/corpus/TARGET (not in
@@ -26,9 +27,17 @@ if [ "${1:-}" = "--list" ]; then
   printf '%s\n' "${targets_all[@]}"
   exit 0
 fi
+# --summary: fuzz/stats.tsv added up per target, as the Markdown rows of docs/reliability.md.
+if [ "${1:-}" = "--summary" ]; then
+  awk -F'\t' '{ runs[$2] += $4; secs[$2] += $3; corpus[$2] = $5; n[$2]++
+      if ($6 != "ok") found[$2]++ }
+    END { for (t in runs) printf "| %s | %d | %.1f | %d | %d | %d |\n", t, runs[t], secs[t] / 60,
+      n[t], found[t], corpus[t] }' fuzz/stats.tsv | sort
+  exit 0
+fi
 which=${1:-all}
 seconds=${2:-60}
-if [ "$which" = "all" ]; then
+if [ "$which" = "all" ] || [ "$which" = "--configure" ]; then
   targets=("${targets_all[@]}")
 else
   if [[ ! " ${targets_all[*]} " =~ " ${which} " ]]; then
@@ -38,12 +47,20 @@ else
   targets=("$which")
 fi
 
-# Build: a Clang build with HOTLAP_FUZZ=ON of just the libraries the targets need.
-if [ ! -f "$build/build.ninja" ]; then
-  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
-    -DHOTLAP_FUZZ=ON -DHOTLAP_BUILD_TESTS=OFF -DHOTLAP_BUILD_BENCH=OFF \
-    -DHOTLAP_BUILD_PYTHON=OFF >/dev/null
+# Build: Clang with HOTLAP_FUZZ=ON (libFuzzer coverage, ASan, UBSan), -O1 with line tables for the
+# sanitizers' stack traces and assertions left on (an assertion that fires is a finding too).
+# The same build holds scripts/sanitize.sh --fast's unit tests of the reader areas.
+configure() {
+  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only" -DCMAKE_CXX_COMPILER=clang++ \
+    -DHOTLAP_FUZZ=ON -DHOTLAP_BUILD_TESTS=ON "-DHOTLAP_TEST_AREAS=common;tyre;brake;track;vehicle" \
+    -DHOTLAP_BUILD_BENCH=OFF -DHOTLAP_BUILD_PYTHON=OFF >/dev/null
+}
+if [ "$which" = "--configure" ]; then
+  configure
+  exit 0
 fi
+if [ ! -f "$build/build.ninja" ]; then configure; fi
 build_targets=()
 for t in "${targets[@]}"; do build_targets+=(--target "${t}_fuzz"); done
 if [ -z "${HOTLAP_FUZZ_NO_BUILD:-}" ]; then
@@ -57,7 +74,7 @@ seeds_of() {
     telemetry_csv) echo "head:data/telemetry/darlington_example.csv"
       echo "head:tests/data/motec/darlington_i2_equivalent.csv" ;;
     motec_csv) echo "head:tests/data/motec/darlington_i2.csv" ;;
-    motec_channel_map) echo data/motec_channels.yaml tests/data/motec_channels.yaml ;;
+    motec_channel_map) echo data/motec_channels.yaml ;;
     car_yaml) echo data/cars/gen7/car.yaml data/cars/f1-2014/car.yaml ;;
     tyre_yaml) echo data/cars/gen7/tyres/f?.yaml data/cars/gen7/tyres/r?.yaml data/tyres/*.yaml \
       data/abs/tyre_235_75r15_brush.yaml ;;

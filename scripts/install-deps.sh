@@ -4,13 +4,17 @@
 #
 #   bash scripts/install-deps.sh          # what building and running hotlap needs
 #   bash scripts/install-deps.sh --test   # also what the test suite needs (scripts/test.sh)
+#   bash scripts/install-deps.sh --fuzz   # also Clang, libFuzzer, libomp: the fuzzers and the
+#                                         # sanitizer build (scripts/fuzz.sh, sanitize.sh)
 set -euo pipefail
 
 with_tests=0
+with_fuzz=0
 for arg in "$@"; do
   case "$arg" in
     --test) with_tests=1 ;;
-    *) echo "install-deps: unknown option '$arg' (the only option is --test)" >&2; exit 2 ;;
+    --fuzz) with_fuzz=1 ;;
+    *) echo "install-deps: unknown option '$arg' (options: --test, --fuzz)" >&2; exit 2 ;;
   esac
 done
 
@@ -38,6 +42,12 @@ if [ "$with_tests" -eq 1 ]; then
     calculix-ccx         # CalculiX: implicit reference for the FE solver's pressed-block test
     python3-pytest       # the Python package's tests (python/tests)
     python3-matplotlib   # examples/python's tyre-curve plot, run by the tests
+  )
+fi
+if [ "$with_fuzz" -eq 1 ]; then
+  packages+=(
+    clang libclang-rt-14-dev  # libFuzzer and the sanitizers' runtimes (scripts/fuzz.sh, sanitize.sh)
+    libomp-dev                # OpenMP for Clang (the FE area in the fuzzing build)
   )
 fi
 

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# The AddressSanitizer + UndefinedBehaviorSanitizer build and its tests (docs/reliability.md).
+#
+#   bash scripts/sanitize.sh --fast   # CI's part (scripts/test.sh --sanitize-fast, after the tests):
+#                                     # Clang build in build-fuzz of the reader areas (common, tyre,
+#                                     # brake, track, vehicle) and their unit tests, those tests,
+#                                     # then a 10-second smoke of every fuzz target
+#   bash scripts/sanitize.sh --full   # every test (ctest) of an ASan + UBSan build of everything,
+#                                     # in build-sanitize with the default compiler (slow: the
+#                                     # optimal-control and FE tests run several times slower)
+#
+# Undefined behaviour is fatal (-fno-sanitize-recover; UBSAN_OPTIONS halt_on_error), as are leaks
+# and memory errors. Needs clang for --fast (scripts/install-deps.sh --fuzz).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+mode=${1:---fast}
+jobs=$(nproc)
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:strict_string_checks=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
+
+case "$mode" in
+  --fast)
+    build=${HOTLAP_FUZZ_BUILD:-build-fuzz}
+    # One build serves both: the libraries carry the sanitizers and libFuzzer's coverage
+    # instrumentation; hotlap_tests links them without libFuzzer.
+    HOTLAP_FUZZ_BUILD=$build bash scripts/fuzz.sh --configure
+    cmake --build "$build" --parallel "$jobs" --target hotlap_tests hotlap_fuzzers
+    (cd "$build" && ./hotlap_tests --gtest_brief=1)
+    HOTLAP_FUZZ_BUILD=$build HOTLAP_FUZZ_JOBS=$jobs bash scripts/fuzz.sh all 10
+    ;;
+  --full)
+    build=${HOTLAP_SANITIZE_BUILD:-build-sanitize}
+    cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHOTLAP_SANITIZE=ON \
+      -DHOTLAP_BUILD_BENCH=OFF -DHOTLAP_BUILD_PYTHON=OFF >/dev/null
+    cmake --build "$build" --parallel "$jobs"
+    (cd "$build" && ctest --output-on-failure --parallel "$jobs" --timeout 3600)
+    ;;
+  *)
+    echo "sanitize.sh: unknown option '$mode' (--fast or --full)" >&2
+    exit 2
+    ;;
+esac
