@@ -161,6 +161,15 @@ TEST_F(TumCsvErrorTest, OpenLoop) {
   ExpectError(half, {"not a closed loop", "median spacing"});
 }
 
+TEST_F(TumCsvErrorTest, PointFarOffTheLine) {
+  // The tenth point thousands of km out (its x prefixed with -30000) on a line sampled every 5 m.
+  std::string text = CircleCsv();
+  size_t at = 0;
+  for (int i = 0; i < 10; ++i) at = text.find('\n', at) + 1;
+  text.insert(at, "-30000");
+  ExpectError(text, {"bad.csv:11:", "more than 20 times the median spacing"});
+}
+
 TEST_F(TumCsvErrorTest, TooFewPoints) { ExpectError(CircleCsv(10), {"10 points", "at least 20"}); }
 
 // What fuzz/tum_csv_fuzz found (tests/data/fuzz_regressions/tum_csv): each file is refused with

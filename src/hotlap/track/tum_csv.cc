@@ -19,6 +19,8 @@ namespace {
 
 constexpr const char* kHeader = "x_m,y_m,w_tr_right_m,w_tr_left_m";
 constexpr size_t kMinPoints = 20;
+// Largest gap between consecutive points, as a multiple of the median gap.
+constexpr double kMaxSpacingRatio = 20.0;
 
 std::string_view Trim(std::string_view t) {
   while (!t.empty() && std::isspace(static_cast<unsigned char>(t.front()))) t.remove_prefix(1);
@@ -127,6 +129,16 @@ CentreLinePoints ReadTumCentreLine(const std::filesystem::path& path) {
         "{}: not a closed loop: the last point (line {}) is {:.1f} m from the first (line {}), "
         "more than 5 times the median spacing {:.2f} m",
         file, lines[n - 1], gaps[n - 1], lines[0], median));
+  }
+  // A point far off the line (a typo, a lost sign) would stretch the track by kilometres, and
+  // building it would take minutes: a centre line is sampled evenly.
+  for (size_t i = 0; i + 1 < n; ++i) {
+    if (gaps[i] > kMaxSpacingRatio * median) {
+      throw InputError(fmt::format(
+          "{}:{}: the point is {:.1f} m from the one on line {}, more than {:g} times the median "
+          "spacing {:.2f} m",
+          file, lines[i + 1], gaps[i], lines[i], kMaxSpacingRatio, median));
+    }
   }
   return p;
 }

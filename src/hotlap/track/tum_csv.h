@@ -19,8 +19,9 @@ namespace hotlap::track {
 /// The points of a TUM file, validated. Throws InputError naming the file, the line and the
 /// column for a wrong header, a row without four cells, a cell that is not a finite number, a
 /// width that is not positive, two consecutive points less than 1 mm apart, fewer than 20 points,
-/// or a closing gap (last point to first) more than 5 times the median spacing (not a closed
-/// loop).
+/// a closing gap (last point to first) more than 5 times the median spacing (not a closed
+/// loop), or a gap between consecutive points more than 20 times the median spacing (a point far
+/// off the line).
 CentreLinePoints ReadTumCentreLine(const std::filesystem::path& path);
 
 /// ReadTumCentreLine, then TrackFromCentreLine; the track is named after the file's stem. Points
