@@ -20,6 +20,7 @@ done
 
 packages=(
   build-essential cmake ninja-build pkg-config git
+  ccache                 # compiler cache: a clean clone of code built before compiles in seconds
   libeigen3-dev          # linear algebra: small fixed-size systems, Cholesky convection matrices
   libceres-dev           # least squares and Jet automatic differentiation (fitting, model AD)
   coinor-libipopt-dev    # Ipopt: the optimal-control lap's sparse nonlinear programme
