@@ -2,6 +2,7 @@
 // from lap to lap, against the greedy driver's N single optimal laps (docs/optimal-control.md,
 // "Stints").
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -15,8 +16,10 @@
 #include "commands.h"
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/error.h"
+#include "hotlap/common/fnv1a.h"
 #include "hotlap/common/json_output.h"
 #include "hotlap/common/output_folder.h"
+#include "hotlap/common/read_file.h"
 #include "hotlap/common/units.h"
 #include "hotlap/ocp/optimal_run.h"
 #include "hotlap/ocp/solver_memory.h"
@@ -44,7 +47,28 @@ struct StintArgs {
     return o;
   }();
   std::string out, json;
+  std::string checkpoint;
+  int checkpoint_every = 10;
 };
+
+// What the checkpoints' fingerprint needs beyond the stint's options: the bytes of every file of
+// the car (its folder: tyres, brakes, .tir) and of the track, and the --set overrides.
+std::string CheckpointKey(const StintArgs& a) {
+  std::string key;
+  const auto add_file = [&](const fs::path& p) {
+    key += p.filename().string() + ":" + std::to_string(Fnv1a64(ReadWholeFile(p))) + ";";
+  };
+  const fs::path car_file = ResolveCarFile(a.car);
+  std::vector<fs::path> files;
+  for (const auto& e : fs::recursive_directory_iterator(car_file.parent_path())) {
+    if (e.is_regular_file()) files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  for (const fs::path& p : files) add_file(p);
+  add_file(ResolveTrackFile(a.track));
+  for (const std::string& s : a.set) key += "set " + s + ";";
+  return key;
+}
 
 int RunStint(const StintArgs& a) {
   const auto started = std::chrono::steady_clock::now();
@@ -60,6 +84,11 @@ int RunStint(const StintArgs& a) {
   o.fuel_kg = a.fuel_kg;
   o.bsfc_kg_per_J = a.bsfc_g_per_kWh * 1e-3 / 3.6e6;
   o.lap = ocp::MakeOptimalLapOptions(a.run);
+  if (!a.checkpoint.empty()) {
+    o.checkpoint_dir = a.checkpoint;
+    o.checkpoint_every = a.checkpoint_every;
+    o.checkpoint_key = CheckpointKey(a);
+  }
   if (a.disc_limit_C) {
     if (!(*a.disc_limit_C > 0.0 && *a.disc_limit_C < 1500.0)) {
       throw InputError(
@@ -148,6 +177,14 @@ CommandRunner RegisterStintCommand(CLI::App& app) {
   sub->add_option("--max-iterations", a->run.max_iterations, "Ipopt's iteration limit per solve")
       ->capture_default_str()
       ->check(kPositive);
+  sub->add_option("--checkpoint", a->checkpoint,
+                  "Checkpoint folder: each greedy lap's solves and the stint's iterate saved as "
+                  "the run goes; run the same command again to resume from them "
+                  "(docs/reliability.md)");
+  sub->add_option("--checkpoint-every", a->checkpoint_every,
+                  "Save the stint solve's iterate every this many Ipopt iterations")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
   sub->add_option("--out", a->out, "Output folder: stint.csv and stint.html")->required();
   sub->add_option("--json", a->json, "Write the summary as JSON (docs/json-output.md)");
   return [a] { return RunStint(*a); };

@@ -2,8 +2,15 @@
 // the channels CSV with a lap column whose laps add up to the JSON's times, and bad options
 // refused before any work.
 
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
 #include <filesystem>
+#include <regex>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -73,6 +80,77 @@ TEST_F(StintCommandTest, TwoLapsWriteTheTableTheChannelsTheJsonAndTheReport) {
   EXPECT_TRUE(Contains(page, "greedy (lap by lap)"));
   EXPECT_TRUE(Contains(page, "Cumulative wear"));
   EXPECT_TRUE(test::RenderedCleanly(test::RenderInChromium(out / "stint.html", dir()), 7));
+}
+
+// Faults survived (issue 25): `kill -9` during the stint's solve, then the same command again
+// with the same --checkpoint folder: the greedy laps come from their files (the same laps, not
+// solved again), the stint from its last saved iterate, at most one interval (3 iterations)
+// behind what the killed run reported, and the run ends converged.
+TEST_F(StintCommandTest, KilledStintResumesFromItsCheckpoints) {
+  const fs::path checkpoints = dir() / "checkpoints", json = dir() / "resumed.json";
+  const std::string common =
+      "stint --laps 2 --step-m 30 --coarse-step-m 0 --wear-scale 5 --checkpoint " +
+      checkpoints.string() + " --checkpoint-every 3 --out ";
+  const fs::path killed_out = dir() / "killed_stdout.txt";
+  const std::string command = "exec " + std::string(HOTLAP_BINARY) + " " + common +
+                              (dir() / "killed").string() + " >" + killed_out.string() +
+                              " 2>/dev/null";
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  // Killed as soon as the stint's solve has saved its first iterate (its third iteration; the
+  // solve takes about 10 on this mesh).
+  const fs::path iterate = checkpoints / "stint_iterate.bin";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(300);
+  while (!fs::exists(iterate) && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it was killed";
+  ASSERT_TRUE(fs::exists(iterate));
+  EXPECT_FALSE(fs::exists(dir() / "killed" / "stint.csv"));
+  // What the killed run printed: its greedy laps, and the stint's iterations (every tenth).
+  const std::string killed = test::ReadTextFile(killed_out);
+  std::smatch m;
+  std::vector<std::string> greedy;
+  const std::regex greedy_line(R"(greedy lap \d of 2: [0-9.]+ s)");
+  for (auto it = std::sregex_iterator(killed.begin(), killed.end(), greedy_line);
+       it != std::sregex_iterator(); ++it) {
+    greedy.push_back(it->str());
+  }
+  ASSERT_EQ(greedy.size(), 2u) << killed;
+  int reached = 0;
+  const size_t stint_starts = killed.find("the stint:");
+  ASSERT_NE(stint_starts, std::string::npos) << killed;
+  const std::string stint_part = killed.substr(stint_starts);
+  const std::regex iteration_line(R"(iteration +(\d+):)");
+  for (auto it = std::sregex_iterator(stint_part.begin(), stint_part.end(), iteration_line);
+       it != std::sregex_iterator(); ++it) {
+    reached = std::max(reached, std::stoi((*it)[1]));
+  }
+
+  const test::RunResult r = Run(common + (dir() / "resumed").string() + " --json " + json.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  for (const std::string& g : greedy) {
+    EXPECT_TRUE(Contains(r.out, g + " (")) << g << "\n" << r.out;  // the same lap time
+  }
+  EXPECT_TRUE(Contains(r.out, "from its checkpoint")) << r.out;
+  ASSERT_TRUE(
+      std::regex_search(r.out, m, std::regex(R"(resumed from its checkpoint at iteration (\d+))")))
+      << r.out;
+  const nlohmann::json j = Json(json);
+  EXPECT_EQ(j.at("status"), "converged");
+  EXPECT_EQ(j.at("greedy_laps_resumed"), 2);
+  const int from = j.at("resumed_from_iteration").get<int>();
+  EXPECT_EQ(from, std::stoi(m[1]));
+  EXPECT_GE(from, 3);
+  EXPECT_EQ(from % 3, 0);
+  EXPECT_GE(from, reached - 3) << "the surviving iterate is more than one interval behind";
 }
 
 TEST_F(StintCommandTest, BadOptionsAreRefusedBeforeAnyWork) {

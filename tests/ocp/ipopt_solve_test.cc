@@ -122,6 +122,62 @@ TEST(IpoptSolveTest, WarmStartFromANeighbourConvergesFaster) {
   EXPECT_LE(p.iterations, ignored.iterations);
 }
 
+// Checkpoints are iterates a solve can resume from: the one taken at the last iteration is the
+// result's point and multipliers (so the unscaling and reordering are Ipopt's own, here with the
+// objective scaled by Ipopt and the fixed ends removed by it), and a warm start from one in the
+// middle reaches the same optimum in no more iterations than the solve had left, plus a few.
+TEST(IpoptSolveTest, CheckpointsAreIteratesToResumeFrom) {
+  const int n = 40;
+  const DoubleIntegrator d = MakeDoubleIntegrator(n, 1.0);
+  std::vector<SolveResult> saved;
+  IpoptOptions o;
+  o.extra = {{"obj_scaling_factor", "7.5"}};
+  o.checkpoint_every = 1;
+  o.on_checkpoint = [&](const SolveResult& c) { saved.push_back(c); };
+  const SolveResult r = SolveWithIpopt(d.nlp, o);
+  ASSERT_TRUE(r.ok()) << r.message;
+  ASSERT_GE(saved.size(), 4u);
+  const SolveResult& last = saved.back();
+  EXPECT_EQ(last.iterations, r.iterations);
+  EXPECT_EQ(last.status, SolveStatus::kStopped);
+  EXPECT_GT(last.barrier_mu, 0.0);
+  ASSERT_EQ(last.x.size(), r.x.size());
+  ASSERT_EQ(last.lambda.size(), r.lambda.size());
+  const auto near = [](double a, double b) {
+    return std::abs(a - b) <= 1e-9 * (1.0 + std::abs(b));
+  };
+  for (size_t i = 0; i < r.x.size(); ++i) {
+    // Ipopt ends by putting x back inside the original bounds, which it had relaxed by 1e-8
+    // (bound_relax_factor), so a point on a bound moves by that much; the multipliers do not.
+    EXPECT_NEAR(last.x[i], r.x[i], 2e-8 * (1.0 + std::abs(r.x[i]))) << "x " << i;
+    if (d.nlp.lower(static_cast<int>(i)) < d.nlp.upper(static_cast<int>(i))) {  // not fixed
+      EXPECT_TRUE(near(last.z_lower[i], r.z_lower[i])) << "z_L " << i;
+      EXPECT_TRUE(near(last.z_upper[i], r.z_upper[i])) << "z_U " << i;
+    }
+  }
+  double largest_lambda = 0.0;
+  for (size_t i = 0; i < r.lambda.size(); ++i) {
+    EXPECT_TRUE(near(last.lambda[i], r.lambda[i])) << "lambda " << i;
+    largest_lambda = std::max(largest_lambda, std::abs(r.lambda[i]));
+  }
+  EXPECT_GT(largest_lambda, 1e-3);  // the comparison above compared something
+
+  const SolveResult& mid = saved[saved.size() / 2];
+  DoubleIntegrator again = MakeDoubleIntegrator(n, 1.0);
+  for (int i = 0; i < again.nlp.variables(); ++i) again.nlp.set_initial(i, mid.x[i]);
+  IpoptOptions resume;
+  resume.extra = o.extra;
+  resume.warm_z_lower = mid.z_lower;
+  resume.warm_z_upper = mid.z_upper;
+  resume.warm_lambda = mid.lambda;
+  resume.warm_mu = mid.barrier_mu;
+  const SolveResult w = SolveWithIpopt(again.nlp, resume);
+  ASSERT_TRUE(w.ok()) << w.message;
+  EXPECT_NEAR(w.x[d.t], r.x[d.t], 1e-6);
+  EXPECT_LE(w.iterations, r.iterations - mid.iterations + 3)
+      << "resumed at " << mid.iterations << " of " << r.iterations;
+}
+
 struct HalfSquareTrapezoid {
   double h;
   template <class T>

@@ -32,14 +32,6 @@ T Load(const std::string& s, size_t at) {
 
 }  // namespace
 
-std::uint64_t Fnv1a64(std::string_view data, std::uint64_t hash) {
-  for (const char c : data) {
-    hash ^= static_cast<unsigned char>(c);
-    hash *= 0x100000001b3ULL;
-  }
-  return hash;
-}
-
 std::uint64_t HashMesh(const Mesh& mesh) {
   BinaryWriter w;
   w.PutVectors(mesh.nodes);

@@ -31,6 +31,7 @@
 
 #include <Eigen/Core>
 
+#include "hotlap/common/fnv1a.h"
 #include "hotlap/fe/mesh.h"
 
 namespace hotlap::fe {
@@ -42,8 +43,7 @@ namespace hotlap::fe {
 /// TyreRun's whole, each field behind its name (field_io.h), the rim's settings with them.
 inline constexpr std::uint32_t kCheckpointVersion = 4;
 
-/// FNV-1a, 64 bit, of `data`, continuing from `hash` (the offset basis by default).
-std::uint64_t Fnv1a64(std::string_view data, std::uint64_t hash = 0xcbf29ce484222325ULL);
+using ::hotlap::Fnv1a64;  // common/fnv1a.h
 
 /// Hash of the mesh: node positions (their bytes), connectivity, materials, cords, pressure
 /// faces, rim and contact nodes.

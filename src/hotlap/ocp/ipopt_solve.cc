@@ -9,7 +9,10 @@
 
 #include <IpIpoptApplication.hpp>
 #include <IpIpoptCalculatedQuantities.hpp>
+#include <IpIpoptData.hpp>
+#include <IpOrigIpoptNLP.hpp>
 #include <IpTNLP.hpp>
+#include <IpTNLPAdapter.hpp>
 
 #include "hotlap/common/error.h"
 
@@ -61,6 +64,47 @@ bool HasWarmStart(const ElementNlp& nlp, const IpoptOptions& options) {
   const size_t n = static_cast<size_t>(nlp.variables());
   return options.warm_z_lower.size() == n && options.warm_z_upper.size() == n &&
          options.warm_lambda.size() == static_cast<size_t>(nlp.constraints());
+}
+
+// The current iterate of a solve in the programme's own variables and multipliers, as
+// finalize_solution would give them (Ipopt 3.11 has no GetCurrentIterate): undo Ipopt's NLP
+// scaling as OrigIpoptNLP::FinalizeSolution does, then TNLPAdapter's reordering and removal of
+// fixed variables. False if the solve is not a TNLP's (never here).
+bool CurrentIterate(const Ipopt::IpoptData& data, Ipopt::IpoptCalculatedQuantities& cq, Index n,
+                    Index m, std::vector<double>& x, std::vector<double>& z_lower,
+                    std::vector<double>& z_upper, std::vector<double>& lambda) {
+  auto* orig = dynamic_cast<Ipopt::OrigIpoptNLP*>(Ipopt::GetRawPtr(cq.GetIpoptNLP()));
+  if (orig == nullptr) return false;
+  auto* adapter = dynamic_cast<Ipopt::TNLPAdapter*>(Ipopt::GetRawPtr(orig->nlp()));
+  if (adapter == nullptr) return false;
+  const Ipopt::SmartPtr<const Ipopt::IteratesVector> it = data.curr();
+  if (!Ipopt::IsValid(it)) return false;
+  Ipopt::SmartPtr<Ipopt::NLPScalingObject> scaling = orig->NLP_scaling();
+  const Number obj_unscale = scaling->unapply_obj_scaling(1.0);
+  const Ipopt::SmartPtr<const Ipopt::Vector> x_unscaled =
+      scaling->unapply_vector_scaling_x(it->x());
+  const auto multipliers = [&](const Ipopt::SmartPtr<const Ipopt::Vector>& v) {
+    Ipopt::SmartPtr<Ipopt::Vector> copy = v->MakeNewCopy();
+    copy->Scal(obj_unscale);
+    return copy;
+  };
+  const Ipopt::SmartPtr<const Ipopt::Vector> y_c =
+      scaling->apply_vector_scaling_c(Ipopt::ConstPtr(multipliers(it->y_c())));
+  const Ipopt::SmartPtr<const Ipopt::Vector> y_d =
+      scaling->apply_vector_scaling_d(Ipopt::ConstPtr(multipliers(it->y_d())));
+  const Ipopt::VectorSpace& x_space = *it->x()->OwnerSpace();
+  const Ipopt::SmartPtr<const Ipopt::Vector> z_l = scaling->apply_vector_scaling_x_LU(
+      *orig->Px_L(), Ipopt::ConstPtr(multipliers(it->z_L())), x_space);
+  const Ipopt::SmartPtr<const Ipopt::Vector> z_u = scaling->apply_vector_scaling_x_LU(
+      *orig->Px_U(), Ipopt::ConstPtr(multipliers(it->z_U())), x_space);
+  x.assign(static_cast<size_t>(n), 0.0);
+  z_lower.assign(static_cast<size_t>(n), 0.0);
+  z_upper.assign(static_cast<size_t>(n), 0.0);
+  lambda.assign(static_cast<size_t>(m), 0.0);
+  adapter->ResortX(*x_unscaled, x.data());
+  adapter->ResortG(*y_c, *y_d, lambda.data());
+  adapter->ResortBnds(*z_l, z_lower.data(), *z_u, z_upper.data());
+  return true;
 }
 
 class Adaptor : public Ipopt::TNLP {
@@ -152,22 +196,42 @@ class Adaptor : public Ipopt::TNLP {
     return Finite(values, nele_hess);
   }
 
-  bool intermediate_callback(Ipopt::AlgorithmMode, Index iter, Number obj_value, Number inf_pr,
-                             Number inf_du, Number, Number, Number regularization_size, Number,
-                             Number, Index, const Ipopt::IpoptData*,
-                             Ipopt::IpoptCalculatedQuantities*) override {
+  bool intermediate_callback(Ipopt::AlgorithmMode mode, Index iter, Number obj_value, Number inf_pr,
+                             Number inf_du, Number mu, Number, Number regularization_size, Number,
+                             Number, Index, const Ipopt::IpoptData* data,
+                             Ipopt::IpoptCalculatedQuantities* cq) override {
     result_.iterations = iter;
     // The Hessian perturbation of the step that led here (0 where the first factorisation had
     // the right inertia).
     if (iter > 0 && regularization_size > 0.0) ++result_.regularized_iterations;
+    if (options_.checkpoint_every > 0 && options_.on_checkpoint && iter > 0 &&
+        iter % options_.checkpoint_every == 0 && mode == Ipopt::RegularMode && data != nullptr &&
+        cq != nullptr) {
+      SolveResult checkpoint;
+      std::vector<double> scaled_x;
+      if (CurrentIterate(*data, *cq, nlp_.variables(), nlp_.constraints(), scaled_x,
+                         checkpoint.z_lower, checkpoint.z_upper, checkpoint.lambda)) {
+        checkpoint.x = nlp_.Unscale(scaled_x.data());
+        checkpoint.status = SolveStatus::kStopped;
+        checkpoint.message = fmt::format("checkpoint at iteration {}", iter);
+        checkpoint.objective = obj_value;
+        checkpoint.iterations = iter;
+        checkpoint.regularized_iterations = result_.regularized_iterations;
+        checkpoint.primal_infeasibility = inf_pr;
+        checkpoint.dual_infeasibility = inf_du;
+        checkpoint.barrier_mu = mu;
+        options_.on_checkpoint(checkpoint);
+      }
+    }
     if (options_.on_iteration) return options_.on_iteration(iter, obj_value, inf_pr, inf_du);
     return true;
   }
 
   void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number* z_l,
                          const Number* z_u, Index m, const Number*, const Number* lambda,
-                         Number obj_value, const Ipopt::IpoptData*,
+                         Number obj_value, const Ipopt::IpoptData* data,
                          Ipopt::IpoptCalculatedQuantities* q) override {
+    if (data != nullptr) result_.barrier_mu = data->curr_mu();
     result_.x = nlp_.Unscale(x);
     if (z_l != nullptr && z_u != nullptr && lambda != nullptr) {
       result_.z_lower.assign(z_l, z_l + n);

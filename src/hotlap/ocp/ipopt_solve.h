@@ -12,6 +12,8 @@
 
 namespace hotlap::ocp {
 
+struct SolveResult;
+
 struct IpoptOptions {
   double tolerance = 1e-7;             ///< Ipopt `tol` (scaled NLP error)
   double constraint_tolerance = 1e-7;  ///< Ipopt `constr_viol_tol`
@@ -42,6 +44,13 @@ struct IpoptOptions {
   /// Called at every iteration with (iteration, objective, primal infeasibility, dual
   /// infeasibility); return false to stop.
   std::function<bool(int, double, double, double)> on_iteration;
+  /// Checkpoints: every `checkpoint_every` iterations (0: never; not in Ipopt's restoration
+  /// phase), the current iterate goes to on_checkpoint as a SolveResult (status kStopped, x, the
+  /// multipliers as finalize_solution gives them, `iterations`, `barrier_mu`), which a later solve
+  /// of the same programme can warm-start from (warm_* above, warm_mu = its barrier_mu): a run
+  /// killed part way loses at most this many iterations (ocp/stint.h, docs/reliability.md).
+  int checkpoint_every = 0;
+  std::function<void(const SolveResult&)> on_checkpoint;
 };
 
 /// How the solve ended.
@@ -71,6 +80,8 @@ struct SolveResult {
   double primal_infeasibility = 0.0;  ///< max |constraint violation| at x, scaled
   double dual_infeasibility = 0.0;
   double solve_seconds = 0.0;
+  /// The barrier parameter at x (a checkpoint's, for the warm start that resumes from it).
+  double barrier_mu = 0.0;
 
   bool ok() const {
     return status == SolveStatus::kConverged || status == SolveStatus::kAcceptable;

@@ -58,7 +58,8 @@ struct Reader {
   }
 };
 
-constexpr uint64_t kMagic = 0x686f746c61707331;  // "hotlaps1"
+constexpr uint64_t kMagic1 = 0x686f746c61707331;  // "hotlaps1": without barrier_mu
+constexpr uint64_t kMagic = 0x686f746c61707332;   // "hotlaps2"
 
 }  // namespace
 
@@ -79,13 +80,17 @@ std::string EncodeSolveResults(const std::vector<SolveResult>& results) {
     w.Pod(r.primal_infeasibility);
     w.Pod(r.dual_infeasibility);
     w.Pod(r.solve_seconds);
+    w.Pod(r.barrier_mu);
   }
   return w.out;
 }
 
 std::vector<SolveResult> DecodeSolveResults(const std::string& bytes) {
   Reader r{bytes};
-  if (r.Pod<uint64_t>() != kMagic) throw InputError("solve results: not hotlap's encoding");
+  const uint64_t magic = r.Pod<uint64_t>();
+  if (magic != kMagic && magic != kMagic1) {
+    throw InputError("solve results: not hotlap's encoding");
+  }
   const uint64_t n = r.Pod<uint64_t>();
   if (n > bytes.size()) throw InputError("solve results: the bytes end early");
   std::vector<SolveResult> out(n);
@@ -106,6 +111,7 @@ std::vector<SolveResult> DecodeSolveResults(const std::string& bytes) {
     s.primal_infeasibility = r.Pod<double>();
     s.dual_infeasibility = r.Pod<double>();
     s.solve_seconds = r.Pod<double>();
+    if (magic == kMagic) s.barrier_mu = r.Pod<double>();
   }
   if (r.at != bytes.size()) throw InputError("solve results: bytes left over");
   return out;

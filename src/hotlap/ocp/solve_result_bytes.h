@@ -11,7 +11,8 @@
 namespace hotlap::ocp {
 
 /// Every field of each result: status, message, x, multipliers, objective, iteration counts,
-/// infeasibilities, seconds.
+/// infeasibilities, seconds, barrier parameter. (Bytes of the first version, without the
+/// barrier parameter, still decode.)
 std::string EncodeSolveResults(const std::vector<SolveResult>& results);
 
 /// The results EncodeSolveResults wrote. InputError on bytes that are not a whole encoding.

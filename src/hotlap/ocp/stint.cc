@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
 #include "hotlap/common/interpolation.h"
 #include "hotlap/common/units.h"
+#include "hotlap/ocp/stint_checkpoint.h"
 
 namespace hotlap::ocp {
 namespace {
@@ -170,8 +172,16 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
   StintOptions o = options;
   const int intervals = LapNodeCount(track, options.lap.step_m) - 1;
   o.lap.step_m = track.length_m() / intervals;
+  if (options.checkpoint_every < 1) {
+    throw InputError(fmt::format("--checkpoint-every: {} is not a number of iterations >= 1",
+                                 options.checkpoint_every));
+  }
   const vehicle::Car worn = StintCar(car, options.wear_scale);
   const LapWarmUp warm_up = RunLapWarmUp(worn, track, o.lap);
+  std::optional<StintCheckpoints> checkpoints;
+  if (!options.checkpoint_dir.empty()) {
+    checkpoints.emplace(options.checkpoint_dir, StintFingerprint(o, track, warm_up));
+  }
 
   // The greedy driver: one optimal lap after another, each from the last one's end.
   StintResult result;
@@ -195,7 +205,16 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
       lap_options.ipopt.warm_z_upper = last.z_upper;
       lap_options.ipopt.warm_lambda = last.lambda;
     }
+    const std::optional<PresolvedLap> saved =
+        checkpoints ? checkpoints->ReadGreedyLap(i + 1) : std::nullopt;
+    if (saved) {
+      lap_options.presolved = *saved;
+      ++result.greedy_laps_resumed;
+    }
     OptimalLapRun run = RunOptimalLap(WithMass(worn, mass), track, lap_options, &w);
+    if (checkpoints && !saved) {
+      checkpoints->WriteGreedyLap(i + 1, PresolvedLap{run.coarse, run.solution.solve});
+    }
     StintLap lap = StintLaps(run.solution, track, 1, fuel, {mass}, o.bsfc_kg_per_J, eta)[0];
     lap.lap = i + 1;
     if (options.fuel_kg > 0.0 && lap.fuel_end_kg < 0.0) {
@@ -203,8 +222,9 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
                                    i + 1, options.laps));
     }
     fuel = lap.fuel_end_kg;
-    say(fmt::format("greedy lap {} of {}: {:.3f} s ({}, {} iterations)", i + 1, options.laps,
-                    lap.time_s, run.solution.solve.message, run.solution.solve.iterations));
+    say(fmt::format("greedy lap {} of {}: {:.3f} s ({}, {} iterations{})", i + 1, options.laps,
+                    lap.time_s, run.solution.solve.message, run.solution.solve.iterations,
+                    saved ? "; from its checkpoint" : ""));
     state = EndState(run.solution);
     result.greedy_total_time_s += lap.time_s;
     result.greedy_laps.push_back(lap);
@@ -237,11 +257,46 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
     stint_warm = RunLapWarmUp(worn, stint_track, qss_only);
     stint_warm.start = warm_up.start;
   }
-  say(fmt::format("the stint: {} laps as one problem, from the greedy laps...", options.laps));
+  // Resuming: the stint solve's last iterate (point, multipliers, barrier) as a warm start.
+  const std::optional<SolveResult> iterate =
+      checkpoints ? checkpoints->ReadStintIterate() : std::nullopt;
+  if (iterate) {  // the fingerprint says it is this stint's programme
+    so.lap.start_point = iterate->x;
+    so.lap.ipopt.warm_z_lower = iterate->z_lower;
+    so.lap.ipopt.warm_z_upper = iterate->z_upper;
+    so.lap.ipopt.warm_lambda = iterate->lambda;
+    if (iterate->barrier_mu > 0.0) so.lap.ipopt.warm_mu = iterate->barrier_mu;
+    result.resumed_from_iteration = iterate->iterations;
+  }
+  if (checkpoints) {
+    so.lap.ipopt.checkpoint_every = options.checkpoint_every;
+    const int offset = result.resumed_from_iteration;
+    so.lap.ipopt.on_checkpoint = [&checkpoints, offset](const SolveResult& at) {
+      SolveResult saved = at;
+      saved.iterations += offset;
+      checkpoints->WriteStintIterate(saved);
+    };
+  }
+  if (checkpoints && checkpoints->foreign_files() > 0) {
+    say(fmt::format("checkpoints in '{}': {} file(s) of another stint, not used",
+                    checkpoints->dir().string(), checkpoints->foreign_files()));
+  }
+  say(result.resumed_from_iteration > 0
+          ? fmt::format("the stint: {} laps as one problem, resumed from its checkpoint at "
+                        "iteration {}...",
+                        options.laps, result.resumed_from_iteration)
+          : fmt::format("the stint: {} laps as one problem, from the greedy laps...",
+                        options.laps));
   const auto stint_start = std::chrono::steady_clock::now();
   result.run = RunOptimalLap(worn, stint_track, so.lap, &stint_warm);
   result.solve_time_s = Seconds(stint_start);
   result.ipopt_iterations = result.run.solution.solve.iterations;
+  // The end as a last checkpoint: a run again with the same folder converges at once.
+  if (checkpoints && result.run.solution.solve.ok()) {
+    SolveResult end = result.run.solution.solve;
+    end.iterations += result.resumed_from_iteration;
+    checkpoints->WriteStintIterate(end);
+  }
   result.laps = StintLaps(result.run.solution, track, options.laps, options.fuel_kg, masses,
                           o.bsfc_kg_per_J, eta);
   for (size_t i = 0; i < result.laps.size(); ++i) {

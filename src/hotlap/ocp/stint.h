@@ -22,6 +22,7 @@
 /// Accelerated wear: the wear rate times wear_scale (the compound's wp1), so that N laps stand for
 /// about N * wear_scale laps of wear.
 
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -49,6 +50,18 @@ struct StintOptions {
     return o;
   }();
   static constexpr double kStintStepM = 6.0;
+  /// Checkpoints (empty: none; ocp/stint_checkpoint.h, docs/reliability.md): this folder gets
+  /// each greedy lap's solves as the lap ends and the stint solve's iterate every
+  /// checkpoint_every Ipopt iterations (and at its end). A later run with the same folder, car,
+  /// track and options resumes from them: the greedy laps saved are taken as they were solved
+  /// (not solved again) and the stint's solve warm-starts from its last iterate, so a run killed
+  /// part way loses at most one greedy lap's solve or checkpoint_every iterations. Files of
+  /// another stint (another fingerprint) are not used, and are replaced as this one goes.
+  std::filesystem::path checkpoint_dir;
+  int checkpoint_every = 10;
+  /// More that tells one stint from another in the checkpoints' fingerprint (the command line
+  /// puts in its input files' bytes; the car's parameters count through the warm-up anyway).
+  std::string checkpoint_key;
 };
 
 /// One lap of a stint.
@@ -77,7 +90,11 @@ struct StintResult {
   double fuel_plan_error_kg = 0.0;
   double solve_time_s = 0.0;  ///< the stint's own solve
   double greedy_solve_time_s = 0.0;
-  int ipopt_iterations = 0;  ///< the stint's own solve
+  int ipopt_iterations = 0;  ///< the stint's own solve (this run's, after any resumed ones)
+  /// Resumed from checkpoints: greedy laps taken from their files, and the stint solve's
+  /// iteration its saved iterate was taken at (0: started afresh).
+  int greedy_laps_resumed = 0;
+  int resumed_from_iteration = 0;
   bool ok() const { return run.solution.solve.ok(); }
 };
 

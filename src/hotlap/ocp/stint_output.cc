@@ -114,6 +114,8 @@ nlohmann::json StintJson(const StintResult& r, const StintOptions& o, const std:
       {"solve_time_s", RoundSignificant(r.solve_time_s)},
       {"greedy_solve_time_s", RoundSignificant(r.greedy_solve_time_s)},
       {"ipopt_iterations", r.ipopt_iterations},
+      {"greedy_laps_resumed", r.greedy_laps_resumed},
+      {"resumed_from_iteration", r.resumed_from_iteration},
       {"status", Status(r)},
       {"message", s.message},
       {"constraint_violation", RoundSignificant(s.primal_infeasibility)},
