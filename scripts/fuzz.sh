@@ -4,13 +4,18 @@
 #   bash scripts/fuzz.sh [TARGET|all] [SECONDS]   # default: all, 60 s each
 #   bash scripts/fuzz.sh --list                   # the targets
 #   bash scripts/fuzz.sh --summary                # fuzz/stats.tsv per target (runs, minutes, ...)
+#   bash scripts/fuzz.sh --budget [TARGET|all]     # each target until the goal of
+#                                                 # docs/reliability.md: 10^7 executions or one
+#                                                 # CPU-hour in all (fuzz/stats.tsv's runs count),
+#                                                 # whichever comes first; at nice 19, so it can run
+#                                                 # beside other work for as long as it takes
 #
 # TARGET is a name of fuzz/ without "_fuzz" (tir, telemetry_csv, ...). Targets run one after the
 # other (HOTLAP_FUZZ_JOBS=N: N at a time). Each grows its corpus in fuzz/corpus/TARGET (not in
 # git), starting from the seeds of the shipped data (made afresh in build-fuzz/seeds/TARGET);
 # what it finds (crash-*, leak-*, timeout-*, oom-*) goes to fuzz/findings/TARGET/ (not in git).
-# One line per run is appended to fuzz/stats.tsv (target, seconds, executions, corpus files,
-# outcome). Exits 1 if any target found something. Needs clang (scripts/install-deps.sh --fuzz).
+# One line per run is appended to fuzz/stats.tsv (time, target, seconds, executions, corpus
+# files, outcome, CPU seconds). Exits 1 if any target found something. Needs clang (scripts/install-deps.sh --fuzz).
 #
 # Environment: HOTLAP_FUZZ_BUILD (build folder, default build-fuzz), HOTLAP_FUZZ_NO_BUILD=1 (run
 # what is built), HOTLAP_FUZZ_ARGS (more libFuzzer options, e.g. "-max_len=4096").
@@ -30,10 +35,17 @@ fi
 # --summary: fuzz/stats.tsv added up per target, as the Markdown rows of docs/reliability.md.
 if [ "${1:-}" = "--summary" ]; then
   awk -F'\t' '{ runs[$2] += $4; secs[$2] += $3; corpus[$2] = $5; n[$2]++
+      cpu[$2] += ($7 == "" ? $3 : $7)
       if ($6 != "ok") found[$2]++ }
-    END { for (t in runs) printf "| %s | %d | %.1f | %d | %d | %d |\n", t, runs[t], secs[t] / 60,
-      n[t], found[t], corpus[t] }' fuzz/stats.tsv | sort
+    END { for (t in runs) printf "| %s | %d | %.1f | %.1f | %d | %d | %d |\n", t, runs[t],
+      secs[t] / 60, cpu[t] / 60, n[t], found[t], corpus[t] }' fuzz/stats.tsv | sort
   exit 0
+fi
+# --budget: what each target has left of the goal (10^7 executions, 3600 CPU seconds).
+budget=0
+if [ "${1:-}" = "--budget" ]; then
+  budget=1
+  shift
 fi
 which=${1:-all}
 seconds=${2:-60}
@@ -98,7 +110,8 @@ dict_of() {
 }
 
 run_one() {
-  local t=$1
+  local t=$1 started_wall
+  started_wall=$(date +%s)
   local seeds=$build/seeds/$t corpus=fuzz/corpus/$t findings=fuzz/findings/$t
   rm -rf "$seeds"
   mkdir -p "$seeds" "$corpus" "$findings"
@@ -116,22 +129,46 @@ run_one() {
   dict=$(dict_of "$t")
   local log=$build/logs/$t.log
   mkdir -p "$build/logs"
-  local rc=0
+  local rc=0 limits=(-max_total_time="$seconds") prefix=()
+  if [ "$budget" -eq 1 ]; then
+    local done_runs done_cpu
+    read -r done_runs done_cpu < <(awk -F'\t' -v t="$t" '$2 == t { r += $4; c += ($7 == "" ? $3 : $7) }
+      END { printf "%d %d\n", r, c }' fuzz/stats.tsv 2>/dev/null || echo "0 0")
+    if [ "${done_runs:-0}" -ge 10000000 ] || [ "${done_cpu:-0}" -ge 3600 ]; then
+      echo "fuzz: $t: goal reached already (${done_runs:-0} executions, ${done_cpu:-0} CPU s)"
+      return 0
+    fi
+    # The rest of the goal: -runs for the executions, RLIMIT_CPU (SIGXCPU) for the CPU time.
+    limits=(-runs=$((10000000 - ${done_runs:-0})) -max_total_time=0)
+    prefix=(nice -n 19 prlimit --cpu=$((3600 - ${done_cpu:-0})) --)
+  fi
+  local started_cpu
+  started_cpu=$(awk '{ print $14 + $15 + $16 + $17 }' /proc/$BASHPID/stat)
   # -timeout: an input that takes 10 s is a hang. Leaks are findings (ASan's leak checker).
   ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1} \
     UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1} \
-    "$build/fuzz/${t}_fuzz" "$corpus" "$seeds" ${dict:+-dict=$dict} -max_total_time="$seconds" \
+    "${prefix[@]}" "$build/fuzz/${t}_fuzz" "$corpus" "$seeds" ${dict:+-dict=$dict} "${limits[@]}" \
     -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$findings/" \
     ${HOTLAP_FUZZ_ARGS:-} >"$log" 2>&1 || rc=$?
+  # CPU seconds of the fuzzer (children of this shell, in clock ticks).
+  local cpu_seconds
+  cpu_seconds=$(awk -v s="$started_cpu" -v hz="$(getconf CLK_TCK)" \
+    '{ printf "%.0f", ($14 + $15 + $16 + $17 - s) / hz }' /proc/$BASHPID/stat)
+  # SIGXCPU (exit 152): the CPU budget ran out, not a finding.
+  if [ "$budget" -eq 1 ] && [ "$rc" -eq 152 ]; then rc=0; fi
   local runs
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  # Killed by its CPU limit, libFuzzer prints no final stats: its last status line's count.
+  if [ -z "$runs" ]; then runs=$(sed -n 's/^#\([0-9][0-9]*\)[[:space:]].*/\1/p' "$log" | tail -1); fi
   local files
   files=$(find "$corpus" -type f | wc -l)
   local outcome=ok
   if [ "$rc" -ne 0 ]; then outcome="FOUND (exit $rc; $log)"; fi
-  printf '%s\t%s\t%s\t%s\t%s\t%s\n' "$(date -u +%FT%TZ)" "$t" "$seconds" "${runs:-?}" "$files" \
-    "$outcome" >>fuzz/stats.tsv
-  echo "fuzz: $t: ${runs:-?} executions in $seconds s, corpus $files files: $outcome"
+  local wall=$seconds
+  if [ "$budget" -eq 1 ]; then wall=$(($(date +%s) - started_wall)); fi
+  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$(date -u +%FT%TZ)" "$t" "$wall" "${runs:-?}" "$files" \
+    "$outcome" "$cpu_seconds" >>fuzz/stats.tsv
+  echo "fuzz: $t: ${runs:-?} executions in $wall s ($cpu_seconds CPU s), corpus $files files: $outcome"
   if [ "$rc" -ne 0 ]; then
     grep -m 3 -E "ERROR|SUMMARY|runtime error|terminate called" "$log" || true
     return 1

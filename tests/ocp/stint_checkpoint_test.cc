@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -174,6 +175,28 @@ TEST_F(StintResumeTest, StoppedStintResumesFromItsCheckpoints) {
   EXPECT_NEAR(resumed.total_time_s, whole.total_time_s, 1e-3);
   EXPECT_LE(resumed.ipopt_iterations, whole.ipopt_iterations - 5 + o.checkpoint_every)
       << "the whole solve took " << whole.ipopt_iterations;
+}
+
+// A checkpoint that cannot be written (here its path is a folder; a full disk alike) costs the
+// resume, not the run: the stint ends as without checkpoints, with one warning.
+TEST_F(StintResumeTest, CheckpointThatCannotBeWrittenIsAWarning) {
+  const test::TempDir dir;
+  StintOptions o = Coarse();
+  o.wear_scale = 0.0;
+  o.fuel_kg = 0.0;
+  o.checkpoint_dir = dir.path();
+  o.checkpoint_every = 4;
+  for (const char* f : {"greedy_lap_1.bin", "greedy_lap_2.bin", "stint_iterate.bin"}) {
+    fs::create_directories(dir.path() / f / "in_the_way");
+  }
+  std::vector<std::string> warnings;
+  const StintResult r = SolveStint(*car_, *track_, o, [&](const std::string& line) {
+    if (line.rfind("warning:", 0) == 0) warnings.push_back(line);
+  });
+  ASSERT_TRUE(r.ok()) << r.run.solution.solve.message;
+  EXPECT_EQ(r.greedy_laps_resumed, 0);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("greedy_lap_1.bin"), std::string::npos) << warnings[0];
 }
 
 }  // namespace

@@ -182,6 +182,16 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
   if (!options.checkpoint_dir.empty()) {
     checkpoints.emplace(options.checkpoint_dir, StintFingerprint(o, track, warm_up));
   }
+  // A checkpoint that cannot be written (a full disk) costs the resume, not the run: said once.
+  bool checkpoint_warned = false;
+  const auto save = [&](const std::function<void()>& write) {
+    try {
+      write();
+    } catch (const std::exception& e) {
+      if (!checkpoint_warned && log) log(fmt::format("warning: no checkpoint: {}", e.what()));
+      checkpoint_warned = true;
+    }
+  };
 
   // The greedy driver: one optimal lap after another, each from the last one's end.
   StintResult result;
@@ -213,7 +223,9 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
     }
     OptimalLapRun run = RunOptimalLap(WithMass(worn, mass), track, lap_options, &w);
     if (checkpoints && !saved) {
-      checkpoints->WriteGreedyLap(i + 1, PresolvedLap{run.coarse, run.solution.solve});
+      save([&] {
+        checkpoints->WriteGreedyLap(i + 1, PresolvedLap{run.coarse, run.solution.solve});
+      });
     }
     StintLap lap = StintLaps(run.solution, track, 1, fuel, {mass}, o.bsfc_kg_per_J, eta)[0];
     lap.lap = i + 1;
@@ -271,10 +283,10 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
   if (checkpoints) {
     so.lap.ipopt.checkpoint_every = options.checkpoint_every;
     const int offset = result.resumed_from_iteration;
-    so.lap.ipopt.on_checkpoint = [&checkpoints, offset](const SolveResult& at) {
+    so.lap.ipopt.on_checkpoint = [&checkpoints, &save, offset](const SolveResult& at) {
       SolveResult saved = at;
       saved.iterations += offset;
-      checkpoints->WriteStintIterate(saved);
+      save([&] { checkpoints->WriteStintIterate(saved); });
     };
   }
   if (checkpoints && checkpoints->foreign_files() > 0) {
@@ -295,7 +307,7 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
   if (checkpoints && result.run.solution.solve.ok()) {
     SolveResult end = result.run.solution.solve;
     end.iterations += result.resumed_from_iteration;
-    checkpoints->WriteStintIterate(end);
+    save([&] { checkpoints->WriteStintIterate(end); });
   }
   result.laps = StintLaps(result.run.solution, track, options.laps, options.fuel_kg, masses,
                           o.bsfc_kg_per_J, eta);

@@ -43,9 +43,17 @@ StintCheckpoints::StintCheckpoints(fs::path dir, std::uint64_t fingerprint)
 }
 
 std::optional<std::string> StintCheckpoints::ReadPayload(const fs::path& path) const {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // Only a regular file is a checkpoint (anything else is not used, not an error).
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return std::nullopt;
+  std::string bytes;
+  try {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return std::nullopt;
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
   const size_t header = sizeof(kMagic) + sizeof(std::uint64_t);
   if (bytes.size() < header + sizeof(std::uint64_t) ||
       std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0) {
