@@ -15,6 +15,7 @@
 #include "hotlap/common/json_output.h"
 #include "hotlap/common/output_folder.h"
 #include "hotlap/common/units.h"
+#include "hotlap/observe/observer_config.h"
 #include "hotlap/sim/road.h"
 #include "hotlap/sim/synth.h"
 #include "hotlap/sim/synth_params.h"
@@ -26,6 +27,7 @@ namespace {
 
 struct SynthArgs {
   std::string car = "gen7", params, track = "darlington", out, json;
+  std::string process_noise;     // --process-noise NOISE.yaml|default
   std::vector<std::string> set;  // --set KEY=VALUE
   int laps = 1;
   double rate_hz = 50.0, noise_C = 0.5, lag_s = 0.2, wear_noise_mm = 1e-4, radius_noise_mm = 0.1;
@@ -56,6 +58,16 @@ int RunSynth(const SynthArgs& a) {
   o.seed = a.seed;
   o.ambient_temp = CelsiusToKelvin(a.ambient_C);
   o.track_temp = CelsiusToKelvin(a.track_C);
+  std::string process_noise_file;
+  if (!a.process_noise.empty()) {
+    // The observer's noise file: its process_noise section is the random walk the truth gets.
+    process_noise_file = a.process_noise == "default"
+                             ? observe::DefaultObserverConfigPath().string()
+                             : a.process_noise;
+    const observe::ProcessNoise q = observe::LoadObserverConfig(process_noise_file).process;
+    o.process_noise =
+        sim::SynthProcessNoise{q.tread_temp, q.carcass_temp, q.wear, q.disc_temp, q.calliper_temp};
+  }
   const sim::SynthLog log = sim::SynthesizeLog(car, road, o);
   sim::WriteSynthLog(a.out, log,
                      {{"track", track.name()},
@@ -66,6 +78,15 @@ int RunSynth(const SynthArgs& a) {
              car.name, params_name, a.laps, track.name(), log.lap_time_s);
   fmt::print("{} samples at {:g} Hz; sensors: lag {:g} s, noise {:g} degC; seed {}\n", time.size(),
              a.rate_hz, a.lag_s, a.noise_C, a.seed);
+  if (o.process_noise) {
+    const sim::SynthProcessNoise& q = *o.process_noise;
+    fmt::print(
+        "truth with process noise from {}: random walk of tread {:.3g}, carcass {:.3g}, disc "
+        "{:.3g}, calliper {:.3g} degC per sqrt(s), wear {:.3g} mm per sqrt(s)\n",
+        process_noise_file, std::sqrt(q.tread_temp_K2_per_s), std::sqrt(q.carcass_temp_K2_per_s),
+        std::sqrt(q.disc_temp_K2_per_s), std::sqrt(q.calliper_temp_K2_per_s),
+        std::sqrt(q.wear_mm2_per_s));
+  }
   nlohmann::json corners;
   for (Corner c : kAllCorners) {
     const sim::CornerHistory& h = log.truth.corners[CornerIndex(c)];
@@ -80,21 +101,31 @@ int RunSynth(const SynthArgs& a) {
   }
   fmt::print("wrote {}\n", a.out);
   if (!a.json.empty()) {
-    WriteJsonFile(a.json, {{"command", "synth"},
-                           {"car", car.name},
-                           {"overrides", vehicle::OverridesJson(car.overrides)},
-                           {"params", a.params},
-                           {"track", track.name()},
-                           {"out", a.out},
-                           {"laps", a.laps},
-                           {"samples", time.size()},
-                           {"duration_s", RoundSignificant(time.back() - time.front())},
-                           {"lap_time_s", RoundSignificant(log.lap_time_s)},
-                           {"rate_hz", a.rate_hz},
-                           {"noise_C", a.noise_C},
-                           {"lag_s", a.lag_s},
-                           {"seed", a.seed},
-                           {"corners", corners}});
+    nlohmann::json summary = {{"command", "synth"},
+                              {"car", car.name},
+                              {"overrides", vehicle::OverridesJson(car.overrides)},
+                              {"params", a.params},
+                              {"track", track.name()},
+                              {"out", a.out},
+                              {"laps", a.laps},
+                              {"samples", time.size()},
+                              {"duration_s", RoundSignificant(time.back() - time.front())},
+                              {"lap_time_s", RoundSignificant(log.lap_time_s)},
+                              {"rate_hz", a.rate_hz},
+                              {"noise_C", a.noise_C},
+                              {"lag_s", a.lag_s},
+                              {"seed", a.seed},
+                              {"corners", corners}};
+    if (o.process_noise) {
+      const sim::SynthProcessNoise& q = *o.process_noise;
+      summary["process_noise"] = {{"file", process_noise_file},
+                                  {"tread_temp_K2_per_s", q.tread_temp_K2_per_s},
+                                  {"carcass_temp_K2_per_s", q.carcass_temp_K2_per_s},
+                                  {"wear_mm2_per_s", q.wear_mm2_per_s},
+                                  {"disc_temp_K2_per_s", q.disc_temp_K2_per_s},
+                                  {"calliper_temp_K2_per_s", q.calliper_temp_K2_per_s}};
+    }
+    WriteJsonFile(a.json, summary);
     fmt::print("wrote {}\n", a.json);
   }
   return 0;
@@ -127,7 +158,12 @@ CommandRunner RegisterSynthCommand(CLI::App& app) {
                   "Standard deviation of the rolling radius")
       ->capture_default_str()
       ->check(kNonNegative);
-  sub->add_option("--seed", a->seed, "Seed of the noise")->capture_default_str();
+  sub->add_option("--process-noise", a->process_noise,
+                  "Make the truth stochastic: the model plus the random-walk process noise of an "
+                  "observer noise file (its process_noise section; 'default' for "
+                  "data/observer/default.yaml), as hotlap observe assumes");
+  sub->add_option("--seed", a->seed, "Seed of the noise (sensor and process noise)")
+      ->capture_default_str();
   sub->add_option("--ambient-temp-C", a->ambient_C, "Air temperature")->capture_default_str();
   sub->add_option("--track-temp-C", a->track_C, "Track surface temperature")->capture_default_str();
   sub->add_option("--step-m", a->step_m, "Spacing of the road points the lap is solved on")

@@ -1,6 +1,8 @@
 // Synthetic logs: the documented columns, inputs written exactly, the truth behind the
 // measurements (replaying the written inputs with the true parameters reproduces it), the sensor
-// noise level and lag, the rolling radius from the contact-length law, determinism by seed.
+// noise level and lag, the rolling radius from the contact-length law, determinism by seed; the
+// stochastic truth (process noise): the model's mean, random-walk increments of the given
+// intensity, the sensor noise unchanged.
 
 #include "hotlap/sim/synth.h"
 
@@ -125,13 +127,111 @@ TEST_F(SynthTest, SameSeedSameLogOtherSeedOtherNoise) {
   EXPECT_EQ(Column(other, "fz_fl_N"), Column(*log_, "fz_fl_N"));
 }
 
+// The stochastic truth with zero intensities is the deterministic replay, interval by interval.
+TEST_F(SynthTest, StochasticTruthWithoutNoiseIsTheReplay) {
+  ReplayInitialState initial;
+  for (auto& s : initial.tyres) s = {car_->initial.tread_temp, car_->initial.carcass_temp, 0.0};
+  for (auto& s : initial.brakes) s = {car_->initial.disc_temp, car_->initial.calliper_temp};
+  const ReplayResult r = RunStochasticReplay(*car_, log_->inputs, initial, 0.02, {}, 1);
+  for (int c = 0; c < 4; ++c) {
+    const CornerHistory& a = r.corners[c];
+    const CornerHistory& b = log_->truth.corners[c];
+    for (size_t k = 0; k < a.tread_temp.size(); k += 7) {
+      EXPECT_NEAR(a.tread_temp[k], b.tread_temp[k], 1e-9) << c << " " << k;
+      EXPECT_NEAR(a.carcass_temp[k], b.carcass_temp[k], 1e-9) << c << " " << k;
+      EXPECT_NEAR(a.wear[k], b.wear[k], 1e-12) << c << " " << k;
+      EXPECT_NEAR(a.disc_temp[k], b.disc_temp[k], 1e-9) << c << " " << k;
+      EXPECT_NEAR(a.calliper_temp[k], b.calliper_temp[k], 1e-9) << c << " " << k;
+      EXPECT_NEAR(a.grip_factor[k], b.grip_factor[k], 1e-9) << c << " " << k;
+      EXPECT_EQ(a.brake_power[k], b.brake_power[k]) << c << " " << k;
+    }
+  }
+}
+
+// With process noise, the truth minus the deterministic truth is a random walk the model barely
+// pulls back over one 0.05 s interval: its increments have variance q dt per state (the model's
+// own pull, dt / tau of the difference, is far below the noise at these intensities), the
+// increments are uncorrelated, and the measured columns are the new truth plus the same sensor
+// noise as without process noise.
+TEST_F(SynthTest, ProcessNoiseIsARandomWalkOfTheGivenIntensity) {
+  SynthOptions o;
+  o.laps = 2;
+  o.rate_hz = 20.0;
+  o.process_noise = SynthProcessNoise{4e-2, 1e-2, 1e-8, 1e-1, 4e-2};
+  const SynthLog noisy = SynthesizeLog(*car_, test::OvalRoad(), o);
+  ASSERT_EQ(noisy.inputs.time, log_->inputs.time);
+  EXPECT_EQ(Column(noisy, "fz_fl_N"), Column(*log_, "fz_fl_N"));
+  const double dt = 0.05;
+  const double q[5] = {4e-2, 1e-2, 1e-8, 1e-1, 4e-2};
+  double var[5] = {}, lag1[5] = {};
+  long count = 0;
+  for (int c = 0; c < 4; ++c) {
+    const CornerHistory& a = noisy.truth.corners[c];
+    const CornerHistory& b = log_->truth.corners[c];
+    const std::vector<double>* sa[5] = {&a.tread_temp, &a.carcass_temp, &a.wear, &a.disc_temp,
+                                        &a.calliper_temp};
+    const std::vector<double>* sb[5] = {&b.tread_temp, &b.carcass_temp, &b.wear, &b.disc_temp,
+                                        &b.calliper_temp};
+    for (size_t k = 2; k < a.tread_temp.size(); ++k) {
+      for (int j = 0; j < 5; ++j) {
+        const auto d = [&](size_t i) { return (*sa[j])[i] - (*sb[j])[i]; };
+        const double inc = d(k) - d(k - 1), previous = d(k - 1) - d(k - 2);
+        var[j] += inc * inc;
+        lag1[j] += inc * previous;
+      }
+      ++count;
+    }
+  }
+  ASSERT_GT(count, 3000);
+  for (int j = 0; j < 5; ++j) {
+    // About 4000 increments: the variance to within 3 x sqrt(2 / 4000) = 7%.
+    EXPECT_NEAR(var[j] / count / (q[j] * dt), 1.0, 0.07) << j;
+    EXPECT_NEAR(lag1[j] / var[j], 0.0, 0.06) << j;  // uncorrelated: 3 / sqrt(4000) = 0.05
+  }
+  // The truth moved by far more than rounding, and the readings follow the new truth.
+  double moved = 0.0, sensor2 = 0.0;
+  const std::vector<double>& tread = Column(noisy, "tread_temp_rl_C");
+  FirstOrderLag<double> lag(0.2);
+  for (size_t k = 0; k < tread.size(); ++k) {
+    moved = std::max(moved, std::abs(noisy.truth.corners[2].tread_temp[k] -
+                                     log_->truth.corners[2].tread_temp[k]));
+    const double e =
+        tread[k] + 273.15 - lag.Next(noisy.inputs.time[k], noisy.truth.corners[2].tread_temp[k]);
+    sensor2 += e * e;
+  }
+  EXPECT_GT(moved, 0.3);
+  EXPECT_NEAR(std::sqrt(sensor2 / tread.size()), 0.5, 0.04);
+  // Same seed, same log; the sensor noise stream is that of the log without process noise (the
+  // process noise has its own), so the wear channel's noise is unchanged.
+  const SynthLog again = SynthesizeLog(*car_, test::OvalRoad(), o);
+  EXPECT_EQ(again.values, noisy.values);
+  const std::vector<double>& wear = Column(noisy, "wear_fl_mm");
+  const std::vector<double>& wear0 = Column(*log_, "wear_fl_mm");
+  for (size_t k = 0; k < wear.size(); k += 11) {
+    EXPECT_NEAR(wear[k] - noisy.truth.corners[0].wear[k], wear0[k] - log_->truth.corners[0].wear[k],
+                1e-15)
+        << k;
+  }
+  std::map<std::string, std::string> meta(noisy.metadata.begin(), noisy.metadata.end());
+  EXPECT_NE(meta["process_noise"].find("tread 0.04 K^2/s"), std::string::npos)
+      << meta["process_noise"];
+  std::map<std::string, std::string> meta0(log_->metadata.begin(), log_->metadata.end());
+  EXPECT_EQ(meta0.count("process_noise"), 0u);
+}
+
 TEST(SynthOptionsTest, BadOptionsAreInputErrors) {
   const vehicle::Car car = test::Gen7Car();
   const auto road = test::OvalRoad();
   for (const auto& edit : std::vector<std::function<void(SynthOptions&)>>{
            [](SynthOptions& o) { o.laps = 0; }, [](SynthOptions& o) { o.rate_hz = 0.0; },
            [](SynthOptions& o) { o.temp_noise_K = -1.0; },
-           [](SynthOptions& o) { o.sensor_lag_s = std::nan(""); }}) {
+           [](SynthOptions& o) { o.sensor_lag_s = std::nan(""); },
+           [](SynthOptions& o) {
+             o.process_noise = SynthProcessNoise{-1e-3, 0, 0, 0, 0};
+           },
+           [](SynthOptions& o) {
+             o.process_noise = SynthProcessNoise{0, 0, 0, std::nan(""), 0};
+           }}) {
     SynthOptions o;
     edit(o);
     EXPECT_THROW(SynthesizeLog(car, road, o), InputError);

@@ -44,32 +44,7 @@ SynthCheck CheckObserverOnSynth(const vehicle::Car& car, const sim::SynthLog& lo
   std::array<bool, 4> out{};
   long withheld = 0, disc_total = 0;
 
-  // The stochastic truth: the model over the log's inputs plus process noise (corner_filter.h's
-  // integrator, the filter's own discretisation), read with the configured sensor noise.
-  std::vector<TyreFilter> true_tyres;
-  std::vector<BrakeFilter> true_brakes;
   std::array<std::array<double, 5>, 4> truth{};  // tread, carcass, wear, disc, calliper
-  for (Corner c : kAllCorners) {
-    const int i = CornerIndex(c);
-    const sim::CornerHistory& h = log.truth.corners[i];
-    truth[i] = {h.tread_temp[0], h.carcass_temp[0], h.wear[0], h.disc_temp[0], h.calliper_temp[0]};
-    true_tyres.emplace_back(car.tyre(c).params, car.tyre(c).compound, config.process, P5Scale{},
-                            config.max_step_s);
-    true_brakes.emplace_back(car.brake(c).params, config.process, config.max_step_s);
-  }
-  sim::GaussianNoise process_noise(o.seed + 1);
-  if (o.stochastic_truth) {
-    // The unmeasured starting states drawn from the observer's prior (the measured ones start at
-    // the first reading, whose error is the sensor's).
-    for (Corner c : kAllCorners) {
-      std::array<double, 5>& x = truth[CornerIndex(c)];
-      x[1] = *start.carcass_temp + config.initial_sd.carcass_temp * process_noise.Next();
-      x[4] = car.initial.calliper_temp + config.initial_sd.calliper_temp * process_noise.Next();
-    }
-  }
-  const double q[5] = {config.process.tread_temp, config.process.carcass_temp, config.process.wear,
-                       config.process.disc_temp, config.process.calliper_temp};
-
   SynthCheck r;
   double sum_carcass2 = 0.0;
   std::array<double, 4> corner_carcass2{};
@@ -83,59 +58,25 @@ SynthCheck CheckObserverOnSynth(const vehicle::Car& car, const sim::SynthLog& lo
     const double dt = k > 0 ? in.time[k] - in.time[k - 1] : 0.0;
     const double leave = dt / o.dropout_mean_s;  // P(out -> in) per sample
     const double enter = leave * o.disc_dropout_fraction / (1.0 - o.disc_dropout_fraction);
-    if (o.stochastic_truth && k > 0) {
-      const std::array<double, 2> time = {in.time[k - 1], in.time[k]};
-      const std::array<double, 2> ambient = {in.ambient_temp[k - 1], in.ambient_temp[k]};
-      const std::array<double, 2> track = {in.track_temp[k - 1], in.track_temp[k]};
-      for (int i = 0; i < 4; ++i) {
-        const sim::CornerChannels& ch = in.corners[i];
-        const auto pair = [&](const std::vector<double>& v) {
-          return std::array<double, 2>{v[k - 1], v[k]};
-        };
-        const auto speed = pair(ch.speed), fx = pair(ch.fx), fy = pair(ch.fy), fz = pair(ch.fz),
-                   slip_angle = pair(ch.slip_angle), slip_ratio = pair(ch.slip_ratio);
-        const sim::CornerSamples two{time,       speed,      fx,      fy,   fz,
-                                     slip_angle, slip_ratio, ambient, track};
-        Gaussian<TyreFilter::kStates> t;
-        t.mean << truth[i][0], truth[i][1], truth[i][2], 1.0;
-        true_tyres[i].Reset(t);
-        true_tyres[i].Predict(two);
-        Gaussian<BrakeFilter::kStates> b;
-        b.mean << truth[i][3], truth[i][4];
-        true_brakes[i].Reset(b);
-        true_brakes[i].Predict(two);
-        const auto& tm = true_tyres[i].estimate().mean;
-        const auto& bm = true_brakes[i].estimate().mean;
-        truth[i] = {tm(0), tm(1), tm(2), bm(0), bm(1)};
-        for (int j = 0; j < 5; ++j) truth[i][j] += std::sqrt(q[j] * dt) * process_noise.Next();
-      }
-    } else if (!o.stochastic_truth) {
-      for (int i = 0; i < 4; ++i) {
-        const sim::CornerHistory& h = log.truth.corners[i];
-        truth[i] = {h.tread_temp[k], h.carcass_temp[k], h.wear[k], h.disc_temp[k],
-                    h.calliper_temp[k]};
-      }
+    for (int i = 0; i < 4; ++i) {
+      const sim::CornerHistory& h = log.truth.corners[i];
+      truth[i] = {h.tread_temp[k], h.carcass_temp[k], h.wear[k], h.disc_temp[k],
+                  h.calliper_temp[k]};
     }
     for (int i = 0; i < 4; ++i) {
       const sim::CornerChannels& ch = in.corners[i];
-      const SensorNoise& sd = config.sensors[i];
       s.inputs[i] = {ch.speed[k], ch.fx[k], ch.fy[k], ch.fz[k], ch.slip_angle[k], ch.slip_ratio[k]};
       if (k > 0) out[i] = out[i] ? uniform() >= leave : uniform() < enter;
-      // Readings: the log's columns, or the stochastic truth plus sensor noise.
-      const auto read = [&](const std::vector<double>& column_C, int state, double sd_K) {
-        return o.stochastic_truth ? truth[i][state] + sd_K * process_noise.Next()
-                                  : CelsiusToKelvin(column_C[k]);
-      };
-      s.readings[i].tread_temp = read(*tread[i], 0, sd.tread_temp);
+      // Readings: the log's columns.
+      s.readings[i].tread_temp = CelsiusToKelvin((*tread[i])[k]);
       ++disc_total;
-      const double disc_reading = read(*disc[i], 3, sd.disc_temp);
+      const double disc_reading = CelsiusToKelvin((*disc[i])[k]);
       if (out[i] && k > 0) {
         ++withheld;
       } else {
         s.readings[i].disc_temp = disc_reading;
       }
-      const double calliper_reading = read(*calliper[i], 4, sd.calliper_temp);
-      if (o.read_calliper) s.readings[i].calliper_temp = calliper_reading;
+      if (o.read_calliper) s.readings[i].calliper_temp = CelsiusToKelvin((*calliper[i])[k]);
     }
     r.warnings += static_cast<long>(observer.Step(s).size());
     if (in.time[k] - in.time[0] < o.score_from_s) continue;
@@ -195,6 +136,7 @@ SynthCheck CheckObserverOnSynth(const vehicle::Car& car, const sim::SynthLog& lo
     }
   }
   r.pooled_mean_nis = nis_count > 0 ? nis_sum / static_cast<double>(nis_count) : 0.0;
+  r.nis_used = nis_count;
   r.pooled_nis_bounds95 = MeanNisBounds95(nis_count);
   return r;
 }

@@ -8,14 +8,16 @@
 /// temperatures with seeded dropouts (a two-state Markov chain: `disc_dropout_fraction` of the
 /// samples on average, in runs of mean length `dropout_mean_s`); carcass, wear and (by default)
 /// calliper are never read. The observer starts `carcass_offset_K` away from the true carcass
-/// temperature (with the stochastic truth, the unmeasured starting states are drawn from the
-/// observer's prior instead).
+/// temperature. The truth is the log's own (SynthLog::truth).
 ///
-/// Why two kinds of truth: with the deterministic truth every state at time t is a function of the
-/// starting state alone, so the estimation error of one corner is, after the first lap, one random
-/// draw (the error in the starting carcass temperature) scaled over time: the fraction of time
-/// inside the band is then close to 0 or 1 per corner, not 68%, however right the filter is. The
-/// stochastic truth refreshes the errors all the time, so the time fraction measures the bands.
+/// Make the log with process noise (sim::SynthOptions::process_noise, the observer's own
+/// intensities) to measure consistency: then the truth is the stochastic process the filter
+/// assumes, and its 1-sigma bands must hold the truth 68% of the time. Without process noise every
+/// true state at time t is a function of the starting state alone, so the estimation error of one
+/// corner is, after the first lap, one random draw (the error in the starting carcass
+/// temperature) scaled over time: the fraction of time inside the band is then close to 0 or 1
+/// per corner, not 68%, however right the filter is (and the filter, assuming a little model
+/// error, is cautious there).
 
 #include <array>
 #include <cstdint>
@@ -31,12 +33,6 @@ struct SynthCheckOptions {
   bool read_calliper = false;
   double carcass_offset_K = 3.0;  ///< observer's starting carcass minus the truth's
   uint64_t seed = 7;              ///< of the dropouts
-  /// false: the truth is the log's (the deterministic model) and the readings are its noisy
-  /// columns. true: the truth is the model driven by the log's inputs plus the process noise the
-  /// observer assumes (ObserverConfig::process, added as q dt per sample interval, seeded), read
-  /// with the configured sensor noise: the data the filter's assumptions describe exactly, where
-  /// its 1-sigma bands must hold the truth 68% of the time.
-  bool stochastic_truth = false;
   /// Scoring starts here (s from the log's start): the first lap by default (set by the caller
   /// to the log's lap time).
   double score_from_s = 0.0;
@@ -64,6 +60,7 @@ struct SynthCheck {
   int sensors = 0, sensors_consistent = 0;  ///< sensors read, and those within their bounds
   /// The mean NIS of every used reading of every sensor, and its 95% bounds.
   double pooled_mean_nis = 0.0;
+  long nis_used = 0;  ///< the readings it is the mean of
   std::pair<double, double> pooled_nis_bounds95{0.0, 0.0};
   long rejected = 0;  ///< readings rejected by the gate, all sensors
   long warnings = 0;  ///< disagreement warnings

@@ -9,6 +9,7 @@
 #include "hotlap/common/csv.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/telemetry.h"
+#include "hotlap/sim/sampled_inputs.h"
 #include "hotlap/sim/synth_sensor.h"
 
 namespace hotlap::sim {
@@ -36,9 +37,127 @@ void CheckOptions(const SynthOptions& o) {
       throw InputError(fmt::format("synth: {} must be finite and >= 0, got {:g}", name, value));
     }
   }
+  if (o.process_noise) {
+    const SynthProcessNoise& q = *o.process_noise;
+    for (const auto& [value, name] :
+         {std::pair{q.tread_temp_K2_per_s, "tread_temp_K2_per_s"},
+          std::pair{q.carcass_temp_K2_per_s, "carcass_temp_K2_per_s"},
+          std::pair{q.wear_mm2_per_s, "wear_mm2_per_s"},
+          std::pair{q.disc_temp_K2_per_s, "disc_temp_K2_per_s"},
+          std::pair{q.calliper_temp_K2_per_s, "calliper_temp_K2_per_s"}}) {
+      if (!(value >= 0.0) || !std::isfinite(value)) {
+        throw InputError(
+            fmt::format("synth: process noise {} must be finite and >= 0, got {:g}", name, value));
+      }
+    }
+  }
+}
+
+void CheckTruthTemperature(double temp, const char* what, Corner c, double time) {
+  if (!(temp > 0.0 && temp < 3000.0)) {
+    throw NumericalError(fmt::format(
+        "synth: the stochastic truth diverged: {} temperature of corner {} is {:g} K at t = {:g} "
+        "s; lower the process noise",
+        what, CornerName(c), temp, time));
+  }
+}
+
+// Samples k and k+1 of `in` alone.
+CornerSamples Interval(const CornerSamples& in, size_t k) {
+  return {in.time.subspan(k, 2),       in.speed.subspan(k, 2),        in.fx.subspan(k, 2),
+          in.fy.subspan(k, 2),         in.fz.subspan(k, 2),           in.slip_angle.subspan(k, 2),
+          in.slip_ratio.subspan(k, 2), in.ambient_temp.subspan(k, 2), in.track_temp.subspan(k, 2)};
 }
 
 }  // namespace
+
+ReplayResult RunStochasticReplay(const vehicle::Car& car, const ReplayInputs& in,
+                                 const ReplayInitialState& initial, double max_step_s,
+                                 const SynthProcessNoise& q, uint64_t seed) {
+  const size_t n = in.time.size();
+  if (n < 2) throw InputError("synth: the stochastic truth needs at least two samples");
+  if (!(max_step_s > 0.0)) throw InputError("synth: max step must be > 0 s");
+  GaussianNoise noise(seed);
+  ReplayResult result;
+  result.time = in.time;
+  for (Corner c : kAllCorners) {
+    const int i = CornerIndex(c);
+    const CornerChannels& ch = in.corners[i];
+    for (const std::vector<double>* v : {&ch.speed, &ch.fx, &ch.fy, &ch.fz, &ch.slip_angle,
+                                         &ch.slip_ratio, &in.ambient_temp, &in.track_temp}) {
+      if (v->size() != n) {
+        throw InputError(fmt::format("synth: a channel of corner {} has {} samples, time has {}",
+                                     CornerName(c), v->size(), n));
+      }
+    }
+    const CornerSamples samples{in.time,       ch.speed,      ch.fx,           ch.fy,        ch.fz,
+                                ch.slip_angle, ch.slip_ratio, in.ambient_temp, in.track_temp};
+    CornerSamples brake_samples = samples;
+    if (!ch.brake_fx.empty()) brake_samples.fx = ch.brake_fx;
+    const tyre::TyreFile& tyre_file = car.tyre(c);
+    const brake::BrakeFile& brake_file = car.brake(c);
+    const tyre::TyreThermalParams<double>& tp = tyre_file.params;
+    const tyre::TyreCompound& compound = *tyre_file.compound;
+    const tyre::TyreConstants<double> tc = tyre::CalcTyreConstants(tp);
+    const brake::BrakeThermalParams<double>& bp = brake_file.params;
+    const brake::BrakeConstants<double> bc = brake::CalcBrakeConstants(bp);
+
+    CornerHistory& h = result.corners[i];
+    for (auto* v : {&h.tread_temp, &h.carcass_temp, &h.wear, &h.grip_factor, &h.disc_temp,
+                    &h.calliper_temp, &h.brake_power}) {
+      v->resize(n);
+    }
+    tyre::TyreState<double> tyre = initial.tyres[i];
+    brake::BrakeState<double> brake = initial.brakes[i];
+    for (size_t k = 0;; ++k) {
+      CheckTruthTemperature(tyre.tread_temp, "tread", c, in.time[k]);
+      CheckTruthTemperature(tyre.carcass_temp, "carcass", c, in.time[k]);
+      CheckTruthTemperature(brake.disc_temp, "disc", c, in.time[k]);
+      CheckTruthTemperature(brake.calliper_temp, "calliper", c, in.time[k]);
+      h.tread_temp[k] = tyre.tread_temp;
+      h.carcass_temp[k] = tyre.carcass_temp;
+      h.wear[k] = tyre.wear;
+      h.grip_factor[k] = compound.GripFactor(tyre.tread_temp, tyre.wear);
+      h.disc_temp[k] = brake.disc_temp;
+      h.calliper_temp[k] = brake.calliper_temp;
+      h.brake_power[k] = brake::CalcBrakePower(ch.speed[k], brake_samples.fx[k]);
+      if (k + 1 == n) break;
+      // The model over the interval, exactly as replay and the observer's prediction take it.
+      const CornerSamples two = Interval(samples, k);
+      IntegrateOverSamples(
+          two, tyre, max_step_s,
+          [&](size_t j, double f, const tyre::TyreInputTerms<double>* near) {
+            return tyre::CalcTyreInputTerms(tp, tc, compound, two.TyreInputAt<double>(j, f), near);
+          },
+          [&](const tyre::TyreState<double>& x, const tyre::TyreInputTerms<double>& terms) {
+            return tyre::CalcTyreDerivatives(tp, compound, x, terms);
+          },
+          [&](size_t j, const tyre::TyreState<double>& x) {
+            if (j == 1) tyre = x;
+          });
+      const CornerSamples two_brake = Interval(brake_samples, k);
+      IntegrateOverSamples(
+          two_brake, brake, max_step_s,
+          [&](size_t j, double f, const brake::BrakeInputTerms<double>*) {
+            return brake::CalcBrakeInputTerms(bp, bc, two_brake.BrakeInputAt<double>(j, f));
+          },
+          [&](const brake::BrakeState<double>& x, const brake::BrakeInputTerms<double>& terms) {
+            return brake::CalcBrakeDerivatives(bp, x, terms);
+          },
+          [&](size_t j, const brake::BrakeState<double>& x) {
+            if (j == 1) brake = x;
+          });
+      // The random walk over the interval.
+      const double dt = in.time[k + 1] - in.time[k];
+      tyre.tread_temp += std::sqrt(q.tread_temp_K2_per_s * dt) * noise.Next();
+      tyre.carcass_temp += std::sqrt(q.carcass_temp_K2_per_s * dt) * noise.Next();
+      tyre.wear += std::sqrt(q.wear_mm2_per_s * dt) * noise.Next();
+      brake.disc_temp += std::sqrt(q.disc_temp_K2_per_s * dt) * noise.Next();
+      brake.calliper_temp += std::sqrt(q.calliper_temp_K2_per_s * dt) * noise.Next();
+    }
+  }
+  return result;
+}
 
 SynthLog SynthesizeLog(const vehicle::Car& car, std::span<const RoadPoint> road,
                        const SynthOptions& o) {
@@ -94,7 +213,9 @@ SynthLog SynthesizeLog(const vehicle::Car& car, std::span<const RoadPoint> road,
   log.inputs = ResampleReplayInputs(joined, o.rate_hz, 1);
   ReplayOptions replay;
   replay.max_step_s = o.max_step_s;
-  log.truth = RunReplay(car, log.inputs, initial, replay);
+  log.truth = o.process_noise ? RunStochasticReplay(car, log.inputs, initial, o.max_step_s,
+                                                    *o.process_noise, ProcessNoiseSeed(o.seed))
+                              : RunReplay(car, log.inputs, initial, replay);
 
   const ReplayInputs& in = log.inputs;
   const size_t n = in.time.size();
@@ -160,6 +281,16 @@ SynthLog SynthesizeLog(const vehicle::Car& car, std::span<const RoadPoint> road,
       {"rolling_radius_noise_mm", fmt::format("{:g}", 1e3 * o.radius_noise_m)},
       {"seed", std::to_string(o.seed)},
   };
+  if (o.process_noise) {
+    // Only with the option, so that a log without it is what it always was.
+    const SynthProcessNoise& q = *o.process_noise;
+    log.metadata.push_back(
+        {"process_noise",
+         fmt::format("random walk on the true states, intensities tread {:g} K^2/s, carcass {:g} "
+                     "K^2/s, wear {:g} mm^2/s, disc {:g} K^2/s, calliper {:g} K^2/s",
+                     q.tread_temp_K2_per_s, q.carcass_temp_K2_per_s, q.wear_mm2_per_s,
+                     q.disc_temp_K2_per_s, q.calliper_temp_K2_per_s)});
+  }
   if (!car.overrides.empty()) {
     log.metadata.insert(log.metadata.begin() + 2,
                         {"overrides", vehicle::OverridesText(car.overrides)});

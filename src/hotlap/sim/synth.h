@@ -13,6 +13,11 @@
 /// - inputs (speeds, forces, slips, ambient and track temperatures) are written exactly: the log
 ///   studies the thermal parameters, not errors in the inputs.
 /// The noise is seeded (the same log for the same seed on every platform).
+///
+/// Optionally the truth itself is stochastic (SynthOptions::process_noise): the model plus a
+/// random walk per state, the process noise `hotlap observe` assumes (docs/observer.md), so the
+/// log is exactly the data whose statistics the observer's bands claim. Without it the truth is
+/// the deterministic replay and the log is the same as before the option existed.
 
 #include <cstdint>
 #include <filesystem>
@@ -28,6 +33,22 @@
 
 namespace hotlap::sim {
 
+/// Continuous white noise added to each true state's derivative (a random walk on top of the
+/// model), as the observer's process noise (observe/observer_config.h): intensities q, so over a
+/// sample interval dt the state gets sqrt(q dt) N(0, 1) added after the model's step, and its
+/// standard deviation grows as sqrt(q) per sqrt(s) where the model does not pull it back.
+struct SynthProcessNoise {
+  double tread_temp_K2_per_s = 0.0;
+  double carcass_temp_K2_per_s = 0.0;
+  double wear_mm2_per_s = 0.0;
+  double disc_temp_K2_per_s = 0.0;
+  double calliper_temp_K2_per_s = 0.0;
+};
+
+/// The seed of the process noise's own stream, derived from SynthOptions::seed so that the sensor
+/// noise of a log is the same with and without process noise.
+constexpr uint64_t ProcessNoiseSeed(uint64_t seed) { return seed ^ 0x9E3779B97F4A7C15ULL; }
+
 struct SynthOptions {
   int laps = 1;
   double rate_hz = 50.0;         ///< logging rate
@@ -40,6 +61,9 @@ struct SynthOptions {
   double track_temp = 313.15;                 ///< K
   std::optional<ReplayInitialState> initial;  ///< default: the car's initial_state, no wear
   double max_step_s = 0.02;                   ///< RK4 sub-step of the replay
+  /// A stochastic truth: the model with this random-walk process noise (seeded by
+  /// ProcessNoiseSeed(seed)). Empty: the deterministic model.
+  std::optional<SynthProcessNoise> process_noise;
 };
 
 /// A synthetic log: columns in the canonical units of the telemetry format, and the truth.
@@ -48,14 +72,27 @@ struct SynthLog {
   std::vector<std::string> columns;
   std::vector<std::vector<double>> values;  ///< [column][row]
   ReplayInputs inputs;                      ///< what was written as inputs, SI
-  ReplayResult truth;                       ///< noise-free, lag-free histories at the samples
+  /// Sensor-noise-free, lag-free histories at the samples (with process noise if asked for; then
+  /// without heat flows).
+  ReplayResult truth;
   double lap_time_s = 0.0;
 };
 
 /// Runs the lap(s) and the sensors. InputError for bad options (laps < 1, rate <= 0, negative
-/// noise or lag) and for a car without vehicle sections; RunQssLap's errors otherwise.
+/// noise, lag or process noise) and for a car without vehicle sections; RunQssLap's errors
+/// otherwise.
 SynthLog SynthesizeLog(const vehicle::Car& car, std::span<const RoadPoint> road,
                        const SynthOptions& options);
+
+/// The model over `inputs` with random-walk process noise: every sample interval integrated as
+/// replay does (sampled_inputs.h, RK4 sub-steps no longer than max_step_s, split at kinks), then
+/// sqrt(q dt) N(0, 1) added to each state, drawn from GaussianNoise(seed) corner by corner (fl,
+/// fr, rl, rr), interval by interval, in the order tread, carcass, wear, then disc, calliper.
+/// With all intensities zero it is RunReplay's result to rounding. NumericalError if a
+/// temperature leaves [0 K, 3000 K].
+ReplayResult RunStochasticReplay(const vehicle::Car& car, const ReplayInputs& inputs,
+                                 const ReplayInitialState& initial, double max_step_s,
+                                 const SynthProcessNoise& noise, uint64_t seed);
 
 /// Writes the log as CSV atomically (common/csv.h), with `extra_metadata` after its own lines.
 void WriteSynthLog(const std::filesystem::path& path, const SynthLog& log,
