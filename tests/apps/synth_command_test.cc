@@ -1,6 +1,8 @@
 // End-to-end tests of `hotlap synth`: the log and JSON it writes, that --params changes the
-// truth, and clean failures.
+// truth, --process-noise (a stochastic truth; the log without it unchanged), and clean failures.
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -104,6 +106,47 @@ TEST_F(SynthCommandTest, BadInputFailsCleanly) {
   EXPECT_TRUE(Contains(err_, "override 'tyres.rr.heat_generation.p1=1.5': ")) << err_;
   EXPECT_TRUE(Contains(err_, "must be in [0, 1]")) << err_;
   EXPECT_FALSE(fs::exists(P("x.csv")));
+}
+
+// --process-noise default: the truth moves off the deterministic one (the carcass channel, read
+// without sensor noise, differs), the inputs and the sensor noise stream do not; the log and the
+// JSON say so; without the option neither has a process-noise entry. A noise file that is not
+// there is exit 2 and no log.
+TEST_F(SynthCommandTest, ProcessNoiseMakesTheTruthStochastic) {
+  const std::string common = "synth --laps 1 --rate-hz 20 --noise-C 0 --lag-s 0 --seed 3 --out ";
+  ASSERT_EQ(Run(common + P("plain.csv").string() + " --json " + P("plain.json").string()), 0)
+      << err_;
+  ASSERT_EQ(Run(common + P("noisy.csv").string() + " --json " + P("noisy.json").string() +
+                " --process-noise default"),
+            0)
+      << err_;
+  EXPECT_TRUE(Contains(out_, "truth with process noise from")) << out_;
+  EXPECT_TRUE(Contains(out_, "carcass 0.00316, disc 0.1")) << out_;
+  const hotlap::Telemetry plain = hotlap::Telemetry::Read(P("plain.csv"));
+  const hotlap::Telemetry noisy = hotlap::Telemetry::Read(P("noisy.csv"));
+  ASSERT_EQ(plain.size(), noisy.size());
+  EXPECT_EQ(plain.Channel("fz", hotlap::Corner::kFrontLeft),
+            noisy.Channel("fz", hotlap::Corner::kFrontLeft));
+  const auto& a = plain.Channel("carcass_temp", hotlap::Corner::kRearRight);
+  const auto& b = noisy.Channel("carcass_temp", hotlap::Corner::kRearRight);
+  double moved = 0.0;
+  for (size_t k = 0; k < a.size(); ++k) moved = std::max(moved, std::abs(a[k] - b[k]));
+  // sqrt(1e-5 K^2/s x 31 s) = 0.018 K by the end of the lap: well above rounding, well below 1 K.
+  EXPECT_GT(moved, 2e-3);
+  EXPECT_LT(moved, 0.2);
+  std::map<std::string, std::string> mp(plain.metadata().begin(), plain.metadata().end());
+  std::map<std::string, std::string> mn(noisy.metadata().begin(), noisy.metadata().end());
+  EXPECT_EQ(mp.count("process_noise"), 0u);
+  EXPECT_TRUE(Contains(mn["process_noise"], "carcass 1e-05 K^2/s")) << mn["process_noise"];
+  const nlohmann::json jp = nlohmann::json::parse(ReadTextFile(P("plain.json")));
+  const nlohmann::json jn = nlohmann::json::parse(ReadTextFile(P("noisy.json")));
+  EXPECT_FALSE(jp.contains("process_noise"));
+  EXPECT_EQ(jn["process_noise"]["disc_temp_K2_per_s"].get<double>(), 1e-2);
+  EXPECT_TRUE(Contains(jn["process_noise"]["file"].get<std::string>(), "default.yaml"));
+
+  EXPECT_EQ(Run(common + P("bad.csv").string() + " --process-noise " + P("none.yaml").string()), 2);
+  EXPECT_TRUE(Contains(err_, "none.yaml")) << err_;
+  EXPECT_FALSE(fs::exists(P("bad.csv")));
 }
 
 }  // namespace
