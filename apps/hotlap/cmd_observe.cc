@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/json_output.h"
+#include "hotlap/common/log_table.h"
 #include "hotlap/common/output_folder.h"
 #include "hotlap/common/units.h"
 #include "hotlap/observe/car_observer.h"
@@ -29,6 +31,8 @@ struct ObserveArgs {
   std::string telemetry, out, json, config, noise_from_fit;
   std::string car = "gen7";
   std::vector<std::string> set;  // --set KEY=VALUE
+  std::string channel_map;       // --channel-map
+  std::optional<int> lap;        // --lap
   bool p5_scale = false;
   std::optional<double> tread_C, carcass_C, disc_C, calliper_C;
   double ambient_C = 25.0, track_C = 40.0;
@@ -62,19 +66,44 @@ int RunObserve(const ObserveArgs& a) {
   start.disc_temp = ToKelvin(a.disc_C);
   start.calliper_temp = ToKelvin(a.calliper_C);
 
+  const bool stream = a.telemetry == "-";
+  if (stream && (a.lap || !a.channel_map.empty())) {
+    throw InputError(
+        "--lap and --channel-map need a log file: a stream on standard input is read a line at a "
+        "time as hotlap CSV");
+  }
+  const observe::StreamDefaults defaults{CelsiusToKelvin(a.ambient_C), CelsiusToKelvin(a.track_C)};
+  // A hotlap CSV file or stream is read a line at a time; a MoTeC log, or one lap of any log,
+  // is read whole first, as replay and fit read it (docs/telemetry-formats.md). Only a regular
+  // file is sniffed for its format: a named pipe is read a line at a time, from its first line.
+  const bool whole_log = !stream && (a.lap || !a.channel_map.empty() ||
+                                     (std::filesystem::is_regular_file(a.telemetry) &&
+                                      LogFormatOf(a.telemetry) != LogFormat::kHotlapCsv));
   std::ifstream file;
   std::istream* in = &std::cin;
-  if (a.telemetry != "-") {
+  if (!stream && !whole_log) {
     file.open(a.telemetry);
     if (!file) throw InputError(fmt::format("cannot read '{}'", a.telemetry));
     in = &file;
   }
-  observe::TelemetryLineReader reader(*in, a.telemetry == "-" ? "stdin" : a.telemetry,
-                                      {CelsiusToKelvin(a.ambient_C), CelsiusToKelvin(a.track_C)});
+  std::optional<observe::TelemetryLineReader> line_reader;
+  std::optional<observe::TelemetryLogReader> log_reader;
+  if (whole_log) {
+    log_reader.emplace(a.telemetry, TelemetryReadOptions{a.channel_map, a.lap}, defaults);
+  } else {
+    line_reader.emplace(*in, stream ? "stdin" : a.telemetry, defaults);
+  }
+  const auto next = [&] { return log_reader ? log_reader->Next() : line_reader->Next(); };
+  const auto line = [&] { return log_reader ? log_reader->line() : line_reader->line(); };
+  const std::vector<std::string>& reader_warnings =
+      log_reader ? log_reader->warnings() : line_reader->warnings();
+  const auto warning_count = [&] {
+    return log_reader ? log_reader->warning_count() : line_reader->warning_count();
+  };
   observe::CarObserver observer(car, config, start);
   // The first sample is read before the output is opened, so a log refused at its header or
   // first line leaves no file behind; from then on the estimates are written as they come.
-  std::optional<observe::ObserverSample> sample = reader.Next();
+  std::optional<observe::ObserverSample> sample = next();
   if (!sample) {
     throw InputError(fmt::format("{}: no data lines after the header",
                                  a.telemetry == "-" ? "stdin" : a.telemetry));
@@ -84,13 +113,13 @@ int RunObserve(const ObserveArgs& a) {
   writer.WriteHeader(observe::EstimateColumns(config.p5_scale.estimate));
 
   std::vector<observe::DisagreementWarning> warnings;
-  for (; sample; sample = reader.Next()) {
+  for (; sample; sample = next()) {
     std::vector<observe::DisagreementWarning> raised;
     try {
       raised = observer.Step(*sample);
     } catch (const InputError& e) {
-      throw InputError(fmt::format("{}:{}: {}", a.telemetry == "-" ? "stdin" : a.telemetry,
-                                   reader.line(), e.what()));
+      throw InputError(
+          fmt::format("{}:{}: {}", a.telemetry == "-" ? "stdin" : a.telemetry, line(), e.what()));
     }
     writer.WriteRow(observe::EstimateRow(observer));
     for (observe::DisagreementWarning& w : raised) {
@@ -99,10 +128,10 @@ int RunObserve(const ObserveArgs& a) {
     }
   }
   writer.Close();
-  for (const std::string& w : reader.warnings()) fmt::print(stderr, "hotlap: warning: {}\n", w);
-  if (reader.warning_count() > static_cast<long>(reader.warnings().size())) {
+  for (const std::string& w : reader_warnings) fmt::print(stderr, "hotlap: warning: {}\n", w);
+  if (warning_count() > static_cast<long>(reader_warnings.size())) {
     fmt::print(stderr, "hotlap: warning: {} more such telemetry warnings\n",
-               reader.warning_count() - static_cast<long>(reader.warnings().size()));
+               warning_count() - static_cast<long>(reader_warnings.size()));
   }
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
@@ -196,7 +225,8 @@ int RunObserve(const ObserveArgs& a) {
                            {"consistent", all_consistent},
                            {"corners", corners},
                            {"disagreements", list},
-                           {"telemetry_warnings", reader.warnings()}});
+                           {"lap", a.lap ? nlohmann::json(*a.lap) : nlohmann::json(nullptr)},
+                           {"telemetry_warnings", reader_warnings}});
     fmt::print(text, "wrote {}\n", a.json);
   }
   return 0;
@@ -220,6 +250,7 @@ CommandRunner RegisterObserveCommand(CLI::App& app) {
   sub->add_option("--car", a->car, "Built-in car name or path to a car.yaml")
       ->capture_default_str();
   AddSetOption(sub, a->set);
+  AddTelemetryReadOptions(sub, a->channel_map, a->lap);
   sub->add_option("--config", a->config,
                   "Noise model (YAML, model: observer_noise); default data/observer/default.yaml");
   sub->add_option("--noise-from-fit", a->noise_from_fit,

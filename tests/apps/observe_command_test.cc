@@ -1,5 +1,6 @@
 // End-to-end tests of `hotlap observe`: a log file in, one estimate line per input line out, the
-// JSON summary; the stream through a pipe, one line at a time, answered line by line; refusals.
+// JSON summary; the stream through a pipe, one line at a time, answered line by line; MoTeC logs,
+// `--lap N` and `--channel-map FILE` as replay takes them; refusals.
 
 #include <fcntl.h>
 #include <poll.h>
@@ -190,6 +191,75 @@ TEST_F(ObserveCommandTest, RefusesBadInputWithExitTwo) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_TRUE(Contains(r.err, "impossible")) << r.err;
   EXPECT_FALSE(fs::exists(dir() / "e4.csv"));
+}
+
+// A MoTeC i2 export is observed as the hotlap CSV of the same numbers: read whole through the
+// channel map, its estimates are those of the equivalent CSV read a line at a time; `--lap N`
+// keeps that lap's rows (from the export's beacons, from the CSV's lap column) and starts the
+// filter there.
+TEST_F(ObserveCommandTest, ObservesAMotecExportAndOneLapOfIt) {
+  const fs::path motec = hotlap::test::SourcePath("tests/data/motec/darlington_i2.csv");
+  const fs::path same = hotlap::test::SourcePath("tests/data/motec/darlington_i2_equivalent.csv");
+  const fs::path a = dir() / "motec.csv", b = dir() / "same.csv", json = dir() / "lap.json";
+  auto r = Run("observe --telemetry " + motec.string() + " --out " + a.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = Run("observe --telemetry " + same.string() + " --out " + b.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const hotlap::CsvTable whole = hotlap::ReadCsv(a), lines = hotlap::ReadCsv(b);
+  ASSERT_EQ(whole.RowCount(), 291u);
+  ASSERT_EQ(whole.columns, lines.columns);
+  for (size_t i = 0; i < whole.columns.size(); ++i) {
+    for (size_t k = 0; k < whole.RowCount(); ++k) {
+      ASSERT_NEAR(whole.values[i][k], lines.values[i][k],
+                  1e-6 * (1.0 + std::abs(lines.values[i][k])))
+          << whole.columns[i] << " row " << k;
+    }
+  }
+  // The disc readings moved the disc estimate: it is not the car file's starting value.
+  EXPECT_NEAR(whole.Column("disc_temp_fl_C").front(), 350.0, 1.0);
+
+  const fs::path lap_a = dir() / "lap2_motec.csv", lap_b = dir() / "lap2_same.csv";
+  r = Run("observe --telemetry " + motec.string() + " --lap 2 --out " + lap_a.string() +
+          " --json " + json.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = Run("observe --telemetry " + same.string() + " --lap 2 --out " + lap_b.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const hotlap::CsvTable lap = hotlap::ReadCsv(lap_a), lap_same = hotlap::ReadCsv(lap_b);
+  ASSERT_EQ(lap.RowCount(), 97u);
+  EXPECT_NEAR(lap.Column("time_s").front(), 9.7, 1e-9);
+  EXPECT_NEAR(lap.Column("time_s").back(), 19.3, 1e-9);
+  EXPECT_EQ(lap.Column("disc_temp_rr_C"), lap_same.Column("disc_temp_rr_C"));
+  EXPECT_EQ(lap.Column("carcass_temp_fl_sd_C"), lap_same.Column("carcass_temp_fl_sd_C"));
+  // The lap starts the filter afresh: its first disc band is the sensor's alone (0.5 degC),
+  // wider than the whole log's at 9.7 s after 97 readings.
+  size_t at = 0;
+  while (std::abs(whole.Column("time_s")[at] - 9.7) > 1e-9) ++at;
+  EXPECT_NEAR(lap.Column("disc_temp_fl_sd_C").front(), 0.5, 1e-9);
+  EXPECT_LT(whole.Column("disc_temp_fl_sd_C")[at], 0.4);
+  const nlohmann::json j = Json(json);
+  EXPECT_EQ(j["lap"], 2);
+  EXPECT_EQ(j["samples"], 97);
+}
+
+TEST_F(ObserveCommandTest, RefusesALapThatIsNotThereABadChannelMapAndLapsOnAStream) {
+  const fs::path motec = hotlap::test::SourcePath("tests/data/motec/darlington_i2.csv");
+  const fs::path out = dir() / "e.csv";
+  auto r = Run("observe --telemetry " + motec.string() + " --lap 7 --out " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(Contains(r.err, "--lap 7: no such lap; the log has laps 1 to 3")) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  const fs::path map =
+      hotlap::test::WriteTextFile(dir() / "map.yaml", "channels:\n  Ground Speed: speed\n");
+  r = Run("observe --telemetry " + motec.string() + " --channel-map " + map.string() + " --out " +
+          out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(Contains(r.err, "missing column")) << r.err;
+  EXPECT_TRUE(Contains(r.err, "map.yaml")) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  r = Run("observe --telemetry - --lap 1 --out " + out.string() + " < " + Log().string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(Contains(r.err, "need a log file")) << r.err;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace

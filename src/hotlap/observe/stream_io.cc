@@ -41,12 +41,59 @@ std::vector<std::string_view> SplitCells(std::string_view line) {
   return cells;
 }
 
-// The value of a channel on a one-row telemetry, or NaN when the cell is empty.
-double Cell(const Telemetry& t, std::string_view quantity, std::optional<Corner> corner) {
-  return t.Channel(quantity, corner).front();
-}
-
 }  // namespace
+
+ObserverSample SampleFromRow(const Telemetry& t, size_t row, const ObserverSample* last,
+                             const StreamDefaults& defaults, const std::string& source, int line) {
+  // The value of a channel at the row, or NaN when the cell is empty.
+  const auto Cell = [&](std::string_view quantity, std::optional<Corner> corner) {
+    return t.Channel(quantity, corner)[row];
+  };
+  ObserverSample sample;
+  sample.time = Cell("time", std::nullopt);
+  if (last != nullptr && !(sample.time > last->time)) {
+    throw InputError(fmt::format("{}:{}: time {:g} s does not increase (previous {:g} s)", source,
+                                 line, sample.time, last->time));
+  }
+  // An input with an empty cell holds its last value.
+  const auto input = [&](double value, double previous, bool have_previous,
+                         const std::string& what) {
+    if (std::isfinite(value)) return value;
+    if (have_previous) return previous;
+    throw InputError(
+        fmt::format("{}:{}: '{}' is empty and no earlier line has a value", source, line, what));
+  };
+  const bool have = last != nullptr;
+  for (Corner c : kAllCorners) {
+    const int i = CornerIndex(c);
+    const CornerInputs* prev = have ? &last->inputs[i] : nullptr;
+    CornerInputs& in = sample.inputs[i];
+    const bool corner_speed = t.Has("speed", c);
+    const double speed = corner_speed ? Cell("speed", c) : Cell("speed", std::nullopt);
+    in.speed = input(speed, have ? prev->speed : 0.0, have,
+                     corner_speed ? t.ColumnOf("speed", c) : t.ColumnOf("speed"));
+    in.fx = input(Cell("fx", c), have ? prev->fx : 0.0, have, t.ColumnOf("fx", c));
+    in.fy = input(Cell("fy", c), have ? prev->fy : 0.0, have, t.ColumnOf("fy", c));
+    in.fz = input(Cell("fz", c), have ? prev->fz : 0.0, have, t.ColumnOf("fz", c));
+    in.slip_angle = input(Cell("slip_angle", c), have ? prev->slip_angle : 0.0, have,
+                          t.ColumnOf("slip_angle", c));
+    in.slip_ratio = input(Cell("slip_ratio", c), have ? prev->slip_ratio : 0.0, have,
+                          t.ColumnOf("slip_ratio", c));
+    CornerReadings& r = sample.readings[i];
+    if (t.Has("tread_temp", c)) r.tread_temp = Cell("tread_temp", c);
+    if (t.Has("disc_temp", c)) r.disc_temp = Cell("disc_temp", c);
+    if (t.Has("calliper_temp", c)) r.calliper_temp = Cell("calliper_temp", c);
+  }
+  const auto whole_car = [&](const char* quantity, double fallback, double previous) {
+    if (!t.Has(quantity)) return fallback;
+    const double v = Cell(quantity, std::nullopt);
+    return std::isfinite(v) ? v : have ? previous : fallback;
+  };
+  sample.ambient_temp =
+      whole_car("ambient_temp", defaults.ambient_temp, have ? last->ambient_temp : 0.0);
+  sample.track_temp = whole_car("track_temp", defaults.track_temp, have ? last->track_temp : 0.0);
+  return sample;
+}
 
 TelemetryLineReader::TelemetryLineReader(std::istream& in, std::string source,
                                          const StreamDefaults& defaults)
@@ -123,49 +170,27 @@ std::optional<ObserverSample> TelemetryLineReader::Next() {
     ++warning_count_;
   }
 
-  ObserverSample sample;
-  sample.time = Cell(t, "time", std::nullopt);
-  if (last_ && !(sample.time > last_->time)) {
-    throw InputError(fmt::format("{}:{}: time {:g} s does not increase (previous {:g} s)", source_,
-                                 line_, sample.time, last_->time));
+  ObserverSample sample = SampleFromRow(t, 0, last_ ? &*last_ : nullptr, defaults_, source_, line_);
+  last_ = sample;
+  return sample;
+}
+
+TelemetryLogReader::TelemetryLogReader(const std::filesystem::path& path,
+                                       const TelemetryReadOptions& options,
+                                       const StreamDefaults& defaults)
+    : log_(Telemetry::Read(path, "time", options)), source_(path.string()), defaults_(defaults) {
+  for (const std::string& w : log_.warnings()) {
+    if (warnings_.size() < 20) warnings_.push_back(w);
   }
-  // An input with an empty cell holds its last value.
-  const auto input = [&](double value, double previous, bool have_previous,
-                         const std::string& what) {
-    if (std::isfinite(value)) return value;
-    if (have_previous) return previous;
-    throw InputError(
-        fmt::format("{}:{}: '{}' is empty and no earlier line has a value", source_, line_, what));
-  };
-  const bool have = last_.has_value();
-  for (Corner c : kAllCorners) {
-    const int i = CornerIndex(c);
-    const CornerInputs* prev = have ? &last_->inputs[i] : nullptr;
-    CornerInputs& in = sample.inputs[i];
-    const bool corner_speed = t.Has("speed", c);
-    const double speed = corner_speed ? Cell(t, "speed", c) : Cell(t, "speed", std::nullopt);
-    in.speed = input(speed, have ? prev->speed : 0.0, have,
-                     corner_speed ? t.ColumnOf("speed", c) : t.ColumnOf("speed"));
-    in.fx = input(Cell(t, "fx", c), have ? prev->fx : 0.0, have, t.ColumnOf("fx", c));
-    in.fy = input(Cell(t, "fy", c), have ? prev->fy : 0.0, have, t.ColumnOf("fy", c));
-    in.fz = input(Cell(t, "fz", c), have ? prev->fz : 0.0, have, t.ColumnOf("fz", c));
-    in.slip_angle = input(Cell(t, "slip_angle", c), have ? prev->slip_angle : 0.0, have,
-                          t.ColumnOf("slip_angle", c));
-    in.slip_ratio = input(Cell(t, "slip_ratio", c), have ? prev->slip_ratio : 0.0, have,
-                          t.ColumnOf("slip_ratio", c));
-    CornerReadings& r = sample.readings[i];
-    if (t.Has("tread_temp", c)) r.tread_temp = Cell(t, "tread_temp", c);
-    if (t.Has("disc_temp", c)) r.disc_temp = Cell(t, "disc_temp", c);
-    if (t.Has("calliper_temp", c)) r.calliper_temp = Cell(t, "calliper_temp", c);
-  }
-  const auto whole_car = [&](const char* quantity, double fallback, double previous) {
-    if (!t.Has(quantity)) return fallback;
-    const double v = Cell(t, quantity, std::nullopt);
-    return std::isfinite(v) ? v : have ? previous : fallback;
-  };
-  sample.ambient_temp =
-      whole_car("ambient_temp", defaults_.ambient_temp, have ? last_->ambient_temp : 0.0);
-  sample.track_temp = whole_car("track_temp", defaults_.track_temp, have ? last_->track_temp : 0.0);
+  warning_count_ = static_cast<long>(log_.warnings().size());
+}
+
+std::optional<ObserverSample> TelemetryLogReader::Next() {
+  if (row_ >= log_.size()) return std::nullopt;
+  line_ = log_.LineOf(row_);
+  ObserverSample sample =
+      SampleFromRow(log_, row_, last_ ? &*last_ : nullptr, defaults_, source_, line_);
+  ++row_;
   last_ = sample;
   return sample;
 }

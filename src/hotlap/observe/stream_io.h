@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "hotlap/common/telemetry.h"
 #include "hotlap/observe/car_observer.h"
 
 namespace hotlap::observe {
@@ -62,6 +63,44 @@ class TelemetryLineReader {
   std::vector<std::pair<std::string, std::string>> metadata_;
   std::optional<ObserverSample> last_;
   // Whether each corner input (6 per corner) and ambient, track have had a value.
+  std::vector<std::string> warnings_;
+  long warning_count_ = 0;
+};
+
+/// One row of a telemetry log as an observer sample: the inputs (an empty cell holds `last`'s
+/// value; InputError if there is none), the readings present, ambient and track temperature (else
+/// `last`'s, else the defaults). InputError naming `source` and `line` if the time does not
+/// increase past `last`'s.
+ObserverSample SampleFromRow(const Telemetry& t, size_t row, const ObserverSample* last,
+                             const StreamDefaults& defaults, const std::string& source, int line);
+
+/// A whole log read first (Telemetry::Read: hotlap CSV, MoTeC i2 CSV export or MoTeC `.ld`, with
+/// a channel map and one lap selected, as replay and fit read logs), then handed out one sample at
+/// a time as TelemetryLineReader does: for `hotlap observe --lap N`, `--channel-map FILE` and
+/// MoTeC logs, which cannot be read a line at a time.
+class TelemetryLogReader {
+ public:
+  /// Reads the log (Telemetry::Read's InputErrors).
+  TelemetryLogReader(const std::filesystem::path& path, const TelemetryReadOptions& options,
+                     const StreamDefaults& defaults);
+  std::optional<ObserverSample> Next();
+  /// The file line (or row) of the last sample returned.
+  int line() const { return line_; }
+  const std::vector<std::string>& warnings() const { return warnings_; }
+  long warning_count() const { return warning_count_; }
+  const std::vector<std::pair<std::string, std::string>>& metadata() const {
+    return log_.metadata();
+  }
+  /// Rows in the log (after the lap selection).
+  size_t size() const { return log_.size(); }
+
+ private:
+  Telemetry log_;
+  std::string source_;
+  StreamDefaults defaults_;
+  size_t row_ = 0;
+  int line_ = 0;
+  std::optional<ObserverSample> last_;
   std::vector<std::string> warnings_;
   long warning_count_ = 0;
 };
