@@ -84,19 +84,22 @@ BENCHMARK(BM_ObserveStream100Hz)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 // deterministic truth (no process noise; dropout seed 7); 1: synth's stochastic truth (`hotlap
 // synth --process-noise default`: the model plus the observer's own process noise), eight seeds,
 // coverage and NIS averaged over them (one run's time fraction swings by +-0.1 for the slow
-// states, whose errors stay correlated for minutes). One iteration; the scores are counters.
+// states, whose errors stay correlated for minutes); 2: as 1 with synth's default 0.2 s sensor
+// lag, and the observer carrying the lag as a state. One iteration; the scores are counters.
 void BM_ObserverAcceptance30Laps(benchmark::State& state) {
   const fs::path root = HOTLAP_SOURCE_DIR;
   const vehicle::Car car = vehicle::LoadCar(root / "data/cars/gen7/car.yaml");
-  const observe::ObserverConfig config =
-      observe::LoadObserverConfig(root / "data/observer/default.yaml");
+  observe::ObserverConfig config = observe::LoadObserverConfig(root / "data/observer/default.yaml");
   const std::vector<sim::RoadPoint> road = sim::SampleRoad(track::LoadTrack("darlington"), 1.0);
   const bool stochastic = state.range(0) != 0;
+  // Argument 2: synth's default 0.2 s sensor lag, and the observer with the lag as a state.
+  const double lag = state.range(0) == 2 ? 0.2 : 0.0;
+  config.sensor_lag = {lag, lag, lag};
   const int runs = stochastic ? 8 : 1;
   sim::SynthOptions so;
   so.laps = 30;
   so.rate_hz = 100.0;
-  so.sensor_lag_s = 0.0;
+  so.sensor_lag_s = lag;
   so.temp_noise_K = 0.5;
   if (stochastic) {
     const observe::ProcessNoise& q = config.process;
@@ -170,6 +173,11 @@ void BM_ObserverAcceptance30Laps(benchmark::State& state) {
   state.counters["rejected"] = static_cast<double>(rejected);
   state.counters["warnings"] = static_cast<double>(warnings);
 }
-BENCHMARK(BM_ObserverAcceptance30Laps)->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_ObserverAcceptance30Laps)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
 
 }  // namespace

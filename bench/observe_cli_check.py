@@ -127,7 +127,8 @@ def main():
                     nis_used += s["used"]
                     rejected += s["rejected"]
             warnings += len(summary["disagreements"])
-            print(f"seed {seed}: disc cells blanked {blanked:.3f}; {stdout.strip().splitlines()[-1]}")
+            summary_line = [line for line in stdout.splitlines() if "real time" in line][-1]
+            print(f"seed {seed}: disc cells blanked {blanked:.3f}; {summary_line}")
     print(f"{args.seeds} seed(s) x {args.laps} laps, truth {'deterministic' if args.deterministic else 'with process noise'}; scored from the end of the first lap")
     for q, unit in STATES:
         print(f"{q:14s} RMS error {math.sqrt(se[q] / n):.4g} {unit}, inside 1 sigma {inside[q] / n:.3f}")

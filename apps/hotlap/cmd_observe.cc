@@ -19,6 +19,7 @@
 #include "hotlap/common/log_table.h"
 #include "hotlap/common/output_folder.h"
 #include "hotlap/common/units.h"
+#include "hotlap/common/yaml_reader.h"
 #include "hotlap/observe/car_observer.h"
 #include "hotlap/observe/observer_config.h"
 #include "hotlap/observe/stream_io.h"
@@ -35,6 +36,7 @@ struct ObserveArgs {
   std::optional<int> lap;        // --lap
   bool p5_scale = false;
   std::optional<double> tread_C, carcass_C, disc_C, calliper_C;
+  std::optional<double> sensor_lag_s;  // --sensor-lag-s
   double ambient_C = 25.0, track_C = 40.0;
 };
 
@@ -100,7 +102,6 @@ int RunObserve(const ObserveArgs& a) {
   const auto warning_count = [&] {
     return log_reader ? log_reader->warning_count() : line_reader->warning_count();
   };
-  observe::CarObserver observer(car, config, start);
   // The first sample is read before the output is opened, so a log refused at its header or
   // first line leaves no file behind; from then on the estimates are written as they come.
   std::optional<observe::ObserverSample> sample = next();
@@ -109,6 +110,26 @@ int RunObserve(const ObserveArgs& a) {
                                  a.telemetry == "-" ? "stdin" : a.telemetry));
   }
   const double first_time = sample->time;
+  // The sensors' lag: the option, else the log's own `# sensor_lag_s:` line (hotlap synth writes
+  // it), else the noise file's (zero without a sensor_lag section).
+  std::string lag_from = config.path.string();
+  if (a.sensor_lag_s) {
+    config.sensor_lag = {*a.sensor_lag_s, *a.sensor_lag_s, *a.sensor_lag_s};
+    lag_from = "--sensor-lag-s";
+  } else {
+    const auto& metadata = log_reader ? log_reader->metadata() : line_reader->metadata();
+    for (const auto& [key, value] : metadata) {
+      if (key != "sensor_lag_s") continue;
+      const std::optional<double> tau = ParseYamlNumber(value);
+      if (!tau || !(*tau >= 0.0 && *tau <= 60.0)) {
+        throw InputError(fmt::format("{}: '# sensor_lag_s: {}' is not a time constant in [0, 60] s",
+                                     a.telemetry == "-" ? "stdin" : a.telemetry, value));
+      }
+      config.sensor_lag = {*tau, *tau, *tau};
+      lag_from = "the log's sensor_lag_s";
+    }
+  }
+  observe::CarObserver observer(car, config, start);
   observe::LineCsvWriter writer(a.out);
   writer.WriteHeader(observe::EstimateColumns(config.p5_scale.estimate));
 
@@ -139,6 +160,9 @@ int RunObserve(const ObserveArgs& a) {
 
   fmt::print(text, "hotlap observe: {} ({} samples, {:.2f} s of log) with car '{}', noise {}\n",
              a.telemetry, observer.samples(), duration, car.name, config.source);
+  fmt::print(text, "sensor lag: tread {:g} s, disc {:g} s, calliper {:g} s (from {})\n",
+             config.sensor_lag.tread_temp, config.sensor_lag.disc_temp,
+             config.sensor_lag.calliper_temp, lag_from);
   fmt::print(text, "{:<6} {:>16} {:>16} {:>20} {:>16} {:>16}\n", "corner", "tread degC",
              "carcass degC", "wear mm", "disc degC", "calliper degC");
   nlohmann::json corners = nlohmann::json::object();
@@ -218,6 +242,11 @@ int RunObserve(const ObserveArgs& a) {
                            {"overrides", vehicle::OverridesJson(car.overrides)},
                            {"noise", config.source},
                            {"p5_scale_estimated", config.p5_scale.estimate},
+                           {"sensor_lag_s",
+                            {{"tread_temp", config.sensor_lag.tread_temp},
+                             {"disc_temp", config.sensor_lag.disc_temp},
+                             {"calliper_temp", config.sensor_lag.calliper_temp}}},
+                           {"sensor_lag_from", lag_from},
                            {"out", a.out},
                            {"samples", observer.samples()},
                            {"duration_s", Num(duration)},
@@ -257,6 +286,11 @@ CommandRunner RegisterObserveCommand(CLI::App& app) {
                   "Sensor noise from a fit's residuals (hotlap fit ... --json FIT.json)");
   sub->add_flag("--p5-scale", a->p5_scale,
                 "Also estimate a slowly drifting factor on p5 (tread-carcass conductance)");
+  sub->add_option("--sensor-lag-s", a->sensor_lag_s,
+                  "First-order time constant of every temperature sensor (default: the log's "
+                  "'# sensor_lag_s:' line, as hotlap synth writes, else the noise file's "
+                  "sensor_lag section, else 0)")
+      ->check(CLI::Range(0.0, 60.0));
   sub->add_option("--json", a->json, "Write the summary as JSON (docs/json-output.md)");
   sub->add_option("--tread-temp-C", a->tread_C, "Initial tread temperature if not logged");
   sub->add_option("--carcass-temp-C", a->carcass_C, "Initial carcass temperature");

@@ -262,4 +262,51 @@ TEST_F(ObserveCommandTest, RefusesALapThatIsNotThereABadChannelMapAndLapsOnAStre
   EXPECT_FALSE(fs::exists(out));
 }
 
+// `hotlap synth`'s default sensors lag by 0.2 s and its log says so (`# sensor_lag_s: 0.2`): the
+// observer takes the lag from there and raises no disagreement; told there is none
+// (`--sensor-lag-s 0`) it warns, as the readings trail the states during braking.
+TEST_F(ObserveCommandTest, TakesTheSensorLagFromTheLogOrTheOption) {
+  const fs::path log = dir() / "lagged.csv", est = dir() / "est.csv", json = dir() / "o.json";
+  auto r = Run("synth --laps 1 --rate-hz 20 --out " + log.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = Run("observe --telemetry " + log.string() + " --out " + est.string() + " --json " +
+          json.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(Contains(r.out,
+                       "sensor lag: tread 0.2 s, disc 0.2 s, calliper 0.2 s (from the "
+                       "log's sensor_lag_s)"))
+      << r.out;
+  EXPECT_TRUE(Contains(r.out, "0 disagreement warning(s)")) << r.out;
+  nlohmann::json j = Json(json);
+  EXPECT_EQ(j["sensor_lag_s"]["disc_temp"], 0.2);
+  EXPECT_TRUE(j["disagreements"].empty());
+  // Every sensor's mean NIS near 1 (about 630 readings each: 1 +- 0.06 at one sigma).
+  for (const char* c : {"fl", "fr", "rl", "rr"}) {
+    for (const auto& [name, sensor] : j["corners"][c]["sensors"].items()) {
+      EXPECT_NEAR(sensor["mean_nis"].get<double>(), 1.0, 0.2) << c << " " << name;
+    }
+  }
+
+  r = Run("observe --telemetry " + log.string() + " --out " + est.string() + " --json " +
+          json.string() + " --sensor-lag-s 0");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  j = Json(json);
+  EXPECT_EQ(j["sensor_lag_s"]["tread_temp"], 0.0);
+  EXPECT_EQ(j["sensor_lag_from"], "--sensor-lag-s");
+  EXPECT_FALSE(j["disagreements"].empty());
+  EXPECT_TRUE(Contains(r.err, "model and car disagree")) << r.err;
+  EXPECT_FALSE(j["consistent"].get<bool>());
+  EXPECT_GT(j["corners"]["fl"]["sensors"]["disc_temp"]["rejected"].get<long>(), 0);
+
+  // A log whose sensor_lag_s line is not a time constant is refused.
+  std::string text = ReadTextFile(log);
+  text.replace(text.find("# sensor_lag_s: 0.2"), 19, "# sensor_lag_s: -1");
+  hotlap::test::WriteTextFile(dir() / "bad.csv", text);
+  r = Run("observe --telemetry " + (dir() / "bad.csv").string() + " --out " +
+          (dir() / "e.csv").string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(Contains(r.err, "sensor_lag_s")) << r.err;
+  EXPECT_FALSE(fs::exists(dir() / "e.csv"));
+}
+
 }  // namespace

@@ -116,6 +116,30 @@ TEST(ObserverConfigTest, LoadsTheShippedFileStrictly) {
   EXPECT_TRUE(test::Contains(test::InputErrorOf([&] { LoadObserverConfig(typo); }), "window"));
 }
 
+// The optional sensor_lag section: zero without it (the shipped file), read strictly with it.
+TEST(ObserverConfigTest, ReadsAnOptionalSensorLagSection) {
+  const std::string text = test::ReadTextFile(test::SourcePath("data/observer/default.yaml"));
+  const ObserverConfig plain = LoadObserverConfig(test::SourcePath("data/observer/default.yaml"));
+  EXPECT_EQ(plain.sensor_lag.tread_temp, 0.0);
+  EXPECT_EQ(plain.sensor_lag.calliper_temp, 0.0);
+  const test::TempDir dir;
+  const std::string lag =
+      "sensor_lag:\n  tread_temp_tau_s: 0.2\n  disc_temp_tau_s: 0.3\n  calliper_temp_tau_s: 1.5\n";
+  const ObserverConfig c =
+      LoadObserverConfig(test::WriteTextFile(dir.path() / "lag.yaml", text + lag));
+  EXPECT_EQ(c.sensor_lag.tread_temp, 0.2);
+  EXPECT_EQ(c.sensor_lag.disc_temp, 0.3);
+  EXPECT_EQ(c.sensor_lag.calliper_temp, 1.5);
+  const auto negative =
+      test::WriteTextFile(dir.path() / "neg.yaml", text + test::ReplaceOnce(lag, "0.3", "-0.3"));
+  EXPECT_TRUE(test::Contains(test::InputErrorOf([&] { LoadObserverConfig(negative); }),
+                             "sensor_lag.disc_temp_tau_s"));
+  const auto missing = test::WriteTextFile(dir.path() / "missing.yaml",
+                                           text + "sensor_lag:\n  tread_temp_tau_s: 0.2\n");
+  EXPECT_TRUE(
+      test::Contains(test::InputErrorOf([&] { LoadObserverConfig(missing); }), "disc_temp_tau_s"));
+}
+
 TEST(ObserverConfigTest, TakesSensorNoiseFromAFitsResiduals) {
   const test::TempDir dir;
   const auto fit = test::WriteTextFile(

@@ -16,8 +16,9 @@ CarObserver::CarObserver(const vehicle::Car& car, ObserverConfig config, const O
   brakes_.reserve(4);
   for (Corner c : kAllCorners) {
     tyres_.emplace_back(car.tyre(c).params, car.tyre(c).compound, config_.process, config_.p5_scale,
-                        config_.max_step_s);
-    brakes_.emplace_back(car.brake(c).params, config_.process, config_.max_step_s);
+                        config_.max_step_s, config_.sensor_lag.tread_temp);
+    brakes_.emplace_back(car.brake(c).params, config_.process, config_.max_step_s,
+                         config_.sensor_lag.disc_temp, config_.sensor_lag.calliper_temp);
   }
   // The starting state before any sample: the car's, so Estimate() is defined.
   ObserverSample none;

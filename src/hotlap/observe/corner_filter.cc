@@ -70,14 +70,16 @@ void CheckTemperature(double temp, const char* what, double time) {
 
 TyreFilter::TyreFilter(const tyre::TyreThermalParams<double>& params,
                        std::shared_ptr<const tyre::TyreCompound> compound,
-                       const ProcessNoise& process, const P5Scale& p5_scale, double max_step_s)
+                       const ProcessNoise& process, const P5Scale& p5_scale, double max_step_s,
+                       double tread_lag_s)
     : with_p5_(p5_scale.estimate),
       params_(params),
       params_jet2_(params.Cast<Jet2>()),
       params_jet5_(params.Cast<Jet5>()),
       constants_(tyre::CalcTyreConstants(params)),
       compound_(std::move(compound)),
-      max_step_s_(max_step_s) {
+      max_step_s_(max_step_s),
+      lag_({kTread}, {tread_lag_s}) {
   const double p5_sigma = with_p5_ ? p5_scale.random_walk_per_sqrt_s : 0.0;
   q_ << process.tread_temp, process.carcass_temp, process.wear, p5_sigma * p5_sigma;
 }
@@ -138,6 +140,8 @@ void TyreFilter::PredictWith(const sim::CornerSamples& in, const tyre::TyreTherm
                               if (k == 1) end = x;
                             });
   have_end_terms_ = true;
+  // The states at the interval's start, for the sensor lag (only with one).
+  const Gaussian<kStates> before = lag_.Active() ? x_ : Gaussian<kStates>{};
   const J* rows[3] = {&end.tread_temp, &end.carcass_temp, &end.wear};
   f_.setIdentity();
   for (int i = 0; i < 3; ++i) {
@@ -149,6 +153,10 @@ void TyreFilter::PredictWith(const sim::CornerSamples& in, const tyre::TyreTherm
   CheckTemperature(x_.mean(kTread), "tread", in.time[1]);
   CheckTemperature(x_.mean(kCarcass), "carcass", in.time[1]);
   const double dt = in.time[1] - in.time[0];
+  if (lag_.Active()) {
+    const Eigen::Matrix<double, kStates, 1> q_dt = q_ * dt;
+    lag_.Predict(before, f_, x_.mean, q_dt, dt);
+  }
   if constexpr (kFull) {
     x_.cov = (f_ * x_.cov * f_.transpose()).eval();
   } else {
@@ -160,11 +168,13 @@ void TyreFilter::PredictWith(const sim::CornerSamples& in, const tyre::TyreTherm
 }
 
 BrakeFilter::BrakeFilter(const brake::BrakeThermalParams<double>& params,
-                         const ProcessNoise& process, double max_step_s)
+                         const ProcessNoise& process, double max_step_s, double disc_lag_s,
+                         double calliper_lag_s)
     : params_(params),
       params_jet_(params.Cast<Jet2>()),
       constants_(brake::CalcBrakeConstants(params)),
-      max_step_s_(max_step_s) {
+      max_step_s_(max_step_s),
+      lag_({kDisc, kCalliper}, {disc_lag_s, calliper_lag_s}) {
   q_ << process.disc_temp, process.calliper_temp;
   for (brake::BrakeInputTerms<Jet2>& slot : slots_) LiftConstants(constants_, slot);
 }
@@ -199,6 +209,7 @@ void BrakeFilter::Predict(const sim::CornerSamples& in) {
                               if (k == 1) end = x;
                             });
   have_end_terms_ = true;
+  const Gaussian<kStates> before = lag_.Active() ? x_ : Gaussian<kStates>{};
   const J* rows[2] = {&end.disc_temp, &end.calliper_temp};
   for (int i = 0; i < kStates; ++i) {
     x_.mean(i) = rows[i]->a;
@@ -207,6 +218,10 @@ void BrakeFilter::Predict(const sim::CornerSamples& in) {
   CheckTemperature(x_.mean(kDisc), "disc", in.time[1]);
   CheckTemperature(x_.mean(kCalliper), "calliper", in.time[1]);
   const double dt = in.time[1] - in.time[0];
+  if (lag_.Active()) {
+    const Eigen::Matrix<double, kStates, 1> q_dt = q_ * dt;
+    lag_.Predict(before, f_, x_.mean, q_dt, dt);
+  }
   x_.cov = f_ * x_.cov * f_.transpose();
   x_.cov.diagonal() += q_ * dt;
 }

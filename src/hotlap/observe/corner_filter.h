@@ -14,8 +14,10 @@
 /// continuous-time model). The covariance follows P <- F P F' + Q dt (ProcessNoise: continuous
 /// white noise on the derivatives, added over the interval to first order in dt; docs/observer.md).
 ///
-/// Pitfall: the filter treats readings as the model's states (no sensor lag): a lagging sensor's
-/// readings trail the state by its time constant, which shows as disagreement.
+/// Sensor lag: with a time constant > 0 a sensor's reading is taken as a first-order lag of its
+/// state (sensor_lag.h), carried as an extra state beside the model's; with 0 (the default) the
+/// reading is the state itself. A lagging sensor taken as unlagged trails the state by its time
+/// constant, which shows as disagreement.
 
 #include <algorithm>
 #include <array>
@@ -25,6 +27,7 @@
 
 #include "hotlap/brake/brake_thermal.h"
 #include "hotlap/observe/observer_config.h"
+#include "hotlap/observe/sensor_lag.h"
 #include "hotlap/sim/sampled_inputs.h"
 #include "hotlap/tyre/compound.h"
 #include "hotlap/tyre/tyre_thermal.h"
@@ -75,19 +78,27 @@ class TyreFilter {
  public:
   static constexpr int kTread = 0, kCarcass = 1, kWear = 2, kP5Scale = 3, kStates = 4;
 
+  /// `tread_lag_s`: the tread sensor's time constant (0: no lag).
   TyreFilter(const tyre::TyreThermalParams<double>& params,
              std::shared_ptr<const tyre::TyreCompound> compound, const ProcessNoise& process,
-             const P5Scale& p5_scale, double max_step_s);
+             const P5Scale& p5_scale, double max_step_s, double tread_lag_s = 0.0);
 
-  void Reset(const Gaussian<kStates>& start) { x_ = start; }
+  /// The states; a lagging sensor starts settled (reading its state).
+  void Reset(const Gaussian<kStates>& start) {
+    x_ = start;
+    lag_.Reset(x_);
+  }
   /// From samples.time[0] to samples.time[1] (two samples). NumericalError if a temperature leaves
   /// (0 K, 3000 K).
   void Predict(const sim::CornerSamples& samples);
   /// A tread temperature reading, K, with standard deviation sd_K.
   UpdateOutcome UpdateTread(double reading_K, double sd_K, double gate_nis) {
+    if (lag_.Active()) return lag_.Update<UpdateOutcome>(x_, 0, reading_K, sd_K * sd_K, gate_nis);
     return UpdateScalar(x_, kTread, reading_K, sd_K * sd_K, gate_nis);
   }
   const Gaussian<kStates>& estimate() const { return x_; }
+  /// The tread sensor's lag state (Active() false without a lag).
+  const SensorLags<kStates, 1>& lag() const { return lag_; }
   /// The Jacobian of the last Predict().
   const Eigen::Matrix<double, kStates, kStates>& transition() const { return f_; }
 
@@ -130,6 +141,7 @@ class TyreFilter {
   double max_step_s_;
   Gaussian<kStates> x_;
   Eigen::Matrix<double, kStates, kStates> f_ = Eigen::Matrix<double, kStates, kStates>::Identity();
+  SensorLags<kStates, 1> lag_;
 };
 
 /// The brake filter: states disc temperature K, calliper temperature K.
@@ -137,19 +149,27 @@ class BrakeFilter {
  public:
   static constexpr int kDisc = 0, kCalliper = 1, kStates = 2;
 
+  /// `disc_lag_s`, `calliper_lag_s`: the sensors' time constants (0: no lag).
   BrakeFilter(const brake::BrakeThermalParams<double>& params, const ProcessNoise& process,
-              double max_step_s);
+              double max_step_s, double disc_lag_s = 0.0, double calliper_lag_s = 0.0);
 
-  void Reset(const Gaussian<kStates>& start) { x_ = start; }
+  void Reset(const Gaussian<kStates>& start) {
+    x_ = start;
+    lag_.Reset(x_);
+  }
   /// As TyreFilter::Predict.
   void Predict(const sim::CornerSamples& samples);
   UpdateOutcome UpdateDisc(double reading_K, double sd_K, double gate_nis) {
+    if (lag_.Active()) return lag_.Update<UpdateOutcome>(x_, 0, reading_K, sd_K * sd_K, gate_nis);
     return UpdateScalar(x_, kDisc, reading_K, sd_K * sd_K, gate_nis);
   }
   UpdateOutcome UpdateCalliper(double reading_K, double sd_K, double gate_nis) {
+    if (lag_.Active()) return lag_.Update<UpdateOutcome>(x_, 1, reading_K, sd_K * sd_K, gate_nis);
     return UpdateScalar(x_, kCalliper, reading_K, sd_K * sd_K, gate_nis);
   }
   const Gaussian<kStates>& estimate() const { return x_; }
+  /// The disc (0) and calliper (1) sensors' lag states (Active() false without a lag).
+  const SensorLags<kStates, 2>& lag() const { return lag_; }
   const Eigen::Matrix<double, kStates, kStates>& transition() const { return f_; }
 
  private:
@@ -165,6 +185,7 @@ class BrakeFilter {
   double max_step_s_;
   Gaussian<kStates> x_;
   Eigen::Matrix<double, kStates, kStates> f_ = Eigen::Matrix<double, kStates, kStates>::Identity();
+  SensorLags<kStates, 2> lag_;
 };
 
 }  // namespace hotlap::observe

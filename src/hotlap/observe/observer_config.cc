@@ -46,6 +46,14 @@ ObserverConfig LoadObserverConfig(const std::filesystem::path& path) {
   c.initial_sd.calliper_temp = i.Number("calliper_temp_C", Range::Positive("C"));
   i.Finish();
 
+  if (y.Has("sensor_lag")) {
+    YamlReader l = y.Map("sensor_lag");
+    c.sensor_lag.tread_temp = l.Number("tread_temp_tau_s", Range::Closed(0.0, 60.0, "s"));
+    c.sensor_lag.disc_temp = l.Number("disc_temp_tau_s", Range::Closed(0.0, 60.0, "s"));
+    c.sensor_lag.calliper_temp = l.Number("calliper_temp_tau_s", Range::Closed(0.0, 60.0, "s"));
+    l.Finish();
+  }
+
   YamlReader k = y.Map("p5_scale");
   c.p5_scale.estimate = k.Choice("estimate", {"true", "false"}) == "true";
   c.p5_scale.initial_sd = k.Number("initial_sd", Range::Closed(1e-6, 1.0, "1"));

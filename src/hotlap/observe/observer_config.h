@@ -46,12 +46,21 @@ struct P5Scale {
   double random_walk_per_sqrt_s = 0.0;  ///< sigma, 1/sqrt(s)
 };
 
+/// First-order lags of the temperature sensors, time constants in s (0: the reading is the state
+/// itself). See sensor_lag.h.
+struct SensorLag {
+  double tread_temp = 0.0;
+  double disc_temp = 0.0;
+  double calliper_temp = 0.0;
+};
+
 struct ObserverConfig {
   std::string name;
   std::filesystem::path path;  ///< the file it was read from (empty if built in code)
   ProcessNoise process;
   std::array<SensorNoise, 4> sensors;  ///< per corner (CornerIndex)
   InitialSd initial_sd;
+  SensorLag sensor_lag;  ///< optional `sensor_lag` section; zero without it
   P5Scale p5_scale;
   double gate_sigma = 5.0;        ///< readings with |innovation| > gate_sigma sqrt(S) are rejected
   double window_s = 2.0;          ///< time constant of the monitor's running mean NIS, s
