@@ -21,6 +21,7 @@
 #include "hotlap/common/units.h"
 #include "hotlap/common/yaml_reader.h"
 #include "hotlap/observe/car_observer.h"
+#include "hotlap/observe/live_server.h"
 #include "hotlap/observe/observer_config.h"
 #include "hotlap/observe/stream_io.h"
 
@@ -37,6 +38,8 @@ struct ObserveArgs {
   bool p5_scale = false;
   std::optional<double> tread_C, carcass_C, disc_C, calliper_C;
   std::optional<double> sensor_lag_s;  // --sensor-lag-s
+  std::optional<int> serve_port;       // --serve PORT
+  double serve_linger_s = 0.0;         // --serve-linger-s
   double ambient_C = 25.0, track_C = 40.0;
 };
 
@@ -132,6 +135,14 @@ int RunObserve(const ObserveArgs& a) {
   observe::CarObserver observer(car, config, start);
   observe::LineCsvWriter writer(a.out);
   writer.WriteHeader(observe::EstimateColumns(config.p5_scale.estimate));
+  // The live page: estimates handed to the server's thread as they are written.
+  std::unique_ptr<observe::LiveServer> server;
+  if (a.serve_port) {
+    server = std::make_unique<observe::LiveServer>(
+        *a.serve_port, observe::EstimateColumns(config.p5_scale.estimate));
+    fmt::print(stderr, "hotlap observe: live page at http://127.0.0.1:{}/\n", server->port());
+    std::fflush(stderr);
+  }
 
   std::vector<observe::DisagreementWarning> warnings;
   for (; sample; sample = next()) {
@@ -142,13 +153,16 @@ int RunObserve(const ObserveArgs& a) {
       throw InputError(
           fmt::format("{}:{}: {}", a.telemetry == "-" ? "stdin" : a.telemetry, line(), e.what()));
     }
-    writer.WriteRow(observe::EstimateRow(observer));
+    const std::vector<double> row = observe::EstimateRow(observer);
+    writer.WriteRow(row);
+    if (server) server->Add(row);
     for (observe::DisagreementWarning& w : raised) {
       fmt::print(stderr, "hotlap: warning: {}\n", w.message);
       warnings.push_back(std::move(w));
     }
   }
   writer.Close();
+  if (server) server->Finish();
   for (const std::string& w : reader_warnings) fmt::print(stderr, "hotlap: warning: {}\n", w);
   if (warning_count() > static_cast<long>(reader_warnings.size())) {
     fmt::print(stderr, "hotlap: warning: {} more such telemetry warnings\n",
@@ -258,6 +272,12 @@ int RunObserve(const ObserveArgs& a) {
                            {"telemetry_warnings", reader_warnings}});
     fmt::print(text, "wrote {}\n", a.json);
   }
+  if (server && a.serve_linger_s > 0.0) {
+    fmt::print(stderr, "hotlap observe: serving http://127.0.0.1:{}/ for another {:g} s\n",
+               server->port(), a.serve_linger_s);
+    std::fflush(stderr);
+    server->ServeFor(a.serve_linger_s);
+  }
   return 0;
 }
 
@@ -291,6 +311,14 @@ CommandRunner RegisterObserveCommand(CLI::App& app) {
                   "'# sensor_lag_s:' line, as hotlap synth writes, else the noise file's "
                   "sensor_lag section, else 0)")
       ->check(CLI::Range(0.0, 60.0));
+  sub->add_option("--serve", a->serve_port,
+                  "Serve a live page of the estimates and their bands at http://127.0.0.1:PORT/ "
+                  "while observing (0: any free port, printed on standard error)")
+      ->check(CLI::Range(0, 65535));
+  sub->add_option("--serve-linger-s", a->serve_linger_s,
+                  "With --serve: keep serving the page this long after the input ends")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 86400.0));
   sub->add_option("--json", a->json, "Write the summary as JSON (docs/json-output.md)");
   sub->add_option("--tread-temp-C", a->tread_C, "Initial tread temperature if not logged");
   sub->add_option("--carcass-temp-C", a->carcass_C, "Initial carcass temperature");

@@ -1,21 +1,28 @@
 // End-to-end tests of `hotlap observe`: a log file in, one estimate line per input line out, the
 // JSON summary; the stream through a pipe, one line at a time, answered line by line; MoTeC logs,
-// `--lap N` and `--channel-map FILE` as replay takes them; refusals.
+// `--lap N` and `--channel-map FILE` as replay takes them; the sensor lag; the live page
+// (`--serve`), fed a line at a time and drawn in headless Chromium; refusals.
 
+#include <arpa/inet.h>
 #include <fcntl.h>
+#include <netinet/in.h>
 #include <poll.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <csignal>
 #include <string>
+#include <thread>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "apps/run_hotlap.h"
 #include "hotlap/common/csv.h"
+#include "report/chromium.h"
 #include "test_util.h"
 
 namespace {
@@ -307,6 +314,136 @@ TEST_F(ObserveCommandTest, TakesTheSensorLagFromTheLogOrTheOption) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_TRUE(Contains(r.err, "sensor_lag_s")) << r.err;
   EXPECT_FALSE(fs::exists(dir() / "e.csv"));
+}
+
+// GET `path` from 127.0.0.1:`port`: the status code and the body (-1 if the request failed).
+std::pair<int, std::string> HttpGet(int port, const std::string& path) {
+  const int fd = socket(AF_INET, SOCK_STREAM, 0);
+  if (fd < 0) return {-1, ""};
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  address.sin_port = htons(static_cast<uint16_t>(port));
+  if (connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0) {
+    close(fd);
+    return {-1, ""};
+  }
+  const std::string request = "GET " + path + " HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n";
+  if (send(fd, request.data(), request.size(), MSG_NOSIGNAL) !=
+      static_cast<ssize_t>(request.size())) {
+    close(fd);
+    return {-1, ""};
+  }
+  std::string response;
+  char buffer[8192];
+  for (;;) {
+    pollfd p{fd, POLLIN, 0};
+    if (poll(&p, 1, 10000) <= 0) break;
+    const ssize_t n = recv(fd, buffer, sizeof buffer, 0);
+    if (n <= 0) break;
+    response.append(buffer, static_cast<size_t>(n));
+  }
+  close(fd);
+  const size_t body = response.find("\r\n\r\n");
+  if (response.rfind("HTTP/1.1 ", 0) != 0 || body == std::string::npos) return {-1, response};
+  return {std::stoi(response.substr(9, 3)), response.substr(body + 4)};
+}
+
+// `--serve 0` on a stream: the page's data grows line by line as the lines are fed (before the
+// input ends, and not done until it has), the page itself draws the three charts of estimates and
+// bands in headless Chromium with no script error and every row, and unknown paths are 404.
+TEST_F(ObserveCommandTest, ServesALivePageOfTheEstimatesAsTheyArrive) {
+  std::vector<std::string> lines;
+  {
+    const std::string text = ReadTextFile(Log());
+    for (size_t at = 0, end; at < text.size(); at = end + 1) {
+      end = text.find('\n', at);
+      const std::string line = text.substr(at, end - at);
+      if (!line.empty() && line[0] != '#') lines.push_back(line);
+      if (end == std::string::npos) break;
+    }
+  }
+  ASSERT_GT(lines.size(), 200u);
+  const fs::path est = dir() / "est.csv", err = dir() / "serve.err";
+  int to_child[2];
+  ASSERT_EQ(pipe(to_child), 0);
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    dup2(to_child[0], 0);
+    close(to_child[1]);
+    const int e = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int null = open("/dev/null", O_WRONLY);
+    dup2(null, 1);
+    dup2(e, 2);
+    execl(HOTLAP_BINARY, HOTLAP_BINARY, "observe", "--telemetry", "-", "--out", est.c_str(),
+          "--serve", "0", "--serve-linger-s", "120", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  close(to_child[0]);
+  std::signal(SIGPIPE, SIG_IGN);
+  const auto send_line = [&](const std::string& line) {
+    const std::string text = line + "\n";
+    return write(to_child[1], text.data(), text.size()) == static_cast<ssize_t>(text.size());
+  };
+  // Waits up to 20 s for `ready()`.
+  const auto wait_for = [](const auto& ready) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (!ready()) {
+      if (std::chrono::steady_clock::now() > deadline) return false;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return true;
+  };
+  int port = 0;
+  const auto rows_served = [&](bool* done) {
+    const auto [code, body] = HttpGet(port, "/data?from=0");
+    if (code != 200) return -1;
+    const nlohmann::json j = nlohmann::json::parse(body);
+    if (done != nullptr) *done = j["done"].get<bool>();
+    return static_cast<int>(j["rows"].size());
+  };
+  // The header and 20 lines: the page is up and serves 20 rows, not done.
+  for (size_t k = 0; k <= 20; ++k) ASSERT_TRUE(send_line(lines[k]));
+  ASSERT_TRUE(wait_for([&] {
+    const std::string text = fs::exists(err) ? ReadTextFile(err) : "";
+    const size_t at = text.find("live page at http://127.0.0.1:");
+    if (at == std::string::npos) return false;
+    port = std::stoi(text.substr(at + 30));
+    return true;
+  })) << ReadTextFile(err);
+  bool done = true;
+  ASSERT_TRUE(wait_for([&] { return rows_served(&done) == 20; }));
+  EXPECT_FALSE(done);
+  // Ten more lines, ten more rows, still live.
+  for (size_t k = 21; k <= 30; ++k) ASSERT_TRUE(send_line(lines[k]));
+  ASSERT_TRUE(wait_for([&] { return rows_served(&done) == 30; }));
+  EXPECT_FALSE(done);
+  // The rest, and the end of the input: done, every row.
+  for (size_t k = 31; k < lines.size(); ++k) ASSERT_TRUE(send_line(lines[k]));
+  close(to_child[1]);
+  const int all = static_cast<int>(lines.size()) - 1;
+  ASSERT_TRUE(wait_for([&] { return rows_served(&done) == all && done; }));
+  const auto [code, body] = HttpGet(port, "/data?from=" + std::to_string(all - 5));
+  ASSERT_EQ(code, 200);
+  const nlohmann::json tail = nlohmann::json::parse(body);
+  EXPECT_EQ(tail["rows"].size(), 5u);
+  EXPECT_EQ(tail["next"], all);
+  const hotlap::CsvTable table = hotlap::ReadCsv(est);
+  EXPECT_EQ(tail["columns"].get<std::vector<std::string>>(), table.columns);
+  EXPECT_NEAR(tail["rows"][4][0].get<double>(), table.Column("time_s").back(), 1e-6);
+  EXPECT_EQ(HttpGet(port, "/nope").first, 404);
+
+  const auto status = hotlap::test::RenderUrlInChromium(
+      "http://127.0.0.1:" + std::to_string(port) + "/", dir() / "chromium");
+  EXPECT_TRUE(hotlap::test::RenderedCleanly(status, 3));
+  if (status) {
+    EXPECT_TRUE(Contains(status->dom, "data-rows=\"" + std::to_string(all) + "\"")) << status->text;
+    EXPECT_TRUE(Contains(status->dom, "data-done=\"1\"")) << status->text;
+  }
+  kill(pid, SIGTERM);
+  int wait_status = 0;
+  waitpid(pid, &wait_status, 0);
 }
 
 }  // namespace

@@ -86,10 +86,23 @@ inline std::optional<PageStatus> ParsePageStatus(const std::string& dom) {
 /// Loads `html` in headless Chromium (fresh profile in `scratch`, no network, killed with all its
 /// children after `timeout`) and returns the page's status. Adds a test failure and returns
 /// nullopt if Chromium is missing, hangs, exits with an error or the page has no status element.
+inline std::optional<PageStatus> RenderUrlInChromium(
+    const std::string& url, const std::filesystem::path& scratch,
+    std::chrono::seconds timeout = std::chrono::seconds(90));
+
 inline std::optional<PageStatus> RenderInChromium(
     const std::filesystem::path& html, const std::filesystem::path& scratch,
     std::chrono::seconds timeout = std::chrono::seconds(90)) {
+  return RenderUrlInChromium("file://" + std::filesystem::absolute(html).string(), scratch,
+                             timeout);
+}
+
+/// The same for any URL (e.g. a page a test's own server serves on 127.0.0.1).
+inline std::optional<PageStatus> RenderUrlInChromium(const std::string& url,
+                                                     const std::filesystem::path& scratch,
+                                                     std::chrono::seconds timeout) {
   namespace fs = std::filesystem;
+  const std::string html = url;
   const std::optional<fs::path> chromium = FindChromium();
   if (!chromium || ::access(chromium->c_str(), X_OK) != 0) {
     ADD_FAILURE() << "headless Chromium is needed to check that HTML reports render, and "
@@ -115,7 +128,7 @@ inline std::optional<PageStatus> RenderInChromium(
                                    "--user-data-dir=" + profile.string(),
                                    "--virtual-time-budget=10000",
                                    "--dump-dom",
-                                   "file://" + fs::absolute(html).string()};
+                                   url};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
