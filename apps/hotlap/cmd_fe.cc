@@ -24,6 +24,8 @@
 #include "hotlap/fe/tyre_steps.h"
 #include "hotlap/fe/vtu_writer.h"
 #include "hotlap/sim/abs_config.h"
+#include "hotlap/sim/abs_metrics.h"
+#include "hotlap/sim/abs_run.h"
 #include "hotlap/sim/fe_abs_json.h"
 #include "hotlap/sim/fe_abs_report.h"
 #include "hotlap/sim/fe_abs_stop.h"
@@ -44,6 +46,7 @@ struct FeArgs {
   std::string kernel;               // empty: HOTLAP_FE_KERNEL, else auto
   double checkpoint_every_s = 0.0;  // 0: no checkpoints
   std::string restart;              // checkpoint to continue from
+  double step_scale = 1.0;          // the time step is this times the stable one's (0, 1]
 };
 
 constexpr const char* kCheckpointName = "abs_checkpoint.bin";
@@ -114,6 +117,7 @@ int RunFeCommand(const FeArgs& a) {
     if (last == 2) config.roll_duration_s = a.duration_s;
     if (last == 3) config.abs_duration_s = a.duration_s;
   }
+  config.solver.time_step_scale = a.step_scale;
   const fe::ElementKernel kernel = ChooseKernel(a.kernel);
   std::optional<sim::AbsConfig> abs_config;
   if (last == 3) abs_config = sim::LoadAbsConfig(config.abs_config);
@@ -125,11 +129,11 @@ int RunFeCommand(const FeArgs& a) {
   const fe::MassScalingReport& ms = solver.mass_scaling();
   std::fprintf(
       stderr,
-      "fe: %zu elements, %zu nodes; time step %.3g s (stable %.3g s unscaled); mass "
-      "%.3f kg, mass scaling added %.3f kg in %d elements; %d threads, %s element kernel\n",
+      "fe: %zu elements, %zu nodes; time step %.3g s (scale %g; stable %.3g s unscaled); "
+      "mass %.3f kg, mass scaling added %.3f kg in %d elements; %d threads, %s element kernel\n",
       run.tyre().mesh.elements.size(), run.tyre().mesh.nodes.size(), solver.time_step(),
-      ms.stable_step_unscaled_s, ms.physical_mass_kg, ms.added_mass_kg, ms.scaled_elements,
-      solver.threads(), fe::ElementKernelName(solver.element_kernel()));
+      a.step_scale, ms.stable_step_unscaled_s, ms.physical_mass_kg, ms.added_mass_kg,
+      ms.scaled_elements, solver.threads(), fe::ElementKernelName(solver.element_kernel()));
 
   // The ABS stop (its controller's R_l is the free-rolling radius of the roll step, (002:2),
   // known once the roll step ran or the checkpoint is read).
@@ -223,12 +227,33 @@ int RunFeCommand(const FeArgs& a) {
     const sim::FeAbsStopResult r = stop->Run(options);
     const fe::BrakeResult& br = r.brake;
     fe::WriteFeHistoryCsv(out / "abs_history.csv", "abs", config, br.history, run.slip_radius_m());
+    // The lumped `hotlap abs` run of the same event beside it (issue 27): the same controller
+    // and hydraulics file, speed and duration, its own rigid wheel and brush tyre.
+    sim::AbsEvent event = abs_config->event;
+    event.initial_speed_mps = br.initial_speed_mps;
+    event.duration_s = config.abs_duration_s;
+    const sim::AbsRunResult lumped_run = sim::RunAbs(*abs_config, event);
+    const sim::AbsMetrics lumped_metrics = sim::CalcAbsMetrics(*abs_config, lumped_run);
+    const sim::FeAbsLumpedRun lumped{&lumped_run.history, lumped_metrics,
+                                     abs_config->plant.wheel.radius};
     sim::WriteFeAbsReport(
         out / "abs_report.html", br.history, r.cycles, run.slip_radius_m(),
         {{"configuration", config.file.string()},
          {"mesh", fmt::format("{} elements, {} nodes", run.tyre().mesh.elements.size(),
-                              run.tyre().mesh.nodes.size())}});
+                              run.tyre().mesh.nodes.size())}},
+        &lumped);
     j["abs"] = sim::FeAbsStopJson(r, config.abs_duration_s, solver.energies());
+    const auto opt = [](const std::optional<double>& v) {
+      return v ? nlohmann::json(RoundSignificant(*v, 6)) : nlohmann::json(nullptr);
+    };
+    j["abs"]["lumped"] = {
+        {"control_cycles", lumped_metrics.cycles},
+        {"first_cycle_start_s", opt(lumped_metrics.first_cycle_start_s)},
+        {"second_cycle_start_s", opt(lumped_metrics.second_cycle_start_s)},
+        {"max_lambda_after_first_cycle", opt(lumped_metrics.max_lambda_after_first_cycle)},
+        {"fraction_time_lambda_below_0_135", opt(lumped_metrics.fraction_time_lambda_below_0_135)},
+        {"final_speed_mps", RoundSignificant(lumped_metrics.final_speed_mps, 6)},
+        {"distance_m", RoundSignificant(lumped_metrics.distance_m, 6)}};
     WarnCordStrain("abs", br.max_cord_strain);
     std::printf("abs: %.3f s, speed %.3f -> %.3f m/s over %.3f m, max slip %.3f, %d cycles\n",
                 config.abs_duration_s, br.initial_speed_mps, br.final_speed_mps, br.distance_m,
@@ -276,6 +301,11 @@ CommandRunner RegisterFeCommand(CLI::App& app) {
       ->check(CLI::IsMember({"auto", "portable", "avx2"}));
   sub->add_option("--checkpoint-every-s", args->checkpoint_every_s,
                   "abs: write <out>/abs_checkpoint.bin every S of simulated time and at the end")
+      ->check(kPositive);
+  sub->add_option("--step-scale", args->step_scale,
+                  "Time step as a fraction of the stable one's, in (0, 1] (a time-step study; "
+                  "the road's penalty stiffness stays that of the full step; default 1)")
+      ->check(CLI::Range(0.0, 1.0))
       ->check(kPositive);
   sub->add_option("--restart", args->restart,
                   "abs: continue from a checkpoint file (same configuration files and mesh)");

@@ -205,11 +205,11 @@ TEST_F(FeCheckpointFile, AnotherMeshConfigurationOrVersionIsRefused) {
   other.config_hash ^= 1;
   EXPECT_NE(Refusal(p, other).find("another configuration"), std::string::npos);
   // Files of versions 1 (before the stick anchors), 2 (before the cord strain and the
-  // directional cord step) and 3 (before the state saved whole) and of a future version (the
-  // checksum made right again): refused by version.
-  ASSERT_EQ(kCheckpointVersion, 4u);
+  // directional cord step), 3 (before the state saved whole) and 4 (before the ABS wheel-speed
+  // sensor's sums) and of a future version (the checksum made right again): refused by version.
+  ASSERT_EQ(kCheckpointVersion, 5u);
   const std::string good = ReadBytes(p);
-  for (const char version : {1, 2, 3, 5}) {
+  for (const char version : {1, 2, 3, 4, 6}) {
     std::string s = good;
     s[8] = version;
     s.resize(s.size() - 8);
@@ -217,7 +217,7 @@ TEST_F(FeCheckpointFile, AnotherMeshConfigurationOrVersionIsRefused) {
     s.append(reinterpret_cast<const char*>(&h), 8);
     WriteBytes(p, s);
     EXPECT_NE(Refusal(p, key_).find("has format version " + std::to_string(version) +
-                                    "; this build reads version 4"),
+                                    "; this build reads version 5"),
               std::string::npos)
         << Refusal(p, key_);
   }

@@ -210,5 +210,30 @@ TEST(FeExplicitState, LoadRefusesAnotherModelAndNamesTheField) {
       << refusal(model, renamed);
 }
 
+// Issue 27: SolverOptions::time_step_scale takes that fraction of the step and keeps the road's
+// penalty springs of the full step (so a time-step study refines the same model); a scale
+// outside (0, 1] is refused.
+TEST(FeExplicitState, StepScaleShortensTheStepAndKeepsTheContactStiffness) {
+  const ExplicitModel full = MakeExplicitModel(BlockOnRoad(), {testing::Tread()}, {}, {});
+  SolverOptions half_options;
+  half_options.time_step_scale = 0.5;
+  const ExplicitModel half = MakeExplicitModel(BlockOnRoad(), {testing::Tread()}, {}, half_options);
+  EXPECT_DOUBLE_EQ(half.time_step_s, 0.5 * full.time_step_s);
+  EXPECT_EQ(half.contact_step_s, full.time_step_s);
+  EXPECT_EQ(full.contact_step_s, full.time_step_s);
+  ExplicitState a = MakeInitialState(full), b = MakeInitialState(half);
+  Prepare(full, a);
+  Prepare(half, b);
+  for (size_t n = 0; n < a.x.size(); ++n) {
+    EXPECT_EQ(ContactStiffness(full, a, n), ContactStiffness(half, b, n)) << n;
+    EXPECT_EQ(StickStiffness(full, a, n), StickStiffness(half, b, n)) << n;
+  }
+  for (const double bad : {0.0, -0.5, 1.5}) {
+    SolverOptions o;
+    o.time_step_scale = bad;
+    EXPECT_THROW(MakeExplicitModel(BlockOnRoad(), {testing::Tread()}, {}, o), InputError) << bad;
+  }
+}
+
 }  // namespace
 }  // namespace hotlap::fe

@@ -5,9 +5,13 @@
 
 #include "hotlap/sim/fe_abs_stop.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -142,6 +146,59 @@ TEST_F(FeAbsStopTest, CheckpointOfAnotherConfigurationIsRefused) {
     EXPECT_NE(std::string(e.what()).find("written for another configuration"), std::string::npos)
         << e.what();
   }
+}
+
+// The stop's slip history, brake-step time from the first row, interpolated at time t.
+double SlipAt(const std::vector<fe::HistoryRow>& h, double t) {
+  const double t0 = h.front().time_s;
+  for (size_t k = 1; k < h.size(); ++k) {
+    const double a = h[k - 1].time_s - t0, b = h[k].time_s - t0;
+    if (t <= b) return h[k - 1].slip + (h[k].slip - h[k - 1].slip) * (t - a) / (b - a);
+  }
+  return h.back().slip;
+}
+
+// Issue 27: the ABS stop must not move with the time step. The coarse tyre braked for
+// kDuration at the stable step and at half of it (SolverOptions::time_step_scale, the road's
+// penalty springs unchanged): the slip histories agree within kSlipRms (RMS over the stop) and
+// the control cycles begin at the same ticks within 10 ms. Measured (2026-11-26) in
+// docs/fe-tyre.md ("Time step"); a controller that samples the spin where the step decides what
+// it sees (or a contact that changes with the step) moves both beyond these bounds.
+TEST_F(FeAbsStopTest, HalvingTheStepKeepsTheSlipHistoryAndTheCycles) {
+  constexpr double kDuration = 0.25, kSlipRms = 0.01, kCycleShift = 0.010;
+  const auto run = [&](double scale) {
+    fe::FeConfig config = fe::LoadFeConfig(CoarseConfig("coarse.yaml"));
+    config.solver.time_step_scale = scale;
+    const AbsConfig abs = LoadAbsConfig(config.abs_config);
+    fe::TyreRun tyre(config);
+    tyre.mutable_solver().set_threads(1);
+    RunUpToRoll(tyre);
+    FeAbsStopOptions o;
+    o.duration_s = kDuration;
+    o.hooks = Hooks(config);
+    FeAbsStopResult r = FeAbsStop(tyre, abs).Run(o);
+    for (double& c : r.cycle_starts_s) c -= r.brake.history.front().time_s;
+    return std::pair{r, tyre.solver().time_step()};
+  };
+  const auto [full, dt_full] = run(1.0);
+  const auto [half, dt_half] = run(0.5);
+  EXPECT_NEAR(dt_half, 0.5 * dt_full, 1e-12 * dt_full);
+  double sum = 0.0, peak = 0.0;
+  int n = 0;
+  for (double t = 0.0; t <= kDuration; t += 1e-3, ++n) {
+    const double d = SlipAt(full.brake.history, t) - SlipAt(half.brake.history, t);
+    sum += d * d;
+    peak = std::max(peak, std::abs(SlipAt(full.brake.history, t)));
+  }
+  const double rms = std::sqrt(sum / n);
+  EXPECT_GT(peak, 0.005);  // the brake acted: there is a slip to compare
+  EXPECT_LT(rms, kSlipRms) << "largest slip " << peak;
+  ASSERT_EQ(full.cycle_starts_s.size(), half.cycle_starts_s.size());
+  for (size_t k = 0; k < full.cycle_starts_s.size(); ++k) {
+    EXPECT_NEAR(full.cycle_starts_s[k], half.cycle_starts_s[k], kCycleShift) << k;
+  }
+  std::printf("slip RMS difference %.4g (largest slip %.4g), cycles %zu\n", rms, peak,
+              full.cycle_starts_s.size());
 }
 
 }  // namespace

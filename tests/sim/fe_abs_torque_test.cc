@@ -91,5 +91,35 @@ TEST(FeAbsTorque, DamagedSavedLawIsRefusedAndChangesNothing) {
   EXPECT_THROW(target.Load(r), InputError);
 }
 
+// The wheel-speed sensor (issue 27): a steady wheel with a 400 Hz spin ripple of 0.5 rad/s (two
+// periods in the controller's 5 ms, as the contact's facets make it), stepped at 1e-5 s and at
+// 0.37e-5 s: the controller reads the mean spin, within 5e-3 rad/s (1% of the ripple: the
+// window's ends fall within a step of the ticks) of the steady spin and of each other, where
+// the instantaneous spin at the ticks (phase 0.3 rad each time) is off by 0.15 rad/s.
+TEST(FeAbsTorque, SensorReadsTheMeanSpinOverThePeriodWhateverTheStep) {
+  const AbsConfig config = LoadAbsConfig(DefaultAbsConfigPath());
+  const double w0 = 28.0, amp = 0.5, f = 400.0;
+  std::vector<std::vector<double>> reads;
+  for (const double dt : {1e-5, 0.37e-5}) {
+    FeAbsTorque law(config, Params(config));
+    std::vector<double> r;
+    int ticks = 0;
+    for (int k = 0; k * dt < 0.0975; ++k) {
+      const double t = k * dt;
+      const double phase = 2.0 * M_PI * f * t + 0.3;
+      law(t, 11.0, w0 + amp * std::sin(phase));
+      if (law.state().ticks != ticks) {
+        ticks = law.state().ticks;
+        r.push_back(law.state().previous_wheel_speed);
+      }
+    }
+    ASSERT_GT(r.size(), 15u);
+    for (size_t k = 1; k < r.size(); ++k) EXPECT_NEAR(r[k], w0, 5e-3) << k << " dt " << dt;
+    reads.push_back(r);
+  }
+  ASSERT_EQ(reads[0].size(), reads[1].size());  // ticks at 0, 5, ..., 95 ms
+  for (size_t k = 0; k < reads[0].size(); ++k) EXPECT_NEAR(reads[0][k], reads[1][k], 5e-3) << k;
+}
+
 }  // namespace
 }  // namespace hotlap::sim

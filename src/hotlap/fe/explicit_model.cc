@@ -9,6 +9,8 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
+#include <fmt/format.h>
+
 #include "hotlap/common/error.h"
 
 namespace hotlap::fe {
@@ -184,8 +186,13 @@ ExplicitModel MakeExplicitModel(Mesh mesh, std::vector<YeohMaterial> materials,
   CalcElementTables(m);
   ColourElements(m);
   IndexNodes(m);
-  m.time_step_s =
+  if (!(options.time_step_scale > 0.0 && options.time_step_scale <= 1.0)) {
+    throw InputError(
+        fmt::format("fe: time step scale {:g} is outside (0, 1]", options.time_step_scale));
+  }
+  m.contact_step_s =
       options.time_step_s > 0.0 ? options.time_step_s : options.time_step_safety * m.stable_step_s;
+  m.time_step_s = options.time_step_scale * m.contact_step_s;
   if (!(m.time_step_s > 0.0) || !std::isfinite(m.time_step_s)) {
     throw NumericalError("fe: no valid time step");
   }

@@ -66,6 +66,12 @@ struct SolverOptions {
   /// ExplicitState::mass_damping_per_s (the steps change it).
   double mass_damping_per_s = 0.0;
   double time_step_s = 0.0;  ///< fixed step if > 0 (must not exceed the stable one), s
+  /// The step actually taken is this times the step above (time_step_s if > 0, else
+  /// time_step_safety times the stable step), in (0, 1]: a time-step study (`hotlap fe
+  /// --step-scale`). The road's penalty springs keep the stiffness of the unscaled step
+  /// (ExplicitModel::contact_step_s), so a smaller scale refines the time discretisation of the
+  /// same model and does not stiffen the contact.
+  double time_step_scale = 1.0;
 };
 
 /// What mass scaling did.
@@ -100,6 +106,9 @@ struct ExplicitModel {
   std::vector<char> is_rim_node;          ///< 1 for mesh.rim_nodes (tied once a rim is set)
   double stable_step_s = 0.0;             ///< smallest element step, before the safety factor, s
   double time_step_s = 0.0;               ///< the fixed step, s
+  /// The step the road's penalty stiffnesses refer to (k = factor m / contact_step_s^2): the
+  /// step before SolverOptions::time_step_scale, s. Equal to time_step_s at scale 1.
+  double contact_step_s = 0.0;
   MassScalingReport mass_report;
 
   /// Number of element colours (no two elements of a colour share a node).

@@ -100,14 +100,16 @@ std::vector<Eigen::Vector3d> CalcElementForces(const ExplicitModel& model,
 /// Sum of the road's force on the tyre from the last step (friction x, y; normal z), N.
 Eigen::Vector3d CalcRoadForce(const ExplicitModel& model, const ExplicitState& state);
 
-/// Normal penalty stiffness of node `a` on the state's road, k = penalty_factor m / dt^2, N/m.
+/// Normal penalty stiffness of node `a` on the state's road, k = penalty_factor m / dt^2, N/m,
+/// with dt the unscaled step (ExplicitModel::contact_step_s; the step itself at scale 1).
 inline double ContactStiffness(const ExplicitModel& model, const ExplicitState& state, size_t a) {
-  return state.road.penalty_factor * model.mass[a] / (model.time_step_s * model.time_step_s);
+  return state.road.penalty_factor * model.mass[a] / (model.contact_step_s * model.contact_step_s);
 }
-/// Tangential stiffness of node `a`'s stick spring, k_t = tangential_penalty_factor m / dt^2, N/m.
+/// Tangential stiffness of node `a`'s stick spring, k_t = tangential_penalty_factor m / dt^2, N/m,
+/// dt as ContactStiffness's.
 inline double StickStiffness(const ExplicitModel& model, const ExplicitState& state, size_t a) {
   return state.road.tangential_penalty_factor * model.mass[a] /
-         (model.time_step_s * model.time_step_s);
+         (model.contact_step_s * model.contact_step_s);
 }
 
 }  // namespace hotlap::fe

@@ -12,6 +12,8 @@ nlohmann::json FeMeshJson(const TyreRun& run) {
   return {{"elements", run.tyre().mesh.elements.size()},
           {"nodes", run.tyre().mesh.nodes.size()},
           {"time_step_s", RoundSignificant(solver.time_step(), 6)},
+          {"time_step_scale", solver.model().options.time_step_scale},
+          {"contact_step_s", RoundSignificant(solver.model().contact_step_s, 6)},
           {"stable_step_unscaled_s", RoundSignificant(ms.stable_step_unscaled_s, 6)},
           {"physical_mass_kg", RoundSignificant(ms.physical_mass_kg, 6)},
           {"mass_scaling_added_kg", RoundSignificant(ms.added_mass_kg, 6)},

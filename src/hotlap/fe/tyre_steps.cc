@@ -217,8 +217,14 @@ RollResult TyreRun::Roll(const StepHooks& hooks) {
   r.speed_mps = config_.roll_speed_mps;
   solver_.set_mass_damping(0.0);
   solver_.SetRimModes(RimDofMode::kPrescribedVelocity, RimDofMode::kFree, RimDofMode::kFree);
-  // Start from rigid rolling about the rim centre at the loaded radius.
-  const double spin0 = r.speed_mps / state_.loaded_radius_m;
+  // Start from rigid rolling about the rim centre at the rule-of-thumb rolling radius
+  // R - deflection / 3 (the measured effective radius is within 0.1% of it: docs/fe-tyre.md).
+  // Until issue 27 the spin was speed / loaded radius, 4% fast: the belt and rim then had to
+  // lose 1.2 rad/s through the contact, which set the rim-tyre torsional modes (20-70 Hz,
+  // lightly damped) ringing at 0.5-0.8 rad/s for the whole roll step, into the braking.
+  const double rolling_radius =
+      state_.inflated_radius_m - (state_.inflated_radius_m - state_.loaded_radius_m) / 3.0;
+  const double spin0 = r.speed_mps / rolling_radius;
   const Eigen::Vector3d c = solver_.rim_state().centre;
   std::vector<Eigen::Vector3d> v(solver_.positions().size());
   for (size_t a = 0; a < v.size(); ++a) {

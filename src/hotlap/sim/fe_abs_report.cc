@@ -24,7 +24,8 @@ report::LineChart TimeChart(const std::string& title, const std::string& label,
 
 void WriteFeAbsReport(const std::filesystem::path& path, const std::vector<fe::HistoryRow>& history,
                       const CycleWindow& cycles, double loaded_radius_m,
-                      const std::vector<std::pair<std::string, std::string>>& metadata) {
+                      const std::vector<std::pair<std::string, std::string>>& metadata,
+                      const FeAbsLumpedRun* lumped) {
   if (history.empty()) throw std::invalid_argument("WriteFeAbsReport: empty history");
   const size_t n = history.size();
   std::vector<double> t(n), torque(n), vx(n), omega_r(n), slip(n), fx(n), balance(n);
@@ -65,9 +66,48 @@ void WriteFeAbsReport(const std::filesystem::path& path, const std::vector<fe::H
       "force and the slip together; here they are the two charts above it and beside it). "
       "docs/fe-tyre.md says what was compared.");
 
+  // The lumped run on the FE histories' clock (its t = 0 is the braking step's start).
+  std::vector<double> lt, ltorque, lvx, lomega_r, lslip, lfx;
+  if (lumped != nullptr && lumped->history != nullptr) {
+    const AbsHistory& h = *lumped->history;
+    for (size_t k = 0; k < h.size(); ++k) {
+      lt.push_back(t.front() + h.time[k]);
+      ltorque.push_back(-h.brake_torque[k]);
+      lvx.push_back(h.speed[k]);
+      lomega_r.push_back(h.wheel_speed[k] * lumped->loaded_radius_m);
+      lslip.push_back(h.lambda[k]);
+      lfx.push_back(h.fx[k]);
+    }
+    const auto opt = [](const std::optional<double>& v, double offset) {
+      return v ? fmt::format("{:.3f}", *v + offset) : std::string("-");
+    };
+    const CycleWindow& c = lumped->cycles;
+    const double t0 = t.front();
+    page.AddText(fmt::format(
+        "Beside the lumped `hotlap abs` run of the same event (same controller and hydraulics, "
+        "rigid wheel, brush tyre), time from the braking step's start: first pressure release "
+        "FE {} s, lumped {} s; second cycle FE {} s, lumped {} s; cycles FE {}, lumped {}; slip "
+        "below {:.3f} after the first cycle FE {}, lumped {}; at most FE {}, lumped {}.",
+        opt(cycles.first_cycle_start_s, -t0), opt(c.first_cycle_start_s, 0.0),
+        opt(cycles.second_cycle_start_s, -t0), opt(c.second_cycle_start_s, 0.0), cycles.cycles,
+        c.cycles, kPaperSlipLimit, opt(cycles.fraction_time_lambda_below_0_135, 0.0),
+        opt(c.fraction_time_lambda_below_0_135, 0.0), opt(cycles.max_lambda_after_first_cycle, 0.0),
+        opt(c.max_lambda_after_first_cycle, 0.0)));
+  }
+  const auto add_lumped = [&](report::LineChart& chart, const std::string& label,
+                              const std::vector<double>& y) {
+    if (lt.empty()) return;
+    chart.series.push_back({.label = label,
+                            .x = lt,
+                            .y = y,
+                            .colour = "#9c755f",
+                            .style = report::LineStyle::kDotted});
+  };
+
   page.AddHeading("Braking event (002 Figures 8 to 11)");
   report::LineChart fig8 = TimeChart("Brake torque (cf. 002 Fig. 8)", "torque", "N m");
   fig8.series.push_back({.label = "ABS brake torque", .x = t, .y = torque});
+  add_lumped(fig8, "lumped hotlap abs", ltorque);
   page.AddLineChart(fig8);
 
   report::LineChart fig9 =
@@ -75,10 +115,13 @@ void WriteFeAbsReport(const std::filesystem::path& path, const std::vector<fe::H
   fig9.series.push_back({.label = "Vx (rim)", .x = t, .y = vx});
   fig9.series.push_back(
       {.label = "omega R_l", .x = t, .y = omega_r, .style = report::LineStyle::kDashed});
+  add_lumped(fig9, "Vx (lumped)", lvx);
+  add_lumped(fig9, "omega R_l (lumped)", lomega_r);
   page.AddLineChart(fig9);
 
   report::LineChart fig10 = TimeChart("Slip ratio (cf. 002 Fig. 10)", "slip", "");
   fig10.series.push_back({.label = "slip", .x = t, .y = slip});
+  add_lumped(fig10, "slip (lumped)", lslip);
   fig10.series.push_back({.label = "0.135 (002 Fig. 10)",
                           .x = {t.front(), t.back()},
                           .y = {kPaperSlipLimit, kPaperSlipLimit},
@@ -89,6 +132,7 @@ void WriteFeAbsReport(const std::filesystem::path& path, const std::vector<fe::H
   report::LineChart fig11 =
       TimeChart("Road longitudinal force (cf. 002 Fig. 11)", "road force Fx", "N");
   fig11.series.push_back({.label = "road Fx on the tyre", .x = t, .y = fx});
+  add_lumped(fig11, "Fx (lumped)", lfx);
   page.AddLineChart(fig11);
 
   page.AddHeading("Energies");

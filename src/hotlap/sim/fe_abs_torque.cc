@@ -7,10 +7,17 @@
 namespace hotlap::sim {
 
 double FeAbsTorque::operator()(double t, double vx, double spin) {
+  const double dt = t - t_prev_;
+  spin_sum_ += dt * spin;
+  vx_sum_ += dt * vx;
+  window_ += dt;
   while (t >= next_tick_ - 1e-12) {
     const int cycles = state_.cycles;
+    const double spin_read = window_ > 0.0 ? spin_sum_ / window_ : spin;
+    const double vx_read = window_ > 0.0 ? vx_sum_ / window_ : vx;
+    spin_sum_ = vx_sum_ = window_ = 0.0;
     const brake::AbsCommand cmd = brake::StepAbsController(
-        params_, state_, {vx, spin, config_.driver.PressureAt(next_tick_)});
+        params_, state_, {vx_read, spin_read, config_.driver.PressureAt(next_tick_)});
     if (state_.cycles > cycles) cycle_starts_.push_back(next_tick_);
     if (state_.state == brake::AbsState::kExit && !abs_exit_) abs_exit_ = next_tick_;
     target_ = Push(cmd.pressure_target);
@@ -38,9 +45,9 @@ void FeAbsTorque::Save(fe::BinaryWriter& w) const {
   w.PutU64((s.has_previous ? 1 : 0) | (s.seen_accel_above_a ? 2 : 0));
   w.PutI64(s.cycles);
   w.PutI64(s.ticks);
-  for (double d :
-       {s.pressure_command, s.time_in_state, s.step_timer, s.previous_wheel_speed,
-        s.release_pressure, s.slip, s.wheel_accel, next_tick_, target_, pressure_, t_prev_}) {
+  for (double d : {s.pressure_command, s.time_in_state, s.step_timer, s.previous_wheel_speed,
+                   s.release_pressure, s.slip, s.wheel_accel, next_tick_, target_, pressure_,
+                   t_prev_, spin_sum_, vx_sum_, window_}) {
     w.PutDouble(d);
   }
   w.PutDoubles(std::vector<double>(pushed_.begin(), pushed_.end()));
@@ -66,12 +73,13 @@ void FeAbsTorque::Load(fe::BinaryReader& r) {
   }
   s.cycles = static_cast<int>(cycles);
   s.ticks = static_cast<int>(ticks);
-  double next_tick, target, pressure, t_prev;
-  for (double* d :
-       {&s.pressure_command, &s.time_in_state, &s.step_timer, &s.previous_wheel_speed,
-        &s.release_pressure, &s.slip, &s.wheel_accel, &next_tick, &target, &pressure, &t_prev}) {
+  double next_tick, target, pressure, t_prev, spin_sum, vx_sum, window;
+  for (double* d : {&s.pressure_command, &s.time_in_state, &s.step_timer, &s.previous_wheel_speed,
+                    &s.release_pressure, &s.slip, &s.wheel_accel, &next_tick, &target, &pressure,
+                    &t_prev, &spin_sum, &vx_sum, &window}) {
     *d = r.GetFinite();
   }
+  if (window < 0.0) r.Damaged("a negative wheel-speed sensor window");
   const size_t n = r.GetCount(sizeof(double));
   if (n > static_cast<size_t>(std::max(0, config_.DelayTicks()))) {
     r.Damaged("more delayed pressure commands than the hydraulic delay holds");
@@ -95,6 +103,9 @@ void FeAbsTorque::Load(fe::BinaryReader& r) {
   target_ = target;
   pressure_ = pressure;
   t_prev_ = t_prev;
+  spin_sum_ = spin_sum;
+  vx_sum_ = vx_sum;
+  window_ = window;
   delay_ = brake::PressureDelayLine(config_.DelayTicks(), 0.0);
   pushed_.clear();
   for (double d : pushed) Push(d);

@@ -30,6 +30,13 @@ class FeAbsTorque {
 
   /// Brake torque capacity at brake-step time t (s from the braking step's start), given the
   /// rim's forward speed vx (m/s) and spin (rad/s), N m. Calls must not go back in time.
+  ///
+  /// The wheel-speed sensor: at each tick the controller reads the means of spin and vx over
+  /// the period since the last tick (the sums of the values passed, each times the time since
+  /// the call before), as a toothed-wheel sensor counts teeth over its period (issue 27): a
+  /// sample of the instantaneous spin would see wherever the contact's high-frequency ripple
+  /// (facets passing, 300-400 Hz at 11 m/s on a 5 deg mesh) happens to be at that FE step,
+  /// which the time step moves. The first tick, with no period behind it, reads the values.
   double operator()(double t, double vx, double spin);
 
   const brake::AbsControllerState& state() const { return state_; }
@@ -57,6 +64,7 @@ class FeAbsTorque {
   std::vector<double> cycle_starts_;
   std::optional<double> abs_exit_;
   double next_tick_ = 0.0, target_ = 0.0, pressure_ = 0.0, t_prev_ = 0.0;
+  double spin_sum_ = 0.0, vx_sum_ = 0.0, window_ = 0.0;  // the sensor's sums since the last tick
 };
 
 }  // namespace hotlap::sim
