@@ -160,12 +160,14 @@ double SlipAt(const std::vector<fe::HistoryRow>& h, double t) {
 
 // Issue 27: the ABS stop must not move with the time step. The coarse tyre braked for
 // kDuration at the stable step and at half of it (SolverOptions::time_step_scale, the road's
-// penalty springs unchanged): the slip histories agree within kSlipRms (RMS over the stop) and
-// the control cycles begin at the same ticks within 10 ms. Measured (2026-11-26) in
-// docs/fe-tyre.md ("Time step"); a controller that samples the spin where the step decides what
-// it sees (or a contact that changes with the step) moves both beyond these bounds.
+// penalty springs unchanged): the slip histories agree within kSlipRms (RMS over the stop, on a
+// 1 ms grid) and the control cycles are as many and begin within 10 ms. Measured (2026-11-26,
+// docs/fe-tyre.md "ABS stop"): RMS 0.0026 with 7 cycles at the same ticks; the bound is about
+// twice that. On finer meshes the event after the third cycle moves with any perturbation,
+// round-off included, so this coarse mesh, whose slip stays small, is the one that can be held
+// to a tight bound over several cycles.
 TEST_F(FeAbsStopTest, HalvingTheStepKeepsTheSlipHistoryAndTheCycles) {
-  constexpr double kDuration = 0.25, kSlipRms = 0.01, kCycleShift = 0.010;
+  constexpr double kDuration = 0.5, kSlipRms = 0.005, kCycleShift = 0.010;
   const auto run = [&](double scale) {
     fe::FeConfig config = fe::LoadFeConfig(CoarseConfig("coarse.yaml"));
     config.solver.time_step_scale = scale;
