@@ -4,6 +4,7 @@
 #include "hotlap/sim/fe_abs_report.h"
 
 #include <stdexcept>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -48,6 +49,40 @@ TEST(WriteFeAbsReport, RefusesAnEmptyHistoryAndAMissingFolder) {
                                                 0.4, {});
                              }),
                              "r.html"));
+}
+
+// Issue 27: with the lumped run of the same event, every chart draws it and the text compares
+// the two runs' cycles, the lumped times counted from the FE braking step's start.
+TEST(WriteFeAbsReport, DrawsTheLumpedRunBesideTheFeOne) {
+  test::TempDir dir;
+  const auto path = dir.path() / "abs_report.html";
+  std::vector<fe::HistoryRow> fe_history = ExampleHistory();
+  for (fe::HistoryRow& r : fe_history) r.time_s += 0.24;  // the braking step starts at 0.24 s
+  CycleWindow cycles;
+  cycles.cycles = 2;
+  cycles.first_cycle_start_s = 0.24 + 0.125;
+  cycles.second_cycle_start_s = 0.24 + 0.27;
+  AbsHistory lumped_history;
+  lumped_history.time = {0.0, 0.01};
+  lumped_history.speed = {8.0, 7.9};
+  lumped_history.wheel_speed = {22.0, 21.0};
+  lumped_history.lambda = {0.0, 0.04};
+  lumped_history.brake_torque = {0.0, 120.0};
+  lumped_history.fx = {0.0, -900.0};
+  FeAbsLumpedRun lumped{&lumped_history, {}, 0.36};
+  lumped.cycles.cycles = 3;
+  lumped.cycles.first_cycle_start_s = 0.125;
+  lumped.cycles.second_cycle_start_s = 0.19;
+  WriteFeAbsReport(path, fe_history, cycles, 0.4, {}, &lumped);
+  const std::string html = test::ReadTextFile(path);
+  for (const char* part :
+       {"first pressure release FE 0.125 s, lumped 0.125 s",
+        "second cycle FE 0.270 s, lumped 0.190 s", "cycles FE 2, lumped 3", "lumped hotlap abs",
+        "Vx (lumped)", "omega R_l (lumped)", "slip (lumped)", "Fx (lumped)"}) {
+    EXPECT_TRUE(test::Contains(html, part)) << part;
+  }
+  WriteFeAbsReport(path, fe_history, cycles, 0.4, {});
+  EXPECT_FALSE(test::Contains(test::ReadTextFile(path), "(lumped)"));
 }
 
 }  // namespace
