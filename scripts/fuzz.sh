@@ -18,7 +18,8 @@
 # files, outcome, CPU seconds). Exits 1 if any target found something. Needs clang (scripts/install-deps.sh --fuzz).
 #
 # Environment: HOTLAP_FUZZ_BUILD (build folder, default build-fuzz), HOTLAP_FUZZ_NO_BUILD=1 (run
-# what is built), HOTLAP_FUZZ_ARGS (more libFuzzer options, e.g. "-max_len=4096").
+# what is built), HOTLAP_FUZZ_ARGS (more libFuzzer options, e.g. "-max_len=4096"),
+# HOTLAP_FUZZ_GOAL_RUNS and HOTLAP_FUZZ_GOAL_CPU_S (--budget's goal, default 10^7 and 3600).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -43,6 +44,8 @@ if [ "${1:-}" = "--summary" ]; then
 fi
 # --budget: what each target has left of the goal (10^7 executions, 3600 CPU seconds).
 budget=0
+goal_runs=${HOTLAP_FUZZ_GOAL_RUNS:-10000000}
+goal_cpu=${HOTLAP_FUZZ_GOAL_CPU_S:-3600}
 if [ "${1:-}" = "--budget" ]; then
   budget=1
   shift
@@ -134,16 +137,18 @@ run_one() {
     local done_runs done_cpu
     read -r done_runs done_cpu < <(awk -F'\t' -v t="$t" '$2 == t { r += $4; c += ($7 == "" ? $3 : $7) }
       END { printf "%d %d\n", r, c }' fuzz/stats.tsv 2>/dev/null || echo "0 0")
-    if [ "${done_runs:-0}" -ge 10000000 ] || [ "${done_cpu:-0}" -ge 3600 ]; then
+    if [ "${done_runs:-0}" -ge "$goal_runs" ] || [ "${done_cpu:-0}" -ge "$goal_cpu" ]; then
       echo "fuzz: $t: goal reached already (${done_runs:-0} executions, ${done_cpu:-0} CPU s)"
       return 0
     fi
     # The rest of the goal: -runs for the executions, RLIMIT_CPU (SIGXCPU) for the CPU time.
-    limits=(-runs=$((10000000 - ${done_runs:-0})) -max_total_time=0)
-    prefix=(nice -n 19 prlimit --cpu=$((3600 - ${done_cpu:-0})) --)
+    limits=(-runs=$(($goal_runs - ${done_runs:-0})) -max_total_time=0)
+    local cpu_left=$((goal_cpu - ${done_cpu:-0}))
+    prefix=(nice -n 19 prlimit --cpu=$cpu_left:$((cpu_left + 30)) --)
   fi
-  local started_cpu
-  started_cpu=$(awk '{ print $14 + $15 + $16 + $17 }' /proc/$BASHPID/stat)
+  # This shell's own and its waited-for children's CPU ticks (utime, stime, cutime, cstime).
+  local me=$BASHPID started_cpu
+  started_cpu=$(awk '{ print $14 + $15 + $16 + $17 }' "/proc/$me/stat")
   # -timeout: an input that takes 10 s is a hang. Leaks are findings (ASan's leak checker).
   ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1} \
     UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1} \
@@ -153,9 +158,13 @@ run_one() {
   # CPU seconds of the fuzzer (children of this shell, in clock ticks).
   local cpu_seconds
   cpu_seconds=$(awk -v s="$started_cpu" -v hz="$(getconf CLK_TCK)" \
-    '{ printf "%.0f", ($14 + $15 + $16 + $17 - s) / hz }' /proc/$BASHPID/stat)
-  # SIGXCPU (exit 152): the CPU budget ran out, not a finding.
-  if [ "$budget" -eq 1 ] && [ "$rc" -eq 152 ]; then rc=0; fi
+    '{ printf "%.0f", ($14 + $15 + $16 + $17 - s) / hz }' "/proc/$me/stat")
+  # The CPU limit reached (SIGXCPU, exit 152, or SIGKILL at the hard limit, 137): the budget ran
+  # out, not a finding.
+  if [ "$budget" -eq 1 ] && { [ "$rc" -eq 152 ] || [ "$rc" -eq 137 ]; } &&
+    [ "$cpu_seconds" -ge $((goal_cpu - ${done_cpu:-0} - 5)) ]; then
+    rc=0
+  fi
   local runs
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   # Killed by its CPU limit, libFuzzer prints no final stats: its last status line's count.
