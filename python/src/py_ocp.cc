@@ -100,7 +100,8 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
 py::dict Stint(const vehicle::Car& car, const track::Track& track, int laps, double wear_scale,
                double fuel_kg, std::optional<double> disc_limit_C, double step_m,
                double coarse_step_m, const std::string& thermal_start, double ambient_C,
-               double track_C, int max_iterations) {
+               double track_C, int max_iterations, std::optional<std::string> checkpoint_dir,
+               int checkpoint_every) {
   ocp::OptimalRunOptions run;
   run.step_m = step_m;
   run.coarse_step_m = coarse_step_m;
@@ -115,6 +116,10 @@ py::dict Stint(const vehicle::Car& car, const track::Track& track, int laps, dou
   o.fuel_kg = fuel_kg;
   o.lap = ocp::MakeOptimalLapOptions(run);
   if (disc_limit_C) o.lap.front_disc_limit = CelsiusToKelvin(*disc_limit_C);
+  // Checkpoints: the car's parameters count in their fingerprint through the warm-up (the car
+  // here may have been changed in Python, so there is no file to add).
+  if (checkpoint_dir) o.checkpoint_dir = *checkpoint_dir;
+  o.checkpoint_every = checkpoint_every;
   const auto started = std::chrono::steady_clock::now();
   ocp::StintResult r;
   {
@@ -156,8 +161,12 @@ void BindOcp(py::module_& m) {
         py::arg("thermal_start") = defaults.thermal_start,
         py::arg("ambient_temp_C") = defaults.ambient_C, py::arg("track_temp_C") = defaults.track_C,
         py::arg("max_iterations") = defaults.max_iterations,
+        py::arg("checkpoint_dir") = py::none(), py::arg("checkpoint_every") = stint.checkpoint_every,
         "A stint of `laps` laps as one optimal-control problem (wear, carcass heat and fuel "
         "carried lap to lap) and the greedy driver's single laps, as `hotlap stint` runs them. "
+        "With checkpoint_dir, each greedy lap and every checkpoint_every iterations of the "
+        "stint's solve are saved there, and a call again with the same folder and stint resumes "
+        "from them (summary keys greedy_laps_resumed, resumed_from_iteration). "
         "Returns {'summary': dict (the keys of `hotlap stint --json`), 'channels': {column: "
         "array} over the whole stint, with its lap column}.");
 }

@@ -52,3 +52,24 @@ def test_bad_options_raise_value_error():
         hotlap.optimal_lap(car, track, disc_limit_C=500.0, compare_disc_limit_C=500.0, **MESH)
     with pytest.raises(ValueError, match="no-such-option"):
         hotlap.optimal_lap(car, track, ipopt_options=[("no-such-option", "1")], **MESH)
+
+
+def test_a_stint_with_checkpoints_resumes_from_them(tmp_path):
+    """The second call with the same folder takes both greedy laps from their files and the
+    stint's solve from its saved end: the same stint, converged at once."""
+    car, track = hotlap.load_car("gen7"), hotlap.load_track("darlington")
+    folder = str(tmp_path / "checkpoints")
+    first = hotlap.stint(car, track, laps=2, checkpoint_dir=folder, checkpoint_every=4, **MESH)
+    summary = first["summary"]
+    assert summary["status"] == "converged"
+    assert summary["greedy_laps_resumed"] == 0 and summary["resumed_from_iteration"] == 0
+    again = hotlap.stint(car, track, laps=2, checkpoint_dir=folder, checkpoint_every=4, **MESH)
+    resumed = again["summary"]
+    assert resumed["status"] == "converged"
+    assert resumed["greedy_laps_resumed"] == 2
+    assert resumed["resumed_from_iteration"] == summary["ipopt_iterations"]
+    assert resumed["ipopt_iterations"] <= 3
+    assert resumed["total_time_s"] == pytest.approx(summary["total_time_s"], abs=1e-5)
+    # Another stint (another wear rate) does not take these files.
+    other = hotlap.stint(car, track, laps=2, wear_scale=3.0, checkpoint_dir=folder, **MESH)
+    assert other["summary"]["greedy_laps_resumed"] == 0
