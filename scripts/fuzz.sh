@@ -9,6 +9,8 @@
 #                                                 # CPU-hour in all (fuzz/stats.tsv's runs count),
 #                                                 # whichever comes first; at nice 19, so it can run
 #                                                 # beside other work for as long as it takes
+#                                                 # (Ctrl-C or SIGINT to the fuzzers stops it, the
+#                                                 # runs so far counted)
 #
 # TARGET is a name of fuzz/ without "_fuzz" (tir, telemetry_csv, ...). Targets run one after the
 # other (HOTLAP_FUZZ_JOBS=N: N at a time). Each grows its corpus in fuzz/corpus/TARGET (not in
@@ -37,7 +39,7 @@ fi
 if [ "${1:-}" = "--summary" ]; then
   awk -F'\t' '{ runs[$2] += $4; secs[$2] += $3; corpus[$2] = $5; n[$2]++
       cpu[$2] += ($7 == "" ? $3 : $7)
-      if ($6 != "ok") found[$2]++ }
+      if ($6 ~ /^FOUND/) found[$2]++ }
     END { for (t in runs) printf "| %s | %d | %.1f | %.1f | %d | %d | %d |\n", t, runs[t],
       secs[t] / 60, cpu[t] / 60, n[t], found[t], corpus[t] }' fuzz/stats.tsv | sort
   exit 0
@@ -172,6 +174,11 @@ run_one() {
   local files
   files=$(find "$corpus" -type f | wc -l)
   local outcome=ok
+  # Stopped by hand (SIGINT: libFuzzer's interrupted_exitcode, 72): counted, not a finding.
+  if [ "$rc" -eq 72 ]; then
+    outcome=stopped
+    rc=0
+  fi
   if [ "$rc" -ne 0 ]; then outcome="FOUND (exit $rc; $log)"; fi
   local wall=$seconds
   if [ "$budget" -eq 1 ]; then wall=$(($(date +%s) - started_wall)); fi
