@@ -1,11 +1,13 @@
 // A stint as one optimal-control problem (ocp/stint.h), on Darlington with a coarse 20 m mesh and
 // two laps: the repeated track, continuity at the lap line, the look-ahead never slower than the
-// greedy driver, accelerated wear slowing the later laps, fuel burnt as the engine's work.
+// greedy driver, accelerated wear slowing the later laps, fuel burnt as the engine's work; and a
+// stint resuming from its checkpoints (StintOptions::checkpoint_dir).
 
 #include "hotlap/ocp/stint.h"
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -13,11 +15,14 @@
 
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
+#include "hotlap/ocp/stint_checkpoint.h"
 #include "hotlap/track/track_io.h"
 #include "test_util.h"
 
 namespace hotlap::ocp {
 namespace {
+
+namespace fs = std::filesystem;
 
 StintOptions Coarse(int laps) {
   StintOptions o;
@@ -154,6 +159,102 @@ TEST_F(StintTest, BadOptionsAreInputErrors) {
   o = Coarse(2);
   o.lap.thermal_start = ThermalStart::kPeriodic;
   EXPECT_THROW(SolveStint(*car_, *track_, o), InputError);
+}
+
+// The fingerprint changes with the stint's options, the car's parameters (through the warm-up)
+// and the caller's key, and with nothing else.
+TEST_F(StintTest, FingerprintTellsStintsApart) {
+  const StintOptions o = Coarse(2);
+  const LapWarmUp w = RunLapWarmUp(*car_, *track_, o.lap);
+  const std::uint64_t base = StintFingerprint(o, *track_, w);
+  EXPECT_EQ(StintFingerprint(o, *track_, RunLapWarmUp(*car_, *track_, o.lap)), base);
+  StintOptions changed = o;
+  changed.wear_scale = 2.0;
+  EXPECT_NE(StintFingerprint(changed, *track_, w), base);
+  changed = o;
+  changed.lap.front_disc_limit = CelsiusToKelvin(600.0);
+  EXPECT_NE(StintFingerprint(changed, *track_, w), base);
+  changed = o;
+  changed.checkpoint_key = "car.yaml:123;";
+  EXPECT_NE(StintFingerprint(changed, *track_, w), base);
+  // A heavier car: another warm-up.
+  vehicle::Car heavier = *car_;
+  heavier.vehicle->chassis.mass += 20.0;
+  EXPECT_NE(StintFingerprint(o, *track_, RunLapWarmUp(heavier, *track_, o.lap)), base);
+  // The folder and the checkpoint interval are not the stint.
+  changed = o;
+  changed.checkpoint_dir = "/elsewhere";
+  changed.checkpoint_every = 3;
+  EXPECT_EQ(StintFingerprint(changed, *track_, w), base);
+}
+
+// A run stopped part way through the stint's solve (as a kill would stop it) resumes with every
+// greedy lap from its file and the stint from its last saved iterate, and ends on the same stint
+// having lost at most one checkpoint interval; a run of a finished stint converges at once.
+TEST_F(StintTest, StoppedStintResumesFromItsCheckpoints) {
+  const test::TempDir dir;
+  StintOptions o = Coarse(2);
+  o.checkpoint_dir = dir.path() / "checkpoints";
+  o.checkpoint_every = 5;
+  const StintResult whole = SolveStint(*car_, *track_, o);
+  ASSERT_TRUE(whole.ok()) << whole.run.solution.solve.message;
+  ASSERT_GT(whole.ipopt_iterations, 10) << "too short to stop part way";
+  EXPECT_EQ(whole.greedy_laps_resumed, 0);
+  EXPECT_EQ(whole.resumed_from_iteration, 0);
+  for (const char* f : {"greedy_lap_1.bin", "greedy_lap_2.bin", "stint_iterate.bin"}) {
+    EXPECT_TRUE(fs::is_regular_file(o.checkpoint_dir / f)) << f;
+  }
+
+  // The same stint again: nothing solved but a check of the saved end.
+  const StintResult again = SolveStint(*car_, *track_, o);
+  ASSERT_TRUE(again.ok()) << again.run.solution.solve.message;
+  EXPECT_EQ(again.greedy_laps_resumed, 2);
+  EXPECT_EQ(again.resumed_from_iteration, whole.ipopt_iterations);
+  EXPECT_LE(again.ipopt_iterations, 3);
+  EXPECT_NEAR(again.total_time_s, whole.total_time_s, 1e-5);
+  EXPECT_DOUBLE_EQ(again.greedy_total_time_s, whole.greedy_total_time_s);
+
+  // Stopped at iteration 8 of the stint's solve: its file holds iteration 5.
+  fs::remove(o.checkpoint_dir / "stint_iterate.bin");
+  StintOptions stopping = o;
+  bool in_stint = false;
+  stopping.lap.ipopt.on_iteration = [&in_stint](int it, double, double, double) {
+    return !(in_stint && it >= 8);
+  };
+  const StintResult stopped = SolveStint(*car_, *track_, stopping, [&](const std::string& line) {
+    if (line.rfind("the stint:", 0) == 0) in_stint = true;
+  });
+  EXPECT_FALSE(stopped.ok());
+  EXPECT_EQ(stopped.greedy_laps_resumed, 2);
+  const StintResult resumed = SolveStint(*car_, *track_, o);
+  ASSERT_TRUE(resumed.ok()) << resumed.run.solution.solve.message;
+  EXPECT_EQ(resumed.greedy_laps_resumed, 2);
+  EXPECT_EQ(resumed.resumed_from_iteration, 5);
+  EXPECT_NEAR(resumed.total_time_s, whole.total_time_s, 1e-3);
+  EXPECT_LE(resumed.ipopt_iterations, whole.ipopt_iterations - 5 + o.checkpoint_every)
+      << "the whole solve took " << whole.ipopt_iterations;
+}
+
+// A checkpoint that cannot be written (here its path is a folder; a full disk alike) costs the
+// resume, not the run: the stint ends as without checkpoints, with one warning.
+TEST_F(StintTest, CheckpointThatCannotBeWrittenIsAWarning) {
+  const test::TempDir dir;
+  StintOptions o = Coarse(2);
+  o.wear_scale = 0.0;
+  o.fuel_kg = 0.0;
+  o.checkpoint_dir = dir.path();
+  o.checkpoint_every = 4;
+  for (const char* f : {"greedy_lap_1.bin", "greedy_lap_2.bin", "stint_iterate.bin"}) {
+    fs::create_directories(dir.path() / f / "in_the_way");
+  }
+  std::vector<std::string> warnings;
+  const StintResult r = SolveStint(*car_, *track_, o, [&](const std::string& line) {
+    if (line.rfind("warning:", 0) == 0) warnings.push_back(line);
+  });
+  ASSERT_TRUE(r.ok()) << r.run.solution.solve.message;
+  EXPECT_EQ(r.greedy_laps_resumed, 0);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("greedy_lap_1.bin"), std::string::npos) << warnings[0];
 }
 
 }  // namespace
