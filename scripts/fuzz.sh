@@ -21,7 +21,8 @@
 #
 # Environment: HOTLAP_FUZZ_BUILD (build folder, default build-fuzz), HOTLAP_FUZZ_NO_BUILD=1 (run
 # what is built), HOTLAP_FUZZ_ARGS (more libFuzzer options, e.g. "-max_len=4096"),
-# HOTLAP_FUZZ_GOAL_RUNS and HOTLAP_FUZZ_GOAL_CPU_S (--budget's goal, default 10^7 and 3600).
+# HOTLAP_FUZZ_GOAL_RUNS and HOTLAP_FUZZ_GOAL_CPU_S (--budget's goal, default 10^7 and 3600),
+# HOTLAP_FUZZ_CHUNK_S (--budget's CPU seconds a recorded run, default 600).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -48,6 +49,7 @@ fi
 budget=0
 goal_runs=${HOTLAP_FUZZ_GOAL_RUNS:-10000000}
 goal_cpu=${HOTLAP_FUZZ_GOAL_CPU_S:-3600}
+chunk_cpu=${HOTLAP_FUZZ_CHUNK_S:-600}
 if [ "${1:-}" = "--budget" ]; then
   budget=1
   shift
@@ -115,8 +117,7 @@ dict_of() {
 }
 
 run_one() {
-  local t=$1 started_wall
-  started_wall=$(date +%s)
+  local t=$1
   local seeds=$build/seeds/$t corpus=fuzz/corpus/$t findings=fuzz/findings/$t
   rm -rf "$seeds"
   mkdir -p "$seeds" "$corpus" "$findings"
@@ -134,61 +135,67 @@ run_one() {
   dict=$(dict_of "$t")
   local log=$build/logs/$t.log
   mkdir -p "$build/logs"
-  local rc=0 limits=(-max_total_time="$seconds") prefix=()
-  if [ "$budget" -eq 1 ]; then
-    local done_runs done_cpu
-    read -r done_runs done_cpu < <(awk -F'\t' -v t="$t" '$2 == t { r += $4; c += ($7 == "" ? $3 : $7) }
-      END { printf "%d %d\n", r, c }' fuzz/stats.tsv 2>/dev/null || echo "0 0")
-    if [ "${done_runs:-0}" -ge "$goal_runs" ] || [ "${done_cpu:-0}" -ge "$goal_cpu" ]; then
-      echo "fuzz: $t: goal reached already (${done_runs:-0} executions, ${done_cpu:-0} CPU s)"
-      return 0
+  # --budget runs the target in chunks of HOTLAP_FUZZ_CHUNK_S CPU seconds (default 600), each
+  # recorded as it ends, until the goal: a run stopped any way loses at most one chunk.
+  while :; do
+    local rc=0 limits=(-max_total_time="$seconds") prefix=() cpu_limit=0
+    if [ "$budget" -eq 1 ]; then
+      local done_runs done_cpu
+      read -r done_runs done_cpu < <(awk -F'\t' -v t="$t" '$2 == t { r += $4; c += ($7 == "" ? $3 : $7) }
+        END { printf "%d %d\n", r, c }' fuzz/stats.tsv 2>/dev/null || echo "0 0")
+      if [ "${done_runs:-0}" -ge "$goal_runs" ] || [ "${done_cpu:-0}" -ge "$goal_cpu" ]; then
+        echo "fuzz: $t: goal reached (${done_runs:-0} executions, ${done_cpu:-0} CPU s)"
+        return 0
+      fi
+      # The rest of the goal: -runs for the executions, RLIMIT_CPU (SIGXCPU) for the CPU time.
+      limits=(-runs=$((goal_runs - ${done_runs:-0})) -max_total_time=0)
+      cpu_limit=$((goal_cpu - ${done_cpu:-0}))
+      if [ "$cpu_limit" -gt "$chunk_cpu" ]; then cpu_limit=$chunk_cpu; fi
+      prefix=(nice -n 19 prlimit --cpu=$cpu_limit:$((cpu_limit + 30)) --)
     fi
-    # The rest of the goal: -runs for the executions, RLIMIT_CPU (SIGXCPU) for the CPU time.
-    limits=(-runs=$(($goal_runs - ${done_runs:-0})) -max_total_time=0)
-    local cpu_left=$((goal_cpu - ${done_cpu:-0}))
-    prefix=(nice -n 19 prlimit --cpu=$cpu_left:$((cpu_left + 30)) --)
-  fi
-  # This shell's own and its waited-for children's CPU ticks (utime, stime, cutime, cstime).
-  local me=$BASHPID started_cpu
-  started_cpu=$(awk '{ print $14 + $15 + $16 + $17 }' "/proc/$me/stat")
-  # -timeout: an input that takes 10 s is a hang. Leaks are findings (ASan's leak checker).
-  ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1} \
-    UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1} \
-    "${prefix[@]}" "$build/fuzz/${t}_fuzz" "$corpus" "$seeds" ${dict:+-dict=$dict} "${limits[@]}" \
-    -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$findings/" \
-    ${HOTLAP_FUZZ_ARGS:-} >"$log" 2>&1 || rc=$?
-  # CPU seconds of the fuzzer (children of this shell, in clock ticks).
-  local cpu_seconds
-  cpu_seconds=$(awk -v s="$started_cpu" -v hz="$(getconf CLK_TCK)" \
-    '{ printf "%.0f", ($14 + $15 + $16 + $17 - s) / hz }' "/proc/$me/stat")
-  # The CPU limit reached (SIGXCPU, exit 152, or SIGKILL at the hard limit, 137): the budget ran
-  # out, not a finding.
-  if [ "$budget" -eq 1 ] && { [ "$rc" -eq 152 ] || [ "$rc" -eq 137 ]; } &&
-    [ "$cpu_seconds" -ge $((goal_cpu - ${done_cpu:-0} - 5)) ]; then
-    rc=0
-  fi
-  local runs
-  runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
-  # Killed by its CPU limit, libFuzzer prints no final stats: its last status line's count.
-  if [ -z "$runs" ]; then runs=$(sed -n 's/^#\([0-9][0-9]*\)[[:space:]].*/\1/p' "$log" | tail -1); fi
-  local files
-  files=$(find "$corpus" -type f | wc -l)
-  local outcome=ok
-  # Stopped by hand (SIGINT: libFuzzer's interrupted_exitcode, 72): counted, not a finding.
-  if [ "$rc" -eq 72 ]; then
-    outcome=stopped
-    rc=0
-  fi
-  if [ "$rc" -ne 0 ]; then outcome="FOUND (exit $rc; $log)"; fi
-  local wall=$seconds
-  if [ "$budget" -eq 1 ]; then wall=$(($(date +%s) - started_wall)); fi
-  printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$(date -u +%FT%TZ)" "$t" "$wall" "${runs:-?}" "$files" \
-    "$outcome" "$cpu_seconds" >>fuzz/stats.tsv
-  echo "fuzz: $t: ${runs:-?} executions in $wall s ($cpu_seconds CPU s), corpus $files files: $outcome"
-  if [ "$rc" -ne 0 ]; then
-    grep -m 3 -E "ERROR|SUMMARY|runtime error|terminate called" "$log" || true
-    return 1
-  fi
+    local started_wall
+    started_wall=$(date +%s)
+    # This shell's own and its waited-for children's CPU ticks (utime, stime, cutime, cstime).
+    local me=$BASHPID started_cpu
+    started_cpu=$(awk '{ print $14 + $15 + $16 + $17 }' "/proc/$me/stat")
+    # -timeout: an input that takes 10 s is a hang. Leaks are findings (ASan's leak checker).
+    ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1} \
+      UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1} \
+      "${prefix[@]}" "$build/fuzz/${t}_fuzz" "$corpus" "$seeds" ${dict:+-dict=$dict} "${limits[@]}" \
+      -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$findings/" \
+      ${HOTLAP_FUZZ_ARGS:-} >"$log" 2>&1 || rc=$?
+    # CPU seconds of the fuzzer (children of this shell, in clock ticks).
+    local cpu_seconds
+    cpu_seconds=$(awk -v s="$started_cpu" -v hz="$(getconf CLK_TCK)" \
+      '{ printf "%.0f", ($14 + $15 + $16 + $17 - s) / hz }' "/proc/$me/stat")
+    # The CPU limit reached (SIGXCPU, exit 152, or SIGKILL at the hard limit, 137): the chunk
+    # ended, not a finding.
+    if [ "$budget" -eq 1 ] && { [ "$rc" -eq 152 ] || [ "$rc" -eq 137 ]; } &&
+      [ "$cpu_seconds" -ge $((cpu_limit - 5)) ]; then
+      rc=0
+    fi
+    local runs
+    runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+    # Killed by its CPU limit, libFuzzer prints no final stats: its last status line's count.
+    if [ -z "$runs" ]; then runs=$(sed -n 's/^#\([0-9][0-9]*\)[[:space:]].*/\1/p' "$log" | tail -1); fi
+    local files
+    files=$(find "$corpus" -type f | wc -l)
+    local outcome=ok
+    # Stopped by hand (SIGINT: libFuzzer's interrupted_exitcode, 72): counted, not a finding.
+    if [ "$rc" -eq 72 ]; then outcome=stopped; fi
+    if [ "$rc" -ne 0 ] && [ "$rc" -ne 72 ]; then outcome="FOUND (exit $rc; $log)"; fi
+    local wall=$seconds
+    if [ "$budget" -eq 1 ]; then wall=$(($(date +%s) - started_wall)); fi
+    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$(date -u +%FT%TZ)" "$t" "$wall" "${runs:-?}" \
+      "$files" "$outcome" "$cpu_seconds" >>fuzz/stats.tsv
+    echo "fuzz: $t: ${runs:-?} executions in $wall s ($cpu_seconds CPU s), corpus $files files: $outcome"
+    if [ "$outcome" = stopped ]; then return 0; fi
+    if [ "$rc" -ne 0 ]; then
+      grep -m 3 -E "ERROR|SUMMARY|runtime error|terminate called" "$log" || true
+      return 1
+    fi
+    if [ "$budget" -eq 0 ]; then return 0; fi
+  done
 }
 
 status=0
