@@ -19,18 +19,19 @@ void SelectLap(CsvTable& table, int lap) {
         table.path.string(), lap));
   }
   const std::vector<double> laps = table.values[static_cast<size_t>(column)];
-  std::set<int> present;
+  std::set<long long> present;
   std::vector<size_t> keep;
   for (size_t i = 0; i < laps.size(); ++i) {
-    if (std::isnan(laps[i])) continue;
-    present.insert(static_cast<int>(std::lround(laps[i])));
+    // A lap number beyond 1e9 is not one (and would overflow the arithmetic below).
+    if (std::isnan(laps[i]) || std::abs(laps[i]) > 1e9) continue;
+    present.insert(std::llround(laps[i]));
     if (laps[i] == lap) keep.push_back(i);
   }
   if (keep.empty()) {
     std::string there = "none";
     if (!present.empty()) {
       const bool contiguous =
-          *present.rbegin() - *present.begin() + 1 == static_cast<int>(present.size());
+          *present.rbegin() - *present.begin() + 1 == static_cast<long long>(present.size());
       if (present.size() == 1) {
         there = fmt::format("lap {}", *present.begin());
       } else if (contiguous) {
