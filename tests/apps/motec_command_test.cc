@@ -39,7 +39,7 @@ TEST(MotecCommandTest, ALapThatIsNotThereIsExit2NamingTheLaps) {
   const auto r = hotlap::test::RunHotlap(
       "replay --telemetry " + kMotec.string() + " --lap 7 --out " + out.string(), tmp.path());
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_TRUE(Contains(r.err, "--lap 7: no such lap; the log has laps 1 to 3"));
+  EXPECT_TRUE(Contains(r.err, "lap 7: no such lap; the log has laps 1 to 3"));
   EXPECT_FALSE(fs::exists(out));
 }
 

@@ -253,7 +253,7 @@ TEST_F(ObserveCommandTest, RefusesALapThatIsNotThereABadChannelMapAndLapsOnAStre
   const fs::path out = dir() / "e.csv";
   auto r = Run("observe --telemetry " + motec.string() + " --lap 7 --out " + out.string());
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_TRUE(Contains(r.err, "--lap 7: no such lap; the log has laps 1 to 3")) << r.err;
+  EXPECT_TRUE(Contains(r.err, "lap 7: no such lap; the log has laps 1 to 3")) << r.err;
   EXPECT_FALSE(fs::exists(out));
   const fs::path map =
       hotlap::test::WriteTextFile(dir() / "map.yaml", "channels:\n  Ground Speed: speed\n");

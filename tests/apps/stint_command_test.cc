@@ -158,7 +158,7 @@ TEST_F(StintCommandTest, BadOptionsAreRefusedBeforeAnyWork) {
   for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
            {"stint --laps 0" + out, "--laps"},
            {"stint --wear-scale -1" + out, "--wear-scale"},
-           {"stint --fuel-kg 2000" + out, "--fuel-kg: 2000 kg"},
+           {"stint --fuel-kg 2000" + out, "fuel: 2000 kg"},
            {"stint --thermal-start periodic" + out, "--thermal-start"},
            {"stint --disc-limit-C 300 --step-m 30" + out, "disc starts at"}}) {
     const test::RunResult r = Run(args);

@@ -40,7 +40,7 @@ TEST(SelectLapTest, KeepsOneLapsRowsAndTheirLines) {
 TEST(SelectLapTest, MissingLapListsTheLapsThereAre) {
   CsvTable contiguous = LapTable({1, 2, 3});
   EXPECT_TRUE(Contains(InputErrorOf([&] { SelectLap(contiguous, 7); }),
-                       "log.csv: --lap 7: no such lap; the log has laps 1 to 3"));
+                       "log.csv: lap 7: no such lap; the log has laps 1 to 3"));
   CsvTable gaps = LapTable({1, 4, 9});
   EXPECT_TRUE(Contains(InputErrorOf([&] { SelectLap(gaps, 2); }), "the log has laps 1, 4, 9"));
   CsvTable one = LapTable({5, 5});
@@ -69,7 +69,7 @@ TEST(SelectLapTest, FuzzRegressionsAreInputErrors) {
     const std::string message =
         InputErrorOf([&] { (void)Telemetry::Read(file, "distance", options); });
     EXPECT_TRUE(Contains(message, file.string())) << message;
-    EXPECT_TRUE(Contains(message, "--lap 2: no such lap")) << message;  // reached the selection
+    EXPECT_TRUE(Contains(message, "lap 2: no such lap")) << message;  // reached the selection
   }
 }
 

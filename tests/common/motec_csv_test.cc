@@ -121,7 +121,7 @@ TEST(MotecCsvTest, LapsSplitAtTheBeacons) {
 
 TEST(MotecCsvTest, LapOutOfRangeNamesTheLapsThereAre) {
   const std::string m = ErrorOf([] { Telemetry::Read(kMotec, "time", {.lap = 4}); });
-  EXPECT_TRUE(Contains(m, "darlington_i2.csv: --lap 4: no such lap; the log has laps 1 to 3"));
+  EXPECT_TRUE(Contains(m, "darlington_i2.csv: lap 4: no such lap; the log has laps 1 to 3"));
   const std::string none = ErrorOf([] {
     Telemetry::Read(test::SourcePath("data/telemetry/darlington_example.csv"), "time", {.lap = 1});
   });

@@ -40,7 +40,7 @@ TEST(WriteFitReport, AFolderItCannotCreateIsAnInputError) {
   EXPECT_TRUE(test::Contains(test::InputErrorOf([&] {
                                WriteFitReport(testing::MakeExampleFitRun(), dir.path() / "a" / "b");
                              }),
-                             "cannot create the folder"));
+                             "cannot create it"));
 }
 
 }  // namespace

@@ -332,7 +332,7 @@ TEST(ReplayIoTest, MissingAmbientNeedsAnOption) {
     ReplayInputsFromTelemetry(log, {});
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("--ambient-temp-C"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("none given instead (hotlap: --ambient-temp-C; Python: ambient_temp_C=)"), std::string::npos) << e.what();
   }
   InitialTemperatureOverrides o;
   o.ambient_temp = CelsiusToKelvin(20.0);

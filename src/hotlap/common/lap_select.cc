@@ -14,8 +14,8 @@ void SelectLap(CsvTable& table, int lap) {
   const int column = table.ColumnIndex("lap");
   if (column < 0) {
     throw InputError(fmt::format(
-        "{}: --lap {}: the log has no 'lap' column (a MoTeC CSV export has one from its Beacon "
-        "Markers)",
+        "{}: lap {} asked for, but the log has no 'lap' column (a MoTeC CSV export has one from "
+        "its Beacon Markers)",
         table.path.string(), lap));
   }
   const std::vector<double> laps = table.values[static_cast<size_t>(column)];
@@ -41,7 +41,7 @@ void SelectLap(CsvTable& table, int lap) {
       }
     }
     throw InputError(
-        fmt::format("{}: --lap {}: no such lap; the log has {}", table.path.string(), lap, there));
+        fmt::format("{}: lap {}: no such lap; the log has {}", table.path.string(), lap, there));
   }
   for (std::vector<double>& values : table.values) {
     std::vector<double> kept;

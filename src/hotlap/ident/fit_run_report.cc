@@ -16,7 +16,7 @@ std::vector<std::filesystem::path> WriteFitReport(const FitRun& run,
   std::error_code ec;
   std::filesystem::create_directory(dir, ec);
   if (!std::filesystem::is_directory(dir)) {
-    throw InputError(fmt::format("--report '{}': cannot create the folder", dir.string()));
+    throw InputError(fmt::format("report folder '{}': cannot create it", dir.string()));
   }
   report::HtmlReport page("hotlap " + run.command + ": " +
                           std::filesystem::path(run.telemetry).filename().string());

@@ -48,12 +48,13 @@ void Respond(int fd, int code, std::string_view reason, std::string_view type,
 
 LiveServer::LiveServer(int port, std::vector<std::string> columns) : columns_(std::move(columns)) {
   if (port < 0 || port > 65535) {
-    throw InputError(fmt::format("--serve {}: a port is 0 to 65535 (0: any free one)", port));
+    throw InputError(
+        fmt::format("live page on port {}: a port is 0 to 65535 (0: any free one)", port));
   }
   listen_fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
   if (listen_fd_ < 0) {
     throw InputError(
-        fmt::format("--serve {}: cannot open a socket: {}", port, std::strerror(errno)));
+        fmt::format("live page on port {}: cannot open a socket: {}", port, std::strerror(errno)));
   }
   const int yes = 1;
   ::setsockopt(listen_fd_, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
@@ -66,7 +67,7 @@ LiveServer::LiveServer(int port, std::vector<std::string> columns) : columns_(st
     const std::string reason = std::strerror(errno);
     ::close(listen_fd_);
     throw InputError(
-        fmt::format("--serve {}: cannot listen on 127.0.0.1:{}: {}", port, port, reason));
+        fmt::format("live page on port {}: cannot listen on 127.0.0.1:{}: {}", port, port, reason));
   }
   socklen_t length = sizeof address;
   ::getsockname(listen_fd_, reinterpret_cast<sockaddr*>(&address), &length);

@@ -150,15 +150,15 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
                        const StintOptions& options, const StintLog& log) {
   vehicle::RequireVehicle(car, "a stint");
   if (options.laps < 1 || options.laps > 100) {
-    throw InputError(fmt::format("--laps: a stint is 1 to 100 laps, not {}", options.laps));
+    throw InputError(fmt::format("laps: a stint is 1 to 100 laps, not {}", options.laps));
   }
   if (!(options.wear_scale >= 0.0) || !std::isfinite(options.wear_scale)) {
-    throw InputError(fmt::format("--wear-scale: {} is not a factor >= 0", options.wear_scale));
+    throw InputError(fmt::format("wear scale: {} is not a factor >= 0", options.wear_scale));
   }
   const double mass0 = car.vehicle->chassis.mass;
   if (!(options.fuel_kg >= 0.0) || !(options.fuel_kg < 0.5 * mass0)) {
-    throw InputError(fmt::format("--fuel-kg: {} kg is not fuel a {:.0f} kg car carries",
-                                 options.fuel_kg, mass0));
+    throw InputError(
+        fmt::format("fuel: {} kg is not fuel a {:.0f} kg car carries", options.fuel_kg, mass0));
   }
   if (options.lap.thermal_start == ThermalStart::kPeriodic) {
     throw InputError("a stint's thermal states run on from lap to lap: not periodic");
@@ -173,7 +173,7 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
   const int intervals = LapNodeCount(track, options.lap.step_m) - 1;
   o.lap.step_m = track.length_m() / intervals;
   if (options.checkpoint_every < 1) {
-    throw InputError(fmt::format("--checkpoint-every: {} is not a number of iterations >= 1",
+    throw InputError(fmt::format("checkpoint interval: {} is not a number of iterations >= 1",
                                  options.checkpoint_every));
   }
   const vehicle::Car worn = StintCar(car, options.wear_scale);
@@ -230,8 +230,8 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
     StintLap lap = StintLaps(run.solution, track, 1, fuel, {mass}, o.bsfc_kg_per_J, eta)[0];
     lap.lap = i + 1;
     if (options.fuel_kg > 0.0 && lap.fuel_end_kg < 0.0) {
-      throw InputError(fmt::format("--fuel-kg: {} kg runs out on lap {} of {}", options.fuel_kg,
-                                   i + 1, options.laps));
+      throw InputError(fmt::format("fuel: {} kg runs out on lap {} of {}", options.fuel_kg, i + 1,
+                                   options.laps));
     }
     fuel = lap.fuel_end_kg;
     say(fmt::format("greedy lap {} of {}: {:.3f} s ({}, {} iterations{})", i + 1, options.laps,

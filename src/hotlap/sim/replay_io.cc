@@ -13,7 +13,7 @@ std::vector<double> AmbientLike(const Telemetry& log, std::string_view quantity,
                                 const std::optional<double>& fallback, std::string_view option) {
   if (log.Has(quantity)) return log.FilledChannel(quantity);
   if (fallback) return std::vector<double>(log.size(), *fallback);
-  throw InputError(fmt::format("{}: no '{}_C' (or '{}_K') column, and no {} option was given",
+  throw InputError(fmt::format("{}: no '{}_C' (or '{}_K') column, and none given instead ({})",
                                log.path().string(), quantity, quantity, option));
 }
 
@@ -39,8 +39,10 @@ ReplayInputs ReplayInputsFromTelemetry(const Telemetry& log,
     ch.slip_angle = log.FilledChannel("slip_angle", c);
     ch.slip_ratio = log.FilledChannel("slip_ratio", c);
   }
-  in.ambient_temp = AmbientLike(log, "ambient_temp", overrides.ambient_temp, "--ambient-temp-C");
-  in.track_temp = AmbientLike(log, "track_temp", overrides.track_temp, "--track-temp-C");
+  in.ambient_temp = AmbientLike(log, "ambient_temp", overrides.ambient_temp,
+                                "hotlap: --ambient-temp-C; Python: ambient_temp_C=");
+  in.track_temp = AmbientLike(log, "track_temp", overrides.track_temp,
+                              "hotlap: --track-temp-C; Python: track_temp_C=");
   return in;
 }
 
