@@ -52,7 +52,7 @@ def test_a_failing_case_is_recorded_and_the_rest_finish(tmp_path):
     summary = sweep.sweep(cases, tmp_path, local_workers=2, progress=None)
     assert summary["by_status"] == {"ok": 2, "bad input": 3}
     with open(tmp_path / "cases" / "worn-out" / "result.json") as f:
-        assert "--wear-scale" in json.load(f)["message"]
+        assert "wear scale: -1" in json.load(f)["message"]
     with open(tmp_path / "cases" / "no-laps" / "result.json") as f:
         result = json.load(f)
     assert result["status"] == "bad input" and "laps 0 must be in [1, 1000]" in result["message"]
