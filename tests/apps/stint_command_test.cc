@@ -49,7 +49,8 @@ TEST_F(StintCommandTest, TwoLapsWriteTheTableTheChannelsTheJsonAndTheReport) {
     greedy += j["greedy_laps"][i].at("lap_time_s").get<double>();
     for (const char* c : {"fl", "fr", "rl", "rr"}) {
       for (const char* k :
-           {"peak_tread_temp_C", "peak_carcass_temp_C", "peak_disc_temp_C", "wear_mm"}) {
+           {"peak_tread_temp_C", "peak_carcass_temp_C", "peak_disc_temp_C", "min_tread_temp_C",
+            "min_carcass_temp_C", "min_disc_temp_C", "wear_mm"}) {
         EXPECT_TRUE(lap.at("corners").at(c).at(k).is_number()) << c << " " << k;
       }
     }

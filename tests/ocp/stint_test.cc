@@ -99,6 +99,23 @@ TEST_F(StintTest, WithNoWearAndNoFuelTwoLapsAreTheSingleLapsChained) {
   // Carried across the line: lap 2 starts where lap 1 ends, so its carcasses are hotter.
   for (int c = 0; c < 4; ++c) {
     EXPECT_GT(r.laps[1].peak_carcass_temp_K[c], r.laps[0].peak_carcass_temp_K[c]) << c;
+    EXPECT_GT(r.laps[1].min_carcass_temp_K[c], r.laps[0].min_carcass_temp_K[c]) << c;
+  }
+  // Each lap's window: the lowest and highest of its nodes' temperatures, the tread cooling on
+  // the straights by more than the carcass does.
+  const LapSolution& sol = r.run.solution;
+  const size_t half = (sol.distance.size() - 1) / 2;
+  for (int c = 0; c < 4; ++c) {
+    const std::vector<double>& tread = sol.corners[c].tread_temp;
+    const auto first = std::minmax_element(tread.begin(), tread.begin() + half + 1);
+    EXPECT_DOUBLE_EQ(r.laps[0].min_tread_temp_K[c], *first.first) << c;
+    EXPECT_DOUBLE_EQ(r.laps[0].peak_tread_temp_K[c], *first.second) << c;
+    for (const StintLap& l : r.laps) {
+      EXPECT_LT(l.min_disc_temp_K[c], l.peak_disc_temp_K[c]) << c;
+      EXPECT_GT(l.peak_tread_temp_K[c] - l.min_tread_temp_K[c],
+                l.peak_carcass_temp_K[c] - l.min_carcass_temp_K[c])
+          << c;
+    }
   }
   // One solution over both laps: the channels run on through the line without a jump larger
   // than the largest step elsewhere (the greedy laps' mechanical states jump there).

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include <fmt/format.h>
@@ -64,6 +65,10 @@ std::vector<StintLap> StintLaps(const LapSolution& solution, const track::Track&
     lap.time_s = At(d, solution.time, s1) - At(d, solution.time, s0);
     lap.mass_kg = i < static_cast<int>(lap_mass_kg.size()) ? lap_mass_kg[i] : 0.0;
     for (int c = 0; c < 4; ++c) lap.wear_end_mm[c] = At(d, solution.corners[c].wear, s1);
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    lap.min_tread_temp_K.fill(kInf);
+    lap.min_carcass_temp_K.fill(kInf);
+    lap.min_disc_temp_K.fill(kInf);
     // Nodes of the lap: s0 <= d <= s1 (a node on the line belongs to both laps' peaks).
     double burnt = 0.0;
     for (size_t k = 0; k < d.size(); ++k) {
@@ -74,6 +79,9 @@ std::vector<StintLap> StintLaps(const LapSolution& solution, const track::Track&
         lap.peak_tread_temp_K[c] = std::max(lap.peak_tread_temp_K[c], t.tread_temp[k]);
         lap.peak_carcass_temp_K[c] = std::max(lap.peak_carcass_temp_K[c], t.carcass_temp[k]);
         lap.peak_disc_temp_K[c] = std::max(lap.peak_disc_temp_K[c], t.disc_temp[k]);
+        lap.min_tread_temp_K[c] = std::min(lap.min_tread_temp_K[c], t.tread_temp[k]);
+        lap.min_carcass_temp_K[c] = std::min(lap.min_carcass_temp_K[c], t.carcass_temp[k]);
+        lap.min_disc_temp_K[c] = std::min(lap.min_disc_temp_K[c], t.disc_temp[k]);
       }
       // The engine's work over the interval to the next node, if it is in the lap.
       if (k + 1 < d.size() && d[k + 1] <= s1 + 1e-9) {

@@ -73,6 +73,9 @@ struct StintLap {
   double fuel_end_kg = 0.0;  ///< fuel aboard at the end of the lap
   double fuel_burnt_kg = 0.0;
   std::array<double, 4> peak_tread_temp_K{}, peak_carcass_temp_K{}, peak_disc_temp_K{};
+  /// The lowest over the lap: with the peaks, the window each tyre and disc works in (a tread
+  /// that cools on the straights below its grip window, a disc that never cools to its pads').
+  std::array<double, 4> min_tread_temp_K{}, min_carcass_temp_K{}, min_disc_temp_K{};
   std::array<double, 4> wear_end_mm{};  ///< tread depth lost since the stint's start
 };
 

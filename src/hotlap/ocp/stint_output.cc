@@ -24,6 +24,9 @@ nlohmann::json LapJson(const StintLap& l) {
         {"peak_tread_temp_C", RoundSignificant(KelvinToCelsius(l.peak_tread_temp_K[i]))},
         {"peak_carcass_temp_C", RoundSignificant(KelvinToCelsius(l.peak_carcass_temp_K[i]))},
         {"peak_disc_temp_C", RoundSignificant(KelvinToCelsius(l.peak_disc_temp_K[i]))},
+        {"min_tread_temp_C", RoundSignificant(KelvinToCelsius(l.min_tread_temp_K[i]))},
+        {"min_carcass_temp_C", RoundSignificant(KelvinToCelsius(l.min_carcass_temp_K[i]))},
+        {"min_disc_temp_C", RoundSignificant(KelvinToCelsius(l.min_disc_temp_K[i]))},
         {"wear_mm", RoundSignificant(l.wear_end_mm[i])}};
   }
   return {{"lap", l.lap},
@@ -205,12 +208,39 @@ std::vector<fs::path> WriteStintFiles(const fs::path& out, const StintResult& r,
     }
     page.AddLineChart(chart);
   };
-  corner_chart("Peak tread temperature per lap", "tread", "degC",
-               [](const StintLap& l, int i) { return KelvinToCelsius(l.peak_tread_temp_K[i]); });
-  corner_chart("Peak carcass temperature per lap", "carcass", "degC",
-               [](const StintLap& l, int i) { return KelvinToCelsius(l.peak_carcass_temp_K[i]); });
-  corner_chart("Peak disc temperature per lap", "disc", "degC",
-               [](const StintLap& l, int i) { return KelvinToCelsius(l.peak_disc_temp_K[i]); });
+  // Each corner's lowest (dashed) and highest (solid) temperature over each lap: the window it
+  // works in, lap by lap.
+  const auto envelope_chart = [&](const char* title, const char* quantity, auto low, auto high) {
+    report::LineChart chart{.title = title, .x_axis = {"lap", ""}, .y_axis = {quantity, "degC"}};
+    for (Corner c : kAllCorners) {
+      const int i = CornerIndex(c);
+      const std::string name(CornerName(c));
+      chart.series.push_back(
+          {.label = name + " highest",
+           .x = lap_numbers,
+           .y = per_lap(r.laps, [&](const StintLap& l) { return KelvinToCelsius(high(l)[i]); }),
+           .corner = c});
+      chart.series.push_back(
+          {.label = name + " lowest",
+           .x = lap_numbers,
+           .y = per_lap(r.laps, [&](const StintLap& l) { return KelvinToCelsius(low(l)[i]); }),
+           .corner = c,
+           .style = report::LineStyle::kDashed});
+    }
+    page.AddLineChart(chart);
+  };
+  envelope_chart(
+      "Tread temperature per lap, lowest and highest", "tread",
+      [](const StintLap& l) { return l.min_tread_temp_K; },
+      [](const StintLap& l) { return l.peak_tread_temp_K; });
+  envelope_chart(
+      "Carcass temperature per lap, lowest and highest", "carcass",
+      [](const StintLap& l) { return l.min_carcass_temp_K; },
+      [](const StintLap& l) { return l.peak_carcass_temp_K; });
+  envelope_chart(
+      "Disc temperature per lap, lowest and highest", "disc",
+      [](const StintLap& l) { return l.min_disc_temp_K; },
+      [](const StintLap& l) { return l.peak_disc_temp_K; });
   corner_chart("Cumulative wear", "wear", "mm",
                [](const StintLap& l, int i) { return l.wear_end_mm[i]; });
 
