@@ -72,7 +72,8 @@ TEST(HtmlReportTest, IsOneSelfContainedFile) {
 TEST(HtmlReportTest, EmbedsDataAsJson) {
   HtmlReport page("Replay");
   page.AddLineChart(CornerChart(100));
-  LineChart other{.title = "Other", .x_axis = {.label = "x", .min = 0.0, .max = 2.0}};
+  LineChart other{.title = "Other",
+                  .x_axis = {.label = "x", .min = 0.0, .max = 2.0, .integer_ticks = true}};
   other.series.push_back({.label = "a", .x = {0, 1, 2}, .y = {1, NAN, 3}});
   other.series.push_back(
       {.label = "b", .x = {0, 1, 2}, .y = {3, 2, 1}, .style = LineStyle::kDashed});
@@ -90,6 +91,7 @@ TEST(HtmlReportTest, EmbedsDataAsJson) {
             "tread (\xC2\xB0"
             "C)");
   EXPECT_TRUE(corners["x"]["min"].is_null());
+  EXPECT_EQ(corners["x"]["integer"], false);  // ticks anywhere unless asked for whole numbers
   ASSERT_EQ(corners["series"].size(), 4u);
   for (Corner c : kAllCorners) {
     const nlohmann::json& s = corners["series"][CornerIndex(c)];
@@ -104,6 +106,7 @@ TEST(HtmlReportTest, EmbedsDataAsJson) {
   const nlohmann::json& o = data["charts"][1];
   EXPECT_EQ(o["x"]["min"], 0.0);
   EXPECT_EQ(o["x"]["max"], 2.0);
+  EXPECT_EQ(o["x"]["integer"], true);
   EXPECT_EQ(o["series"][0]["colour"], PaletteColour(0));
   EXPECT_EQ(o["series"][1]["colour"], PaletteColour(1));
   EXPECT_EQ(o["series"][2]["colour"], "black");

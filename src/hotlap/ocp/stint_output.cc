@@ -186,8 +186,9 @@ std::vector<fs::path> WriteStintFiles(const fs::path& out, const StintResult& r,
     for (const StintLap& l : laps) y.push_back(field(l));
     return y;
   };
-  report::LineChart times{
-      .title = "Lap time, lap by lap", .x_axis = {"lap", ""}, .y_axis = {"lap time", "s"}};
+  report::LineChart times{.title = "Lap time, lap by lap",
+                          .x_axis = {.label = "lap", .integer_ticks = true},
+                          .y_axis = {"lap time", "s"}};
   times.series.push_back({.label = "stint (one problem)",
                           .x = lap_numbers,
                           .y = per_lap(r.laps, [](const StintLap& l) { return l.time_s; })});
@@ -198,7 +199,9 @@ std::vector<fs::path> WriteStintFiles(const fs::path& out, const StintResult& r,
   page.AddLineChart(times);
   const auto corner_chart = [&](const char* title, const char* quantity, const char* unit,
                                 auto field) {
-    report::LineChart chart{.title = title, .x_axis = {"lap", ""}, .y_axis = {quantity, unit}};
+    report::LineChart chart{.title = title,
+                            .x_axis = {.label = "lap", .integer_ticks = true},
+                            .y_axis = {quantity, unit}};
     for (Corner c : kAllCorners) {
       const int i = CornerIndex(c);
       chart.series.push_back({.label = std::string(CornerName(c)),
@@ -211,7 +214,9 @@ std::vector<fs::path> WriteStintFiles(const fs::path& out, const StintResult& r,
   // Each corner's lowest (dashed) and highest (solid) temperature over each lap: the window it
   // works in, lap by lap.
   const auto envelope_chart = [&](const char* title, const char* quantity, auto low, auto high) {
-    report::LineChart chart{.title = title, .x_axis = {"lap", ""}, .y_axis = {quantity, "degC"}};
+    report::LineChart chart{.title = title,
+                            .x_axis = {.label = "lap", .integer_ticks = true},
+                            .y_axis = {quantity, "degC"}};
     for (Corner c : kAllCorners) {
       const int i = CornerIndex(c);
       const std::string name(CornerName(c));

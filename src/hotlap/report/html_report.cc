@@ -38,7 +38,8 @@ void CheckRange(const Axis& axis, const std::string& chart, const char* which) {
 
 std::string AxisJson(const Axis& axis) {
   return "{\"title\":" + JsonQuote(AxisTitle(axis)) + ",\"min\":" + JsonNumber(axis.min) +
-         ",\"max\":" + JsonNumber(axis.max) + "}";
+         ",\"max\":" + JsonNumber(axis.max) +
+         ",\"integer\":" + (axis.integer_ticks ? "true" : "false") + "}";
 }
 
 std::string DashJson(LineStyle style) {

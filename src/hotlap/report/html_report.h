@@ -54,6 +54,7 @@ struct Axis {
   std::string label{};                 ///< e.g. "time"
   std::string unit{};                  ///< e.g. "s"; empty for none
   std::optional<double> min{}, max{};  ///< fixed range; from the data where empty
+  bool integer_ticks = false;          ///< ticks on whole numbers only (laps, counts)
 };
 
 enum class LineStyle { kSolid, kDashed, kDotted };

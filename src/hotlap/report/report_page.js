@@ -52,7 +52,7 @@
       max: fixed ? given(spec.max) : undefined,
       title: { display: spec.title !== '', text: spec.title },
       // A map's range is set for equal scales, not on round numbers: no ticks at its ends.
-      ticks: { maxRotation: 0, includeBounds: fixed },
+      ticks: { maxRotation: 0, includeBounds: fixed, precision: spec.integer ? 0 : undefined },
     };
   }
 
