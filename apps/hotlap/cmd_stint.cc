@@ -44,6 +44,7 @@ struct StintArgs {
   ocp::OptimalRunOptions run = [] {
     ocp::OptimalRunOptions o;
     o.step_m = ocp::StintOptions::kStintStepM;
+    o.threads = 0;  // --threads: one per core
     return o;
   }();
   std::string out, json;
@@ -174,6 +175,10 @@ CommandRunner RegisterStintCommand(CLI::App& app) {
   sub->add_option("--ambient-temp-C", a->run.ambient_C, "Air temperature")->capture_default_str();
   sub->add_option("--track-temp-C", a->run.track_C, "Track surface temperature")
       ->capture_default_str();
+  sub->add_option("--threads", a->run.threads,
+                  "Threads evaluating the derivatives (0: one per core)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 256));
   sub->add_option("--max-iterations", a->run.max_iterations, "Ipopt's iteration limit per solve")
       ->capture_default_str()
       ->check(kPositive);

@@ -58,6 +58,12 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
       sub->add_flag("--mesh-check", a.mesh_check,
                     "Solve again on a mesh of half the spacing and report the lap time's change"));
   sub->add_flag("--ipopt-output", a.run.ipopt_output, "Print Ipopt's own iteration log");
+  a.stock_car_only.push_back(
+      sub->add_option("--threads", a.run.threads,
+                      "Threads evaluating the derivatives of each solve (0: one per core; the "
+                      "comparison's two solves side by side take half each)")
+          ->capture_default_str()
+          ->check(CLI::Range(0, 256)));
   a.stock_car_only.push_back(sub->add_option(
       "--warm-start", a.warm_start,
       "Start from a lap saved with --save-solution (any mesh; the coarse solve is skipped)"));

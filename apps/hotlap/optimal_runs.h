@@ -21,7 +21,11 @@ struct OptimalArgs {
   std::string json;
   /// The library's options, filled by CLI11 (the Hessian, the second process and the Ipopt
   /// options from the three below at run time).
-  ocp::OptimalRunOptions run;
+  ocp::OptimalRunOptions run = [] {
+    ocp::OptimalRunOptions o;
+    o.threads = 0;  // --threads: one per core
+    return o;
+  }();
   std::string hessian = "exact";  ///< exact, or convex-elements
   bool single_process = false;
   bool mesh_check = false;

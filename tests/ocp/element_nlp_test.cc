@@ -1,6 +1,7 @@
 #include "hotlap/ocp/element_nlp.h"
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -190,6 +191,66 @@ TEST(ElementNlpTest, ConvexElementHessiansClipNegativeCurvatureOnly) {
       EXPECT_LT(smallest, 0.0);
     }
   }
+}
+
+// A chain of elements sharing variables and rows, as a lap's nodes do.
+ElementNlp ChainNlp(int links, int threads) {
+  ElementNlp nlp;
+  std::vector<int> v;
+  for (int i = 0; i <= links; ++i) {
+    v.push_back(nlp.AddVariable(0.3 + 0.01 * i, -10, 10, 1.0 + 0.1 * (i % 7)));
+  }
+  const std::shared_ptr<const Element> e = MakeElement<3, 2>(Wiggle{});
+  for (int i = 0; i < links; ++i) {
+    const int r0 = nlp.AddConstraint(0, 0, 1.0 + i % 3), r1 = nlp.AddConstraint(0, 0, 2.0);
+    nlp.AddLinear(r0, v[i], 1.0);
+    nlp.AddElement(e, {v[i], v[i + 1], v[(i * 7) % (links + 1)]},
+                   {{{r0, 1.0}, {Target::kObjective, 0.1}}, {{r1, -1.0}, {r0, 0.5}}});
+  }
+  nlp.SetThreads(threads);
+  nlp.Finalize();
+  return nlp;
+}
+
+struct Derivatives {
+  std::vector<double> g, jac, hess;
+};
+
+Derivatives Evaluate(const ElementNlp& nlp) {
+  Derivatives d;
+  std::vector<double> y(nlp.variables());
+  nlp.ScaledStart(y.data());
+  std::vector<double> lambda(nlp.constraints());
+  for (size_t r = 0; r < lambda.size(); ++r) lambda[r] = std::sin(1.0 + r);
+  d.g.resize(nlp.constraints());
+  nlp.ScaledConstraints(y.data(), d.g.data());
+  d.jac.resize(nlp.JacobianPattern().rows.size());
+  nlp.ScaledJacobian(y.data(), d.jac.data());
+  d.hess.resize(nlp.HessianPattern().rows.size());
+  nlp.ScaledHessian(y.data(), 0.7, lambda.data(), d.hess.data());
+  return d;
+}
+
+// The derivatives on several threads are those of one thread (to round-off: the sums run in
+// another order), and the same bit for bit on every call with the same thread count.
+TEST(ElementNlpTest, ThreadsGiveTheSameDerivatives) {
+  const Derivatives one = Evaluate(ChainNlp(501, 1));
+  for (int threads : {2, 3, 8}) {
+    const ElementNlp nlp = ChainNlp(501, threads);
+    ASSERT_EQ(nlp.threads(), threads);
+    const Derivatives d = Evaluate(nlp), again = Evaluate(nlp);
+    for (const auto& [a, b] :
+         {std::pair{&one.g, &d.g}, std::pair{&one.jac, &d.jac}, std::pair{&one.hess, &d.hess}}) {
+      ASSERT_EQ(a->size(), b->size());
+      for (size_t k = 0; k < a->size(); ++k) {
+        EXPECT_NEAR((*a)[k], (*b)[k], 1e-12 * (1.0 + std::abs((*a)[k]))) << threads << " " << k;
+      }
+    }
+    EXPECT_EQ(d.g, again.g) << threads;
+    EXPECT_EQ(d.jac, again.jac) << threads;
+    EXPECT_EQ(d.hess, again.hess) << threads;
+  }
+  EXPECT_EQ(ChainNlp(3, 0).threads(), 1);  // at least one
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "hotlap/ocp/disc_limit_comparison.h"
 
+#include <algorithm>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -92,6 +93,9 @@ DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track
   std::optional<ChildSolve> child;
   if (coarse_to_fine && options.second_process) {
     if (log) log(fmt::format("{}: solving in a second process", limited_label));
+    // The two solves share the derivative threads.
+    free_options.derivative_threads = limited_options.derivative_threads =
+        std::max(1, options.derivative_threads / 2);
     child.emplace([&] {
       const SolvedLap l =
           SolveLap(car, track, limited_options, limited_label, nullptr, progress, {}, &warm_up);

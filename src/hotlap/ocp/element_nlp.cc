@@ -1,7 +1,9 @@
 #include "hotlap/ocp/element_nlp.h"
 
 #include <algorithm>
+#include <exception>
 #include <stdexcept>
+#include <thread>
 #include <unordered_map>
 
 #include <Eigen/Dense>
@@ -100,6 +102,49 @@ void ElementNlp::Finalize() {
   finalized_ = true;
 }
 
+template <class Accumulate>
+void ElementNlp::AccumulateInstances(double* out, size_t size, const Accumulate& accumulate) const {
+  const size_t count = instances_.size();
+  const size_t parts = std::min<size_t>(static_cast<size_t>(threads_), std::max<size_t>(count, 1));
+  const auto run = [&](size_t part, double* into) {
+    Scratch scratch{std::vector<double>(max_inputs_), std::vector<double>(max_outputs_),
+                    std::vector<double>(static_cast<size_t>(max_inputs_ * max_outputs_)),
+                    std::vector<double>(static_cast<size_t>(max_inputs_ * max_inputs_))};
+    // Every parts-th instance: each part gets its share of every kind of element (they are
+    // added kind by kind, and the tyre and thermal ones cost most).
+    for (size_t i = part; i < count; i += parts) accumulate(instances_[i], into, scratch);
+  };
+  if (parts <= 1) {
+    run(0, out);
+    return;
+  }
+  // Part 0 on this thread into `out`, the others into buffers of their own, added in order.
+  std::vector<std::vector<double>> buffers(parts - 1, std::vector<double>(size, 0.0));
+  std::vector<std::exception_ptr> errors(parts);
+  std::vector<std::thread> workers;
+  for (size_t p = 1; p < parts; ++p) {
+    workers.emplace_back([&, p] {
+      try {
+        run(p, buffers[p - 1].data());
+      } catch (...) {
+        errors[p] = std::current_exception();
+      }
+    });
+  }
+  try {
+    run(0, out);
+  } catch (...) {
+    errors[0] = std::current_exception();
+  }
+  for (std::thread& w : workers) w.join();
+  for (const std::exception_ptr& e : errors) {
+    if (e) std::rethrow_exception(e);
+  }
+  for (const std::vector<double>& b : buffers) {
+    for (size_t k = 0; k < size; ++k) out[k] += b[k];
+  }
+}
+
 double ElementNlp::Objective(const std::vector<double>& x) const {
   double f = 0.0;
   for (const auto& [var, c] : objective_linear_) f += c * x[var];
@@ -124,16 +169,15 @@ double ElementNlp::Objective(const std::vector<double>& x) const {
 std::vector<double> ElementNlp::Constraints(const std::vector<double>& x) const {
   std::vector<double> g(g_lower_.size(), 0.0);
   for (const LinearTerm& t : linear_) g[t.row] += t.coefficient * x[t.var];
-  std::vector<double> in(max_inputs_), out(max_outputs_);
-  for (const Instance& inst : instances_) {
-    for (size_t i = 0; i < inst.inputs.size(); ++i) in[i] = x[inst.inputs[i]];
-    inst.element->Values(in.data(), out.data());
+  AccumulateInstances(g.data(), g.size(), [&](const Instance& inst, double* into, Scratch& s) {
+    for (size_t i = 0; i < inst.inputs.size(); ++i) s.in[i] = x[inst.inputs[i]];
+    inst.element->Values(s.in.data(), s.out.data());
     for (size_t o = 0; o < inst.targets.size(); ++o) {
       for (const Target& t : inst.targets[o]) {
-        if (t.row != Target::kObjective) g[t.row] += t.coefficient * out[o];
+        if (t.row != Target::kObjective) into[t.row] += t.coefficient * s.out[o];
       }
     }
-  }
+  });
   return g;
 }
 
@@ -197,21 +241,22 @@ void ElementNlp::ScaledJacobian(const double* y, double* values) const {
   const std::vector<double> x = Unscale(y);
   std::fill(values, values + jac_pattern_.rows.size(), 0.0);
   for (size_t k = 0; k < linear_.size(); ++k) values[linear_slots_[k]] += linear_[k].coefficient;
-  std::vector<double> in(max_inputs_), out(max_outputs_),
-      jac(static_cast<size_t>(max_inputs_ * max_outputs_));
-  for (const Instance& inst : instances_) {
-    const int n = static_cast<int>(inst.inputs.size());
-    for (int i = 0; i < n; ++i) in[i] = x[inst.inputs[i]];
-    inst.element->Jacobian(in.data(), out.data(), jac.data());
-    size_t k = 0;
-    for (size_t o = 0; o < inst.targets.size(); ++o) {
-      for (const Target& t : inst.targets[o]) {
-        for (int i = 0; i < n; ++i, ++k) {
-          if (inst.jac_slots[k] >= 0) values[inst.jac_slots[k]] += t.coefficient * jac[o * n + i];
-        }
-      }
-    }
-  }
+  AccumulateInstances(values, jac_pattern_.rows.size(),
+                      [&](const Instance& inst, double* into, Scratch& s) {
+                        const int n = static_cast<int>(inst.inputs.size());
+                        for (int i = 0; i < n; ++i) s.in[i] = x[inst.inputs[i]];
+                        inst.element->Jacobian(s.in.data(), s.out.data(), s.jac.data());
+                        size_t k = 0;
+                        for (size_t o = 0; o < inst.targets.size(); ++o) {
+                          for (const Target& t : inst.targets[o]) {
+                            for (int i = 0; i < n; ++i, ++k) {
+                              if (inst.jac_slots[k] >= 0) {
+                                into[inst.jac_slots[k]] += t.coefficient * s.jac[o * n + i];
+                              }
+                            }
+                          }
+                        }
+                      });
   for (size_t k = 0; k < jac_pattern_.rows.size(); ++k) {
     values[k] *= x_scale_[jac_pattern_.cols[k]] / g_scale_[jac_pattern_.rows[k]];
   }
@@ -235,28 +280,27 @@ void ElementNlp::ScaledHessian(const double* y, double sigma, const double* lamb
                                double* values) const {
   const std::vector<double> x = Unscale(y);
   std::fill(values, values + hess_pattern_.rows.size(), 0.0);
-  std::vector<double> in(max_inputs_), weights(max_outputs_),
-      hess(static_cast<size_t>(max_inputs_ * max_inputs_));
-  for (const Instance& inst : instances_) {
-    const int n = static_cast<int>(inst.inputs.size());
-    bool any = false;
-    for (size_t o = 0; o < inst.targets.size(); ++o) {
-      double w = 0.0;
-      for (const Target& t : inst.targets[o]) {
-        w += t.coefficient * (t.row == Target::kObjective ? sigma / objective_scale_
-                                                          : lambda[t.row] / g_scale_[t.row]);
-      }
-      weights[o] = w;
-      any = any || w != 0.0;
-    }
-    if (!any) continue;
-    for (int i = 0; i < n; ++i) in[i] = x[inst.inputs[i]];
-    inst.element->Hessian(in.data(), weights.data(), hess.data());
-    if (convex_element_hessians_) ClipNegativeCurvature(inst, n, hess.data());
-    for (int k = 0; k < n * n; ++k) {
-      if (inst.hess_slots[k] >= 0) values[inst.hess_slots[k]] += hess[k];
-    }
-  }
+  AccumulateInstances(
+      values, hess_pattern_.rows.size(), [&](const Instance& inst, double* into, Scratch& s) {
+        const int n = static_cast<int>(inst.inputs.size());
+        bool any = false;
+        for (size_t o = 0; o < inst.targets.size(); ++o) {
+          double w = 0.0;
+          for (const Target& t : inst.targets[o]) {
+            w += t.coefficient * (t.row == Target::kObjective ? sigma / objective_scale_
+                                                              : lambda[t.row] / g_scale_[t.row]);
+          }
+          s.out[o] = w;  // the outputs' weights
+          any = any || w != 0.0;
+        }
+        if (!any) return;
+        for (int i = 0; i < n; ++i) s.in[i] = x[inst.inputs[i]];
+        inst.element->Hessian(s.in.data(), s.out.data(), s.hess.data());
+        if (convex_element_hessians_) ClipNegativeCurvature(inst, n, s.hess.data());
+        for (int k = 0; k < n * n; ++k) {
+          if (inst.hess_slots[k] >= 0) into[inst.hess_slots[k]] += s.hess[k];
+        }
+      });
   for (size_t k = 0; k < hess_pattern_.rows.size(); ++k) {
     values[k] *= x_scale_[hess_pattern_.rows[k]] * x_scale_[hess_pattern_.cols[k]];
   }

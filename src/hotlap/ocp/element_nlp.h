@@ -63,6 +63,12 @@ class ElementNlp {
   /// Lagrangian Hessian, so that the solver's inertia correction has less to do, at the price of
   /// Newton's convergence rate where the exact Hessian is indefinite (docs/optimal-control.md).
   void SetConvexElementHessians(bool convex) { convex_element_hessians_ = convex; }
+  /// Threads that evaluate the elements for the constraints, Jacobian and Hessian (>= 1; 1: this
+  /// thread alone). The elements are split into that many fixed parts (every n-th element), each
+  /// summed into its own buffer and the buffers added in order, so a given thread count gives the
+  /// same values bit for bit on every run (another count may differ in the last bits).
+  void SetThreads(int threads) { threads_ = threads < 1 ? 1 : threads; }
+  int threads() const { return threads_; }
   /// Builds the sparsity patterns; call once after adding everything.
   void Finalize();
 
@@ -113,6 +119,14 @@ class ElementNlp {
     std::vector<int> jac_slots;
     std::vector<int> hess_slots;  // inputs * inputs, -1 where var_i < var_j
   };
+  // One thread's work space for an element's inputs, outputs, Jacobian and Hessian.
+  struct Scratch {
+    std::vector<double> in, out, jac, hess;
+  };
+  // Runs accumulate(instance, into, scratch) over every instance, adding into `out` (`size`
+  // values), the instances split over threads_ threads as SetThreads says.
+  template <class Accumulate>
+  void AccumulateInstances(double* out, size_t size, const Accumulate& accumulate) const;
   // The element's n x n weighted Hessian `hess` (unscaled) with its negative curvature removed.
   void ClipNegativeCurvature(const Instance& inst, int n, double* hess) const;
   struct LinearTerm {
@@ -129,6 +143,7 @@ class ElementNlp {
   std::vector<Instance> instances_;
   double objective_scale_ = 1.0;
   bool convex_element_hessians_ = false;
+  int threads_ = 1;
   Sparsity jac_pattern_, hess_pattern_;
   bool finalized_ = false;
   int max_inputs_ = 0, max_outputs_ = 0;

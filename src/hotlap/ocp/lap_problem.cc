@@ -441,6 +441,7 @@ struct Builder {
     }
     nlp.SetObjectiveScale(1.0);
     nlp.SetConvexElementHessians(options.convex_element_hessians);
+    nlp.SetThreads(options.derivative_threads);
   }
 
   void Build() {

@@ -58,6 +58,8 @@ struct LapProblemOptions {
   /// Each element's Hessian with its negative curvature clipped (ElementNlp::
   /// SetConvexElementHessians) instead of the exact Lagrangian Hessian.
   bool convex_element_hessians = false;
+  /// Threads that evaluate the derivatives (ElementNlp::SetThreads; 1: the calling thread).
+  int derivative_threads = 1;
   /// The pedal (internal::PedalSplitFn): brake force at p = -1, N (0: twice the car's weight).
   double max_brake_force = 0.0;
   /// The pedal's smooth positive part: its eps (dimensionless; where both sides are on at once the

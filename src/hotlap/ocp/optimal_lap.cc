@@ -123,6 +123,7 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
   lap.lap_mass_kg = options.lap_mass_kg;
   lap.pedal_smoothing = options.pedal_smoothing;
   lap.convex_element_hessians = options.convex_element_hessians;
+  lap.derivative_threads = options.derivative_threads;
   lap.all_brake_states = options.all_brake_states;
   if (options.steer_smoothing_weight >= 0.0) {
     lap.steer_smoothing_weight = options.steer_smoothing_weight;

@@ -81,6 +81,9 @@ struct OptimalLapOptions {
   double pedal_smoothing_weight = -1.0;
   /// LapProblemOptions::convex_element_hessians.
   bool convex_element_hessians = false;
+  /// LapProblemOptions::derivative_threads: threads evaluating the derivatives of each solve (the
+  /// comparison's two solves side by side take half each).
+  int derivative_threads = 1;
   /// LapProblemOptions::all_brake_states (false: the brakes that feed nothing back are
   /// integrated after the solve instead of solved for).
   bool all_brake_states = false;

@@ -1,5 +1,8 @@
 #include "hotlap/ocp/optimal_run.h"
 
+#include <algorithm>
+#include <thread>
+
 #include <fmt/format.h>
 
 #include "hotlap/common/units.h"
@@ -20,6 +23,9 @@ OptimalLapOptions MakeOptimalLapOptions(const OptimalRunOptions& a) {
   for (const auto& kv : a.ipopt_options) o.ipopt.extra.push_back(kv);
   o.ipopt.print_level = a.ipopt_output ? 5 : 0;
   o.second_process = a.second_process;
+  o.derivative_threads = a.threads > 0
+                             ? a.threads
+                             : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   return o;
 }
 
