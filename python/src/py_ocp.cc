@@ -15,11 +15,11 @@
 #include <pybind11/stl.h>
 
 #include "hotlap/common/error.h"
+#include "hotlap/common/units.h"
 #include "hotlap/ocp/optimal_output.h"
 #include "hotlap/ocp/optimal_run.h"
 #include "hotlap/ocp/optimal_run_json.h"
 #include "hotlap/ocp/stint_output.h"
-#include "hotlap/common/units.h"
 #include "hotlap/track/track.h"
 #include "hotlap/vehicle/car.h"
 #include "py_convert.h"
@@ -33,8 +33,10 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
                     double step_m, double coarse_step_m, const std::string& thermal_start,
                     double ambient_C, double track_C, int max_iterations,
                     const std::vector<std::pair<std::string, std::string>>& ipopt_options,
-                    const py::object& progress) {
+                    int threads, const py::object& progress) {
+  if (threads < 0) throw InputError(fmt::format("threads: {} is not 0 or more", threads));
   ocp::OptimalRunOptions o;
+  o.threads = threads;
   o.step_m = step_m;
   o.coarse_step_m = coarse_step_m;
   o.disc_limit_C = disc_limit_C;
@@ -100,9 +102,11 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
 py::dict Stint(const vehicle::Car& car, const track::Track& track, int laps, double wear_scale,
                double fuel_kg, std::optional<double> disc_limit_C, double step_m,
                double coarse_step_m, const std::string& thermal_start, double ambient_C,
-               double track_C, int max_iterations, std::optional<std::string> checkpoint_dir,
-               int checkpoint_every) {
+               double track_C, int max_iterations, int threads,
+               std::optional<std::string> checkpoint_dir, int checkpoint_every) {
+  if (threads < 0) throw InputError(fmt::format("threads: {} is not 0 or more", threads));
   ocp::OptimalRunOptions run;
+  run.threads = threads;
   run.step_m = step_m;
   run.coarse_step_m = coarse_step_m;
   run.thermal_start = thermal_start;
@@ -146,13 +150,14 @@ void BindOcp(py::module_& m) {
         py::arg("ambient_temp_C") = defaults.ambient_C, py::arg("track_temp_C") = defaults.track_C,
         py::arg("max_iterations") = defaults.max_iterations,
         py::arg("ipopt_options") = std::vector<std::pair<std::string, std::string>>{},
-        py::arg("progress") = py::none(),
+        py::arg("threads") = defaults.threads, py::arg("progress") = py::none(),
         "The minimum-time lap with tyre and brake temperatures and wear as states: one solve "
         "(optionally with a front-disc limit, degC), or with compare_disc_limit_C the free and "
         "the limited lap. Returns {'summary': dict (the keys of `hotlap optimise --json`), "
         "'channels': {label: {column: array}}, 'cancelled': bool}. progress(label, iteration, "
         "objective_s, infeasibility, optimality) is called at every Ipopt iteration; returning "
-        "False stops the solve.");
+        "False stops the solve. threads: threads evaluating the derivatives (1, the default, "
+        "suits sweeps of one case per worker; 0: one per core, as the command line).");
   const ocp::StintOptions stint;
   m.def("stint", &Stint, py::arg("car"), py::arg("track"), py::kw_only(),
         py::arg("laps") = stint.laps, py::arg("wear_scale") = stint.wear_scale,
@@ -160,8 +165,9 @@ void BindOcp(py::module_& m) {
         py::arg("step_m") = stint.lap.step_m, py::arg("coarse_step_m") = defaults.coarse_step_m,
         py::arg("thermal_start") = defaults.thermal_start,
         py::arg("ambient_temp_C") = defaults.ambient_C, py::arg("track_temp_C") = defaults.track_C,
-        py::arg("max_iterations") = defaults.max_iterations,
-        py::arg("checkpoint_dir") = py::none(), py::arg("checkpoint_every") = stint.checkpoint_every,
+        py::arg("max_iterations") = defaults.max_iterations, py::arg("threads") = defaults.threads,
+        py::arg("checkpoint_dir") = py::none(),
+        py::arg("checkpoint_every") = stint.checkpoint_every,
         "A stint of `laps` laps as one optimal-control problem (wear, carcass heat and fuel "
         "carried lap to lap) and the greedy driver's single laps, as `hotlap stint` runs them. "
         "With checkpoint_dir, each greedy lap and every checkpoint_every iterations of the "

@@ -9,12 +9,14 @@ MESH = dict(step_m=30.0, coarse_step_m=0.0)
 
 
 def test_optimal_lap_equals_the_command_line(cli, tmp_path):
-    cli("optimise", "--step-m", 30, "--coarse-step-m", 0, "--out", tmp_path / "o", "--json", tmp_path / "o.json")
+    # Two derivative threads both ways (the command line's default is one per core).
+    cli("optimise", "--step-m", 30, "--coarse-step-m", 0, "--threads", 2, "--out", tmp_path / "o",
+        "--json", tmp_path / "o.json")
     expected = read_json(tmp_path / "o.json")
     channels = read_csv(tmp_path / "o" / "optimal.csv")
     calls = []
     got = hotlap.optimal_lap(hotlap.load_car("gen7"), hotlap.load_track("darlington"),
-                             progress=lambda *a: calls.append(a), **MESH)
+                             threads=2, progress=lambda *a: calls.append(a), **MESH)
     assert not got["cancelled"]
     summary = got["summary"]
     assert summary["lap_time_s"] == expected["lap_time_s"]
