@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -192,6 +194,46 @@ TEST_F(YamlReaderTest, OverridesReplaceNumbersBeforeReading) {
   YamlReader plain = YamlReader::Load(path, {});
   EXPECT_EQ(test::InputErrorOf([&] { plain.Fail("mass_kg", "x"); }),
             path.string() + ": field 'mass_kg': x");
+}
+
+// An optional number the file leaves out: a probe finds it where the reader asks for it, and an
+// override marked add_if_absent puts it into its mapping (which must be there).
+TEST_F(YamlReaderTest, OptionalNumbersLeftOutAreProbedAndCanBeAdded) {
+  const auto path = Write("outer: {depth_mm: 4}\n");
+  const auto read = [](YamlReader y) {
+    YamlReader outer = y.Map("outer");
+    const double depth = outer.Number("depth_mm", Range::Positive("mm"));
+    const std::optional<double> width = outer.OptionalNumber("width_mm", Range::Positive("mm"));
+    outer.Finish();
+    return std::pair{depth, width};
+  };
+  {
+    YamlOptionalNumberProbe probe;
+    EXPECT_EQ(read(YamlReader::Load(path, {})).second, std::nullopt);
+    ASSERT_EQ(probe.absent().size(), 1u);
+    EXPECT_EQ(probe.absent()[0].file, path);
+    EXPECT_EQ(probe.absent()[0].field, "outer.width_mm");
+  }
+  EXPECT_EQ(YamlOptionalNumberProbe::Current(), nullptr);  // gone with its scope
+  const auto [depth, width] =
+      read(YamlReader::Load(path, {{"outer.width_mm", 2.5, "override 'w'", true}}));
+  EXPECT_EQ(depth, 4.0);
+  EXPECT_EQ(width, 2.5);
+  // Without the mark, or where the mapping itself is missing, it is refused as before.
+  EXPECT_TRUE(Contains(test::InputErrorOf([&] {
+                         YamlReader::Load(path, {{"outer.width_mm", 2.5, "override 'w'"}});
+                       }),
+                       "has no field 'outer.width_mm'"));
+  EXPECT_TRUE(Contains(test::InputErrorOf([&] {
+                         YamlReader::Load(path, {{"inner.width_mm", 2.5, "override 'w'", true}});
+                       }),
+                       "has no field 'inner'"));
+  // Added under a name the reader does not know, it is an unknown field of the file.
+  EXPECT_TRUE(
+      Contains(test::InputErrorOf([&] {
+                 read(YamlReader::Load(path, {{"outer.wdth_mm", 2.5, "override 'w'", true}}));
+               }),
+               "unknown field 'outer.wdth_mm'"));
 }
 
 TEST_F(YamlReaderTest, OverrideOfAFieldThatIsNoNumberIsRefused) {

@@ -106,6 +106,8 @@ TEST(CarOverride, ChangesExactlyThatValue) {
       {"brake_system.front_share", 0.55, "brake_system.front_share", 0.55},
       {"tyre_forces.rr.pressure_kPa", 280, "tyre_forces.rr.pressure", 280e3},
       {"tyre_forces.fl.camber_deg", -2, "tyre_forces.fl.camber", DegToRad(-2.0)},
+      // Not in the car file (its .tir gives the radius): an optional number, added (stagger).
+      {"tyre_forces.rr.rolling_radius_m", 0.3677, "tyre_forces.rr.rolling_radius", 0.3677},
       {"initial_state.disc_temp_C", 300, "initial_state.disc_temp", CelsiusToKelvin(300.0)},
       {"brakes.fl.heat_partition", 0.9, "brakes.fl.heat_partition", 0.9},
       {"brakes.fr.disc_convection_cholesky_sqrtW_per_K.l33", 5,
@@ -190,6 +192,11 @@ TEST(CarOverride, EveryListedKeyReachesItsValue) {
     add(plain.tyre(c).path, "tyres." + std::string(CornerName(c)) + ".");
     add(plain.brake(c).path, "brakes." + std::string(CornerName(c)) + ".");
   }
+  // The optional numbers the files leave out: the rolling radii the .tir files give.
+  for (Corner c : kAllCorners) {
+    file_values["tyre_forces." + std::string(CornerName(c)) + ".rolling_radius_m"] =
+        plain.vehicle->corner(c).rolling_radius;
+  }
   const std::vector<std::string> keys = OverrideKeys(Gen7());
   std::vector<CarOverride> all;
   for (const std::string& key : keys) {
@@ -197,7 +204,8 @@ TEST(CarOverride, EveryListedKeyReachesItsValue) {
     ASSERT_TRUE(duct || file_values.contains(key)) << key;
     all.push_back({key, duct ? 1.0 : file_values.at(key)});
   }
-  EXPECT_EQ(all.size(), file_values.size() + 4);  // every number of every file, and 4 factors
+  // Every number of every file, the 4 optional radii and the 4 factors.
+  EXPECT_EQ(all.size(), file_values.size() + 4);
   const Car car = LoadCar(Gen7(), all);
   EXPECT_EQ(Differences(Numbers(plain), Numbers(car)), std::set<std::string>{});
   EXPECT_EQ(car.overrides.size(), all.size());
@@ -213,7 +221,8 @@ TEST(CarOverride, KeysAreTheNumbersInFileOrder) {
         "tyre_forces.rr.pressure_kPa", "tyre_forces.fl.camber_deg", "initial_state.disc_temp_C",
         "brakes.fl.heat_partition", "brakes.fl.disc_convection_cholesky_sqrtW_per_K.l33",
         "brakes.rr.geometry.disc_diameter_mm", "brakes.rl.duct_factor",
-        "tyres.rr.construction.tread_mass_kg", "tyres.fl.wear.wp2"}) {
+        "tyres.rr.construction.tread_mass_kg", "tyres.fl.wear.wp2",
+        "tyre_forces.rl.rolling_radius_m"}) {
     EXPECT_TRUE(has(k)) << k;
   }
   for (const char* k : {"name", "model", "brakes.fl", "tyres.rr", "tyre_forces.fl.file",
@@ -267,6 +276,14 @@ TEST(CarOverride, UnknownKeySaysWhichPartAndSuggests) {
   m = LoadError({{"chassis", 1}});
   EXPECT_TRUE(Contains(m, "'chassis' is a section, not a number"));
   EXPECT_TRUE(Contains(m, "'chassis.mass_kg'"));
+  // An optional number the file leaves out is a key like the others: suggested for a typo, and
+  // its value goes through the reader's range.
+  m = LoadError({{"tyre_forces.rr.rolling_radius_mm", 0.37}});
+  EXPECT_TRUE(Contains(m, "has no field 'rolling_radius_mm'"));
+  EXPECT_TRUE(Contains(m, "(did you mean 'tyre_forces.rr.rolling_radius_m'?)"));
+  m = LoadError({{"tyre_forces.rr.rolling_radius_m", 2}});
+  EXPECT_TRUE(Contains(m, "override 'tyre_forces.rr.rolling_radius_m=2': "));
+  EXPECT_TRUE(Contains(m, "field 'tyre_forces.rr.rolling_radius_m': value 2 is out of range"));
 }
 
 TEST(CarOverride, OtherRefusalsNameTheOverride) {

@@ -150,6 +150,10 @@ void ApplyOverride(YAML::Node root, const fs::path& path, const YamlOverride& o)
     const std::string here = walked.empty() ? part : walked + "." + part;
     const YAML::Node& parent = node;
     const YAML::Node child = parent[part];
+    if (!child.IsDefined() && o.add_if_absent && i + 1 == parts.size() && parent.IsMap()) {
+      node[part] = fmt::format("{}", o.value);  // an optional number the file leaves out
+      return;
+    }
     if (!child.IsDefined()) {
       std::vector<std::string> keys;
       for (const auto& kv : parent) keys.push_back(kv.first.as<std::string>());
@@ -290,8 +294,27 @@ double YamlReader::Number(std::string_view key, const Range& range) {
   return value;
 }
 
+namespace {
+thread_local YamlOptionalNumberProbe* current_probe = nullptr;
+}  // namespace
+
+YamlOptionalNumberProbe::YamlOptionalNumberProbe() : outer_(current_probe) { current_probe = this; }
+
+YamlOptionalNumberProbe::~YamlOptionalNumberProbe() { current_probe = outer_; }
+
+YamlOptionalNumberProbe* YamlOptionalNumberProbe::Current() { return current_probe; }
+
+void YamlOptionalNumberProbe::Record(const fs::path& file, std::string field) {
+  absent_.push_back({file, std::move(field)});
+}
+
 std::optional<double> YamlReader::OptionalNumber(std::string_view key, const Range& range) {
-  if (!Has(key)) return std::nullopt;
+  if (!Has(key)) {
+    if (YamlOptionalNumberProbe* probe = YamlOptionalNumberProbe::Current()) {
+      probe->Record(file_, prefix_ + std::string(key));
+    }
+    return std::nullopt;
+  }
   return Number(key, range);
 }
 

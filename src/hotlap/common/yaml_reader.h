@@ -57,6 +57,33 @@ struct YamlOverride {
   std::string field;   ///< dotted path through the file's mappings, e.g. "chassis.mass_kg"
   double value = 0.0;  ///< in the field's own unit, as the file writes it
   std::string label;   ///< how messages name it, e.g. "override 'chassis.mass_kg=1600'"
+  /// The field may be missing from the file (an optional number the reader takes when present,
+  /// as YamlOptionalNumberProbe finds them): it is then added to its mapping, which must exist.
+  bool add_if_absent = false;
+};
+
+/// While one lives on a thread, every YamlReader::OptionalNumber on that thread that finds its
+/// field missing records the file and the field's dotted path: the optional numbers a reader
+/// would take, which an override may then set (vehicle/car_override.h). Probes nest (the inner
+/// one records).
+class YamlOptionalNumberProbe {
+ public:
+  struct Field {
+    std::filesystem::path file;
+    std::string field;  ///< dotted path, e.g. "tyre_forces.rl.rolling_radius_m"
+  };
+  YamlOptionalNumberProbe();
+  ~YamlOptionalNumberProbe();
+  YamlOptionalNumberProbe(const YamlOptionalNumberProbe&) = delete;
+  YamlOptionalNumberProbe& operator=(const YamlOptionalNumberProbe&) = delete;
+  const std::vector<Field>& absent() const { return absent_; }
+  /// The probe of this thread, or null.
+  static YamlOptionalNumberProbe* Current();
+  void Record(const std::filesystem::path& file, std::string field);
+
+ private:
+  std::vector<Field> absent_;
+  YamlOptionalNumberProbe* outer_;
 };
 
 /// One scalar of a YAML file: its dotted path through the file's mappings (lists are not

@@ -7,6 +7,7 @@
 #include "hotlap/common/corner.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/string_match.h"
+#include "hotlap/vehicle/car.h"
 
 namespace hotlap::vehicle {
 
@@ -23,7 +24,8 @@ struct Target {
   std::string key;
   std::string text;  // the file's text ("" for a derived key)
   bool number = false;
-  fs::path file;  // the file that holds it (a derived key: the corner's brake file)
+  fs::path file;        // the file that holds it (a derived key: the corner's brake file)
+  bool absent = false;  // an optional number the file leaves out (AbsentOptionalTargets)
 };
 
 std::vector<std::string> SplitKey(std::string_view key) {
@@ -69,6 +71,45 @@ std::vector<Target> CarTargets(const fs::path& path) {
     }
     if (parts[0] == "brakes") {
       out.push_back({f.field + "." + std::string(kDuctFactorKey), "", true, file});
+    }
+  }
+  return out;
+}
+
+bool SameFile(const fs::path& a, const fs::path& b) {
+  std::error_code ec;
+  return fs::weakly_canonical(a, ec) == fs::weakly_canonical(b, ec);
+}
+
+// The optional numbers the car's readers take when present and its files leave out (such as
+// tyre_forces.<c>.rolling_radius_m of a car whose force models are .tir files): found by reading
+// the car once with a YamlOptionalNumberProbe, so they are exactly what the readers accept.
+// `targets` (CarTargets) tell which corner reaches which tyre or brake file.
+std::vector<Target> AbsentOptionalTargets(const fs::path& path,
+                                          const std::vector<Target>& targets) {
+  YamlOptionalNumberProbe probe;
+  try {
+    (void)LoadCar(path);
+  } catch (const std::exception&) {
+    // What the probe saw before the failure still counts; LoadCar reports the failure itself.
+  }
+  std::vector<Target> out;
+  const auto add = [&](const std::string& key, const fs::path& file) {
+    if (std::none_of(out.begin(), out.end(), [&](const Target& t) { return t.key == key; })) {
+      out.push_back({key, "", true, file, true});
+    }
+  };
+  for (const YamlOptionalNumberProbe::Field& f : probe.absent()) {
+    if (SameFile(f.file, path)) {
+      add(f.field, path);
+      continue;
+    }
+    for (const Target& t : targets) {  // the corners whose tyre or brake file it is
+      const std::vector<std::string> parts = SplitKey(t.key);
+      if (parts.size() == 2 && (parts[0] == "tyres" || parts[0] == "brakes") &&
+          ParseCorner(parts[1]) && !t.number && SameFile(path.parent_path() / t.text, f.file)) {
+        add(t.key + "." + f.field, f.file);
+      }
     }
   }
   return out;
@@ -160,7 +201,10 @@ std::vector<CarOverride> ParseCarOverrides(const std::vector<std::string>& texts
 std::string OverrideText(const CarOverride& o) { return fmt::format("{}={}", o.key, o.value); }
 
 std::vector<std::string> OverrideKeys(const fs::path& path) {
-  return NumberKeysUnder(CarTargets(path), "");
+  std::vector<Target> targets = CarTargets(path);
+  const std::vector<Target> optional = AbsentOptionalTargets(path, targets);
+  targets.insert(targets.end(), optional.begin(), optional.end());
+  return NumberKeysUnder(targets, "");
 }
 
 nlohmann::json OverridesJson(const std::vector<CarOverride>& overrides) {
@@ -187,7 +231,8 @@ CarOverridePlan PlanCarOverrides(const fs::path& path, const std::vector<CarOver
       }
     }
   }
-  const std::vector<Target> targets = CarTargets(path);
+  std::vector<Target> targets = CarTargets(path);
+  bool probed = false;
   for (const CarOverride& o : overrides) {
     const std::vector<std::string> parts = SplitKey(o.key);
     if (std::any_of(parts.begin(), parts.end(), [](const std::string& p) { return p.empty(); })) {
@@ -202,8 +247,16 @@ CarOverridePlan PlanCarOverrides(const fs::path& path, const std::vector<CarOver
       throw InputError(fmt::format("{}: '{}' is not a corner: must be 'fl', 'fr', 'rl' or 'rr'",
                                    Label(o), parts[1]));
     }
-    const auto it = std::find_if(targets.begin(), targets.end(),
-                                 [&](const Target& t) { return t.key == o.key; });
+    auto it = std::find_if(targets.begin(), targets.end(),
+                           [&](const Target& t) { return t.key == o.key; });
+    if (it == targets.end() && !probed) {
+      // Not in the files: perhaps an optional number they leave out.
+      probed = true;
+      const std::vector<Target> optional = AbsentOptionalTargets(path, targets);
+      targets.insert(targets.end(), optional.begin(), optional.end());
+      it = std::find_if(targets.begin(), targets.end(),
+                        [&](const Target& t) { return t.key == o.key; });
+    }
     if (it == targets.end()) FailUnknown(o, parts, targets, path);
     if (!it->number) {
       throw InputError(
@@ -212,7 +265,7 @@ CarOverridePlan PlanCarOverrides(const fs::path& path, const std::vector<CarOver
     }
     const bool corner_file = parts[0] == "tyres" || parts[0] == "brakes";
     if (!corner_file) {
-      plan.car.push_back({o.key, o.value, Label(o)});
+      plan.car.push_back({o.key, o.value, Label(o), it->absent});
       continue;
     }
     const int corner = CornerIndex(*ParseCorner(parts[1]));
@@ -227,7 +280,7 @@ CarOverridePlan PlanCarOverrides(const fs::path& path, const std::vector<CarOver
       plan.duct_factor[corner] = o.value;
     } else {
       (parts[0] == "tyres" ? plan.tyres : plan.brakes)[corner].push_back(
-          {field, o.value, Label(o)});
+          {field, o.value, Label(o), it->absent});
     }
   }
   return plan;

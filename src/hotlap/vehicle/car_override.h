@@ -46,8 +46,10 @@ std::string OverrideText(const CarOverride& o);
 
 /// Every key an override of the car at `path` (a car.yaml) may name, in file order: the car
 /// file's numbers, then in place of each corner's tyre and brake file names the numbers of that
-/// file (`tyres.<c>.`, `brakes.<c>.` before the file's own dotted path) and the derived keys.
-/// InputError if the car file cannot be read; a tyre or brake file that cannot be read gives no
+/// file (`tyres.<c>.`, `brakes.<c>.` before the file's own dotted path) and the derived keys;
+/// then the optional numbers the files leave out, which an override adds (found by reading the
+/// car with a YamlOptionalNumberProbe: e.g. `tyre_forces.<c>.rolling_radius_m` where a .tir file
+/// gives the radius). InputError if the car file cannot be read; a tyre or brake file that cannot be read gives no
 /// keys (LoadCar reports it).
 std::vector<std::string> OverrideKeys(const std::filesystem::path& path);
 
