@@ -11,6 +11,9 @@
 #                                                 # beside other work for as long as it takes
 #                                                 # (Ctrl-C or SIGINT to the fuzzers stops it, the
 #                                                 # runs so far counted)
+#   bash scripts/fuzz.sh --stop                   # stops a --budget run so that every running
+#                                                 # chunk is counted (never SIGSTOP a fuzzer: it
+#                                                 # times the pause as a hang)
 #
 # TARGET is a name of fuzz/ without "_fuzz" (tir, telemetry_csv, ...). Targets run one after the
 # other (HOTLAP_FUZZ_JOBS=N: N at a time). Each grows its corpus in fuzz/corpus/TARGET (not in
@@ -43,6 +46,31 @@ if [ "${1:-}" = "--summary" ]; then
       if ($6 ~ /^FOUND/) found[$2]++ }
     END { for (t in runs) printf "| %s | %d | %.1f | %.1f | %d | %d | %d |\n", t, runs[t],
       secs[t] / 60, cpu[t] / 60, n[t], found[t], corpus[t] }' fuzz/stats.tsv | sort
+  exit 0
+fi
+# --stop: the --budget run's top shell first (killed, so that it starts no other target), then the
+# fuzzers by SIGINT, so that each target's own shell records its chunk as "stopped".
+if [ "${1:-}" = "--stop" ]; then
+  # Which are top shells is read for all before any is killed: a target's shell whose top is
+  # gone has init as its parent and would look like a top itself.
+  tops=()
+  for pid in $(pgrep -f "scripts/fuzz.sh --budget" || true); do
+    parent=$(ps -o ppid= -p "$pid" | tr -d ' ')
+    if [ -n "$parent" ] && ! ps -o args= -p "$parent" | grep -q "scripts/fuzz.sh"; then
+      tops+=("$pid")
+    fi
+  done
+  if [ "${#tops[@]}" -gt 0 ]; then kill -KILL "${tops[@]}" 2>/dev/null || true; fi
+  pkill -INT -f "_fuzz fuzz/corpus" || true
+  for _ in $(seq 60); do
+    if ! pgrep -f "scripts/fuzz.sh --budget" >/dev/null; then break; fi
+    sleep 1
+  done
+  if pgrep -f "scripts/fuzz.sh --budget" >/dev/null; then
+    echo "fuzz: --stop: a budget run is still there after 60 s" >&2
+    exit 1
+  fi
+  echo "fuzz: stopped; the chunks are in fuzz/stats.tsv"
   exit 0
 fi
 # --budget: what each target has left of the goal (10^7 executions, 3600 CPU seconds).
