@@ -9,11 +9,12 @@
 #                                                 # CPU-hour in all (fuzz/stats.tsv's runs count),
 #                                                 # whichever comes first; at nice 19, so it can run
 #                                                 # beside other work for as long as it takes
-#                                                 # (Ctrl-C or SIGINT to the fuzzers stops it, the
+#                                                 # (Ctrl-C in its terminal, or --stop, stops it, the
 #                                                 # runs so far counted)
-#   bash scripts/fuzz.sh --stop                   # stops a --budget run so that every running
-#                                                 # chunk is counted (never SIGSTOP a fuzzer: it
-#                                                 # times the pause as a hang)
+#   bash scripts/fuzz.sh --stop                   # stops a --budget run (a stop file, then SIGINT
+#                                                 # to the fuzzers) so that every running chunk
+#                                                 # is counted (never SIGSTOP a fuzzer: it times
+#                                                 # the pause as a hang)
 #
 # TARGET is a name of fuzz/ without "_fuzz" (tir, telemetry_csv, ...). Targets run one after the
 # other (HOTLAP_FUZZ_JOBS=N: N at a time). Each grows its corpus in fuzz/corpus/TARGET (not in
@@ -48,25 +49,18 @@ if [ "${1:-}" = "--summary" ]; then
       secs[t] / 60, cpu[t] / 60, n[t], found[t], corpus[t] }' fuzz/stats.tsv | sort
   exit 0
 fi
-# --stop: the --budget run's top shell first (killed, so that it starts no other target), then the
-# fuzzers by SIGINT, so that each target's own shell records its chunk as "stopped".
+# --stop: asks a --budget run to stop (a stop file it looks for before each chunk and target),
+# then ends the running fuzzers by SIGINT, so that each chunk is recorded as "stopped", and waits
+# for the run to end.
 if [ "${1:-}" = "--stop" ]; then
-  # Which are top shells is read for all before any is killed: a target's shell whose top is
-  # gone has init as its parent and would look like a top itself.
-  tops=()
-  for pid in $(pgrep -f "scripts/fuzz.sh --budget" || true); do
-    parent=$(ps -o ppid= -p "$pid" | tr -d ' ')
-    if [ -n "$parent" ] && ! ps -o args= -p "$parent" | grep -q "scripts/fuzz.sh"; then
-      tops+=("$pid")
-    fi
-  done
-  if [ "${#tops[@]}" -gt 0 ]; then kill -KILL "${tops[@]}" 2>/dev/null || true; fi
+  mkdir -p "$build"
+  touch "$build/budget.stop"
   pkill -INT -f "_fuzz fuzz/corpus" || true
   for _ in $(seq 60); do
-    if ! pgrep -f "scripts/fuzz.sh --budget" >/dev/null; then break; fi
+    if ! pgrep -f "fuzz.sh --budget" >/dev/null; then break; fi
     sleep 1
   done
-  if pgrep -f "scripts/fuzz.sh --budget" >/dev/null; then
+  if pgrep -f "fuzz.sh --budget" >/dev/null; then
     echo "fuzz: --stop: a budget run is still there after 60 s" >&2
     exit 1
   fi
@@ -81,6 +75,7 @@ chunk_cpu=${HOTLAP_FUZZ_CHUNK_S:-600}
 if [ "${1:-}" = "--budget" ]; then
   budget=1
   shift
+  rm -f "$build/budget.stop"  # a stop asked of an earlier run
 fi
 which=${1:-all}
 seconds=${2:-60}
@@ -167,6 +162,7 @@ run_one() {
   # recorded as it ends, until the goal: a run stopped any way loses at most one chunk.
   while :; do
     local rc=0 limits=(-max_total_time="$seconds") prefix=() cpu_limit=0
+    if [ "$budget" -eq 1 ] && [ -e "$build/budget.stop" ]; then return 0; fi
     if [ "$budget" -eq 1 ]; then
       local done_runs done_cpu
       read -r done_runs done_cpu < <(awk -F'\t' -v t="$t" '$2 == t { r += $4; c += ($7 == "" ? $3 : $7) }
@@ -227,11 +223,17 @@ run_one() {
 }
 
 status=0
+# --stop asked for (--budget): no other target is started.
+stopping() { [ "$budget" -eq 1 ] && [ -e "$build/budget.stop" ]; }
 if [ "$jobs" -le 1 ]; then
-  for t in "${targets[@]}"; do run_one "$t" || status=1; done
+  for t in "${targets[@]}"; do
+    if stopping; then break; fi
+    run_one "$t" || status=1
+  done
 else
   running=0
   for t in "${targets[@]}"; do
+    if stopping; then break; fi
     run_one "$t" &
     running=$((running + 1))
     if [ "$running" -ge "$jobs" ]; then

@@ -54,6 +54,7 @@ struct LapArgs {
   std::optional<double> compare_disc_limit_C;  // --method ocp
   std::optional<double> ocp_step_m;            // --method ocp
   bool single_process = false;                 // --method ocp with a comparison
+  int threads = 0;                             // --method ocp: derivative threads (0: per core)
 };
 
 double Celsius(double kelvin) { return KelvinToCelsius(kelvin); }
@@ -71,6 +72,7 @@ int RunLap(const LapArgs& a) {
     o.run.track_C = a.track_C;
     if (a.ocp_step_m) o.run.step_m = *a.ocp_step_m;
     o.single_process = a.single_process;
+    o.run.threads = a.threads;
     return RunOptimal(o);
   }
   if (a.compare_disc_limit_C) {
@@ -195,6 +197,11 @@ CommandRunner RegisterLapCommand(CLI::App& app) {
   sub->add_option("--ocp-step-m", args->ocp_step_m, "ocp: mesh spacing, m (default 3)");
   sub->add_flag("--single-process", args->single_process,
                 "ocp: solve the limited lap after the free one, not beside it in a second process");
+  sub->add_option("--threads", args->threads,
+                  "ocp: threads evaluating the derivatives (0: one per core, at most 8; the "
+                  "comparison's two solves take half each)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 256));
   sub->add_option("--track", args->track, "Built-in track name or a .yaml/.csv/.xml file")
       ->capture_default_str();
   sub->add_option("--car", args->car, "Built-in car name or path to a car.yaml")

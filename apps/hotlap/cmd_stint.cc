@@ -176,7 +176,7 @@ CommandRunner RegisterStintCommand(CLI::App& app) {
   sub->add_option("--track-temp-C", a->run.track_C, "Track surface temperature")
       ->capture_default_str();
   sub->add_option("--threads", a->run.threads,
-                  "Threads evaluating the derivatives (0: one per core)")
+                  "Threads evaluating the derivatives (0: one per core, at most 8)")
       ->capture_default_str()
       ->check(CLI::Range(0, 256));
   sub->add_option("--max-iterations", a->run.max_iterations, "Ipopt's iteration limit per solve")

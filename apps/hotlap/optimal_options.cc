@@ -59,9 +59,10 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
                     "Solve again on a mesh of half the spacing and report the lap time's change"));
   sub->add_flag("--ipopt-output", a.run.ipopt_output, "Print Ipopt's own iteration log");
   a.stock_car_only.push_back(
-      sub->add_option("--threads", a.run.threads,
-                      "Threads evaluating the derivatives of each solve (0: one per core; the "
-                      "comparison's two solves side by side take half each)")
+      sub->add_option(
+             "--threads", a.run.threads,
+             "Threads evaluating the derivatives of each solve (0: one per core, at most 8; the "
+             "comparison's two solves side by side take half each)")
           ->capture_default_str()
           ->check(CLI::Range(0, 256)));
   a.stock_car_only.push_back(sub->add_option(

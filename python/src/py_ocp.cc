@@ -34,7 +34,9 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
                     double ambient_C, double track_C, int max_iterations,
                     const std::vector<std::pair<std::string, std::string>>& ipopt_options,
                     int threads, const py::object& progress) {
-  if (threads < 0) throw InputError(fmt::format("threads: {} is not 0 or more", threads));
+  if (threads < 0 || threads > 256) {
+    throw InputError(fmt::format("threads: {} is not 0 to 256 (0: one per core)", threads));
+  }
   ocp::OptimalRunOptions o;
   o.threads = threads;
   o.step_m = step_m;
@@ -104,7 +106,9 @@ py::dict Stint(const vehicle::Car& car, const track::Track& track, int laps, dou
                double coarse_step_m, const std::string& thermal_start, double ambient_C,
                double track_C, int max_iterations, int threads,
                std::optional<std::string> checkpoint_dir, int checkpoint_every) {
-  if (threads < 0) throw InputError(fmt::format("threads: {} is not 0 or more", threads));
+  if (threads < 0 || threads > 256) {
+    throw InputError(fmt::format("threads: {} is not 0 to 256 (0: one per core)", threads));
+  }
   ocp::OptimalRunOptions run;
   run.threads = threads;
   run.step_m = step_m;

@@ -286,6 +286,30 @@ TEST(CarOverride, UnknownKeySaysWhichPartAndSuggests) {
   EXPECT_TRUE(Contains(m, "field 'tyre_forces.rr.rolling_radius_m': value 2 is out of range"));
 }
 
+// The optional numbers are found by reading the car with the overrides of the keys its files
+// hold, so a car that reads only with those (here a mass out of range, mended by its override)
+// still takes an optional number; a car that does not read at all says why.
+TEST(CarOverride, OptionalNumberOfACarThatReadsOnlyWithItsOverrides) {
+  const test::TempDir dir;
+  fs::copy(test::Gen7Dir(), dir.path() / "gen7", fs::copy_options::recursive);
+  const fs::path car = dir.path() / "gen7" / "car.yaml";
+  std::string text = test::ReadTextFile(car);
+  const size_t at = text.find("mass_kg:");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, text.find('\n', at) - at, "mass_kg: 50");
+  test::WriteTextFile(car, text);
+  const Car mended =
+      LoadCar(car, {{"chassis.mass_kg", 1500}, {"tyre_forces.rr.rolling_radius_m", 0.3677}});
+  EXPECT_EQ(mended.vehicle->corner(Corner::kRearRight).rolling_radius, 0.3677);
+  EXPECT_EQ(mended.vehicle->chassis.mass, 1500.0);
+  const std::string m = InputErrorOf([&] {
+    LoadCar(car, {{"tyre_forces.rr.rolling_radius_m", 0.3677}});
+  });
+  EXPECT_TRUE(Contains(m, "override 'tyre_forces.rr.rolling_radius_m=0.3677': "));
+  EXPECT_TRUE(Contains(m, "does not read"));
+  EXPECT_TRUE(Contains(m, "value 50 is out of range"));
+}
+
 TEST(CarOverride, OtherRefusalsNameTheOverride) {
   std::string m = LoadError({{"tyre_forces.fl.file", 1}});
   EXPECT_TRUE(Contains(m,

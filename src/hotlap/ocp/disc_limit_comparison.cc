@@ -90,12 +90,15 @@ DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track
   // from it against 66 after 91 on the 15 m mesh (46 s in all), the same lap. Coarse to fine,
   // the two solves are independent: the limited one runs in a child process beside the free one.
   const bool coarse_to_fine = options.coarse_step_m > options.step_m;
+  if (coarse_to_fine) {
+    // The two solves share the derivative threads when side by side; so they do one after the
+    // other too (--single-process), so that both ways give the same laps bit for bit.
+    free_options.derivative_threads = limited_options.derivative_threads =
+        std::max(1, options.derivative_threads / 2);
+  }
   std::optional<ChildSolve> child;
   if (coarse_to_fine && options.second_process) {
     if (log) log(fmt::format("{}: solving in a second process", limited_label));
-    // The two solves share the derivative threads.
-    free_options.derivative_threads = limited_options.derivative_threads =
-        std::max(1, options.derivative_threads / 2);
     child.emplace([&] {
       const SolvedLap l =
           SolveLap(car, track, limited_options, limited_label, nullptr, progress, {}, &warm_up);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <exception>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 #include <unordered_map>
 
@@ -121,21 +122,23 @@ void ElementNlp::AccumulateInstances(double* out, size_t size, const Accumulate&
   // Part 0 on this thread into `out`, the others into buffers of their own, added in order.
   std::vector<std::vector<double>> buffers(parts - 1, std::vector<double>(size, 0.0));
   std::vector<std::exception_ptr> errors(parts);
+  const auto run_part = [&](size_t p) {
+    try {
+      run(p, p == 0 ? out : buffers[p - 1].data());
+    } catch (...) {
+      errors[p] = std::current_exception();
+    }
+  };
   std::vector<std::thread> workers;
-  for (size_t p = 1; p < parts; ++p) {
-    workers.emplace_back([&, p] {
-      try {
-        run(p, buffers[p - 1].data());
-      } catch (...) {
-        errors[p] = std::current_exception();
-      }
-    });
-  }
+  size_t started = 1;
   try {
-    run(0, out);
-  } catch (...) {
-    errors[0] = std::current_exception();
+    for (; started < parts; ++started) workers.emplace_back(run_part, started);
+  } catch (const std::system_error&) {
+    // No more threads to be had (a process or system limit): this thread does the rest, into
+    // the same buffers, so the values are the same.
   }
+  run_part(0);
+  for (size_t p = started; p < parts; ++p) run_part(p);
   for (std::thread& w : workers) w.join();
   for (const std::exception_ptr& e : errors) {
     if (e) std::rethrow_exception(e);

@@ -23,9 +23,11 @@ OptimalLapOptions MakeOptimalLapOptions(const OptimalRunOptions& a) {
   for (const auto& kv : a.ipopt_options) o.ipopt.extra.push_back(kv);
   o.ipopt.print_level = a.ipopt_output ? 5 : 0;
   o.second_process = a.second_process;
-  o.derivative_threads = a.threads > 0
-                             ? a.threads
-                             : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  // One per core, at most 8: each evaluation splits about 10-50 ms of work, and every thread adds
+  // a buffer of the whole Jacobian or Hessian to be summed.
+  o.derivative_threads =
+      a.threads > 0 ? a.threads
+                    : std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, 8);
   return o;
 }
 

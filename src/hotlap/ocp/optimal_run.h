@@ -38,7 +38,7 @@ struct OptimalRunOptions {
   bool ipopt_output = false;   ///< Ipopt's own iteration log
   bool second_process = true;  ///< the comparison's limited lap beside the free one
   /// Threads evaluating each solve's derivatives (OptimalLapOptions::derivative_threads); 0: one
-  /// per core of the machine (the command line's default).
+  /// per core of the machine, at most 8 (the command line's default).
   int threads = 1;
   std::vector<std::pair<std::string, std::string>> ipopt_options;  ///< passed to Ipopt as they are
 };

@@ -77,21 +77,25 @@ std::vector<Target> CarTargets(const fs::path& path) {
 }
 
 bool SameFile(const fs::path& a, const fs::path& b) {
-  std::error_code ec;
-  return fs::weakly_canonical(a, ec) == fs::weakly_canonical(b, ec);
+  std::error_code ea, eb;
+  const fs::path ca = fs::weakly_canonical(a, ea), cb = fs::weakly_canonical(b, eb);
+  return !ea && !eb && ca == cb;
 }
 
 // The optional numbers the car's readers take when present and its files leave out (such as
 // tyre_forces.<c>.rolling_radius_m of a car whose force models are .tir files): found by reading
 // the car once with a YamlOptionalNumberProbe, so they are exactly what the readers accept.
-// `targets` (CarTargets) tell which corner reaches which tyre or brake file.
-std::vector<Target> AbsentOptionalTargets(const fs::path& path,
-                                          const std::vector<Target>& targets) {
+// `targets` (CarTargets) tell which corner reaches which tyre or brake file. The car is read
+// with `in_files`, overrides of keys the files hold (a car may read only with them); if that
+// fails, `failure` says why (what the probe saw before still counts).
+std::vector<Target> AbsentOptionalTargets(const fs::path& path, const std::vector<Target>& targets,
+                                          const std::vector<CarOverride>& in_files = {},
+                                          std::string* failure = nullptr) {
   YamlOptionalNumberProbe probe;
   try {
-    (void)LoadCar(path);
-  } catch (const std::exception&) {
-    // What the probe saw before the failure still counts; LoadCar reports the failure itself.
+    (void)LoadCar(path, in_files);
+  } catch (const std::exception& e) {
+    if (failure) *failure = e.what();
   }
   std::vector<Target> out;
   const auto add = [&](const std::string& key, const fs::path& file) {
@@ -100,6 +104,8 @@ std::vector<Target> AbsentOptionalTargets(const fs::path& path,
     }
   };
   for (const YamlOptionalNumberProbe::Field& f : probe.absent()) {
+    // A field inside a list ("key[2].x") has no dotted key to override.
+    if (f.field.find('[') != std::string::npos) continue;
     if (SameFile(f.file, path)) {
       add(f.field, path);
       continue;
@@ -233,6 +239,7 @@ CarOverridePlan PlanCarOverrides(const fs::path& path, const std::vector<CarOver
   }
   std::vector<Target> targets = CarTargets(path);
   bool probed = false;
+  std::string probe_failure;
   for (const CarOverride& o : overrides) {
     const std::vector<std::string> parts = SplitKey(o.key);
     if (std::any_of(parts.begin(), parts.end(), [](const std::string& p) { return p.empty(); })) {
@@ -252,10 +259,26 @@ CarOverridePlan PlanCarOverrides(const fs::path& path, const std::vector<CarOver
     if (it == targets.end() && !probed) {
       // Not in the files: perhaps an optional number they leave out.
       probed = true;
-      const std::vector<Target> optional = AbsentOptionalTargets(path, targets);
+      // Read with the overrides of the files' own keys (no probe then: no recursion).
+      std::vector<CarOverride> in_files;
+      for (const CarOverride& k : overrides) {
+        if (std::any_of(targets.begin(), targets.end(),
+                        [&](const Target& t) { return t.key == k.key && t.number; })) {
+          in_files.push_back(k);
+        }
+      }
+      const std::vector<Target> optional =
+          AbsentOptionalTargets(path, targets, in_files, &probe_failure);
       targets.insert(targets.end(), optional.begin(), optional.end());
       it = std::find_if(targets.begin(), targets.end(),
                         [&](const Target& t) { return t.key == o.key; });
+    }
+    if (it == targets.end() && !probe_failure.empty()) {
+      // The optional numbers could not all be found: the car does not read as its files are.
+      throw InputError(fmt::format(
+          "{}: '{}' is not in the car's files, and the car does not read (with the overrides of "
+          "keys they hold) to tell whether it is an optional number: {}",
+          Label(o), o.key, probe_failure));
     }
     if (it == targets.end()) FailUnknown(o, parts, targets, path);
     if (!it->number) {
