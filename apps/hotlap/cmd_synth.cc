@@ -1,7 +1,7 @@
 // `hotlap synth`: a synthetic "measured" log from the lap simulation with chosen true parameters,
 // sensor lag and noise (docs/fitting.md).
 
-#include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -18,6 +18,7 @@
 #include "hotlap/observe/observer_config.h"
 #include "hotlap/sim/road.h"
 #include "hotlap/sim/synth.h"
+#include "hotlap/sim/synth_json.h"
 #include "hotlap/sim/synth_params.h"
 #include "hotlap/track/track_io.h"
 
@@ -87,44 +88,17 @@ int RunSynth(const SynthArgs& a) {
         std::sqrt(q.disc_temp_K2_per_s), std::sqrt(q.calliper_temp_K2_per_s),
         std::sqrt(q.wear_mm2_per_s));
   }
-  nlohmann::json corners;
+  const std::array<sim::SynthCornerSummary, 4> corners = sim::SummarizeSynthCorners(log);
   for (Corner c : kAllCorners) {
-    const sim::CornerHistory& h = log.truth.corners[CornerIndex(c)];
-    const double tread = *std::max_element(h.tread_temp.begin(), h.tread_temp.end());
-    const double disc = *std::max_element(h.disc_temp.begin(), h.disc_temp.end());
+    const sim::SynthCornerSummary& s = corners[CornerIndex(c)];
     fmt::print("{}: peak tread {:.1f} degC, peak disc {:.1f} degC, wear {:.5f} mm\n", CornerName(c),
-               KelvinToCelsius(tread), KelvinToCelsius(disc), h.wear.back());
-    corners[std::string(CornerName(c))] = {
-        {"peak_tread_temp_C", RoundSignificant(KelvinToCelsius(tread))},
-        {"peak_disc_temp_C", RoundSignificant(KelvinToCelsius(disc))},
-        {"wear_mm", RoundSignificant(h.wear.back())}};
+               KelvinToCelsius(s.peak_tread_temp_K), KelvinToCelsius(s.peak_disc_temp_K),
+               s.wear_mm);
   }
   fmt::print("wrote {}\n", a.out);
   if (!a.json.empty()) {
-    nlohmann::json summary = {{"command", "synth"},
-                              {"car", car.name},
-                              {"overrides", vehicle::OverridesJson(car.overrides)},
-                              {"params", a.params},
-                              {"track", track.name()},
-                              {"out", a.out},
-                              {"laps", a.laps},
-                              {"samples", time.size()},
-                              {"duration_s", RoundSignificant(time.back() - time.front())},
-                              {"lap_time_s", RoundSignificant(log.lap_time_s)},
-                              {"rate_hz", a.rate_hz},
-                              {"noise_C", a.noise_C},
-                              {"lag_s", a.lag_s},
-                              {"seed", a.seed},
-                              {"corners", corners}};
-    if (o.process_noise) {
-      const sim::SynthProcessNoise& q = *o.process_noise;
-      summary["process_noise"] = {{"file", process_noise_file},
-                                  {"tread_temp_K2_per_s", q.tread_temp_K2_per_s},
-                                  {"carcass_temp_K2_per_s", q.carcass_temp_K2_per_s},
-                                  {"wear_mm2_per_s", q.wear_mm2_per_s},
-                                  {"disc_temp_K2_per_s", q.disc_temp_K2_per_s},
-                                  {"calliper_temp_K2_per_s", q.calliper_temp_K2_per_s}};
-    }
+    const nlohmann::json summary =
+        sim::SynthJson(log, o, car, {track.name(), a.params, a.out, process_noise_file});
     WriteJsonFile(a.json, summary);
     fmt::print("wrote {}\n", a.json);
   }
