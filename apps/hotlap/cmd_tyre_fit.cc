@@ -18,6 +18,7 @@
 #include "hotlap/common/units.h"
 #include "hotlap/ident/mf_fit.h"
 #include "hotlap/ident/rig_data.h"
+#include "hotlap/ident/tyre_fit_json.h"
 #include "hotlap/ident/unitire_fit.h"
 #include "hotlap/tyre/magic_formula.h"
 #include "hotlap/tyre/tir_file.h"
@@ -38,19 +39,6 @@ struct FitArgs {
   std::string base;
   double temp_tolerance_K = 1.5;
 };
-
-nlohmann::json MetricsJson(const ident::UniTireTempMetrics& m) {
-  // Round to 1e-9 degC first so that 0 degC is written as 0, not -1.7e-13.
-  const double temp_C = std::round(KelvinToCelsius(m.temp) * 1e9) / 1e9;
-  nlohmann::json j = {{"temp_C", RoundSignificant(temp_C + 0.0, 6)},
-                      {"samples", m.samples},
-                      {"fy_rms_N", RoundSignificant(m.fy_rms_N)},
-                      {"fy_peak_N", RoundSignificant(m.fy_peak_N)},
-                      {"fy_rms_rel_peak", RoundSignificant(m.fy_rms_rel_peak)},
-                      {"mz_rms_Nm", RoundSignificant(m.mz_rms_Nm)}};
-  if (m.fx_rms_N) j["fx_rms_N"] = RoundSignificant(*m.fx_rms_N);
-  return j;
-}
 
 int RunFitUniTire(const FitArgs& a) {
   const std::vector<ident::RigSample> samples = ident::ReadRigCsv(a.data);
@@ -83,41 +71,26 @@ int RunFitUniTire(const FitArgs& a) {
                       : fmt::format("held (not fitted): initial guess from {}", data);
       });
 
-  nlohmann::json fitted = nlohmann::json::array();
-  nlohmann::json predicted = nlohmann::json::array();
   fmt::print("{:>8} {:>8} {:>8} {:>11} {:>11} {:>11} {:>11}\n", "temp C", "role", "samples",
              "Fy rms N", "Fy peak N", "rms/peak", "Mz rms N m");
   for (const ident::UniTireTempMetrics& m : fit.metrics) {
-    const double temp_C = std::round(KelvinToCelsius(m.temp) * 1e9) / 1e9 + 0.0;
-    const bool is_predict =
-        std::any_of(a.predict_temps_C.begin(), a.predict_temps_C.end(),
-                    [&](double t) { return std::abs(t - temp_C) <= a.temp_tolerance_K; });
+    const bool is_predict = ident::IsPredictTemp(m, a.predict_temps_C, a.temp_tolerance_K);
     const char* role = m.fitted ? "fit" : (is_predict ? "predict" : "other");
-    fmt::print("{:>8.1f} {:>8} {:>8} {:>11.2f} {:>11.1f} {:>10.2f}% {:>11.3f}\n", temp_C, role,
-               m.samples, m.fy_rms_N, m.fy_peak_N, 100.0 * m.fy_rms_rel_peak, m.mz_rms_Nm);
-    if (m.fitted) fitted.push_back(MetricsJson(m));
-    if (is_predict) predicted.push_back(MetricsJson(m));
+    fmt::print("{:>8.1f} {:>8} {:>8} {:>11.2f} {:>11.1f} {:>10.2f}% {:>11.3f}\n",
+               ident::MetricsTempC(m), role, m.samples, m.fy_rms_N, m.fy_peak_N,
+               100.0 * m.fy_rms_rel_peak, m.mz_rms_Nm);
   }
   fmt::print("wrote {}\n", a.out);
   if (!a.json.empty()) {
-    nlohmann::json params;
-    for (size_t i = 0; i < fit.fitted_fields.size(); ++i) params.push_back(fit.fitted_fields[i]);
-    WriteJsonFile(a.json, {{"command", "tyre fit"},
-                           {"model", "unitire"},
-                           {"data", a.data},
-                           {"out", a.out},
-                           {"converged", fit.converged},
-                           {"iterations", fit.iterations},
-                           {"fitted_parameters", params},
-                           {"fit", fitted},
-                           {"predict", predicted}});
+    WriteJsonFile(a.json,
+                  ident::UniTireFitJson(fit, a.data, a.out, a.predict_temps_C, a.temp_tolerance_K));
     fmt::print("wrote {}\n", a.json);
   }
   return fit.converged ? 0 : 3;
 }
 
-// Prints the plausibility check and returns it as the JSON's `plausibility`.
-nlohmann::json PrintPlausibility(const ident::MagicFormulaPlausibility& c) {
+// Prints the plausibility check.
+void PrintPlausibility(const ident::MagicFormulaPlausibility& c) {
   fmt::print("plausibility over Fz {:.0f}-{:.0f} N, |alpha| <= {:.3g} deg{}: {}\n", c.fz_min_N,
              c.fz_max_N, c.slip_angle_max_rad * 180.0 / kPi,
              c.slip_ratio_max > 0.0 ? fmt::format(", |kappa| <= {:.3g}", c.slip_ratio_max) : "",
@@ -127,16 +100,6 @@ nlohmann::json PrintPlausibility(const ident::MagicFormulaPlausibility& c) {
   if (c.slip_angle_max_rad > 0.0 && c.passed) {
     fmt::print("  peak |Fy|/Fz {:.3f}-{:.3f}\n", c.peak_mu_y_min, c.peak_mu_y_max);
   }
-  return {{"passed", c.passed},
-          {"fz_min_N", RoundSignificant(c.fz_min_N)},
-          {"fz_max_N", RoundSignificant(c.fz_max_N)},
-          {"slip_angle_max_rad", RoundSignificant(c.slip_angle_max_rad)},
-          {"slip_ratio_max", RoundSignificant(c.slip_ratio_max)},
-          {"lateral_sign", c.lateral_sign},
-          {"peak_mu_y_min", RoundSignificant(c.peak_mu_y_min)},
-          {"peak_mu_y_max", RoundSignificant(c.peak_mu_y_max)},
-          {"failures", c.failures},
-          {"at_bounds", c.at_bounds}};
 }
 
 int RunFitMagicFormula(const FitArgs& a) {
@@ -169,28 +132,19 @@ int RunFitMagicFormula(const FitArgs& a) {
     }
     return std::nan("");
   };
-  nlohmann::json coefficients = nlohmann::json::object();
   fmt::print("{:>8} {:>14} {:>14}\n", "coef", "start", "fitted");
   for (const std::string& name : fit.fitted_coefficients) {
     const double start = value_of(fit.initial_guess, name);
     const double value = value_of(fit.params, name);
     fmt::print("{:>8} {:>14.6g} {:>14.6g}\n", name, start, value);
-    coefficients[name] = RoundSignificant(value);
   }
-  nlohmann::json metrics = nlohmann::json::array();
   fmt::print("{:>8} {:>10} {:>8} {:>10} {:>10} {:>9}\n", "channel", "Fz N", "samples", "rms N",
              "peak N", "rms/peak");
   for (const ident::MagicFormulaFitMetrics& m : fit.metrics) {
     fmt::print("{:>8} {:>10.0f} {:>8} {:>10.2f} {:>10.1f} {:>8.2f}%\n", m.channel, m.fz_N,
                m.samples, m.rms_N, m.peak_N, 100.0 * m.rms_rel_peak);
-    metrics.push_back({{"channel", m.channel},
-                       {"fz_N", RoundSignificant(m.fz_N)},
-                       {"samples", m.samples},
-                       {"rms_N", RoundSignificant(m.rms_N)},
-                       {"peak_N", RoundSignificant(m.peak_N)},
-                       {"rms_rel_peak", RoundSignificant(m.rms_rel_peak)}});
   }
-  const nlohmann::json plausibility = PrintPlausibility(fit.plausibility);
+  PrintPlausibility(fit.plausibility);
   tyre::WriteTirFile(
       a.out, fit.params,
       fmt::format("pure-slip coefficients fitted by hotlap {} tyre fit to {}\nfree: {}",
@@ -198,16 +152,7 @@ int RunFitMagicFormula(const FitArgs& a) {
                   fmt::join(fit.fitted_coefficients, " ")));
   fmt::print("wrote {}\n", a.out);
   if (!a.json.empty()) {
-    WriteJsonFile(a.json, {{"command", "tyre fit"},
-                           {"model", "mf"},
-                           {"data", a.data},
-                           {"out", a.out},
-                           {"converged", fit.converged},
-                           {"iterations", fit.iterations},
-                           {"coefficients", coefficients},
-                           {"metrics", metrics},
-                           {"plausibility", plausibility},
-                           {"warnings", fit.warnings}});
+    WriteJsonFile(a.json, ident::MagicFormulaFitJson(fit, a.data, a.out));
     fmt::print("wrote {}\n", a.json);
   }
   if (!fit.plausibility.passed) {
