@@ -19,6 +19,7 @@
 #include "hotlap/common/output_folder.h"
 #include "hotlap/common/units.h"
 #include "hotlap/tyre/tir_file.h"
+#include "hotlap/tyre/tyre_eval_json.h"
 #include "hotlap/tyre/tyre_force_model.h"
 #include "hotlap/tyre/tyre_force_params_io.h"
 #include "hotlap/tyre/tyre_grid.h"
@@ -48,14 +49,6 @@ struct EvalArgs {
   std::string compound;
   double wear_mm = 0.0;
 };
-
-nlohmann::json ForcesJson(const tyre::TyreForces<double>& f) {
-  return {{"fx_N", RoundSignificant(f.fx)},
-          {"fy_N", RoundSignificant(f.fy)},
-          {"mz_Nm", RoundSignificant(f.mz)},
-          {"mx_Nm", RoundSignificant(f.mx)},
-          {"my_Nm", RoundSignificant(f.my)}};
-}
 
 // The grid's axes from the --sweep texts, the library's messages named as the options.
 std::vector<tyre::GridAxis> ParseSweeps(const std::vector<std::string>& texts) {
@@ -95,13 +88,7 @@ int RunEval(const EvalArgs& a) {
       compound ? compound->GripFactor(tyre::OperatingPointFrom(a.values).tread_temp, a.wear_mm)
                : 1.0;
 
-  nlohmann::json summary = {{"command", "tyre eval"},
-                            {"model", model.kind()},
-                            {"params", a.params},
-                            {"grip_factor", RoundSignificant(grip)}};
-  nlohmann::json in;
-  for (size_t i = 0; i < inputs.size(); ++i) in[inputs[i].column] = a.values[i];
-  summary["inputs"] = in;
+  nlohmann::json summary = tyre::TyreEvalJson(model.kind(), a.params, grip, a.values);
 
   if (a.sweeps.empty()) {
     const tyre::TyreForces<double> f = tyre::EvaluateTyrePoint(model, grip_of, a.wear_mm, a.values);
@@ -114,7 +101,7 @@ int RunEval(const EvalArgs& a) {
         "  Fx {:10.2f} N    Fy {:10.2f} N    Mz {:9.2f} N m    Mx {:9.2f} N m    My {:9.2f} "
         "N m\n",
         f.fx, f.fy, f.mz, f.mx, f.my);
-    summary.update(ForcesJson(f));
+    summary.update(tyre::TyreForcesJson(f));
   } else {
     const tyre::TyreGrid g =
         tyre::EvaluateTyreGrid(model, grip_of, a.wear_mm, a.values, ParseSweeps(a.sweeps));
@@ -127,11 +114,7 @@ int RunEval(const EvalArgs& a) {
         "hotlap tyre eval: {} model '{}': {} points, peak |Fx| {:.1f} N, |Fy| {:.1f} N, "
         "|Mz| {:.1f} N m\nwrote {}\n",
         model.kind(), model.name, g.points, g.peak_abs_fx, g.peak_abs_fy, g.peak_abs_mz, a.out);
-    summary["out"] = a.out;
-    summary["points"] = g.points;
-    summary["peak_abs_fx_N"] = RoundSignificant(g.peak_abs_fx);
-    summary["peak_abs_fy_N"] = RoundSignificant(g.peak_abs_fy);
-    summary["peak_abs_mz_Nm"] = RoundSignificant(g.peak_abs_mz);
+    tyre::AddTyreGridJson(summary, g, a.out);
   }
   if (!a.json.empty()) {
     WriteJsonFile(a.json, summary);
