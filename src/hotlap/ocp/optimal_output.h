@@ -1,13 +1,12 @@
 #pragma once
 /// @file
-/// What the optimal lap reports: its channels as CSV columns in the shared format, its figures,
-/// and a report that overlays one or more runs (e.g. without and with the disc limit).
+/// What the optimal lap reports: its channels as CSV columns in the shared format and its figures
+/// (the report's charts: optimal_lap_charts.h).
 
 #include <string>
 #include <vector>
 
 #include "hotlap/ocp/optimal_lap.h"
-#include "hotlap/report/html_report.h"
 #include "hotlap/sim/replay_io.h"
 
 namespace hotlap::ocp {
@@ -38,11 +37,5 @@ struct OptimalLapFigures {
 };
 /// `wheel_power` (W, the drive's maximum) sets the 2% threshold of brake_energy_under_drive_J.
 OptimalLapFigures CalcOptimalLapFigures(const OptimalLapRun& run, double wheel_power);
-
-/// Adds the map and the channel charts of `runs` (labelled `labels`, drawn solid then dashed) to
-/// `page`: speed, drive power and braking force, offset, steer, front and rear tread and disc
-/// temperatures, wear, against centre-line distance.
-void AddOptimalLapCharts(report::HtmlReport& page, const std::vector<const OptimalLapRun*>& runs,
-                         const std::vector<std::string>& labels, const track::Track& track);
 
 }  // namespace hotlap::ocp

@@ -8,6 +8,7 @@
 
 #include "hotlap/common/csv.h"
 #include "hotlap/common/units.h"
+#include "hotlap/ocp/optimal_lap_charts.h"
 #include "hotlap/report/html_report.h"
 
 namespace hotlap::ocp {
