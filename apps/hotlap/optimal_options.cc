@@ -39,6 +39,13 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
           ->capture_default_str()
           ->check(CLI::IsMember({"exact", "convex-elements"})));
   a.stock_car_only.push_back(
+      sub->add_option("--controls", a.controls,
+                      "pedal (one signed pedal: drive or brake, never both) or independent (the "
+                      "old drive power and brake force, which the optimiser may apply together; "
+                      "for comparison, docs/optimal-control.md)")
+          ->capture_default_str()
+          ->check(CLI::IsMember({"pedal", "independent"})));
+  a.stock_car_only.push_back(
       sub->add_option("--thermal-start", a.run.thermal_start,
                       "Thermal states at the start: racing (QSS laps until no carcass rises over "
                       "15 degC a lap), "

@@ -64,6 +64,7 @@ void CheckModelOptions(const OptimalArgs& a, bool f1) {
 ocp::OptimalRunOptions RunOptions(const OptimalArgs& a) {
   ocp::OptimalRunOptions o = a.run;
   o.convex_element_hessians = a.hessian == "convex-elements";
+  o.independent_drive_and_brake = a.controls == "independent";
   o.second_process = !a.single_process;
   for (const std::string& kv : a.ipopt_options) {
     const size_t eq = kv.find('=');  // the option's check guarantees one

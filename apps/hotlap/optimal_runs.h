@@ -26,7 +26,8 @@ struct OptimalArgs {
     o.threads = 0;  // --threads: one per core
     return o;
   }();
-  std::string hessian = "exact";  ///< exact, or convex-elements
+  std::string hessian = "exact";   ///< exact, or convex-elements
+  std::string controls = "pedal";  ///< pedal, or independent (the old two controls)
   bool single_process = false;
   bool mesh_check = false;
   std::string warm_start;                  ///< a lap saved with --save-solution to start from

@@ -54,6 +54,9 @@ TEST(OptimalRunsJson, OneSolveAndTheComparison) {
   EXPECT_EQ(j["wall_time_s"], 12.3456789);
   EXPECT_EQ(j["mesh_check_delta_s"], 0.0123);
   EXPECT_EQ(j["lap_time_s"], 30.0);
+  EXPECT_EQ(j["controls"], "pedal");
+  o.independent_drive_and_brake = true;
+  EXPECT_EQ(OptimalRunsJson(one, o, "darlington", car, 1.0)["controls"], "independent");
 
   OptimalRuns two;
   two.laps = {testing::MakeExampleSolvedLap("no limit", 30.0),

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "hotlap/common/units.h"
+#include "hotlap/track/track_io.h"
+#include "hotlap/vehicle/car.h"
 #include "test_util.h"
 
 namespace hotlap::ocp {
@@ -25,6 +27,8 @@ TEST(MakeOptimalLapOptions, TakesTheRunsOptionsInSolverUnits) {
   o.ipopt_output = true;
   o.second_process = false;
   o.ipopt_options = {{"mumps_pivot_order", "5"}};
+  o.independent_drive_and_brake = true;
+  o.threads = 3;
   const OptimalLapOptions l = MakeOptimalLapOptions(o);
   EXPECT_EQ(l.step_m, 30.0);
   EXPECT_EQ(l.coarse_step_m, 0.0);
@@ -41,7 +45,35 @@ TEST(MakeOptimalLapOptions, TakesTheRunsOptionsInSolverUnits) {
   ASSERT_EQ(l.ipopt.extra.size(), 1u);
   EXPECT_EQ(l.ipopt.extra[0].second, "5");
   EXPECT_FALSE(l.second_process);
+  EXPECT_TRUE(l.independent_drive_and_brake);
+  EXPECT_EQ(l.derivative_threads, 3);
   EXPECT_EQ(MakeOptimalLapOptions({}).ipopt.print_level, 0);
+  EXPECT_FALSE(MakeOptimalLapOptions({}).independent_drive_and_brake);
+  EXPECT_EQ(MakeOptimalLapOptions({}).derivative_threads, 1);  // the library's default
+  o.threads = 0;                                               // one per core, at most 8
+  EXPECT_GE(MakeOptimalLapOptions(o).derivative_threads, 1);
+  EXPECT_LE(MakeOptimalLapOptions(o).derivative_threads, 8);
+}
+
+// The old two controls let the optimiser brake against the engine (a faster lap on paper, with
+// much of the brake work done under drive); the one pedal does not (docs/optimal-control.md).
+TEST(SolveOptimalRuns, TheOldTwoControlsBrakeAgainstTheEngineAndThePedalDoesNot) {
+  const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
+  const track::Track track = track::LoadTrack("darlington");
+  OptimalRunOptions o;
+  o.step_m = 30.0;
+  o.coarse_step_m = 0.0;
+  const OptimalRuns pedal = SolveOptimalRuns(car, track, o);
+  o.independent_drive_and_brake = true;
+  const OptimalRuns two = SolveOptimalRuns(car, track, o);
+  ASSERT_TRUE(pedal.laps[0].run.solution.solve.ok());
+  ASSERT_TRUE(two.laps[0].run.solution.solve.ok());
+  const OptimalLapFigures& p = pedal.laps[0].figures;
+  const OptimalLapFigures& t = two.laps[0].figures;
+  EXPECT_LT(p.brake_energy_under_drive_J, 0.005 * p.brake_energy_J);
+  EXPECT_GT(t.brake_energy_under_drive_J, 0.2 * t.brake_energy_J);
+  EXPECT_LT(t.lap_time_s, p.lap_time_s);  // what braking against the engine buys on paper
+  for (double pedal_value : two.laps[0].run.solution.pedal) EXPECT_EQ(pedal_value, 0.0);
 }
 
 TEST(MakeOptimalLapOptions, AnUnknownThermalStartIsAnInputError) {

@@ -125,6 +125,7 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
   lap.convex_element_hessians = options.convex_element_hessians;
   lap.derivative_threads = options.derivative_threads;
   lap.all_brake_states = options.all_brake_states;
+  lap.independent_drive_and_brake = options.independent_drive_and_brake;
   if (options.steer_smoothing_weight >= 0.0) {
     lap.steer_smoothing_weight = options.steer_smoothing_weight;
   }

@@ -87,6 +87,9 @@ struct OptimalLapOptions {
   /// LapProblemOptions::all_brake_states (false: the brakes that feed nothing back are
   /// integrated after the solve instead of solved for).
   bool all_brake_states = false;
+  /// LapProblemOptions::independent_drive_and_brake: the old two controls (drive power and brake
+  /// force, nothing stopping both at once) instead of the one pedal, for comparison.
+  bool independent_drive_and_brake = false;
   /// Start the solve here instead of the QSS guess: another solution's SolveResult::x on the same
   /// track, car and mesh (LapProblemOptions::start_point).
   std::vector<double> start_point;

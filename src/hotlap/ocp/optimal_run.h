@@ -29,7 +29,9 @@ struct OptimalRunOptions {
   double steer_smoothing = -1.0;         ///< the steer's smoothness weight (< 0: the library's)
   double pedal_smoothing = -1.0;         ///< the pedal's
   bool convex_element_hessians = false;  ///< each element's negative curvature clipped
-  std::optional<double> disc_limit_C;    ///< one solve with this front-disc limit, degC
+  /// The old two controls (drive power and brake force) instead of the one pedal.
+  bool independent_drive_and_brake = false;
+  std::optional<double> disc_limit_C;          ///< one solve with this front-disc limit, degC
   std::optional<double> compare_disc_limit_C;  ///< two solves: without, and with this limit
   std::string thermal_start = "racing";        ///< a name of ParseThermalStart
   double ambient_C = 25.0;
