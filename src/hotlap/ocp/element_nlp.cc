@@ -130,6 +130,7 @@ void ElementNlp::AccumulateInstances(double* out, size_t size, const Accumulate&
     }
   };
   std::vector<std::thread> workers;
+  workers.reserve(parts - 1);  // no reallocation while threads are being added
   size_t started = 1;
   try {
     for (; started < parts; ++started) workers.emplace_back(run_part, started);
