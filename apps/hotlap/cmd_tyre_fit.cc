@@ -125,12 +125,9 @@ int RunFitMagicFormula(const FitArgs& a) {
       fit.converged ? "converged" : "NOT converged", fit.iterations, fit.fitted_coefficients.size(),
       fit.lateral_samples, fit.longitudinal_samples);
 
-  const auto& table = tyre::MagicFormulaParamTable();
-  const auto value_of = [&](const tyre::MagicFormulaParams<double>& p, const std::string& name) {
-    for (const tyre::MagicFormulaParamInfo& info : table) {
-      if (info.name == name) return p.*info.field;
-    }
-    return std::nan("");
+  const auto value_of = [](const tyre::MagicFormulaParams<double>& p, const std::string& name) {
+    const tyre::MagicFormulaParamInfo* info = tyre::FindMagicFormulaParam(name);
+    return info ? p.*info->field : std::nan("");
   };
   fmt::print("{:>8} {:>14} {:>14}\n", "coef", "start", "fitted");
   for (const std::string& name : fit.fitted_coefficients) {

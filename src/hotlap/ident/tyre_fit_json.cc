@@ -69,8 +69,8 @@ nlohmann::json MagicFormulaFitJson(const MagicFormulaFitResult& fit, const std::
                                    const std::string& out) {
   nlohmann::json coefficients = nlohmann::json::object();
   for (const std::string& name : fit.fitted_coefficients) {
-    for (const tyre::MagicFormulaParamInfo& info : tyre::MagicFormulaParamTable()) {
-      if (info.name == name) coefficients[name] = RoundSignificant(fit.params.*info.field);
+    if (const tyre::MagicFormulaParamInfo* info = tyre::FindMagicFormulaParam(name)) {
+      coefficients[name] = RoundSignificant(fit.params.*info->field);
     }
   }
   nlohmann::json metrics = nlohmann::json::array();

@@ -27,25 +27,53 @@ namespace hotlap::tyre {
 
 /// Calls X(NAME) for every coefficient of MagicFormulaParams, in file order (cheap to compile,
 /// unlike a 200-element std::tie).
-#define HOTLAP_MAGIC_FORMULA_FIELDS(X) \
-  X(LONGVL) X(VXLOW) X(UNLOADED_RADIUS) X(WIDTH) X(ASPECT_RATIO) X(RIM_RADIUS) X(RIM_WIDTH) \
-  X(INFLPRES) X(NOMPRES) X(FNOMIN) X(VERTICAL_STIFFNESS) X(BREFF) X(DREFF) X(FREFF) X(Q_RE0) \
-  X(Q_V1) X(Q_V2) X(Q_FZ2) X(Q_FCX) X(Q_FCY) X(PFZ1) X(PRESMIN) X(PRESMAX) X(FZMIN) X(FZMAX) \
-  X(KPUMIN) X(KPUMAX) X(ALPMIN) X(ALPMAX) X(CAMMIN) X(CAMMAX) X(LFZO) X(LCX) X(LMUX) X(LEX) \
-  X(LKX) X(LHX) X(LVX) X(LCY) X(LMUY) X(LEY) X(LKY) X(LHY) X(LVY) X(LTR) X(LRES) X(LXAL) X(LYKA) \
-  X(LVYKA) X(LS) X(LKYC) X(LKZC) X(LVMX) X(LMX) X(LMY) X(LMP) X(PCX1) X(PDX1) X(PDX2) X(PDX3) \
-  X(PEX1) X(PEX2) X(PEX3) X(PEX4) X(PKX1) X(PKX2) X(PKX3) X(PHX1) X(PHX2) X(PVX1) X(PVX2) X(PPX1) \
-  X(PPX2) X(PPX3) X(PPX4) X(RBX1) X(RBX2) X(RBX3) X(RCX1) X(REX1) X(REX2) X(RHX1) X(QSX1) X(QSX2) \
-  X(QSX3) X(QSX4) X(QSX5) X(QSX6) X(QSX7) X(QSX8) X(QSX9) X(QSX10) X(QSX11) X(QSX12) X(QSX13) \
-  X(QSX14) X(PPMX1) X(PCY1) X(PDY1) X(PDY2) X(PDY3) X(PEY1) X(PEY2) X(PEY3) X(PEY4) X(PEY5) \
-  X(PKY1) X(PKY2) X(PKY3) X(PKY4) X(PKY5) X(PKY6) X(PKY7) X(PHY1) X(PHY2) X(PHY3) X(PVY1) X(PVY2) \
-  X(PVY3) X(PVY4) X(PPY1) X(PPY2) X(PPY3) X(PPY4) X(PPY5) X(RBY1) X(RBY2) X(RBY3) X(RBY4) X(RCY1) \
-  X(REY1) X(REY2) X(RHY1) X(RHY2) X(RVY1) X(RVY2) X(RVY3) X(RVY4) X(RVY5) X(RVY6) X(QSY1) X(QSY2) \
-  X(QSY3) X(QSY4) X(QSY5) X(QSY6) X(QSY7) X(QSY8) X(QBZ1) X(QBZ2) X(QBZ3) X(QBZ4) X(QBZ5) X(QBZ9) \
-  X(QBZ10) X(QCZ1) X(QDZ1) X(QDZ2) X(QDZ3) X(QDZ4) X(QDZ6) X(QDZ7) X(QDZ8) X(QDZ9) X(QDZ10) \
-  X(QDZ11) X(QEZ1) X(QEZ2) X(QEZ3) X(QEZ4) X(QEZ5) X(QHZ1) X(QHZ2) X(QHZ3) X(QHZ4) X(PPZ1) \
-  X(PPZ2) X(SSZ1) X(SSZ2) X(SSZ3) X(SSZ4)
-
+#define HOTLAP_MAGIC_FORMULA_FIELDS(X)                                                                                                                                                                                                                                                                         \
+  X(LONGVL)                                                                                                                                                                                                                                                                                                    \
+  X(VXLOW) X(UNLOADED_RADIUS) X(WIDTH) X(ASPECT_RATIO) X(RIM_RADIUS) X(RIM_WIDTH) X(INFLPRES)                                                                                                                                                                                                                  \
+      X(NOMPRES) X(FNOMIN) X(VERTICAL_STIFFNESS) X(BREFF) X(DREFF) X(FREFF) X(Q_RE0) X(Q_V1)                                                                                                                                                                                                                   \
+          X(Q_V2) X(Q_FZ2) X(Q_FCX) X(Q_FCY) X(PFZ1) X(PRESMIN) X(PRESMAX) X(FZMIN) X(FZMAX)                                                                                                                                                                                                                   \
+              X(KPUMIN) X(KPUMAX) X(ALPMIN) X(ALPMAX) X(CAMMIN) X(CAMMAX) X(LFZO) X(LCX) X(LMUX)                                                                                                                                                                                                               \
+                  X(LEX) X(LKX) X(LHX) X(LVX) X(LCY) X(LMUY) X(LEY) X(LKY) X(LHY) X(LVY) X(LTR)                                                                                                                                                                                                                \
+                      X(LRES) X(LXAL) X(LYKA) X(LVYKA) X(LS) X(LKYC) X(LKZC) X(LVMX) X(LMX) X(LMY)                                                                                                                                                                                                             \
+                          X(LMP) X(PCX1) X(PDX1) X(PDX2) X(PDX3) X(PEX1) X(PEX2) X(PEX3) X(PEX4)                                                                                                                                                                                                               \
+                              X(PKX1) X(PKX2) X(PKX3) X(PHX1) X(PHX2) X(PVX1) X(PVX2) X(PPX1)                                                                                                                                                                                                                  \
+                                  X(PPX2) X(PPX3) X(PPX4) X(RBX1) X(RBX2) X(RBX3) X(RCX1) X(REX1)                                                                                                                                                                                                              \
+                                      X(REX2) X(RHX1) X(QSX1) X(QSX2) X(QSX3) X(QSX4) X(QSX5)                                                                                                                                                                                                                  \
+                                          X(QSX6) X(QSX7) X(QSX8) X(QSX9) X(QSX10) X(QSX11)                                                                                                                                                                                                                    \
+                                              X(QSX12) X(QSX13) X(QSX14) X(PPMX1) X(PCY1) X(PDY1)                                                                                                                                                                                                              \
+                                                  X(PDY2) X(PDY3) X(PEY1) X(PEY2) X(PEY3) X(PEY4)                                                                                                                                                                                                              \
+                                                      X(PEY5) X(PKY1) X(PKY2) X(PKY3) X(PKY4)                                                                                                                                                                                                                  \
+                                                          X(PKY5) X(PKY6) X(PKY7) X(PHY1) X(PHY2)                                                                                                                                                                                                              \
+                                                              X(PHY3) X(PVY1) X(PVY2) X(PVY3)                                                                                                                                                                                                                  \
+                                                                  X(PVY4) X(PPY1) X(PPY2) X(PPY3)                                                                                                                                                                                                              \
+                                                                      X(PPY4) X(PPY5) X(RBY1)                                                                                                                                                                                                                  \
+                                                                          X(RBY2) X(RBY3) X(RBY4)                                                                                                                                                                                                              \
+                                                                              X(RCY1) X(REY1) X(                                                                                                                                                                                                               \
+                                                                                  REY2) X(RHY1) X(RHY2) X(RVY1) X(RVY2)                                                                                                                                                                                        \
+                                                                                  X(                                                                                                                                                                                                                           \
+                                                                                      RVY3) X(RVY4)                                                                                                                                                                                                            \
+                                                                                      X(                                                                                                                                                                                                                       \
+                                                                                          RVY5) X(RVY6)                                                                                                                                                                                                        \
+                                                                                          X(                                                                                                                                                                                                                   \
+                                                                                              QSY1) X(QSY2)                                                                                                                                                                                                    \
+                                                                                              X(                                                                                                                                                                                                               \
+                                                                                                  QSY3) X(QSY4)                                                                                                                                                                                                \
+                                                                                                  X(                                                                                                                                                                                                           \
+                                                                                                      QSY5) X(QSY6)                                                                                                                                                                                            \
+                                                                                                      X(                                                                                                                                                                                                       \
+                                                                                                          QSY7) X(QSY8)                                                                                                                                                                                        \
+                                                                                                          X(QBZ1)                                                                                                                                                                                              \
+                                                                                                              X(QBZ2)                                                                                                                                                                                          \
+                                                                                                                  X(                                                                                                                                                                                           \
+                                                                                                                      QBZ3) X(QBZ4) X(QBZ5) X(QBZ9) X(QBZ10) X(QCZ1) X(QDZ1) X(QDZ2) X(QDZ3) X(QDZ4) X(QDZ6) X(QDZ7) X(QDZ8) X(QDZ9) X(QDZ10) X(QDZ11) X(QEZ1) X(QEZ2) X(QEZ3) X(QEZ4) X(QEZ5) X(QHZ1) X(QHZ2) \
+                                                                                                                      X(                                                                                                                                                                                       \
+                                                                                                                          QHZ3) X(QHZ4)                                                                                                                                                                        \
+                                                                                                                          X(PPZ1)                                                                                                                                                                              \
+                                                                                                                              X(PPZ2) X(                                                                                                                                                                       \
+                                                                                                                                  SSZ1)                                                                                                                                                                        \
+                                                                                                                                  X(SSZ2) X(                                                                                                                                                                   \
+                                                                                                                                      SSZ3)                                                                                                                                                                    \
+                                                                                                                                      X(SSZ4)
 
 /// Which set of Magic Formula equations a file was fitted for (FITTYP, see tir_file.h).
 enum class MagicFormulaVersion {
@@ -65,29 +93,29 @@ struct MagicFormulaParams {
 
   // [MODEL]
   T LONGVL{};  ///< nominal speed, m/s
-  T VXLOW{};  ///< lower boundary of slip calculation, m/s
+  T VXLOW{};   ///< lower boundary of slip calculation, m/s
   // [DIMENSION]
   T UNLOADED_RADIUS{};  ///< free tyre radius, m
-  T WIDTH{};  ///< nominal section width of the tyre, m
-  T ASPECT_RATIO{};  ///< nominal aspect ratio, 1
-  T RIM_RADIUS{};  ///< nominal rim radius, m
-  T RIM_WIDTH{};  ///< rim width, m
+  T WIDTH{};            ///< nominal section width of the tyre, m
+  T ASPECT_RATIO{};     ///< nominal aspect ratio, 1
+  T RIM_RADIUS{};       ///< nominal rim radius, m
+  T RIM_WIDTH{};        ///< rim width, m
   // [OPERATING_CONDITIONS]
   T INFLPRES{};  ///< tyre inflation pressure, Pa
-  T NOMPRES{};  ///< nominal tyre inflation pressure, Pa
+  T NOMPRES{};   ///< nominal tyre inflation pressure, Pa
   // [VERTICAL]
-  T FNOMIN{};  ///< nominal wheel load, N
+  T FNOMIN{};              ///< nominal wheel load, N
   T VERTICAL_STIFFNESS{};  ///< tyre vertical stiffness, N/m
-  T BREFF{};  ///< low load stiffness effective rolling radius, 1
-  T DREFF{};  ///< peak value of effective rolling radius, 1
-  T FREFF{};  ///< high load stiffness effective rolling radius, 1
-  T Q_RE0{};  ///< ratio of free tyre radius with nominal tyre radius, 1
-  T Q_V1{};  ///< tyre radius increase with speed, 1
-  T Q_V2{};  ///< vertical stiffness increase with speed, 1
-  T Q_FZ2{};  ///< quadratic term in load vs. deflection, 1
-  T Q_FCX{};  ///< longitudinal force influence on vertical stiffness, 1
-  T Q_FCY{};  ///< lateral force influence on vertical stiffness, 1
-  T PFZ1{};  ///< pressure effect on vertical stiffness, 1
+  T BREFF{};               ///< low load stiffness effective rolling radius, 1
+  T DREFF{};               ///< peak value of effective rolling radius, 1
+  T FREFF{};               ///< high load stiffness effective rolling radius, 1
+  T Q_RE0{};               ///< ratio of free tyre radius with nominal tyre radius, 1
+  T Q_V1{};                ///< tyre radius increase with speed, 1
+  T Q_V2{};                ///< vertical stiffness increase with speed, 1
+  T Q_FZ2{};               ///< quadratic term in load vs. deflection, 1
+  T Q_FCX{};               ///< longitudinal force influence on vertical stiffness, 1
+  T Q_FCY{};               ///< lateral force influence on vertical stiffness, 1
+  T PFZ1{};                ///< pressure effect on vertical stiffness, 1
   // [INFLATION_PRESSURE_RANGE]
   T PRESMIN{};  ///< minimum valid tyre inflation pressure, Pa
   T PRESMAX{};  ///< maximum valid tyre inflation pressure, Pa
@@ -104,31 +132,31 @@ struct MagicFormulaParams {
   T CAMMIN{};  ///< minimum valid camber angle, rad
   T CAMMAX{};  ///< maximum valid camber angle, rad
   // [SCALING_COEFFICIENTS]
-  T LFZO{};  ///< scale factor of nominal (rated) load, 1
-  T LCX{};  ///< scale factor of Fx shape factor, 1
-  T LMUX{};  ///< scale factor of Fx peak friction coefficient, 1
-  T LEX{};  ///< scale factor of Fx curvature factor, 1
-  T LKX{};  ///< scale factor of Fx slip stiffness, 1
-  T LHX{};  ///< scale factor of Fx horizontal shift, 1
-  T LVX{};  ///< scale factor of Fx vertical shift, 1
-  T LCY{};  ///< scale factor of Fy shape factor, 1
-  T LMUY{};  ///< scale factor of Fy peak friction coefficient, 1
-  T LEY{};  ///< scale factor of Fy curvature factor, 1
-  T LKY{};  ///< scale factor of Fy cornering stiffness, 1
-  T LHY{};  ///< scale factor of Fy horizontal shift, 1
-  T LVY{};  ///< scale factor of Fy vertical shift, 1
-  T LTR{};  ///< scale factor of peak of pneumatic trail, 1
-  T LRES{};  ///< scale factor for offset of residual torque, 1
-  T LXAL{};  ///< scale factor of alpha influence on Fx, 1
-  T LYKA{};  ///< scale factor of kappa influence on Fy, 1
+  T LFZO{};   ///< scale factor of nominal (rated) load, 1
+  T LCX{};    ///< scale factor of Fx shape factor, 1
+  T LMUX{};   ///< scale factor of Fx peak friction coefficient, 1
+  T LEX{};    ///< scale factor of Fx curvature factor, 1
+  T LKX{};    ///< scale factor of Fx slip stiffness, 1
+  T LHX{};    ///< scale factor of Fx horizontal shift, 1
+  T LVX{};    ///< scale factor of Fx vertical shift, 1
+  T LCY{};    ///< scale factor of Fy shape factor, 1
+  T LMUY{};   ///< scale factor of Fy peak friction coefficient, 1
+  T LEY{};    ///< scale factor of Fy curvature factor, 1
+  T LKY{};    ///< scale factor of Fy cornering stiffness, 1
+  T LHY{};    ///< scale factor of Fy horizontal shift, 1
+  T LVY{};    ///< scale factor of Fy vertical shift, 1
+  T LTR{};    ///< scale factor of peak of pneumatic trail, 1
+  T LRES{};   ///< scale factor for offset of residual torque, 1
+  T LXAL{};   ///< scale factor of alpha influence on Fx, 1
+  T LYKA{};   ///< scale factor of kappa influence on Fy, 1
   T LVYKA{};  ///< scale factor of kappa induced Fy, 1
-  T LS{};  ///< scale factor of moment arm of Fx, 1
-  T LKYC{};  ///< scale factor of camber force stiffness, 1
-  T LKZC{};  ///< scale factor of camber torque stiffness, 1
-  T LVMX{};  ///< scale factor of Mx vertical shift, 1
-  T LMX{};  ///< scale factor of overturning couple, 1
-  T LMY{};  ///< scale factor of rolling resistance torque, 1
-  T LMP{};  ///< scale factor of Parking Moment, 1
+  T LS{};     ///< scale factor of moment arm of Fx, 1
+  T LKYC{};   ///< scale factor of camber force stiffness, 1
+  T LKZC{};   ///< scale factor of camber torque stiffness, 1
+  T LVMX{};   ///< scale factor of Mx vertical shift, 1
+  T LMX{};    ///< scale factor of overturning couple, 1
+  T LMY{};    ///< scale factor of rolling resistance torque, 1
+  T LMP{};    ///< scale factor of Parking Moment, 1
   // [LONGITUDINAL_COEFFICIENTS]
   T PCX1{};  ///< shape factor Cfx for longitudinal force, 1
   T PDX1{};  ///< longitudinal friction Mux at Fznom, 1
@@ -157,15 +185,15 @@ struct MagicFormulaParams {
   T REX2{};  ///< curvature factor of combined Fx with load, 1
   T RHX1{};  ///< shift factor for combined slip Fx reduction, 1
   // [OVERTURNING_COEFFICIENTS]
-  T QSX1{};  ///< vertical shift of overturning moment, 1
-  T QSX2{};  ///< camber induced overturning couple, 1
-  T QSX3{};  ///< fy induced overturning couple, 1
-  T QSX4{};  ///< mixed load lateral force and camber on Mx, 1
-  T QSX5{};  ///< load effect on Mx with lateral force and camber, 1
-  T QSX6{};  ///< b-factor of load with Mx, 1
-  T QSX7{};  ///< camber with load on Mx, 1
-  T QSX8{};  ///< lateral force with load on Mx, 1
-  T QSX9{};  ///< b-factor of lateral force with load on Mx, 1
+  T QSX1{};   ///< vertical shift of overturning moment, 1
+  T QSX2{};   ///< camber induced overturning couple, 1
+  T QSX3{};   ///< fy induced overturning couple, 1
+  T QSX4{};   ///< mixed load lateral force and camber on Mx, 1
+  T QSX5{};   ///< load effect on Mx with lateral force and camber, 1
+  T QSX6{};   ///< b-factor of load with Mx, 1
+  T QSX7{};   ///< camber with load on Mx, 1
+  T QSX8{};   ///< lateral force with load on Mx, 1
+  T QSX9{};   ///< b-factor of lateral force with load on Mx, 1
   T QSX10{};  ///< vertical force with camber on Mx, 1
   T QSX11{};  ///< b-factor of vertical force with camber on Mx, 1
   T QSX12{};  ///< camber squared induced overturning moment, 1
@@ -197,7 +225,8 @@ struct MagicFormulaParams {
   T PVY3{};  ///< variation of shift Svy/Fz with camber, 1
   T PVY4{};  ///< variation of shift Svy/Fz with camber and load, 1
   T PPY1{};  ///< influence of inflation pressure on cornering stiffness, 1
-  T PPY2{};  ///< influence of inflation pressure on dependency of nominal tyre load on cornering stiffness, 1
+  T PPY2{};  ///< influence of inflation pressure on dependency of nominal tyre load on cornering
+             ///< stiffness, 1
   T PPY3{};  ///< linear influence of inflation pressure on lateral peak friction, 1
   T PPY4{};  ///< quadratic influence of inflation pressure on lateral peak friction, 1
   T PPY5{};  ///< influence of inflation pressure on camber stiffness, 1
@@ -226,39 +255,39 @@ struct MagicFormulaParams {
   T QSY7{};  ///< rolling resistance torque coefficient load dependency, 1
   T QSY8{};  ///< rolling resistance torque coefficient pressure dependency, 1
   // [ALIGNING_COEFFICIENTS]
-  T QBZ1{};  ///< trail slope factor for trail Bpt at Fznom, 1
-  T QBZ2{};  ///< variation of slope Bpt with load, 1
-  T QBZ3{};  ///< variation of slope Bpt with load squared, 1
-  T QBZ4{};  ///< variation of slope Bpt with camber, 1
-  T QBZ5{};  ///< variation of slope Bpt with absolute camber, 1
-  T QBZ9{};  ///< slope factor Br of residual torque Mzr (with LKY, LMUY), 1
+  T QBZ1{};   ///< trail slope factor for trail Bpt at Fznom, 1
+  T QBZ2{};   ///< variation of slope Bpt with load, 1
+  T QBZ3{};   ///< variation of slope Bpt with load squared, 1
+  T QBZ4{};   ///< variation of slope Bpt with camber, 1
+  T QBZ5{};   ///< variation of slope Bpt with absolute camber, 1
+  T QBZ9{};   ///< slope factor Br of residual torque Mzr (with LKY, LMUY), 1
   T QBZ10{};  ///< factor for dimensionless cornering stiffness of Br of Mzr, 1
-  T QCZ1{};  ///< shape factor Cpt for pneumatic trail, 1
-  T QDZ1{};  ///< peak trail Dpt = Dpt*(Fz/Fznom*R0), 1
-  T QDZ2{};  ///< variation of peak Dpt with load, 1
-  T QDZ3{};  ///< variation of peak Dpt with camber, 1
-  T QDZ4{};  ///< variation of peak Dpt with camber squared, 1
-  T QDZ6{};  ///< peak residual torque Dmr = Dmr/(Fz*R0), 1
-  T QDZ7{};  ///< variation of peak factor Dmr with load, 1
-  T QDZ8{};  ///< variation of peak factor Dmr with camber, 1
-  T QDZ9{};  ///< variation of peak factor Dmr with camber and load, 1
+  T QCZ1{};   ///< shape factor Cpt for pneumatic trail, 1
+  T QDZ1{};   ///< peak trail Dpt = Dpt*(Fz/Fznom*R0), 1
+  T QDZ2{};   ///< variation of peak Dpt with load, 1
+  T QDZ3{};   ///< variation of peak Dpt with camber, 1
+  T QDZ4{};   ///< variation of peak Dpt with camber squared, 1
+  T QDZ6{};   ///< peak residual torque Dmr = Dmr/(Fz*R0), 1
+  T QDZ7{};   ///< variation of peak factor Dmr with load, 1
+  T QDZ8{};   ///< variation of peak factor Dmr with camber, 1
+  T QDZ9{};   ///< variation of peak factor Dmr with camber and load, 1
   T QDZ10{};  ///< variation of peak factor Dmr with camber squared, 1
   T QDZ11{};  ///< variation of Dmr with camber squared and load, 1
-  T QEZ1{};  ///< trail curvature Ept at Fznom, 1
-  T QEZ2{};  ///< variation of curvature Ept with load, 1
-  T QEZ3{};  ///< variation of curvature Ept with load squared, 1
-  T QEZ4{};  ///< variation of curvature Ept with sign of Alpha-t, 1
-  T QEZ5{};  ///< variation of Ept with camber and sign Alpha-t, 1
-  T QHZ1{};  ///< trail horizontal shift Sht at Fznom, 1
-  T QHZ2{};  ///< variation of shift Sht with load, 1
-  T QHZ3{};  ///< variation of shift Sht with camber, 1
-  T QHZ4{};  ///< variation of shift Sht with camber and load, 1
-  T PPZ1{};  ///< effect of inflation pressure on length of pneumatic trail, 1
-  T PPZ2{};  ///< influence of inflation pressure on residual aligning torque, 1
-  T SSZ1{};  ///< nominal value of s/R0: effect of Fx on Mz, 1
-  T SSZ2{};  ///< variation of distance s/R0 with Fy/Fznom, 1
-  T SSZ3{};  ///< variation of distance s/R0 with camber, 1
-  T SSZ4{};  ///< variation of distance s/R0 with load and camber, 1
+  T QEZ1{};   ///< trail curvature Ept at Fznom, 1
+  T QEZ2{};   ///< variation of curvature Ept with load, 1
+  T QEZ3{};   ///< variation of curvature Ept with load squared, 1
+  T QEZ4{};   ///< variation of curvature Ept with sign of Alpha-t, 1
+  T QEZ5{};   ///< variation of Ept with camber and sign Alpha-t, 1
+  T QHZ1{};   ///< trail horizontal shift Sht at Fznom, 1
+  T QHZ2{};   ///< variation of shift Sht with load, 1
+  T QHZ3{};   ///< variation of shift Sht with camber, 1
+  T QHZ4{};   ///< variation of shift Sht with camber and load, 1
+  T PPZ1{};   ///< effect of inflation pressure on length of pneumatic trail, 1
+  T PPZ2{};   ///< influence of inflation pressure on residual aligning torque, 1
+  T SSZ1{};   ///< nominal value of s/R0: effect of Fx on Mz, 1
+  T SSZ2{};   ///< variation of distance s/R0 with Fy/Fznom, 1
+  T SSZ3{};   ///< variation of distance s/R0 with camber, 1
+  T SSZ4{};   ///< variation of distance s/R0 with load and camber, 1
 
   /// The same coefficients in another scalar type (derivative parts start at zero).
   template <Scalar U>
@@ -295,6 +324,9 @@ struct MagicFormulaParamInfo {
 
 /// Every field of MagicFormulaParams, in file order.
 std::span<const MagicFormulaParamInfo> MagicFormulaParamTable();
+
+/// The coefficient named `name` (a `.tir` key, e.g. "PDY1"), or null if there is none.
+const MagicFormulaParamInfo* FindMagicFormulaParam(std::string_view name);
 
 /// All coefficients at their defaults (the result of reading a file that has none), MF 6.1.
 MagicFormulaParams<double> MagicFormulaDefaults();
