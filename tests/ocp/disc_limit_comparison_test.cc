@@ -110,7 +110,8 @@ TEST(DiscLimitComparisonTest, LimitBelowTheStartingDiscIsBadInput) {
 
 // Coarse to fine, the limited lap is solved in a child process beside the free one: the same
 // laps as solving it afterwards in this process, bit for bit (the fine solve's MUMPS ordering,
-// PORD, is reproducible; SCOTCH's differed by 1e-14 relative between processes).
+// SCOTCH's, is reproducible on one thread, which SolveWithIpopt sets; on several its laps
+// differed by 1e-14 relative between processes).
 TEST(DiscLimitComparisonTest, SecondProcessGivesTheSameLaps) {
   const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
   const track::Track track = track::LoadTrack("darlington");

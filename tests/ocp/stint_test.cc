@@ -94,7 +94,9 @@ TEST_F(StintTest, WithNoWearAndNoFuelTwoLapsAreTheSingleLapsChained) {
   for (int i = 0; i < 2; ++i) {
     EXPECT_NEAR(r.laps[i].time_s, r.greedy_laps[i].time_s, 1e-2) << i;
     EXPECT_EQ(r.laps[i].fuel_burnt_kg, 0.0);
-    EXPECT_EQ(r.laps[i].wear_end_mm[3], 0.0);
+    // Zero to round-off: the wear states' defects are solved with the others (1e-30 mm with
+    // SCOTCH's ordering, exactly 0 with PORD's).
+    EXPECT_NEAR(r.laps[i].wear_end_mm[3], 0.0, 1e-15);
   }
   // Carried across the line: lap 2 starts where lap 1 ends, so its carcasses are hotter.
   for (int c = 0; c < 4; ++c) {

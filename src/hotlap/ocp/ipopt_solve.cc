@@ -4,6 +4,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <mutex>
+
+#include <dlfcn.h>
 
 #include <fmt/format.h>
 
@@ -268,11 +271,30 @@ class Adaptor : public Ipopt::TNLP {
   SolveResult& result_;
 };
 
+// SCOTCH (MUMPS' ordering 3) the same for the same problem, so that a solve ordered by it is
+// the same bit for bit whatever ran before it and on every run (docs/optimal-control.md, "Speed"):
+// - On one thread: it orders a large graph on several by default, and its threaded ordering
+//   differs from run to run (two runs of the same 3 m lap differed from the 12th digit on). Set
+//   before the first solve, unless the user set it; a solve orders once, so the thread costs
+//   nothing measurable.
+// - Its random state back to its seed: the state advances with every graph it orders, so the
+//   same lap ordered after another solve (the limited lap after the free one) got other pivots
+//   than in a fresh process (the comparison's child). Looked up at run time: SCOTCH is MUMPS'
+//   library, not ours, and a MUMPS built without it has none.
+void MakeScotchReproducible() {
+  static std::once_flag once;
+  std::call_once(once, [] { setenv("SCOTCH_PTHREAD_NUMBER", "1", /*overwrite=*/0); });
+  using Reset = void (*)();
+  static const auto reset = reinterpret_cast<Reset>(dlsym(RTLD_DEFAULT, "SCOTCH_randomReset"));
+  if (reset != nullptr) reset();
+}
+
 }  // namespace
 
 SolveResult SolveWithIpopt(const ElementNlp& nlp, const IpoptOptions& options) {
   SolveResult result;
   const auto started = std::chrono::steady_clock::now();
+  MakeScotchReproducible();
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   app->Options()->SetNumericValue("tol", options.tolerance);
   app->Options()->SetNumericValue("constr_viol_tol", options.constraint_tolerance);

@@ -154,13 +154,13 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
   // uncalibrated car's free lap (36 iterations against 167) but stalled the calibrated car's
   // limited lap (900 and more against 66; docs/optimal-control.md, "Speed").
   if (!lap.start_point.empty()) {
-    // From a solution (the coarse one, or another lap's): MUMPS with PORD's ordering, 0.42-0.47
-    // s an iteration on the 3 m lap against 0.57 with its automatic choice, to the same laps,
-    // and bit for bit the same from run to run (SCOTCH's, 0.43 s, and METIS' are not).
-    // Not from the QSS guess, where SCOTCH sent the limited lap's 15 m solve the long way (266
-    // iterations against 92; docs/optimal-control.md, "Speed"). First, so that an option given
-    // wins.
-    fine_ipopt.extra.insert(fine_ipopt.extra.begin(), {"mumps_pivot_order", "4"});
+    // From a solution (the coarse one, or another lap's): MUMPS with SCOTCH's ordering, 0.42-0.44
+    // s an iteration on the 3 m lap against 0.47 with PORD's and 0.57 with its automatic choice,
+    // to the same laps, and bit for bit the same from run to run on one SCOTCH thread
+    // (ipopt_solve.cc). Not from the QSS guess, where SCOTCH sent the limited lap's 15 m solve the
+    // long way (266 iterations against 92; docs/optimal-control.md, "Speed"). First, so that an
+    // option given wins.
+    fine_ipopt.extra.insert(fine_ipopt.extra.begin(), {"mumps_pivot_order", "3"});
   }
   run.solution = SolveMinimumTimeLap(car, track, lap, w.guess, fine_ipopt,
                                      options.presolved ? &options.presolved->fine : nullptr);
