@@ -90,7 +90,9 @@ struct SolveResult {
 
 /// Solves from nlp's initial point. `nlp` must be finalized. Never throws for a failed solve:
 /// the status says what happened and x holds Ipopt's last iterate (an unusable option in
-/// `options.extra` is an InputError, before any solving).
+/// `options.extra` is an InputError, before any solving). So that MUMPS' SCOTCH ordering gives
+/// the same solve bit for bit on every run, the first call sets SCOTCH_PTHREAD_NUMBER=1 in the
+/// process environment (unless it is set) and every call resets SCOTCH's random state.
 SolveResult SolveWithIpopt(const ElementNlp& nlp, const IpoptOptions& options);
 
 }  // namespace hotlap::ocp
