@@ -17,8 +17,11 @@
 namespace hotlap::ocp {
 namespace {
 
-// SCOTCH_PTHREAD_NUMBER as the test process found it, before any solve.
-const char* const kScotchThreadsAtStart = std::getenv("SCOTCH_PTHREAD_NUMBER");
+// SCOTCH_PTHREAD_NUMBER as the test process found it, before any solve ("" if unset).
+const std::string kScotchThreadsAtStart = [] {
+  const char* value = std::getenv("SCOTCH_PTHREAD_NUMBER");
+  return std::string(value ? value : "");
+}();
 
 // h/2 (a + b) with h = T / N: the trapezoid of a rate over one interval of a free final time.
 struct FreeTimeTrapezoid {
@@ -332,7 +335,7 @@ TEST(IpoptSolveTest, ScotchOrdersOnOneThreadUnlessTheUserSaysOtherwise) {
   EXPECT_TRUE(SolveWithIpopt(nlp, o).ok());
   const char* now = std::getenv("SCOTCH_PTHREAD_NUMBER");
   ASSERT_NE(now, nullptr);
-  EXPECT_EQ(std::string(now), kScotchThreadsAtStart ? kScotchThreadsAtStart : "1");
+  EXPECT_EQ(std::string(now), kScotchThreadsAtStart.empty() ? "1" : kScotchThreadsAtStart);
 }
 
 }  // namespace
