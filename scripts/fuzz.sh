@@ -162,7 +162,12 @@ run_one() {
     fi
   done
   if [ -d "fuzz/seeds/$t" ]; then cp fuzz/seeds/"$t"/* "$seeds/"; fi
-  if [ "$t" = fe_checkpoint ]; then HOTLAP_FUZZ_WRITE_SEEDS=$seeds "$build/fuzz/${t}_fuzz"; fi
+  if [ "$t" = fe_checkpoint ]; then
+    local seed_tmp
+    seed_tmp=$(mktemp -d "$tmp_root/hotlap-fuzz-seeds.XXXXXX")
+    TMPDIR=$seed_tmp HOTLAP_FUZZ_WRITE_SEEDS=$seeds "$build/fuzz/${t}_fuzz"
+    rm -rf "$seed_tmp"
+  fi
   local dict
   dict=$(dict_of "$t")
   local log=$build/logs/$t.log
