@@ -300,13 +300,18 @@ TEST(IpoptSolveTest, CountsTheIterationsThatNeededAnInertiaCorrection) {
   }
 }
 
+// min x over 0 <= x <= 1 from 0.5: the smallest problem Ipopt can be handed options for.
+void MakeLowerBoundProblem(ElementNlp& nlp) {
+  const int x = nlp.AddVariable(0.5, 0.0, 1.0, 1.0);
+  nlp.AddObjectiveLinear(x, 1.0);
+  nlp.Finalize();
+}
+
 // Extra options reach Ipopt by their type; one it does not know, or a value it refuses, is bad
 // input that names the option, not a solve quietly run without it.
 TEST(IpoptSolveTest, ExtraOptionsAreCheckedByIpopt) {
   ElementNlp nlp;
-  const int x = nlp.AddVariable(0.5, 0.0, 1.0, 1.0);
-  nlp.AddObjectiveLinear(x, 1.0);
-  nlp.Finalize();
+  MakeLowerBoundProblem(nlp);
   IpoptOptions o;
   o.extra = {{"mumps_pivot_order", "5"}, {"mu_init", "1"}, {"mu_strategy", "monotone"}};
   EXPECT_TRUE(SolveWithIpopt(nlp, o).ok());
@@ -327,9 +332,7 @@ TEST(IpoptSolveTest, ExtraOptionsAreCheckedByIpopt) {
 // the user set is left alone.
 TEST(IpoptSolveTest, ScotchOrdersOnOneThreadUnlessTheUserSaysOtherwise) {
   ElementNlp nlp;
-  const int x = nlp.AddVariable(0.5, 0.0, 1.0, 1.0);
-  nlp.AddObjectiveLinear(x, 1.0);
-  nlp.Finalize();
+  MakeLowerBoundProblem(nlp);
   IpoptOptions o;
   o.extra = {{"mumps_pivot_order", "3"}};
   EXPECT_TRUE(SolveWithIpopt(nlp, o).ok());
