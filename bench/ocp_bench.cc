@@ -7,7 +7,9 @@
 // before it); /3 the limited lap warm-started from the free lap's solution and multipliers (the
 // command's way until 2026-11-26). The second argument 1 solves /0 and /1 the way of the morning
 // of 2026-11-26, for issue 19's before/after table: every brake in the programme
-// (all_brake_states) and the fine solve from the coarse point alone (no coarse_multipliers).
+// (all_brake_states) and the fine solve from the coarse point alone (no coarse_multipliers); 2
+// solves /0 and /1 with Hermite-Simpson collocation on 12 m intervals (their midpoints nodes: as
+// many nodes as a 6 m trapezoid) after the same 15 m trapezoid coarse solve.
 // Counters: lap time, Ipopt iterations and solve seconds of the fine solve (Ipopt's own clock)
 // and of the coarse one, and MUMPS factorisations per Ipopt iteration (both solves; counted by
 // interposing dmumps_c, bench/mumps_factorisations.cc).
@@ -82,6 +84,10 @@ void BM_DarlingtonOptimalLap(benchmark::State& state) {
     o.all_brake_states = true;
     o.coarse_multipliers = false;
   }
+  if (state.range(1) == 2) {
+    o.collocation = ocp::Collocation::kHermiteSimpson;
+    o.step_m = 12.0;
+  }
   ocp::OptimalLapRun run;
   long factorisations = 0;
   for (auto _ : state) {
@@ -110,6 +116,8 @@ BENCHMARK(BM_DarlingtonOptimalLap)
     ->Args({1, 1})
     ->Args({0, 0})
     ->Args({1, 0})
+    ->Args({0, 2})
+    ->Args({1, 2})
     ->Args({2, 0})
     ->Args({3, 0})
     ->Iterations(1)

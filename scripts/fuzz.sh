@@ -3,12 +3,13 @@
 #
 #   bash scripts/fuzz.sh [TARGET|all] [SECONDS]   # default: all, 60 s each
 #   bash scripts/fuzz.sh --list                   # the targets
-#   bash scripts/fuzz.sh --summary                # fuzz/stats.tsv per target (runs, minutes, ...)
+#   bash scripts/fuzz.sh --summary                # fuzz/budget.tsv per target (runs, minutes, ...)
 #   bash scripts/fuzz.sh --budget [TARGET|all]     # each target until the goal of
 #                                                 # docs/reliability.md: 10^7 executions or one
-#                                                 # CPU-hour in all (fuzz/stats.tsv's runs count),
-#                                                 # whichever comes first; at nice 19, so it can run
-#                                                 # beside other work for as long as it takes
+#                                                 # CPU-hour in all (fuzz/budget.tsv's runs count),
+#                                                 # whichever comes first; at nice 19 (its session's
+#                                                 # too, see below), so it can run beside other
+#                                                 # work for as long as it takes
 #                                                 # (Ctrl-C in its terminal, or --stop, stops it, the
 #                                                 # runs so far counted)
 #   bash scripts/fuzz.sh --stop                   # stops a --budget run (a stop file, then SIGINT
@@ -21,7 +22,10 @@
 # git), starting from the seeds of the shipped data (made afresh in build-fuzz/seeds/TARGET);
 # what it finds (crash-*, leak-*, timeout-*, oom-*) goes to fuzz/findings/TARGET/ (not in git).
 # One line per run is appended to fuzz/stats.tsv (time, target, seconds, executions, corpus
-# files, outcome, CPU seconds). Exits 1 if any target found something. Needs clang (scripts/install-deps.sh --fuzz).
+# files, outcome, CPU seconds); --budget's runs go to fuzz/budget.tsv instead, which is in git:
+# the budget's record outlives the checkout it ran in (corpora do not; an eighth column, where
+# there is one, is the number of runs a line stands for: 1 otherwise). Exits 1 if any target
+# found something. Needs clang (scripts/install-deps.sh --fuzz).
 #
 # Environment: HOTLAP_FUZZ_BUILD (build folder, default build-fuzz), HOTLAP_FUZZ_NO_BUILD=1 (run
 # what is built), HOTLAP_FUZZ_ARGS (more libFuzzer options, e.g. "-max_len=4096"),
@@ -49,13 +53,13 @@ if [ "${1:-}" = "--list" ]; then
   printf '%s\n' "${targets_all[@]}"
   exit 0
 fi
-# --summary: fuzz/stats.tsv added up per target, as the Markdown rows of docs/reliability.md.
+# --summary: fuzz/budget.tsv added up per target, as the Markdown rows of docs/reliability.md.
 if [ "${1:-}" = "--summary" ]; then
-  awk -F'\t' '{ runs[$2] += $4; secs[$2] += $3; corpus[$2] = $5; n[$2]++
+  awk -F'\t' '/^#/ { next } { runs[$2] += $4; secs[$2] += $3; corpus[$2] = $5; n[$2] += ($8 == "" ? 1 : $8)
       cpu[$2] += ($7 == "" ? $3 : $7)
       if ($6 ~ /^FOUND/) found[$2]++ }
     END { for (t in runs) printf "| %s | %d | %.1f | %.1f | %d | %d | %d |\n", t, runs[t],
-      secs[t] / 60, cpu[t] / 60, n[t], found[t], corpus[t] }' fuzz/stats.tsv | sort
+      secs[t] / 60, cpu[t] / 60, n[t], found[t], corpus[t] }' fuzz/budget.tsv | sort
   exit 0
 fi
 # --stop: asks a --budget run to stop (a stop file it looks for before each chunk and target),
@@ -65,15 +69,20 @@ if [ "${1:-}" = "--stop" ]; then
   mkdir -p "$build"
   touch "$build/budget.stop"
   pkill -INT -f "_fuzz fuzz/corpus" || true
+  # The budget run (its shell's PID in budget.pid while it runs).
+  budget_running() {
+    local pid
+    pid=$(cat "$build/budget.pid" 2>/dev/null) && [ -n "$pid" ] && kill -0 "$pid" 2>/dev/null
+  }
   for _ in $(seq 60); do
-    if ! pgrep -f "fuzz.sh --budget" >/dev/null; then break; fi
+    if ! budget_running; then break; fi
     sleep 1
   done
-  if pgrep -f "fuzz.sh --budget" >/dev/null; then
+  if budget_running; then
     echo "fuzz: --stop: a budget run is still there after 60 s" >&2
     exit 1
   fi
-  echo "fuzz: stopped; the chunks are in fuzz/stats.tsv"
+  echo "fuzz: stopped; the chunks are in fuzz/budget.tsv"
   exit 0
 fi
 # --budget: what each target has left of the goal (10^7 executions, 3600 CPU seconds).
@@ -81,10 +90,34 @@ budget=0
 goal_runs=${HOTLAP_FUZZ_GOAL_RUNS:-10000000}
 goal_cpu=${HOTLAP_FUZZ_GOAL_CPU_S:-3600}
 chunk_cpu=${HOTLAP_FUZZ_CHUNK_S:-600}
+stats=fuzz/stats.tsv
 if [ "${1:-}" = "--budget" ]; then
   budget=1
+  stats=fuzz/budget.tsv
   shift
   rm -f "$build/budget.stop"  # a stop asked of an earlier run
+fi
+# --budget runs at nice 19 in a session of its own. Linux groups a session's processes for the
+# scheduler (autogroups): a nice value counts only within the group, so a fuzzer at nice 19 in
+# the session of a terminal still took half the machine from a build started in another (seen
+# 2026-11-27: two niced fuzzers at 50% of a core each beside cc1plus). The group's own nice value
+# (/proc/PID/autogroup) is what yields to other sessions; it is set for the budget's session
+# only. Ctrl-C here still stops the run (--stop), since the new session has no terminal.
+if [ "$budget" -eq 1 ] && [ -z "${HOTLAP_FUZZ_OWN_SESSION:-}" ] && command -v setsid >/dev/null &&
+  [ -e /proc/self/autogroup ]; then
+  HOTLAP_FUZZ_OWN_SESSION=1 setsid --wait bash "$0" --budget "$@" &
+  child=$!
+  trap 'bash "$0" --stop; wait "$child"; exit $?' INT TERM
+  wait "$child"
+  exit $?
+fi
+if [ -n "${HOTLAP_FUZZ_OWN_SESSION:-}" ]; then
+  echo 19 2>/dev/null >"/proc/$$/autogroup" || true
+fi
+if [ "$budget" -eq 1 ]; then
+  mkdir -p "$build"
+  echo $$ >"$build/budget.pid"
+  trap 'rm -f "$build/budget.pid"' EXIT
 fi
 which=${1:-all}
 seconds=${2:-60}
@@ -180,7 +213,7 @@ run_one() {
     if [ "$budget" -eq 1 ]; then
       local done_runs done_cpu
       read -r done_runs done_cpu < <(awk -F'\t' -v t="$t" '$2 == t { r += $4; c += ($7 == "" ? $3 : $7) }
-        END { printf "%d %d\n", r, c }' fuzz/stats.tsv 2>/dev/null || echo "0 0")
+        END { printf "%d %d\n", r, c }' "$stats" 2>/dev/null || echo "0 0")
       if [ "${done_runs:-0}" -ge "$goal_runs" ] || [ "${done_cpu:-0}" -ge "$goal_cpu" ]; then
         echo "fuzz: $t: goal reached (${done_runs:-0} executions, ${done_cpu:-0} CPU s)"
         return 0
@@ -230,7 +263,7 @@ run_one() {
     local wall=$seconds
     if [ "$budget" -eq 1 ]; then wall=$(($(date +%s) - started_wall)); fi
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$(date -u +%FT%TZ)" "$t" "$wall" "${runs:-?}" \
-      "$files" "$outcome" "$cpu_seconds" >>fuzz/stats.tsv
+      "$files" "$outcome" "$cpu_seconds" >>"$stats"
     echo "fuzz: $t: ${runs:-?} executions in $wall s ($cpu_seconds CPU s), corpus $files files: $outcome"
     if [ "$outcome" = stopped ]; then return 0; fi
     if [ "$rc" -ne 0 ]; then

@@ -26,6 +26,16 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
           ->capture_default_str()
           ->check(CLI::Range(0.0, 100.0)));
   a.stock_car_only.push_back(
+      sub->add_option("--collocation", a.run.collocation,
+                      "trapezoid, or hermite-simpson (--step-m is then an interval with a node "
+                      "at its midpoint; docs/optimal-control.md)")
+          ->capture_default_str()
+          ->check(CLI::IsMember({"trapezoid", "hermite-simpson"})));
+  a.stock_car_only.push_back(sub->add_option("--coarse-collocation", a.run.coarse_collocation,
+                                             "The coarse solve's (as --collocation)")
+                                 ->capture_default_str()
+                                 ->check(CLI::IsMember({"trapezoid", "hermite-simpson"})));
+  a.stock_car_only.push_back(
       sub->add_option("--steer-smoothing", a.run.steer_smoothing,
                       "Weight of the steer's smoothness penalty, s per squared scaled change "
                       "between nodes (default: the library's; docs/optimal-control.md)"));

@@ -80,6 +80,62 @@ TEST(ResampleLapMultipliersTest, NodeSharesScaleWithTheSpacingIntervalOnesDoNot)
   EXPECT_EQ(same.lambda, coarse.lambda);
 }
 
+LapLayout TinyHermiteSimpsonLayout(int nodes) {
+  LapLayout l = TinyLayout(nodes);
+  l.collocation = Collocation::kHermiteSimpson;
+  return l;
+}
+
+// Hermite-Simpson: a node's weight is Simpson's (1/3, 4/3, 2/3, ..., 4/3, 1/3 of the spacing), a
+// Simpson row's multiplier is a costate, a Hermite row's carries its midpoint's weight.
+TEST(ResampleLapMultipliersTest, HermiteSimpsonWeightsAndItsTwoKindsOfDefect) {
+  // Five nodes (two intervals of two steps) onto nine: the spacing halves.
+  SolveResult coarse;
+  coarse.z_lower = {1.0, 4.0, 2.0, 4.0, 1.0};  // a density of 3 per spacing everywhere
+  coarse.z_upper.assign(5, 0.0);
+  // Node rows; defects step by step: Hermite, Simpson of the first interval, then the second's;
+  // the closure; the rate pairs of the four steps.
+  coarse.lambda = {1.0, 4.0, 2.0,  4.0, 1.0,  8.0, 10.0, 16.0, 20.0,
+                   7.0, 1.0, -1.0, 1.0, -1.0, 3.0, -3.0, 3.0,  -3.0};
+  const LapLayout from = TinyHermiteSimpsonLayout(5), to = TinyHermiteSimpsonLayout(9);
+  ASSERT_EQ(static_cast<int>(coarse.lambda.size()), from.rows());
+  const LapMultipliers m = ResampleLapMultipliers(coarse, from, to);
+  // The density 3 times the new weights and half the spacing: the total (12) kept.
+  const std::vector<double> nodes = {0.5, 2.0, 1.0, 2.0, 1.0, 2.0, 1.0, 2.0, 0.5};
+  ASSERT_EQ(static_cast<int>(m.lambda.size()), to.rows());
+  for (int k = 0; k < 9; ++k) {
+    EXPECT_DOUBLE_EQ(m.z_lower[k], nodes[k]) << k;
+    EXPECT_DOUBLE_EQ(m.lambda[k], nodes[k]) << k;
+  }
+  // Simpson rows (odd steps): the costates 10 and 20 (at 1/2 and 3/2 coarse intervals) at the
+  // new midpoints 1/4, 3/4, 5/4, 7/4. Hermite rows (even steps): the densities 8 / (4/3) = 6 and
+  // 12 there, times the new midpoint weight (4/3) and half the spacing.
+  const std::vector<double> defects = {4.0, 10.0, 5.0, 12.5, 7.0, 17.5, 8.0, 20.0};
+  for (int k = 0; k < 8; ++k) EXPECT_DOUBLE_EQ(m.lambda[9 + k], defects[k]) << k;
+  EXPECT_DOUBLE_EQ(m.lambda[17], 7.0);  // the closure
+
+  // To the trapezoid on the same nodes: the Simpson rows' costates at its interval midpoints, the
+  // trapezoid's weights (1/2, 1, ..., 1, 1/2).
+  const LapMultipliers t = ResampleLapMultipliers(coarse, from, TinyLayout(5));
+  const std::vector<double> t_nodes = {1.5, 3.0, 3.0, 3.0, 1.5};
+  for (int k = 0; k < 5; ++k) EXPECT_DOUBLE_EQ(t.z_lower[k], t_nodes[k]) << k;
+  const std::vector<double> t_defects = {10.0, 12.5, 17.5, 20.0};
+  for (int k = 0; k < 4; ++k) EXPECT_DOUBLE_EQ(t.lambda[5 + k], t_defects[k]) << k;
+
+  // From the trapezoid (three nodes, costates 10 and 20): the Simpson rows get the costates, the
+  // Hermite rows, which the trapezoid does not have, nothing.
+  SolveResult trapezoid;
+  trapezoid.z_lower = {1.5, 3.0, 1.5};
+  trapezoid.z_upper.assign(3, 0.0);
+  trapezoid.lambda = {1.5, 3.0, 1.5, 10.0, 20.0, 7.0, 1.0, -1.0, 3.0, -3.0};
+  const LapMultipliers h = ResampleLapMultipliers(trapezoid, TinyLayout(3), from);
+  // The density 3 times Simpson's weights and half the spacing: the total (6) kept.
+  const std::vector<double> h_nodes = {0.5, 2.0, 1.0, 2.0, 0.5};
+  for (int k = 0; k < 5; ++k) EXPECT_DOUBLE_EQ(h.z_lower[k], h_nodes[k]) << k;
+  const std::vector<double> h_defects = {0.0, 10.0, 0.0, 20.0};
+  for (int k = 0; k < 4; ++k) EXPECT_DOUBLE_EQ(h.lambda[5 + k], h_defects[k]) << k;
+}
+
 TEST(ResampleLapMultipliersTest, RefusesMultipliersOfAnotherLayout) {
   SolveResult r;
   r.z_lower = r.z_upper = {1.0, 2.0, 3.0};
@@ -95,6 +151,9 @@ TEST(LapNodeCountTest, IntervalsOfAboutTheStepAndTheClosingNode) {
   EXPECT_EQ(LapNodeCount(track, 3.0), 734);                   // round(732.7) + 1
   EXPECT_EQ(LapNodeCount(track, 20.0), 111);                  // round(109.9) + 1
   EXPECT_EQ(LapNodeCount(track, 1000.0), 17);                 // at least 16 intervals
+  // Hermite-Simpson: the intervals' midpoints are nodes too.
+  EXPECT_EQ(LapNodeCount(track, 12.0, Collocation::kHermiteSimpson), 2 * 183 + 1);  // 183.2
+  EXPECT_EQ(LapNodeCount(track, 1000.0, Collocation::kHermiteSimpson), 17);         // at least 8
 }
 
 TEST(CoarseToFineTest, ReachesTheSameLapAsTheGuessStartInFewerIterations) {

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -24,13 +26,13 @@ double MaxAbsDifference(const std::vector<double>& a, const std::vector<double>&
   return d;
 }
 
-class BrakesLeftOutTest : public ::testing::TestWithParam<bool> {};
+class BrakesLeftOutTest : public ::testing::TestWithParam<std::tuple<bool, Collocation>> {};
 
 // From the solution of the full programme (point and multipliers), the programme without the
 // brakes that feed nothing back is already solved: Ipopt stops at once on the same lap, and the
 // brakes integrated after the solve are the full programme's to the solver's tolerance.
 TEST_P(BrakesLeftOutTest, SameSolutionAsTheFullProgramme) {
-  const bool limited = GetParam();
+  const auto [limited, collocation] = GetParam();
   const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
   const track::Track track = track::LoadTrack("darlington");
   OptimalLapOptions o;
@@ -39,7 +41,9 @@ TEST_P(BrakesLeftOutTest, SameSolutionAsTheFullProgramme) {
   const LapWarmUp warm_up = RunLapWarmUp(car, track, o);
 
   LapProblemOptions lap;
-  lap.step_m = 30.0;
+  // As many nodes either way: Hermite-Simpson's intervals have their midpoints as nodes.
+  lap.collocation = collocation;
+  lap.step_m = collocation == Collocation::kHermiteSimpson ? 60.0 : 30.0;
   lap.ambient_temp = o.ambient_temp;
   lap.track_temp = o.track_temp;
   lap.initial = warm_up.start;
@@ -93,8 +97,14 @@ TEST_P(BrakesLeftOutTest, SameSolutionAsTheFullProgramme) {
   EXPECT_LT(largest, 1e-6);
 }
 
-INSTANTIATE_TEST_SUITE_P(FreeAndLimited, BrakesLeftOutTest, ::testing::Bool(),
-                         [](const auto& info) { return info.param ? "Limited" : "Free"; });
+INSTANTIATE_TEST_SUITE_P(
+    FreeAndLimited, BrakesLeftOutTest,
+    ::testing::Combine(::testing::Bool(),
+                       ::testing::Values(Collocation::kTrapezoid, Collocation::kHermiteSimpson)),
+    [](const auto& info) {
+      return std::string(std::get<0>(info.param) ? "Limited" : "Free") +
+             (std::get<1>(info.param) == Collocation::kHermiteSimpson ? "HermiteSimpson" : "");
+    });
 
 }  // namespace
 }  // namespace hotlap::ocp

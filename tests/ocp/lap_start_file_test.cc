@@ -47,6 +47,32 @@ TEST(LapStartFileTest, WritesAndReadsBackEverything) {
   EXPECT_EQ(r.solve.status, SolveStatus::kConverged);
 }
 
+TEST(LapStartFileTest, KeepsTheCollocationAndReadsTheFirstVersionAsTrapezoid) {
+  test::TempDir dir;
+  LapSolution s = TinySolution();
+  s.layout.collocation = Collocation::kHermiteSimpson;
+  const auto path = dir.path() / "lap.bin";
+  WriteLapStart(path, s, 2198.0);
+  EXPECT_EQ(ReadLapStart(path).layout.collocation, Collocation::kHermiteSimpson);
+  // The first version ("hotlapL1", six layout numbers, no collocation): this file without its
+  // seventh number.
+  std::string bytes = test::ReadTextFile(path);
+  ASSERT_EQ(bytes.substr(0, 8), "hotlapL2");
+  bytes[7] = '1';
+  bytes.erase(8 + 8 + 6 * 4, 4);
+  const auto old = dir.path() / "old.bin";
+  test::WriteTextFile(old, bytes);
+  const LapStart r = ReadLapStart(old);
+  EXPECT_EQ(r.layout.collocation, Collocation::kTrapezoid);
+  EXPECT_EQ(r.layout.nodes, 3);
+  EXPECT_EQ(r.solve.lambda, s.solve.lambda);
+  // A collocation of neither kind: refused.
+  bytes = test::ReadTextFile(path);
+  bytes[8 + 8 + 6 * 4] = 2;
+  test::WriteTextFile(old, bytes);
+  EXPECT_PRED2(test::Contains, test::InputErrorOf([&] { ReadLapStart(old); }), "collocation");
+}
+
 TEST(LapStartFileTest, RefusesWhatIsNotASavedLap) {
   test::TempDir dir;
   const auto path = dir.path() / "lap.bin";

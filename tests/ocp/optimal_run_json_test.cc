@@ -51,6 +51,7 @@ TEST(OptimalRunsJson, OneSolveAndTheComparison) {
   EXPECT_EQ(j["car"], "gen7");
   EXPECT_EQ(j["overrides"], nlohmann::json::object());
   EXPECT_EQ(j["mesh_step_m"], 30.0);
+  EXPECT_EQ(j["collocation"], "trapezoid");
   EXPECT_EQ(j["wall_time_s"], 12.3456789);
   EXPECT_EQ(j["mesh_check_delta_s"], 0.0123);
   EXPECT_EQ(j["lap_time_s"], 30.0);

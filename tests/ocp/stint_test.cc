@@ -178,6 +178,10 @@ TEST_F(StintTest, BadOptionsAreInputErrors) {
   o = Coarse(2);
   o.lap.thermal_start = ThermalStart::kPeriodic;
   EXPECT_THROW(SolveStint(*car_, *track_, o), InputError);
+  o = Coarse(2);
+  o.lap.collocation = Collocation::kHermiteSimpson;
+  EXPECT_PRED2(test::Contains, test::InputErrorOf([&] { SolveStint(*car_, *track_, o); }),
+               "Hermite-Simpson");
 }
 
 // The fingerprint changes with the stint's options, the car's parameters (through the warm-up)

@@ -29,7 +29,8 @@ SolvedLap SolveLap(const vehicle::Car& car, const track::Track& track, OptimalLa
   }
   if (log && !options.presolved) {
     log(fmt::format(
-        "{}: solving ({:.1f} m mesh{}{})...", label, options.step_m,
+        "{}: solving ({:.1f} m mesh{}{}{})...", label, options.step_m,
+        options.collocation == Collocation::kHermiteSimpson ? ", Hermite-Simpson" : "",
         options.front_disc_limit
             ? fmt::format(", front discs <= {:g} degC", KelvinToCelsius(*options.front_disc_limit))
             : "",

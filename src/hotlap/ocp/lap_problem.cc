@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include <fmt/format.h>
+#include <Eigen/Dense>
 
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
@@ -54,6 +55,16 @@ double Sample(const std::vector<double>& distance, const std::vector<double>& va
   return values[j - 1] + w * (values[j] - values[j - 1]);
 }
 
+// Node k's quadrature weight on a mesh of `intervals` steps, in units of the node spacing: the
+// trapezoid's (1/2 at the ends, 1 elsewhere) or Simpson's (1/3 at the ends, 4/3 at an interval's
+// midpoint, 2/3 where two intervals meet).
+double NodeWeight(int k, int intervals, bool hermite_simpson) {
+  const bool end = k == 0 || k == intervals;
+  if (!hermite_simpson) return end ? 0.5 : 1.0;
+  if (end) return 1.0 / 3.0;
+  return k % 2 == 1 ? 4.0 / 3.0 : 2.0 / 3.0;
+}
+
 struct Builder {
   const vehicle::Car& car;
   const VehicleParams& p;
@@ -63,8 +74,9 @@ struct Builder {
   ElementNlp nlp;
   std::vector<NodeVars> nodes;
   std::vector<NodeRoad> roads;
-  int intervals = 0;
-  double ds = 0.0;
+  int intervals = 0;             // node to node (twice the Hermite-Simpson intervals)
+  double ds = 0.0;               // node to node
+  bool hs = false;               // Hermite-Simpson (else trapezoid)
   double max_brake_force = 0.0;  // N at pedal -1
   // Parameters (with the smooth |x| of tyre::TyreThermalSmoothing) cast once for the thermal
   // elements' scalars.
@@ -130,7 +142,8 @@ struct Builder {
       brake_in_programme[c] = options.all_brake_states || options.periodic_thermal ||
                               (options.front_disc_limit && IsFront(kAllCorners[c]));
     }
-    intervals = LapNodeCount(track, options.step_m) - 1;
+    hs = options.collocation == Collocation::kHermiteSimpson;
+    intervals = LapNodeCount(track, options.step_m, options.collocation) - 1;
     ds = track.length_m() / intervals;
     const double wheel_power = p.powertrain.WheelPower();
     max_brake_force = options.max_brake_force > 0.0 ? options.max_brake_force : 2.0 * p.Weight();
@@ -318,12 +331,31 @@ struct Builder {
     }
   }
 
-  // Rows of the state derivatives f_j(node k) feed: the defects of intervals k-1 and k with
-  // coefficient -ds/2.
+  // Rows of the state derivatives f_j(node k) feed. Trapezoid: the defects of intervals k-1 and
+  // k with coefficient -ds/2. Hermite-Simpson (h = 2 ds, the defect rows of node step 2i its
+  // interval's Hermite rows, of step 2i + 1 its Simpson rows): an interval's ends feed its
+  // Simpson rows with -h/6 and its Hermite rows with -h/8 (first node) and +h/8 (last node), its
+  // midpoint its Simpson rows with -4h/6.
   std::vector<Target> DefectTargets(int k, int state) const {
     std::vector<Target> t;
-    if (k > 0) t.push_back({defect_rows[k - 1][state], -0.5 * ds});
-    if (k < intervals) t.push_back({defect_rows[k][state], -0.5 * ds});
+    if (!hs) {
+      if (k > 0) t.push_back({defect_rows[k - 1][state], -0.5 * ds});
+      if (k < intervals) t.push_back({defect_rows[k][state], -0.5 * ds});
+      return t;
+    }
+    const double h = 2.0 * ds;
+    if (k % 2 == 1) {
+      t.push_back({defect_rows[k][state], -4.0 * h / 6.0});
+      return t;
+    }
+    if (k > 0) {  // the last node of the interval before
+      t.push_back({defect_rows[k - 2][state], h / 8.0});
+      t.push_back({defect_rows[k - 1][state], -h / 6.0});
+    }
+    if (k < intervals) {  // the first node of the interval after
+      t.push_back({defect_rows[k][state], -h / 8.0});
+      t.push_back({defect_rows[k + 1][state], -h / 6.0});
+    }
     return t;
   }
 
@@ -337,16 +369,37 @@ struct Builder {
     }
     defect_rows.assign(intervals, std::vector<int>(n_states, -1));
     for (int k = 0; k < intervals; ++k) {
-      const std::vector<int> a = nodes[k].States(), b = nodes[k + 1].States();
+      // Trapezoid: x_{k+1} - x_k. Hermite-Simpson: step k = 2i holds the Hermite rows
+      // x_m - (x_a + x_b) / 2, step 2i + 1 the Simpson rows x_b - x_a (a, m, b: the interval's
+      // first node, midpoint and last node).
+      const bool hermite = hs && k % 2 == 0;
+      const int first = hs ? k - k % 2 : k;
+      const std::vector<int> a = nodes[first].States(), m = nodes[first + 1].States(),
+                             b = nodes[hs ? first + 2 : k + 1].States();
       for (int j = 0; j < n_states; ++j) {
         if (!state_in_programme[j]) continue;
         // dxi/ds = w r - kappa_g: the constant moves to the right-hand side.
         double rhs = 0.0;
-        if (j == 4) rhs = -0.5 * ds * (roads[k].kappa_g() + roads[k + 1].kappa_g());
+        if (j == 4) {
+          const double ka = roads[first].kappa_g(), kb = roads[hs ? first + 2 : k + 1].kappa_g();
+          const double h = 2.0 * ds;
+          if (!hs)
+            rhs = -0.5 * ds * (ka + kb);
+          else if (hermite)
+            rhs = -h / 8.0 * (ka - kb);
+          else
+            rhs = -h / 6.0 * (ka + 4.0 * roads[first + 1].kappa_g() + kb);
+        }
         const double scale = nlp.scale(a[j]);
         const int row = nlp.AddConstraint(rhs, rhs, scale);
-        nlp.AddLinear(row, b[j], 1.0);
-        nlp.AddLinear(row, a[j], -1.0);
+        if (hermite) {
+          nlp.AddLinear(row, m[j], 1.0);
+          nlp.AddLinear(row, a[j], -0.5);
+          nlp.AddLinear(row, b[j], -0.5);
+        } else {
+          nlp.AddLinear(row, b[j], 1.0);
+          nlp.AddLinear(row, a[j], -1.0);
+        }
         defect_rows[k][j] = row;
       }
     }
@@ -415,14 +468,13 @@ struct Builder {
     if (!options.independent_drive_and_brake) {
       AddRateLimit(&NodeVars::pedal, options.max_pedal_rate, 0.1);
     }
-    // Lap time: the trapezoid of dt/ds.
-    for (int k = 0; k <= intervals; ++k) {
-      nlp.AddObjectiveLinear(nodes[k].w, (k == 0 || k == intervals ? 0.5 : 1.0) * ds);
-    }
+    // Lap time: the trapezoid of dt/ds, or Simpson's rule.
+    for (int k = 0; k <= intervals; ++k) nlp.AddObjectiveLinear(nodes[k].w, Weight(k) * ds);
     // Smooth controls: weight * sum ((c_{k+1} - c_k) / scale)^2 per control.
+    const double spacing = hs ? 0.5 * options.step_m : options.step_m;
     const double pedal_weight = options.pedal_smoothing_weight >= 0.0
                                     ? options.pedal_smoothing_weight
-                                    : options.smoothing * std::pow(options.step_m / 3.0, 2);
+                                    : options.smoothing * std::pow(spacing / 3.0, 2);
     const double steer_weight =
         options.steer_smoothing_weight >= 0.0 ? options.steer_smoothing_weight : options.smoothing;
     for (int k = 0; k < intervals; ++k) {
@@ -444,6 +496,9 @@ struct Builder {
     nlp.SetThreads(options.derivative_threads);
   }
 
+  // Node k's quadrature weight in units of ds (the trapezoid's or Simpson's).
+  double Weight(int k) const { return NodeWeight(k, intervals, hs); }
+
   void Build() {
     AddNodes();
     for (int c = 0; c < 4; ++c) {
@@ -461,6 +516,7 @@ struct Builder {
       brake_elements[c] = MakeElement<5, 2>(*brake_fns[c]);
     }
     layout.nodes = intervals + 1;
+    layout.collocation = options.collocation;
     layout.vars_per_node = nlp.variables() / layout.nodes;
     for (int k = 0; k <= intervals; ++k) AddNodeEquations(k);
     layout.rows_per_node = nlp.constraints() / layout.nodes;
@@ -514,9 +570,13 @@ struct Builder {
   }
 
   // The brakes left out of the programme, integrated node by node over the solution `x` by the
-  // trapezoid the defects would have imposed (so x is the point the full programme would have
+  // collocation the defects would have imposed (so x is the point the full programme would have
   // had), from the start's temperatures.
   void IntegrateBrakesLeftOut(std::vector<double>& x) const {
+    if (hs) {
+      IntegrateBrakesLeftOutHermiteSimpson(x);
+      return;
+    }
     for (int c = 0; c < 4; ++c) {
       if (brake_in_programme[c]) continue;
       const internal::BrakeFn& fn = *brake_fns[c];
@@ -557,6 +617,52 @@ struct Builder {
       }
     }
   }
+
+  // The same by Hermite-Simpson: per interval, Newton on its four equations in the midpoint's and
+  // the last node's temperatures.
+  void IntegrateBrakesLeftOutHermiteSimpson(std::vector<double>& x) const {
+    const double h = 2.0 * ds;
+    for (int c = 0; c < 4; ++c) {
+      if (brake_in_programme[c]) continue;
+      const internal::BrakeFn& fn = *brake_fns[c];
+      const auto rate = [&](int k, const Eigen::Vector2d& y, Eigen::Matrix2d* jac) {
+        const NodeVars& nv = nodes[k];
+        Jet5 in[5] = {Jet5(x[nv.w]), Jet5(y[0], 0), Jet5(y[1], 1), Jet5(x[nv.vx[c]]),
+                      Jet5(x[nv.brake])};
+        Jet5 out[2];
+        fn(in, out);
+        if (jac) *jac << out[0].v[0], out[0].v[1], out[1].v[0], out[1].v[1];
+        return Eigen::Vector2d(out[0].a, out[1].a);
+      };
+      Eigen::Vector2d ya(options.initial.brakes[c].disc_temp,
+                         options.initial.brakes[c].calliper_temp);
+      x[nodes[0].disc[c]] = ya[0];
+      x[nodes[0].calliper[c]] = ya[1];
+      const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
+      for (int a = 0; a + 2 <= intervals; a += 2) {
+        const Eigen::Vector2d fa = rate(a, ya, nullptr);
+        Eigen::Vector2d ym = ya, yb = ya;
+        for (int it = 0; it < 30; ++it) {
+          Eigen::Matrix2d jm, jb;
+          const Eigen::Vector2d fm = rate(a + 1, ym, &jm), fb = rate(a + 2, yb, &jb);
+          Eigen::Vector4d r;
+          r << ym - 0.5 * (ya + yb) - h / 8.0 * (fa - fb),  // Hermite
+              yb - ya - h / 6.0 * (fa + 4.0 * fm + fb);     // Simpson
+          Eigen::Matrix4d j;
+          j << I, -0.5 * I + h / 8.0 * jb, -4.0 * h / 6.0 * jm, I - h / 6.0 * jb;
+          const Eigen::Vector4d step = j.partialPivLu().solve(r);
+          ym -= step.head<2>();
+          yb -= step.tail<2>();
+          if (step.cwiseAbs().sum() < 1e-10) break;
+        }
+        x[nodes[a + 1].disc[c]] = ym[0];
+        x[nodes[a + 1].calliper[c]] = ym[1];
+        x[nodes[a + 2].disc[c]] = yb[0];
+        x[nodes[a + 2].calliper[c]] = yb[1];
+        ya = yb;
+      }
+    }
+  }
 };
 
 }  // namespace
@@ -572,8 +678,21 @@ void RequireFrontDiscsWithinLimit(const sim::ReplayInitialState& start, double f
   }
 }
 
-int LapNodeCount(const track::Track& track, double step_m) {
+int LapNodeCount(const track::Track& track, double step_m, Collocation collocation) {
+  if (collocation == Collocation::kHermiteSimpson) {
+    return 2 * std::max(8, static_cast<int>(std::round(track.length_m() / step_m))) + 1;
+  }
   return std::max(16, static_cast<int>(std::round(track.length_m() / step_m))) + 1;
+}
+
+Collocation ParseCollocation(const std::string& name) {
+  if (name == "trapezoid") return Collocation::kTrapezoid;
+  if (name == "hermite-simpson") return Collocation::kHermiteSimpson;
+  throw InputError(fmt::format("collocation '{}': expected trapezoid or hermite-simpson", name));
+}
+
+const char* CollocationName(Collocation c) {
+  return c == Collocation::kHermiteSimpson ? "hermite-simpson" : "trapezoid";
 }
 
 std::vector<double> ResampleLapPoint(const std::vector<double>& x, int from_nodes, int to_nodes) {
@@ -596,11 +715,13 @@ std::vector<double> ResampleLapPoint(const std::vector<double>& x, int from_node
 }
 
 void StartFromSolution(const SolveResult& solve, const LapLayout& from, int to_nodes,
-                       bool with_multipliers, std::vector<double>& start_point,
-                       IpoptOptions& ipopt) {
+                       Collocation to_collocation, bool with_multipliers,
+                       std::vector<double>& start_point, IpoptOptions& ipopt) {
   start_point = ResampleLapPoint(solve.x, from.nodes, to_nodes);
   if (!with_multipliers) return;
-  const LapMultipliers m = ResampleLapMultipliers(solve, from, from.WithNodes(to_nodes));
+  LapLayout to = from.WithNodes(to_nodes);
+  to.collocation = to_collocation;
+  const LapMultipliers m = ResampleLapMultipliers(solve, from, to);
   ipopt.warm_z_lower = m.z_lower;
   ipopt.warm_z_upper = m.z_upper;
   ipopt.warm_lambda = m.lambda;
@@ -627,36 +748,41 @@ LapMultipliers ResampleLapMultipliers(const SolveResult& solve, const LapLayout&
   if (from.nodes < 2 || to.nodes < 2 ||
       solve.z_lower.size() != static_cast<size_t>(from.variables()) ||
       solve.z_upper.size() != solve.z_lower.size() ||
-      solve.lambda.size() != static_cast<size_t>(from.rows())) {
+      solve.lambda.size() != static_cast<size_t>(from.rows()) ||
+      (from.collocation == Collocation::kHermiteSimpson && from.nodes % 2 == 0) ||
+      (to.collocation == Collocation::kHermiteSimpson && to.nodes % 2 == 0)) {
     throw InputError(fmt::format(
         "optimal lap: multipliers of {} variables and {} rows are not the {}-node problem's",
         solve.z_lower.size(), solve.lambda.size(), from.nodes));
   }
   const int nf = from.intervals(), nt = to.intervals();
-  // A node's share of the lap in units of its mesh's spacing (the trapezoid's weights).
-  const auto share = [](int k, int intervals) { return k == 0 || k == intervals ? 0.5 : 1.0; };
+  const bool hs_from = from.collocation == Collocation::kHermiteSimpson;
+  const bool hs_to = to.collocation == Collocation::kHermiteSimpson;
   const double ratio = static_cast<double>(nf) / nt;  // ds_to / ds_from
-  // Node quantities: densities per unit of `from`'s spacing, interpolated, times the new share.
+  // A place on `to`'s mesh (in its node spacings) on `from`'s.
+  const auto on_from = [&](double place_to) { return place_to * nf / nt; };
+  // Node quantities: densities per unit of `from`'s spacing (over its quadrature weights),
+  // interpolated, times the new weight.
   const auto nodes = [&](const std::vector<double>& src, int src_begin, int per_node,
                          std::vector<double>& dst, int dst_begin) {
     for (int k = 0; k < to.nodes; ++k) {
-      const double place = static_cast<double>(k) * nf / nt;
       for (int i = 0; i < per_node; ++i) {
-        const double density =
-            Interpolate([&](int j) { return src[src_begin + j * per_node + i] / share(j, nf); },
-                        from.nodes, 0.0, place);
-        dst[dst_begin + k * per_node + i] = density * share(k, nt) * ratio;
+        const double density = Interpolate(
+            [&](int j) { return src[src_begin + j * per_node + i] / NodeWeight(j, nf, hs_from); },
+            from.nodes, 0.0, on_from(k));
+        dst[dst_begin + k * per_node + i] = density * NodeWeight(k, nt, hs_to) * ratio;
       }
     }
   };
-  // Interval quantities: interpolated at the midpoints, unscaled.
+  // Interval quantities (the rate limits' rows, from node to node): interpolated at the
+  // midpoints, unscaled.
   const auto intervals = [&](const std::vector<double>& src, int src_begin, int per_interval,
                              std::vector<double>& dst, int dst_begin) {
     for (int k = 0; k < nt; ++k) {
-      const double place = (k + 0.5) * nf / nt;
       for (int i = 0; i < per_interval; ++i) {
-        dst[dst_begin + k * per_interval + i] = Interpolate(
-            [&](int j) { return src[src_begin + j * per_interval + i]; }, nf, 0.5, place);
+        dst[dst_begin + k * per_interval + i] =
+            Interpolate([&](int j) { return src[src_begin + j * per_interval + i]; }, nf, 0.5,
+                        on_from(k + 0.5));
       }
     }
   };
@@ -668,7 +794,37 @@ LapMultipliers ResampleLapMultipliers(const SolveResult& solve, const LapLayout&
   nodes(solve.z_upper, 0, from.vars_per_node, out.z_upper, 0);
   nodes(solve.lambda, 0, from.rows_per_node, out.lambda, 0);
   int src = from.nodes * from.rows_per_node, dst = to.nodes * to.rows_per_node;
-  intervals(solve.lambda, src, from.defects_per_interval, out.lambda, dst);
+  // The defects. A trapezoid's or Simpson's row's multiplier is its state's costate, the same on
+  // any mesh: interpolated where the row's interval has its middle. A Hermite row's (the midpoint
+  // state's own equation) carries the midpoint's weight like a node's: interpolated as a density
+  // between the midpoints; from a trapezoid, which has none, 0.
+  const int per = from.defects_per_interval;
+  const auto costate = [&](int i, double place_from) {
+    if (!hs_from) {
+      return Interpolate([&](int j) { return solve.lambda[src + j * per + i]; }, nf, 0.5,
+                         place_from);
+    }
+    return Interpolate([&](int j) { return solve.lambda[src + (2 * j + 1) * per + i]; }, nf / 2,
+                       0.5, 0.5 * place_from);
+  };
+  const auto hermite_density = [&](int i, double place_from) {
+    return Interpolate(
+        [&](int j) { return solve.lambda[src + 2 * j * per + i] / NodeWeight(1, nf, true); },
+        nf / 2, 0.5, 0.5 * place_from);
+  };
+  for (int k = 0; k < nt; ++k) {
+    for (int i = 0; i < to.defects_per_interval; ++i) {
+      double value = 0.0;
+      if (!hs_to) {
+        value = costate(i, on_from(k + 0.5));
+      } else if (k % 2 == 1) {  // Simpson's row of the interval with its midpoint at node k
+        value = costate(i, on_from(k));
+      } else if (hs_from) {  // Hermite's row of the interval with its midpoint at node k + 1
+        value = hermite_density(i, on_from(k + 1)) * NodeWeight(1, nt, true) * ratio;
+      }
+      out.lambda[dst + k * to.defects_per_interval + i] = value;
+    }
+  }
   src += nf * from.defects_per_interval;
   dst += nt * to.defects_per_interval;
   std::copy_n(solve.lambda.begin() + src, from.closure_rows, out.lambda.begin() + dst);
@@ -741,7 +897,7 @@ LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& tra
     b.IntegrateBrakesLeftOut(out.solve.x);
   }
   const std::vector<double>& x = out.solve.x;
-  const double time = AppendRoadFrameChannels(b.nodes, x, b.ds, out);
+  const double time = AppendRoadFrameChannels(b.nodes, x, b.ds, out, b.hs);
   for (int k = 0; k <= b.intervals; ++k) {
     const NodeVars& nv = b.nodes[k];
     out.xi.push_back(x[nv.xi]);

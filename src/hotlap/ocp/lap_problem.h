@@ -23,6 +23,7 @@
 
 #include <array>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "hotlap/ocp/ipopt_solve.h"
@@ -34,8 +35,24 @@
 
 namespace hotlap::ocp {
 
+/// How the state equations are imposed between nodes (docs/optimal-control.md, "Transcription").
+enum class Collocation {
+  /// x_{k+1} - x_k = ds/2 (f_k + f_{k+1}) on every interval of the mesh: second order.
+  kTrapezoid,
+  /// Hermite-Simpson in separated form: intervals of `step_m`, each with a node at its midpoint
+  /// (an ordinary node: the same variables and node equations), and two defects an interval,
+  /// Simpson's x_b - x_a = h/6 (f_a + 4 f_m + f_b) and Hermite's x_m = (x_a + x_b)/2 +
+  /// h/8 (f_a - f_b): fourth order where the solution is smooth. The nodes are step_m / 2 apart.
+  kHermiteSimpson,
+};
+
+/// "trapezoid" or "hermite-simpson"; InputError otherwise.
+Collocation ParseCollocation(const std::string& name);
+const char* CollocationName(Collocation c);
+
 struct LapProblemOptions {
-  double step_m = 2.0;                     ///< mesh spacing along the centre line
+  double step_m = 2.0;  ///< mesh spacing along the centre line (an interval)
+  Collocation collocation = Collocation::kTrapezoid;
   std::optional<double> front_disc_limit;  ///< K; front discs at most this at every node
   bool periodic_thermal = false;    ///< thermal states end where they start (else start fixed)
   double ambient_temp = 0.0;        ///< K
@@ -106,8 +123,11 @@ struct CornerTrace {
 
 /// Where a lap problem's variables and rows lie. Variables: node by node, `vars_per_node` each.
 /// Rows: the node equations, node by node (`rows_per_node` each); then the collocation defects,
-/// interval by interval (`defects_per_interval` each); then the lap's closure (`closure_rows`);
-/// then `rate_blocks` blocks of two rows per interval (the steer's and pedal's rate limits).
+/// from node to node (`defects_per_interval` each: with Hermite-Simpson an interval's Hermite
+/// rows come from its first node to its midpoint, its Simpson rows from the midpoint to its
+/// last node); then the lap's closure (`closure_rows`); then `rate_blocks` blocks of two rows
+/// from node to node (the steer's and pedal's rate limits). `intervals()` counts the steps from
+/// node to node (twice the Hermite-Simpson intervals).
 struct LapLayout {
   int nodes = 0;  ///< intervals + 1
   int vars_per_node = 0;
@@ -115,6 +135,7 @@ struct LapLayout {
   int defects_per_interval = 0;
   int closure_rows = 0;
   int rate_blocks = 0;
+  Collocation collocation = Collocation::kTrapezoid;
 
   int intervals() const { return nodes - 1; }
   int variables() const { return nodes * vars_per_node; }
@@ -148,9 +169,10 @@ struct LapSolution : RoadFrameChannels {
 /// that starts there cannot hold the limit.
 void RequireFrontDiscsWithinLimit(const sim::ReplayInitialState& start, double front_disc_limit);
 
-/// The mesh nodes of the lap problem on `track` with spacing about `step_m` (the intervals plus
-/// the closing node).
-int LapNodeCount(const track::Track& track, double step_m);
+/// The mesh nodes of the lap problem on `track` with intervals of about `step_m` (the intervals
+/// plus the closing node; with Hermite-Simpson, their midpoints too).
+int LapNodeCount(const track::Track& track, double step_m,
+                 Collocation collocation = Collocation::kTrapezoid);
 
 /// A point of the lap problem (a SolveResult::x) on a mesh of `from_nodes` nodes, taken onto a
 /// mesh of `to_nodes` nodes of the same track, car and options: every node variable linearly
@@ -175,12 +197,13 @@ LapMultipliers ResampleLapMultipliers(const SolveResult& solve, const LapLayout&
                                       const LapLayout& to);
 
 /// The start of a solve from a solved lap (`solve`, of the layout `from`) on a mesh of `to_nodes`
-/// nodes of the same problem: its point (ResampleLapPoint) as `start_point` and, if
-/// `with_multipliers`, its multipliers (ResampleLapMultipliers) as `ipopt`'s warm start. Coarse
-/// to fine, the mesh check and a saved lap (ocp/lap_start_file.h) all start this way.
+/// nodes of the same problem transcribed by `to_collocation`: its point (ResampleLapPoint) as
+/// `start_point` and, if `with_multipliers`, its multipliers (ResampleLapMultipliers) as `ipopt`'s
+/// warm start. Coarse to fine, the mesh check and a saved lap (ocp/lap_start_file.h) all start
+/// this way.
 void StartFromSolution(const SolveResult& solve, const LapLayout& from, int to_nodes,
-                       bool with_multipliers, std::vector<double>& start_point,
-                       IpoptOptions& ipopt);
+                       Collocation to_collocation, bool with_multipliers,
+                       std::vector<double>& start_point, IpoptOptions& ipopt);
 
 /// Builds and solves the lap. `guess` (a QSS lap of the same car and track, e.g. from
 /// sim::RunQssLap) gives the starting point. InputError if the car has no vehicle sections;

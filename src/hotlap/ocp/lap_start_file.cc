@@ -17,12 +17,21 @@ namespace hotlap::ocp {
 
 namespace {
 
-constexpr char kMagic[8] = {'h', 'o', 't', 'l', 'a', 'p', 'L', '1'};
-constexpr size_t kHeader = sizeof(kMagic) + sizeof(double) + 6 * sizeof(int32_t);
+// L1: six layout numbers (trapezoid laps, until 2026-11-27); L2: seven, the last the collocation
+// (0 trapezoid, 1 Hermite-Simpson).
+constexpr char kMagic1[8] = {'h', 'o', 't', 'l', 'a', 'p', 'L', '1'};
+constexpr char kMagic[8] = {'h', 'o', 't', 'l', 'a', 'p', 'L', '2'};
+constexpr size_t kHeader1 = sizeof(kMagic) + sizeof(double) + 6 * sizeof(int32_t);
+constexpr size_t kHeader = sizeof(kMagic) + sizeof(double) + 7 * sizeof(int32_t);
 
 std::vector<int32_t> LayoutNumbers(const LapLayout& l) {
-  return {l.nodes,        l.vars_per_node, l.rows_per_node, l.defects_per_interval,
-          l.closure_rows, l.rate_blocks};
+  return {l.nodes,
+          l.vars_per_node,
+          l.rows_per_node,
+          l.defects_per_interval,
+          l.closure_rows,
+          l.rate_blocks,
+          l.collocation == Collocation::kHermiteSimpson};
 }
 
 }  // namespace
@@ -48,17 +57,28 @@ LapStart ReadLapStart(const std::filesystem::path& path) {
     return InputError(
         fmt::format("'{}' is not a saved lap (--save-solution): {}", path.string(), why));
   };
-  if (bytes.size() < kHeader || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0) {
+  const bool version1 =
+      bytes.size() >= kHeader1 && std::memcmp(bytes.data(), kMagic1, sizeof(kMagic1)) == 0;
+  if (!version1 &&
+      (bytes.size() < kHeader || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0)) {
     throw fail("it does not start as one");
   }
   LapStart s;
   size_t at = sizeof(kMagic);
   std::memcpy(&s.track_length_m, bytes.data() + at, sizeof(double));
   at += sizeof(double);
-  int32_t v[6];
-  std::memcpy(v, bytes.data() + at, sizeof(v));
-  at += sizeof(v);
-  s.layout = {v[0], v[1], v[2], v[3], v[4], v[5]};
+  int32_t v[7] = {0, 0, 0, 0, 0, 0, 0};
+  const size_t numbers = (version1 ? 6 : 7) * sizeof(int32_t);
+  std::memcpy(v, bytes.data() + at, numbers);
+  at += numbers;
+  if (v[6] != 0 && v[6] != 1) throw fail("its collocation is neither of the two");
+  s.layout = {v[0],
+              v[1],
+              v[2],
+              v[3],
+              v[4],
+              v[5],
+              v[6] == 1 ? Collocation::kHermiteSimpson : Collocation::kTrapezoid};
   std::vector<SolveResult> solves;
   try {
     solves = DecodeSolveResults(bytes.substr(at));
@@ -68,12 +88,14 @@ LapStart ReadLapStart(const std::filesystem::path& path) {
   if (solves.size() != 1) throw fail("it holds no solve");
   s.solve = std::move(solves[0]);
   const LapLayout& l = s.layout;
-  const bool sizes =
-      l.nodes >= 2 && l.vars_per_node > 0 && l.rows_per_node >= 0 && l.defects_per_interval >= 0 &&
-      l.closure_rows >= 0 && l.rate_blocks >= 0 && std::isfinite(s.track_length_m) &&
-      s.track_length_m > 0.0 && s.solve.x.size() == static_cast<size_t>(l.variables()) &&
-      s.solve.z_lower.size() == s.solve.x.size() && s.solve.z_upper.size() == s.solve.x.size() &&
-      s.solve.lambda.size() == static_cast<size_t>(l.rows());
+  const bool sizes = l.nodes >= 2 && l.vars_per_node > 0 && l.rows_per_node >= 0 &&
+                     l.defects_per_interval >= 0 && l.closure_rows >= 0 && l.rate_blocks >= 0 &&
+                     (l.collocation == Collocation::kTrapezoid || l.nodes % 2 == 1) &&
+                     std::isfinite(s.track_length_m) && s.track_length_m > 0.0 &&
+                     s.solve.x.size() == static_cast<size_t>(l.variables()) &&
+                     s.solve.z_lower.size() == s.solve.x.size() &&
+                     s.solve.z_upper.size() == s.solve.x.size() &&
+                     s.solve.lambda.size() == static_cast<size_t>(l.rows());
   if (!sizes) throw fail("its sizes do not agree with its layout");
   return s;
 }
@@ -84,8 +106,9 @@ void UseLapStart(const LapStart& start, const track::Track& track, OptimalLapOpt
                                  start.track_length_m, track.length_m()));
   }
   // This problem's layout on the target mesh, as far as the file can tell: the same node.
-  StartFromSolution(start.solve, start.layout, LapNodeCount(track, options.step_m), true,
-                    options.start_point, options.ipopt);
+  StartFromSolution(start.solve, start.layout,
+                    LapNodeCount(track, options.step_m, options.collocation), options.collocation,
+                    true, options.start_point, options.ipopt);
 }
 
 }  // namespace hotlap::ocp

@@ -11,8 +11,8 @@ SolvedLap SolveOnHalfMesh(const vehicle::Car& car, const track::Track& track,
   const LapSolution& s = solved.run.solution;
   if (s.solve.ok()) {
     // Point and multipliers: a warm start, as coarse to fine does.
-    StartFromSolution(s.solve, s.layout, LapNodeCount(track, options.step_m), true,
-                      options.start_point, options.ipopt);
+    StartFromSolution(s.solve, s.layout, LapNodeCount(track, options.step_m, options.collocation),
+                      options.collocation, true, options.start_point, options.ipopt);
   }
   return SolveLap(car, track, options, "half mesh", nullptr, progress, log);
 }

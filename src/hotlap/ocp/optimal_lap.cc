@@ -113,6 +113,7 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
 
   LapProblemOptions lap;
   lap.step_m = options.step_m;
+  lap.collocation = options.collocation;
   lap.front_disc_limit = options.front_disc_limit;
   lap.ambient_temp = options.ambient_temp;
   lap.track_temp = options.track_temp;
@@ -138,14 +139,15 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
     // the fine mesh as the fine solve's start.
     LapProblemOptions coarse = lap;
     coarse.step_m = options.coarse_step_m;
+    coarse.collocation = options.coarse_collocation;
     const LapSolution c =
         SolveMinimumTimeLap(car, track, coarse, w.guess, options.ipopt,
                             options.presolved ? &options.presolved->coarse : nullptr);
     run.coarse = c.solve;
     run.coarse_lap_time = c.lap_time;
     if (c.solve.ok()) {
-      StartFromSolution(c.solve, c.layout, LapNodeCount(track, options.step_m),
-                        options.coarse_multipliers, lap.start_point, fine_ipopt);
+      StartFromSolution(c.solve, c.layout, LapNodeCount(track, options.step_m, lap.collocation),
+                        lap.collocation, options.coarse_multipliers, lap.start_point, fine_ipopt);
     }
   }
   // With the coarse solve's multipliers the fine solve is a warm start (small barrier, the point

@@ -61,6 +61,10 @@ struct OptimalLapOptions {
   /// 15 m took the Gen-7 lap at 3 m from 274 iterations (140 s) to 196 + 31 (35 s in all;
   /// docs/optimal-control.md, "Speed").
   double coarse_step_m = 15.0;
+  /// The transcription of the step_m solve and of the coarse one (step_m and coarse_step_m are
+  /// their intervals: Hermite-Simpson's nodes are half as far apart).
+  Collocation collocation = Collocation::kTrapezoid;
+  Collocation coarse_collocation = Collocation::kTrapezoid;
   /// Coarse to fine with the coarse solve's multipliers too (ResampleLapMultipliers): the fine
   /// solve is then an Ipopt warm start from mu = ipopt.warm_mu (docs/optimal-control.md, "Speed").
   bool coarse_multipliers = true;

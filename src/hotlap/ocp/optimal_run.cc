@@ -13,6 +13,8 @@ OptimalLapOptions MakeOptimalLapOptions(const OptimalRunOptions& a) {
   OptimalLapOptions o;
   o.step_m = a.step_m;
   o.coarse_step_m = a.coarse_step_m;
+  o.collocation = ParseCollocation(a.collocation);
+  o.coarse_collocation = ParseCollocation(a.coarse_collocation);
   o.steer_smoothing_weight = a.steer_smoothing;
   o.pedal_smoothing_weight = a.pedal_smoothing;
   o.convex_element_hessians = a.convex_element_hessians;

@@ -24,8 +24,10 @@ namespace hotlap::ocp {
 
 /// The options of an optimal-lap run, as the commands take them (docs/optimal-control.md).
 struct OptimalRunOptions {
-  double step_m = 3.0;                   ///< mesh spacing along the centre line, m
-  double coarse_step_m = 15.0;           ///< solve first on this mesh and start from it (0: off)
+  double step_m = 3.0;                    ///< mesh spacing along the centre line, m
+  double coarse_step_m = 15.0;            ///< solve first on this mesh and start from it (0: off)
+  std::string collocation = "trapezoid";  ///< of the --step-m solve (ParseCollocation)
+  std::string coarse_collocation = "trapezoid";  ///< of the coarse solve
   double steer_smoothing = -1.0;         ///< the steer's smoothness weight (< 0: the library's)
   double pedal_smoothing = -1.0;         ///< the pedal's
   bool convex_element_hessians = false;  ///< each element's negative curvature clipped

@@ -108,6 +108,7 @@ nlohmann::json OptimalRunsJson(const OptimalRuns& runs, const OptimalRunOptions&
   j["car"] = car.name;
   j["overrides"] = vehicle::OverridesJson(car.overrides);
   j["mesh_step_m"] = options.step_m;
+  j["collocation"] = options.collocation;
   j["controls"] = options.independent_drive_and_brake ? "independent" : "pedal";
   j["wall_time_s"] = RoundSignificant(wall_time_s);
   if (mesh_check_delta_s) j["mesh_check_delta_s"] = RoundSignificant(*mesh_check_delta_s);

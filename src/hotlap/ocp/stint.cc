@@ -171,6 +171,10 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
   if (options.lap.thermal_start == ThermalStart::kPeriodic) {
     throw InputError("a stint's thermal states run on from lap to lap: not periodic");
   }
+  if (options.lap.collocation != Collocation::kTrapezoid ||
+      options.lap.coarse_collocation != Collocation::kTrapezoid) {
+    throw InputError("a stint is transcribed by the trapezoid (Hermite-Simpson: single laps only)");
+  }
   const double eta = car.vehicle->powertrain.driveline_efficiency;
   const auto say = [&](const std::string& text) {
     if (log) log(text);
