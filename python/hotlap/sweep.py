@@ -38,6 +38,7 @@ OPTIONS = {
     "step_m": (float, ("qss", "ocp", "compare", "stint")),
     "line": (str, ("qss",)),
     "coarse_step_m": (float, ("ocp", "compare", "stint")),
+    "collocation": (str, ("ocp", "compare")),
     "disc_limit_C": (float, ("ocp", "stint")),
     "compare_disc_limit_C": (float, ("compare",)),
     "wear_scale": (float, ("stint",)),

@@ -30,8 +30,9 @@ namespace {
 
 py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
                     std::optional<double> disc_limit_C, std::optional<double> compare_disc_limit_C,
-                    double step_m, double coarse_step_m, const std::string& thermal_start,
-                    double ambient_C, double track_C, int max_iterations,
+                    double step_m, double coarse_step_m, const std::string& collocation,
+                    const std::string& thermal_start, double ambient_C, double track_C,
+                    int max_iterations,
                     const std::vector<std::pair<std::string, std::string>>& ipopt_options,
                     int threads, const py::object& progress) {
   if (threads < 0 || threads > 256) {
@@ -41,6 +42,8 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
   o.threads = threads;
   o.step_m = step_m;
   o.coarse_step_m = coarse_step_m;
+  ocp::ParseCollocation(collocation);  // an InputError (ValueError) before any work
+  o.collocation = collocation;
   o.disc_limit_C = disc_limit_C;
   o.compare_disc_limit_C = compare_disc_limit_C;
   o.thermal_start = thermal_start;
@@ -150,6 +153,7 @@ void BindOcp(py::module_& m) {
   m.def("optimal_lap", &OptimalLap, py::arg("car"), py::arg("track"), py::kw_only(),
         py::arg("disc_limit_C") = py::none(), py::arg("compare_disc_limit_C") = py::none(),
         py::arg("step_m") = defaults.step_m, py::arg("coarse_step_m") = defaults.coarse_step_m,
+        py::arg("collocation") = defaults.collocation,
         py::arg("thermal_start") = defaults.thermal_start,
         py::arg("ambient_temp_C") = defaults.ambient_C, py::arg("track_temp_C") = defaults.track_C,
         py::arg("max_iterations") = defaults.max_iterations,
@@ -160,7 +164,9 @@ void BindOcp(py::module_& m) {
         "the limited lap. Returns {'summary': dict (the keys of `hotlap optimise --json`), "
         "'channels': {label: {column: array}}, 'cancelled': bool}. progress(label, iteration, "
         "objective_s, infeasibility, optimality) is called at every Ipopt iteration; returning "
-        "False stops the solve. threads: threads evaluating the derivatives (1, the default, "
+        "False stops the solve. collocation: 'trapezoid' or 'hermite-simpson' (step_m is then an "
+        "interval with a node at its midpoint; the coarse solve stays trapezoid). "
+        "threads: threads evaluating the derivatives (1, the default, "
         "suits sweeps of one case per worker; 0: one per core, as the command line).");
   const ocp::StintOptions stint;
   m.def("stint", &Stint, py::arg("car"), py::arg("track"), py::kw_only(),

@@ -54,6 +54,22 @@ def test_bad_options_raise_value_error():
         hotlap.optimal_lap(car, track, disc_limit_C=500.0, compare_disc_limit_C=500.0, **MESH)
     with pytest.raises(ValueError, match="no-such-option"):
         hotlap.optimal_lap(car, track, ipopt_options=[("no-such-option", "1")], **MESH)
+    with pytest.raises(ValueError, match="hermite-simpson"):
+        hotlap.optimal_lap(car, track, collocation="simpson", **MESH)
+
+
+def test_hermite_simpson_equals_the_command_line(cli, tmp_path):
+    # 40 m intervals with their midpoints: the nodes of a 20 m trapezoid.
+    cli("optimise", "--collocation", "hermite-simpson", "--step-m", 40, "--coarse-step-m", 0,
+        "--threads", 1, "--out", tmp_path / "o", "--json", tmp_path / "o.json")
+    expected = read_json(tmp_path / "o.json")
+    got = hotlap.optimal_lap(hotlap.load_car("gen7"), hotlap.load_track("darlington"),
+                             collocation="hermite-simpson", step_m=40.0, coarse_step_m=0.0)
+    summary = got["summary"]
+    assert expected["collocation"] == summary["collocation"] == "hermite-simpson"
+    assert summary["status"] == "converged"
+    assert summary["lap_time_s"] == expected["lap_time_s"]
+    assert summary["variables"] == expected["variables"]
 
 
 def test_a_stint_with_checkpoints_resumes_from_them(tmp_path):
