@@ -569,42 +569,48 @@ struct Builder {
     return out;
   }
 
+  // Brake c's dT/ds (disc, calliper) at node k of the point x with temperatures y, and its
+  // Jacobian in y if `jac`.
+  Eigen::Vector2d BrakeRate(int c, const std::vector<double>& x, int k, const Eigen::Vector2d& y,
+                            Eigen::Matrix2d* jac) const {
+    const NodeVars& nv = nodes[k];
+    Jet5 in[5] = {Jet5(x[nv.w]), Jet5(y[0], 0), Jet5(y[1], 1), Jet5(x[nv.vx[c]]),
+                  Jet5(x[nv.brake])};
+    Jet5 out[2];
+    (*brake_fns[c])(in, out);
+    if (jac) *jac << out[0].v[0], out[0].v[1], out[1].v[0], out[1].v[1];
+    return {out[0].a, out[1].a};
+  }
+  void SetBrake(int c, int k, const Eigen::Vector2d& y, std::vector<double>& x) const {
+    x[nodes[k].disc[c]] = y[0];
+    x[nodes[k].calliper[c]] = y[1];
+  }
+
   // The brakes left out of the programme, integrated node by node over the solution `x` by the
   // collocation the defects would have imposed (so x is the point the full programme would have
   // had), from the start's temperatures.
   void IntegrateBrakesLeftOut(std::vector<double>& x) const {
-    if (hs) {
-      IntegrateBrakesLeftOutHermiteSimpson(x);
-      return;
-    }
     for (int c = 0; c < 4; ++c) {
       if (brake_in_programme[c]) continue;
-      const internal::BrakeFn& fn = *brake_fns[c];
-      // dT/ds at node k with temperatures y (and its Jacobian in y).
-      const auto rate = [&](int k, const std::array<double, 2>& y,
-                            std::array<std::array<double, 2>, 2>* jac) {
-        const NodeVars& nv = nodes[k];
-        Jet5 in[5] = {Jet5(x[nv.w]), Jet5(y[0], 0), Jet5(y[1], 1), Jet5(x[nv.vx[c]]),
-                      Jet5(x[nv.brake])};
-        Jet5 out[2];
-        fn(in, out);
-        if (jac) *jac = {{{out[0].v[0], out[0].v[1]}, {out[1].v[0], out[1].v[1]}}};
-        return std::array<double, 2>{out[0].a, out[1].a};
-      };
-      std::array<double, 2> y = {options.initial.brakes[c].disc_temp,
-                                 options.initial.brakes[c].calliper_temp};
-      x[nodes[0].disc[c]] = y[0];
-      x[nodes[0].calliper[c]] = y[1];
+      Eigen::Vector2d y(options.initial.brakes[c].disc_temp,
+                        options.initial.brakes[c].calliper_temp);
+      SetBrake(c, 0, y, x);
+      if (hs) {
+        for (int a = 0; a + 2 <= intervals; a += 2) {
+          y = HermiteSimpsonBrakeStep(c, x, a, y);
+        }
+        continue;
+      }
       for (int k = 0; k < intervals; ++k) {
-        const std::array<double, 2> f0 = rate(k, y, nullptr);
-        std::array<double, 2> next = y;
+        const Eigen::Vector2d f0 = BrakeRate(c, x, k, y, nullptr);
+        Eigen::Vector2d next = y;
         for (int it = 0; it < 30; ++it) {  // Newton on next - y - ds/2 (f0 + f(next)) = 0
-          std::array<std::array<double, 2>, 2> j;
-          const std::array<double, 2> f1 = rate(k + 1, next, &j);
+          Eigen::Matrix2d j;
+          const Eigen::Vector2d f1 = BrakeRate(c, x, k + 1, next, &j);
           const double r0 = next[0] - y[0] - 0.5 * ds * (f0[0] + f1[0]);
           const double r1 = next[1] - y[1] - 0.5 * ds * (f0[1] + f1[1]);
-          const double a = 1.0 - 0.5 * ds * j[0][0], b = -0.5 * ds * j[0][1];
-          const double cc = -0.5 * ds * j[1][0], d = 1.0 - 0.5 * ds * j[1][1];
+          const double a = 1.0 - 0.5 * ds * j(0, 0), b = -0.5 * ds * j(0, 1);
+          const double cc = -0.5 * ds * j(1, 0), d = 1.0 - 0.5 * ds * j(1, 1);
           const double det = a * d - b * cc;
           const double step0 = (d * r0 - b * r1) / det, step1 = (a * r1 - cc * r0) / det;
           next[0] -= step0;
@@ -612,56 +618,37 @@ struct Builder {
           if (std::abs(step0) + std::abs(step1) < 1e-10) break;
         }
         y = next;
-        x[nodes[k + 1].disc[c]] = y[0];
-        x[nodes[k + 1].calliper[c]] = y[1];
+        SetBrake(c, k + 1, y, x);
       }
     }
   }
 
-  // The same by Hermite-Simpson: per interval, Newton on its four equations in the midpoint's and
-  // the last node's temperatures.
-  void IntegrateBrakesLeftOutHermiteSimpson(std::vector<double>& x) const {
+  // One Hermite-Simpson interval of brake c from node a (temperatures ya): Newton on its four
+  // equations in the midpoint's and the last node's temperatures, which it stores in x and
+  // returns the last node's.
+  Eigen::Vector2d HermiteSimpsonBrakeStep(int c, std::vector<double>& x, int a,
+                                          const Eigen::Vector2d& ya) const {
     const double h = 2.0 * ds;
-    for (int c = 0; c < 4; ++c) {
-      if (brake_in_programme[c]) continue;
-      const internal::BrakeFn& fn = *brake_fns[c];
-      const auto rate = [&](int k, const Eigen::Vector2d& y, Eigen::Matrix2d* jac) {
-        const NodeVars& nv = nodes[k];
-        Jet5 in[5] = {Jet5(x[nv.w]), Jet5(y[0], 0), Jet5(y[1], 1), Jet5(x[nv.vx[c]]),
-                      Jet5(x[nv.brake])};
-        Jet5 out[2];
-        fn(in, out);
-        if (jac) *jac << out[0].v[0], out[0].v[1], out[1].v[0], out[1].v[1];
-        return Eigen::Vector2d(out[0].a, out[1].a);
-      };
-      Eigen::Vector2d ya(options.initial.brakes[c].disc_temp,
-                         options.initial.brakes[c].calliper_temp);
-      x[nodes[0].disc[c]] = ya[0];
-      x[nodes[0].calliper[c]] = ya[1];
-      const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
-      for (int a = 0; a + 2 <= intervals; a += 2) {
-        const Eigen::Vector2d fa = rate(a, ya, nullptr);
-        Eigen::Vector2d ym = ya, yb = ya;
-        for (int it = 0; it < 30; ++it) {
-          Eigen::Matrix2d jm, jb;
-          const Eigen::Vector2d fm = rate(a + 1, ym, &jm), fb = rate(a + 2, yb, &jb);
-          Eigen::Vector4d r;
-          r << ym - 0.5 * (ya + yb) - h / 8.0 * (fa - fb),  // Hermite
-              yb - ya - h / 6.0 * (fa + 4.0 * fm + fb);     // Simpson
-          Eigen::Matrix4d j;
-          j << I, -0.5 * I + h / 8.0 * jb, -4.0 * h / 6.0 * jm, I - h / 6.0 * jb;
-          const Eigen::Vector4d step = j.partialPivLu().solve(r);
-          ym -= step.head<2>();
-          yb -= step.tail<2>();
-          if (step.cwiseAbs().sum() < 1e-10) break;
-        }
-        x[nodes[a + 1].disc[c]] = ym[0];
-        x[nodes[a + 1].calliper[c]] = ym[1];
-        x[nodes[a + 2].disc[c]] = yb[0];
-        x[nodes[a + 2].calliper[c]] = yb[1];
-        ya = yb;
-      }
+    const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
+    const Eigen::Vector2d fa = BrakeRate(c, x, a, ya, nullptr);
+    Eigen::Vector2d ym = ya, yb = ya;
+    for (int it = 0; it < 30; ++it) {
+      Eigen::Matrix2d jm, jb;
+      const Eigen::Vector2d fm = BrakeRate(c, x, a + 1, ym, &jm);
+      const Eigen::Vector2d fb = BrakeRate(c, x, a + 2, yb, &jb);
+      Eigen::Vector4d r;
+      r << ym - 0.5 * (ya + yb) - h / 8.0 * (fa - fb),  // Hermite
+          yb - ya - h / 6.0 * (fa + 4.0 * fm + fb);     // Simpson
+      Eigen::Matrix4d j;
+      j << I, -0.5 * I + h / 8.0 * jb, -4.0 * h / 6.0 * jm, I - h / 6.0 * jb;
+      const Eigen::Vector4d step = j.partialPivLu().solve(r);
+      ym -= step.head<2>();
+      yb -= step.tail<2>();
+      if (step.cwiseAbs().sum() < 1e-10) break;
     }
+    SetBrake(c, a + 1, ym, x);
+    SetBrake(c, a + 2, yb, x);
+    return yb;
   }
 };
 
@@ -689,10 +676,6 @@ Collocation ParseCollocation(const std::string& name) {
   if (name == "trapezoid") return Collocation::kTrapezoid;
   if (name == "hermite-simpson") return Collocation::kHermiteSimpson;
   throw InputError(fmt::format("collocation '{}': expected trapezoid or hermite-simpson", name));
-}
-
-const char* CollocationName(Collocation c) {
-  return c == Collocation::kHermiteSimpson ? "hermite-simpson" : "trapezoid";
 }
 
 std::vector<double> ResampleLapPoint(const std::vector<double>& x, int from_nodes, int to_nodes) {

@@ -48,7 +48,6 @@ enum class Collocation {
 
 /// "trapezoid" or "hermite-simpson"; InputError otherwise.
 Collocation ParseCollocation(const std::string& name);
-const char* CollocationName(Collocation c);
 
 struct LapProblemOptions {
   double step_m = 2.0;  ///< mesh spacing along the centre line (an interval)
