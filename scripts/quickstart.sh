@@ -3,7 +3,7 @@
 # Darlington example: the NASCAR paper's comparison, the Gen-7-like car's minimum-time lap of
 # Darlington with tyre and brake temperatures and wear as states, without and with a 500 degC
 # front-disc limit, writing out/darlington/{unconstrained.csv,constrained.csv,compare.html} and
-# out/darlington.json (two Ipopt solves side by side, about half a minute on two cores once built).
+# out/darlington.json (two Ipopt solves side by side, 30-50 s on two cores once built).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
