@@ -20,14 +20,19 @@ fs::path MakeWorkDir() {
 }  // namespace
 
 const fs::path& WorkDir() {
-  static const fs::path dir = [] {
-    fs::path made = MakeWorkDir();
+  static const fs::path dir = MakeWorkDir();
+  // Registered once `dir` exists, so that it runs before dir's destructor (exit runs handlers in
+  // the reverse order of their registration). Registered inside dir's initialiser, as it was
+  // until 2026-11-27, it ran after it: remove_all read a destroyed path (a use after free that
+  // ASan does not see inside libstdc++) and every run left its folder behind.
+  static const bool remove_at_exit = [] {
     std::atexit([] {
       std::error_code ec;
       fs::remove_all(WorkDir(), ec);
     });
-    return made;
+    return true;
   }();
+  (void)remove_at_exit;
   return dir;
 }
 

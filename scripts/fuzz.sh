@@ -239,6 +239,12 @@ run_one() {
       "${prefix[@]}" "$build/fuzz/${t}_fuzz" "$corpus" "$seeds" ${dict:+-dict=$dict} "${limits[@]}" \
       -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$findings/" \
       ${HOTLAP_FUZZ_ARGS:-} >"$log" 2>&1 || rc=$?
+    # A run that ended of itself (exit 0) has removed its own temporary folder (fuzz_input.cc):
+    # one left behind is a finding (the fuzzers left theirs until 2026-11-27).
+    local left_behind=""
+    if [ "$rc" -eq 0 ]; then
+      left_behind=$(find "$run_tmp" -mindepth 1 -maxdepth 1 -name 'hotlap-fuzz-*' | head -1)
+    fi
     rm -rf "$run_tmp"
     # CPU seconds of the fuzzer (children of this shell, in clock ticks).
     local cpu_seconds
@@ -260,6 +266,10 @@ run_one() {
     # Stopped by hand (SIGINT: libFuzzer's interrupted_exitcode, 72): counted, not a finding.
     if [ "$rc" -eq 72 ]; then outcome=stopped; fi
     if [ "$rc" -ne 0 ] && [ "$rc" -ne 72 ]; then outcome="FOUND (exit $rc; $log)"; fi
+    if [ -n "$left_behind" ]; then
+      outcome="FOUND (left its temporary folder $(basename "$left_behind") behind)"
+      rc=1
+    fi
     local wall=$seconds
     if [ "$budget" -eq 1 ]; then wall=$(($(date +%s) - started_wall)); fi
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$(date -u +%FT%TZ)" "$t" "$wall" "${runs:-?}" \
