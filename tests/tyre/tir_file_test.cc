@@ -187,6 +187,10 @@ TEST(TirFileTest, MalformedLinesNameFileAndLine) {
                    {"bad.tir:23:", "PCY1", "not a number"});
   ExpectParseError(test::ReplaceOnce(kMinimal, "PCY1 = 1.4759", "PCY1 = '1.4759'"),
                    {"bad.tir:23:", "not a number"});
+  for (const char* bad : {"nan", "NaN", "inf", "-inf", "infinity"}) {
+    ExpectParseError(test::ReplaceOnce(kMinimal, "PCY1 = 1.4759", std::string("PCY1 = ") + bad),
+                     {"bad.tir:23:", "PCY1", "not a number"});
+  }
   ExpectParseError(test::ReplaceOnce(kMinimal, "PCY1 = 1.4759", "PCY1 = 1\nPCY1 = 2"),
                    {"bad.tir:24:", "PCY1", "twice", "23"});
   ExpectParseError(test::ReplaceOnce(kMinimal, "[MODEL]", "[MODEL"), {"bad.tir:10:", "]"});
@@ -280,6 +284,12 @@ TEST(TirFileTest, UnsupportedOrMissingFittypIsAnError) {
                    {"bad.tir:11:", "FITTYP"});
   ExpectParseError(test::ReplaceOnce(kMinimal, "FITTYP = 61", "USE_MODE = 4"),
                    {"bad.tir", "no FITTYP"});
+  // Fuzz regressions (UBSan: a float converted to an int that cannot hold it): not numbers, or
+  // numbers no int holds, are unsupported versions.
+  for (const char* bad : {"nan", "-nan", "inf", "infinity", "1e300", "-3e9", "2147483648"}) {
+    ExpectParseError(test::ReplaceOnce(kMinimal, "FITTYP = 61", std::string("FITTYP = ") + bad),
+                     {"bad.tir:11:", "FITTYP", "not supported"});
+  }
   // A file on disk: the message names it.
   test::TempDir dir;
   const auto path = dir.Write("v52.tir", test::ReplaceOnce(kMinimal, "FITTYP = 61", "FITTYP = 52"));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <optional>
 #include <sstream>
 #include <unordered_map>
@@ -47,6 +48,8 @@ std::optional<double> ParseNumber(std::string_view s) {
   double value = 0.0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
   if (ec != std::errc() || end != s.data() + s.size()) return std::nullopt;
+  // from_chars reads "nan", "inf" and "infinity" too: not numbers a .tir file holds.
+  if (!std::isfinite(value)) return std::nullopt;
   return value;
 }
 
@@ -362,7 +365,9 @@ MagicFormulaVersion ReadVersion(TirFile& tir, const std::string& file) {
                      "or 62 (MF 6.2)");
   }
   const std::optional<double> number = fittyp->quoted ? std::nullopt : ParseNumber(fittyp->value);
-  const int value = number ? static_cast<int>(*number) : -1;
+  // Converted only where an int holds it (a float beyond it, like NaN before ParseNumber refused
+  // it, is undefined behaviour: found by fuzzing, 2026-11-27).
+  const int value = number && std::abs(*number) < 1e9 ? static_cast<int>(*number) : -1;
   tir.fittyp = value;
   if (number && *number == value) {
     switch (value) {
