@@ -212,5 +212,19 @@ TEST_F(SegmentFileErrorTest, SolvedFileLoadsAndReportsItsUnknowns) {
   EXPECT_NEAR(RadToDeg(t.unknowns[2].value), 144.1901378, 1e-6);
 }
 
+// What fuzz/track_yaml_fuzz found (tests/data/fuzz_regressions/track_yaml): a file whose loop
+// solve stepped through a geometry the track builder refuses (a NumericalError out of the loader,
+// which ended the program) is refused with an InputError naming it.
+TEST(SegmentTrackFuzzTest, FuzzRegressionsAreInputErrors) {
+  for (const auto& file : test::FuzzRegressions("track_yaml")) {
+    try {
+      LoadSegmentTrack(file);
+      ADD_FAILURE() << file;
+    } catch (const InputError& e) {
+      EXPECT_TRUE(Contains(e.what(), file.string())) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace hotlap::track

@@ -167,13 +167,23 @@ SegmentTrack SolveSegmentLoop(const SegmentLoop& loop) {
   for (size_t k = 0; k < n_unknowns; ++k) u[k] = loop.unknowns[k].guess;
 
   const TrackStart origin;
-  const internal::CentreLineEnd guess_end =
-      internal::IntegrateCentreLine(Pieces(Geometry(loop, u)), origin);
+  // A geometry the unknowns make impossible (a track beyond the longest the builder takes, a
+  // piece of no length): an InputError naming the file's unknowns, not a NumericalError out of
+  // the loader (found by fuzzing, 2026-11-27: a Newton step through such a geometry).
+  const auto integrate = [&](const std::vector<double>& x) {
+    try {
+      return internal::IntegrateCentreLine(Pieces(Geometry(loop, x)), origin);
+    } catch (const NumericalError& e) {
+      throw InputError(fmt::format("{}: the loop cannot be built with these numbers ({}): {}",
+                                   Where(loop, "solve"), UnknownList(loop, x), e.what()));
+    }
+  };
+  const internal::CentreLineEnd guess_end = integrate(u);
   const int winding = static_cast<int>(std::lround(guess_end.heading_rad / (2.0 * kPi)));
   const double heading_scale_m = guess_end.length_m / (2.0 * kPi);
   const auto residual = [&](const std::vector<double>& x) {
     Residual out;
-    out.end = internal::IntegrateCentreLine(Pieces(Geometry(loop, x)), origin);
+    out.end = integrate(x);
     out.r.resize(equations);
     out.r[0] = out.end.x_m;
     out.r[1] = out.end.y_m;
@@ -230,7 +240,12 @@ SegmentTrack SolveSegmentLoop(const SegmentLoop& loop) {
           positive = positive && trial[k] > 0.0;
         }
         if (!positive) continue;
-        Residual next = residual(trial);
+        Residual next;
+        try {
+          next = residual(trial);
+        } catch (const InputError&) {
+          continue;  // a step too far: a shorter one may build
+        }
         if (next.r.norm() < res.r.norm()) {
           u = trial;
           res = std::move(next);
