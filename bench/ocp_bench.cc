@@ -9,7 +9,9 @@
 // of 2026-11-26, for issue 19's before/after table: every brake in the programme
 // (all_brake_states) and the fine solve from the coarse point alone (no coarse_multipliers); 2
 // solves /0 and /1 with Hermite-Simpson collocation on 12 m intervals (their midpoints nodes: as
-// many nodes as a 6 m trapezoid) after the same 15 m trapezoid coarse solve.
+// many nodes as a 6 m trapezoid) after the same 15 m trapezoid coarse solve; 3 keeps the tyres'
+// wear in the programme of the fine solve too (wear_in_programme: the way before 2026-11-27's
+// third session, which freezes it there and integrates it after the solve).
 // Counters: lap time, Ipopt iterations and solve seconds of the fine solve (Ipopt's own clock)
 // and of the coarse one, and MUMPS factorisations per Ipopt iteration (both solves; counted by
 // interposing dmumps_c, bench/mumps_factorisations.cc).
@@ -27,6 +29,7 @@
 //      ./build/ocp_bench --benchmark_filter=F1Peer   (seconds)
 //      ./build/ocp_bench --benchmark_filter=Darlington --benchmark_min_time=0   (minutes)
 //      ./build/ocp_bench --benchmark_filter='Darlington.*/[01]/|F1'   (issue 19's table)
+//      ./build/ocp_bench --benchmark_filter='Darlington.*/[01]/[03]/|F1'   (the frozen wear)
 
 #include <benchmark/benchmark.h>
 
@@ -88,6 +91,7 @@ void BM_DarlingtonOptimalLap(benchmark::State& state) {
     o.collocation = ocp::Collocation::kHermiteSimpson;
     o.step_m = 12.0;
   }
+  if (state.range(1) == 3) o.wear_in_programme = true;
   ocp::OptimalLapRun run;
   long factorisations = 0;
   for (auto _ : state) {
@@ -118,6 +122,8 @@ BENCHMARK(BM_DarlingtonOptimalLap)
     ->Args({1, 0})
     ->Args({0, 2})
     ->Args({1, 2})
+    ->Args({0, 3})
+    ->Args({1, 3})
     ->Args({2, 0})
     ->Args({3, 0})
     ->Iterations(1)

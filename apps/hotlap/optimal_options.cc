@@ -48,6 +48,10 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
                       "element's negative curvature clipped; docs/optimal-control.md)")
           ->capture_default_str()
           ->check(CLI::IsMember({"exact", "convex-elements"})));
+  a.stock_car_only.push_back(sub->add_flag(
+      "--wear-in-programme", a.run.wear_in_programme,
+      "Keep the tyres' wear as states of the programme (by default the lap freezes "
+      "it for the forces and integrates it after the solve; docs/optimal-control.md)"));
   a.stock_car_only.push_back(
       sub->add_option("--controls", a.controls,
                       "pedal (one signed pedal: drive or brake, never both) or independent (the "

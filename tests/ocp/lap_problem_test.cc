@@ -48,6 +48,9 @@ TEST_P(BrakesLeftOutTest, SameSolutionAsTheFullProgramme) {
   lap.track_temp = o.track_temp;
   lap.initial = warm_up.start;
   if (limited) lap.front_disc_limit = CelsiusToKelvin(500.0);
+  // The wear in the programme both times (left out, it is frozen at each start point's: other
+  // forces in the second solve; WearLeftOutTest).
+  lap.wear_in_programme = true;
   lap.all_brake_states = true;
   const LapSolution full = SolveMinimumTimeLap(car, track, lap, warm_up.guess, LapIpoptOptions());
   ASSERT_TRUE(full.solve.ok()) << full.solve.message;
@@ -105,6 +108,114 @@ INSTANTIATE_TEST_SUITE_P(
       return std::string(std::get<0>(info.param) ? "Limited" : "Free") +
              (std::get<1>(info.param) == Collocation::kHermiteSimpson ? "HermiteSimpson" : "");
     });
+
+}  // namespace
+}  // namespace hotlap::ocp
+
+namespace hotlap::ocp {
+namespace {
+
+class WearLeftOutTest : public ::testing::TestWithParam<Collocation> {};
+
+// The wear left out of the programme (LapProblemOptions::wear_in_programme false) is frozen for
+// the forces at the start point's and integrated after the solve. From the full programme's
+// solution, whose wear it then freezes, the reduced programme is solved within a few iterations
+// on the same lap (the wear's costates, which it drops, are small), and its integrated wear is the
+// full programme's.
+TEST_P(WearLeftOutTest, SameLapAndWearAsTheFullProgramme) {
+  const Collocation collocation = GetParam();
+  const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
+  const track::Track track = track::LoadTrack("darlington");
+  OptimalLapOptions o;
+  o.ambient_temp = CelsiusToKelvin(25.0);
+  o.track_temp = CelsiusToKelvin(40.0);
+  const LapWarmUp warm_up = RunLapWarmUp(car, track, o);
+
+  LapProblemOptions lap;
+  lap.collocation = collocation;
+  lap.step_m = collocation == Collocation::kHermiteSimpson ? 60.0 : 30.0;
+  lap.ambient_temp = o.ambient_temp;
+  lap.track_temp = o.track_temp;
+  lap.initial = warm_up.start;
+  lap.wear_in_programme = true;
+  const LapSolution full = SolveMinimumTimeLap(car, track, lap, warm_up.guess, LapIpoptOptions());
+  ASSERT_TRUE(full.solve.ok()) << full.solve.message;
+  EXPECT_EQ(full.frozen_wear_grip_difference, 0.0);
+
+  lap.wear_in_programme = false;
+  lap.start_point = full.solve.x;
+  IpoptOptions warm = LapIpoptOptions();
+  warm.warm_z_lower = full.solve.z_lower;
+  warm.warm_z_upper = full.solve.z_upper;
+  warm.warm_lambda = full.solve.lambda;
+  warm.warm_mu = 1e-9;
+  const LapSolution reduced = SolveMinimumTimeLap(car, track, lap, warm_up.guess, warm);
+  ASSERT_TRUE(reduced.solve.ok()) << reduced.solve.message;
+
+  // The same variables (the wear is fixed ones), one defect fewer per tyre and interval.
+  EXPECT_EQ(reduced.variables, full.variables);
+  EXPECT_EQ(reduced.constraints, full.constraints - 4 * (full.layout.nodes - 1));
+  EXPECT_EQ(reduced.layout.rows(), full.layout.rows());
+  EXPECT_LE(reduced.solve.iterations, 10);
+  EXPECT_NEAR(reduced.lap_time, full.lap_time, 1e-5);
+  for (int c = 0; c < 4; ++c) {
+    const std::vector<double>& wear = reduced.corners[c].wear;
+    // Integrated from the start's wear, and rising over the lap.
+    EXPECT_EQ(wear.front(), warm_up.start.tyres[c].wear) << c;
+    EXPECT_GT(wear.back(), wear.front() + 1e-4) << c;
+    const double lap_wear = full.corners[c].wear.back() - full.corners[c].wear.front();
+    EXPECT_LT(MaxAbsDifference(wear, full.corners[c].wear), 1e-3 * lap_wear) << c;
+  }
+  // Frozen at the full programme's wear: h barely differs from the integrated wear's.
+  EXPECT_GT(reduced.frozen_wear_grip_difference, 0.0);
+  EXPECT_LT(reduced.frozen_wear_grip_difference, 1e-6);
+  // The reduced solve's multipliers come back in the full layout, zero on the wear's defects.
+  ASSERT_EQ(static_cast<int>(reduced.solve.lambda.size()), reduced.layout.rows());
+  const int defects = reduced.layout.nodes * reduced.layout.rows_per_node;
+  for (int k = 0; k + 1 < reduced.layout.nodes; ++k) {
+    for (int c = 0; c < 4; ++c) {
+      const int row = defects + k * reduced.layout.defects_per_interval + 5 + 5 * c + 2;
+      EXPECT_EQ(reduced.solve.lambda[row], 0.0);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(BothCollocations, WearLeftOutTest,
+                         ::testing::Values(Collocation::kTrapezoid, Collocation::kHermiteSimpson),
+                         [](const auto& info) {
+                           return std::string(info.param == Collocation::kHermiteSimpson
+                                                  ? "HermiteSimpson"
+                                                  : "Trapezoid");
+                         });
+
+// A periodic lap closes its temperatures, not its wear: the wear only grows (it was once closed
+// too, which no lap can do: the solve ended locally infeasible).
+TEST(PeriodicLapTest, ClosesTheTemperaturesNotTheWear) {
+  const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
+  const track::Track track = track::LoadTrack("darlington");
+  OptimalLapOptions o;
+  o.step_m = 30.0;
+  o.coarse_step_m = 0.0;
+  o.thermal_start = ThermalStart::kPeriodic;
+  o.ambient_temp = CelsiusToKelvin(25.0);
+  o.track_temp = CelsiusToKelvin(40.0);
+  const OptimalLapRun run = RunOptimalLap(car, track, o);
+  const LapSolution& s = run.solution;
+  ASSERT_TRUE(s.solve.ok()) << s.solve.message;
+  for (int c = 0; c < 4; ++c) {
+    const CornerTrace& t = s.corners[c];
+    for (const std::vector<double>* v :
+         {&t.tread_temp, &t.carcass_temp, &t.disc_temp, &t.calliper_temp}) {
+      EXPECT_NEAR(v->back(), v->front(), 1e-4) << c;
+    }
+    EXPECT_EQ(t.wear.front(), run.start.tyres[c].wear) << c;
+    EXPECT_GT(t.wear.back(), t.wear.front() + 1e-4) << c;
+  }
+  // The thermal steady state of this car is hot (tread peaks 133-151 degC, well past the grip
+  // optimum of 98 degC): about 31.0 s on 30 m against 29.67 s from the racing start.
+  EXPECT_GT(s.lap_time, 29.67);
+  EXPECT_LT(s.lap_time, 32.0);
+}
 
 }  // namespace
 }  // namespace hotlap::ocp

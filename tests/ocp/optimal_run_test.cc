@@ -19,6 +19,7 @@ TEST(MakeOptimalLapOptions, TakesTheRunsOptionsInSolverUnits) {
   o.coarse_step_m = 0.0;
   o.steer_smoothing = 0.5;
   o.convex_element_hessians = true;
+  o.wear_in_programme = true;
   o.disc_limit_C = 500.0;
   o.thermal_start = "periodic";
   o.ambient_C = 20.0;
@@ -35,6 +36,8 @@ TEST(MakeOptimalLapOptions, TakesTheRunsOptionsInSolverUnits) {
   EXPECT_EQ(l.steer_smoothing_weight, 0.5);
   EXPECT_EQ(l.pedal_smoothing_weight, -1.0);
   EXPECT_TRUE(l.convex_element_hessians);
+  EXPECT_TRUE(l.wear_in_programme);
+  EXPECT_FALSE(MakeOptimalLapOptions({}).wear_in_programme);
   EXPECT_FALSE(l.front_disc_limit);  // SolveOptimalRuns sets the limit
   EXPECT_EQ(l.thermal_start, ThermalStart::kPeriodic);
   EXPECT_EQ(l.ambient_temp, CelsiusToKelvin(20.0));

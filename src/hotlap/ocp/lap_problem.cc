@@ -5,6 +5,7 @@
 #include <deque>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <tuple>
 
@@ -181,17 +182,21 @@ struct Builder {
         const sim::CornerHistory& h = guess.thermal.corners[c];
         const bool fix = k == 0 && !options.periodic_thermal;
         const auto state = [&](const std::vector<double>& hist, double start, double lo, double hi,
-                               double scale, bool in_programme = true) {
+                               double scale, bool in_programme = true,
+                               std::optional<bool> fixed_start = std::nullopt) {
           const double value = k == 0 ? start : Sample(guess.centre_distance, hist, g_s);
-          // A brake that feeds nothing back is a fixed variable: Ipopt leaves it out of its
-          // programme, and it is integrated after the solve (IntegrateBrakesLeftOut).
+          // A state left out of the programme is a fixed variable: Ipopt leaves it out of its
+          // programme, and it is integrated after the solve (IntegrateLeftOut).
           if (!in_programme) return nlp.AddVariable(value, value, value, scale);
-          return nlp.AddVariable(value, fix ? start : lo, fix ? start : hi, scale);
+          const bool fixed = fixed_start.value_or(fix);
+          return nlp.AddVariable(value, fixed ? start : lo, fixed ? start : hi, scale);
         };
         nv.tread[c] = state(h.tread_temp, options.initial.tyres[c].tread_temp, 200.0, 800.0, 100.0);
         nv.carcass[c] =
             state(h.carcass_temp, options.initial.tyres[c].carcass_temp, 200.0, 800.0, 100.0);
-        nv.wear[c] = state(h.wear, options.initial.tyres[c].wear, 0.0, 50.0, 0.01);
+        // The wear starts at `initial` even on a periodic lap: it only grows.
+        nv.wear[c] = state(h.wear, options.initial.tyres[c].wear, 0.0, 50.0, 0.01,
+                           options.wear_in_programme, k == 0);
         double disc_hi = 2000.0;
         if (options.front_disc_limit && IsFront(kAllCorners[c]))
           disc_hi = *options.front_disc_limit;
@@ -338,6 +343,7 @@ struct Builder {
   // midpoint its Simpson rows with -4h/6.
   std::vector<Target> DefectTargets(int k, int state) const {
     std::vector<Target> t;
+    if (!state_in_programme[state]) return t;  // a state left out: its rate feeds nothing
     if (!hs) {
       if (k > 0) t.push_back({defect_rows[k - 1][state], -0.5 * ds});
       if (k < intervals) t.push_back({defect_rows[k][state], -0.5 * ds});
@@ -366,6 +372,7 @@ struct Builder {
     state_in_programme.assign(n_states, true);
     for (int c = 0; c < 4; ++c) {
       state_in_programme[5 + 5 * c + 3] = state_in_programme[5 + 5 * c + 4] = brake_in_programme[c];
+      state_in_programme[5 + 5 * c + 2] = options.wear_in_programme;
     }
     defect_rows.assign(intervals, std::vector<int>(n_states, -1));
     for (int k = 0; k < intervals; ++k) {
@@ -451,10 +458,13 @@ struct Builder {
   }
 
   void AddPeriodicityAndObjective() {
-    // The lap closes: mechanical states (and thermal ones on request) end where they start.
+    // The lap closes: mechanical states (and the temperatures on request, not the wear, which
+    // only grows) end where they start.
     std::vector<int> periodic = {0, 1, 2, 3, 4};
     if (options.periodic_thermal) {
-      for (int j = 5; j < static_cast<int>(nodes[0].States().size()); ++j) periodic.push_back(j);
+      for (int j = 5; j < static_cast<int>(nodes[0].States().size()); ++j) {
+        if ((j - 5) % 5 != 2) periodic.push_back(j);
+      }
     }
     const std::vector<int> a = nodes.front().States(), b = nodes.back().States();
     for (int j : periodic) {
@@ -567,6 +577,38 @@ struct Builder {
     std::vector<double> out(nlp.constraints());
     for (size_t r = 0; r < out.size(); ++r) out[r] = full[LayoutRowOf(static_cast<int>(r))];
     return out;
+  }
+
+  // The tyres' wear left out of the programme, integrated over the solution `x` by the
+  // collocation its defects would have imposed, from the start's wear. Its rate does not depend
+  // on the wear (000:23), so each step is explicit.
+  void IntegrateWearLeftOut(std::vector<double>& x) const {
+    if (options.wear_in_programme) return;
+    std::vector<double> rate(intervals + 1);
+    for (int c = 0; c < 4; ++c) {
+      for (int k = 0; k <= intervals; ++k) {
+        const NodeVars& nv = nodes[k];
+        const double in[10] = {x[nv.w],        x[nv.tread[c]], x[nv.carcass[c]], x[nv.wear[c]],
+                               x[nv.vx[c]],    x[nv.fx[c]],    x[nv.fy[c]],      x[nv.fz[c]],
+                               x[nv.alpha[c]], x[nv.kappa[c]]};
+        double out[3];
+        thermal_elements[c]->Values(in, out);
+        rate[k] = out[2];  // d wear / ds
+      }
+      const auto wear = [&](int k) -> double& { return x[nodes[k].wear[c]]; };
+      wear(0) = options.initial.tyres[c].wear;
+      if (hs) {
+        const double h = 2.0 * ds;
+        for (int a = 0; a + 2 <= intervals; a += 2) {
+          wear(a + 2) = wear(a) + h / 6.0 * (rate[a] + 4.0 * rate[a + 1] + rate[a + 2]);  // Simpson
+          wear(a + 1) =
+              0.5 * (wear(a) + wear(a + 2)) + h / 8.0 * (rate[a] - rate[a + 2]);  // Hermite
+        }
+        continue;
+      }
+      for (int k = 0; k < intervals; ++k)
+        wear(k + 1) = wear(k) + 0.5 * ds * (rate[k] + rate[k + 1]);
+    }
   }
 
   // Brake c's dT/ds (disc, calliper) at node k of the point x with temperatures y, and its
@@ -839,6 +881,16 @@ LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& tra
     for (int i = 0; i < b.nlp.variables(); ++i) {
       b.nlp.set_initial(i, std::clamp(options.start_point[i], b.nlp.lower(i), b.nlp.upper(i)));
     }
+    if (!options.wear_in_programme) {
+      // The wear left out is frozen at the start's (from its start at node 0).
+      for (size_t k = 1; k < b.nodes.size(); ++k) {
+        for (const int i : b.nodes[k].wear) {
+          const double v = std::max(0.0, options.start_point[i]);
+          b.nlp.set_bounds(i, v, v);
+          b.nlp.set_initial(i, v);
+        }
+      }
+    }
     if (!options.independent_drive_and_brake) {
       // The pedal of the start's drive power and brake force (p = P / P_max - B / B_max, exact for
       // a pedal solution, since pos(p) - pos(-p) = p; a start with both on gets the net of them).
@@ -878,6 +930,18 @@ LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& tra
     }
     if (out.solve.x.empty()) return out;
     b.IntegrateBrakesLeftOut(out.solve.x);
+    b.IntegrateWearLeftOut(out.solve.x);
+  }
+  if (!options.wear_in_programme) {
+    // The grip factor's error from the frozen wear (the fixed variables keep the frozen values).
+    for (const NodeVars& nv : b.nodes) {
+      for (int c = 0; c < 4; ++c) {
+        const tyre::GripWearTable& h = car.tyres[c].compound->grip_vs_wear;
+        out.frozen_wear_grip_difference = std::max(
+            out.frozen_wear_grip_difference,
+            std::abs(h.Evaluate(out.solve.x[nv.wear[c]]) - h.Evaluate(b.nlp.lower(nv.wear[c]))));
+      }
+    }
   }
   const std::vector<double>& x = out.solve.x;
   const double time = AppendRoadFrameChannels(b.nodes, x, b.ds, out, b.hs);

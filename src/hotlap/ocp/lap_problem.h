@@ -53,7 +53,9 @@ struct LapProblemOptions {
   double step_m = 2.0;  ///< mesh spacing along the centre line (an interval)
   Collocation collocation = Collocation::kTrapezoid;
   std::optional<double> front_disc_limit;  ///< K; front discs at most this at every node
-  bool periodic_thermal = false;    ///< thermal states end where they start (else start fixed)
+  /// Temperatures end where they start (else they start fixed at `initial`); the wear starts at
+  /// `initial` either way (it only grows).
+  bool periodic_thermal = false;
   double ambient_temp = 0.0;        ///< K
   double track_temp = 0.0;          ///< K
   sim::ReplayInitialState initial;  ///< thermal states at the start line
@@ -71,6 +73,17 @@ struct LapProblemOptions {
   /// brakes always, the front ones unless they are limited (front_disc_limit), and none when the
   /// thermal states are periodic. The same solution, eight (or four) fewer states per node.
   bool all_brake_states = false;
+  /// Keep the tyres' wear as states of the programme. Otherwise wear, which feeds back into the
+  /// lap only through the grip factor h(wear) (the wear rate and the temperatures do not depend
+  /// on it), is frozen for the tyre forces at the start point's values (start_point's, else the
+  /// QSS guess's replay), left out of the programme (fixed variables, no defects) and integrated
+  /// after the solve by the same collocation over the solved channels: a lap's wear changes h by
+  /// about 2e-4 on the Gen-7-like car, and LapSolution::frozen_wear_grip_difference reports how
+  /// far the frozen values' h is from the solution's. Four states fewer per node: a fine solve
+  /// from a coarse one about 15% faster an iteration, in fewer iterations. RunOptimalLap leaves
+  /// it out of solves that start from a solution only (from the QSS guess it made the solve less
+  /// robust); a stint keeps it (its wear grows lap after lap). docs/optimal-control.md, "Speed".
+  bool wear_in_programme = true;
   /// Each element's Hessian with its negative curvature clipped (ElementNlp::
   /// SetConvexElementHessians) instead of the exact Lagrangian Hessian.
   bool convex_element_hessians = false;
@@ -159,6 +172,10 @@ struct LapSolution : RoadFrameChannels {
   double max_brake_force = 0.0;  ///< N, the pedal's brake force at p = -1
   std::array<CornerTrace, 4> corners;
   double lap_time = 0.0;  ///< s
+  /// With the wear left out of the programme (LapProblemOptions::wear_in_programme false): the
+  /// largest |h(wear) - h(frozen wear)| over nodes and tyres, the grip factor's error from
+  /// freezing the wear (dimensionless); 0 otherwise.
+  double frozen_wear_grip_difference = 0.0;
   int variables = 0;
   int constraints = 0;
   LapLayout layout;

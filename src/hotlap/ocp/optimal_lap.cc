@@ -126,6 +126,10 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
   lap.convex_element_hessians = options.convex_element_hessians;
   lap.derivative_threads = options.derivative_threads;
   lap.all_brake_states = options.all_brake_states;
+  // From the QSS guess the wear stays in the programme either way: left out, 3 of 6 meshes
+  // (10, 12, 25 m) went astray from the guess on the Gen-7-like car's lap, none with it
+  // (docs/optimal-control.md, "Speed"). A solve from a solution leaves it out unless asked.
+  lap.wear_in_programme = true;  // (the problem's default)
   lap.independent_drive_and_brake = options.independent_drive_and_brake;
   if (options.steer_smoothing_weight >= 0.0) {
     lap.steer_smoothing_weight = options.steer_smoothing_weight;
@@ -156,6 +160,7 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
   // uncalibrated car's free lap (36 iterations against 167) but stalled the calibrated car's
   // limited lap (900 and more against 66; docs/optimal-control.md, "Speed").
   if (!lap.start_point.empty()) {
+    lap.wear_in_programme = options.wear_in_programme;
     // From a solution (the coarse one, or another lap's): MUMPS with SCOTCH's ordering, 0.42-0.44
     // s an iteration on the 3 m lap against 0.47 with PORD's and 0.57 with its automatic choice,
     // to the same laps, and bit for bit the same from run to run on one SCOTCH thread
@@ -203,7 +208,8 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
     sim::ReplayInitialState from = run.start;
     if (lap.periodic_thermal) {
       for (int c = 0; c < 4; ++c) {
-        from.tyres[c] = {s.corners[c].tread_temp[0], s.corners[c].carcass_temp[0], 0.0};
+        from.tyres[c] = {s.corners[c].tread_temp[0], s.corners[c].carcass_temp[0],
+                         s.corners[c].wear[0]};
         from.brakes[c] = {s.corners[c].disc_temp[0], s.corners[c].calliper_temp[0]};
       }
     }

@@ -91,6 +91,11 @@ struct OptimalLapOptions {
   /// LapProblemOptions::all_brake_states (false: the brakes that feed nothing back are
   /// integrated after the solve instead of solved for).
   bool all_brake_states = false;
+  /// LapProblemOptions::wear_in_programme for every solve. False: a solve that starts from a
+  /// solution (the fine solve of coarse to fine, a start_point) freezes the wear
+  /// for the forces at the start's and integrates it after the solve; a solve from the QSS guess
+  /// keeps it in the programme (left out there, it sent 3 of 6 meshes astray). A stint sets it.
+  bool wear_in_programme = false;
   /// LapProblemOptions::independent_drive_and_brake: the old two controls (drive power and brake
   /// force, nothing stopping both at once) instead of the one pedal, for comparison.
   bool independent_drive_and_brake = false;

@@ -31,6 +31,9 @@ struct OptimalRunOptions {
   double steer_smoothing = -1.0;         ///< the steer's smoothness weight (< 0: the library's)
   double pedal_smoothing = -1.0;         ///< the pedal's
   bool convex_element_hessians = false;  ///< each element's negative curvature clipped
+  /// The tyres' wear as states of the programme (OptimalLapOptions::wear_in_programme) instead
+  /// of frozen for the forces and integrated after the solve.
+  bool wear_in_programme = false;
   /// The old two controls (drive power and brake force) instead of the one pedal.
   bool independent_drive_and_brake = false;
   std::optional<double> disc_limit_C;          ///< one solve with this front-disc limit, degC

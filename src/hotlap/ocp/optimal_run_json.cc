@@ -79,6 +79,7 @@ nlohmann::json SolvedLapJson(const SolvedLap& s, const std::string& thermal_star
       {"max_steer_rate_radps", RoundSignificant(f.max_steer_rate_radps)},
       {"smoothing_effect_tread_K", RoundSignificant(s.run.max_tread_difference_K)},
       {"smoothing_effect_disc_K", RoundSignificant(s.run.max_disc_difference_K)},
+      {"frozen_wear_grip_difference", RoundSignificant(s.run.solution.frozen_wear_grip_difference)},
       {"variables", s.run.solution.variables},
       {"constraints", s.run.solution.constraints}};
 }

@@ -53,6 +53,10 @@ std::string SolvedLapText(const SolvedLap& s, const std::string& thermal_start) 
       "  smooth-model effect on the temperatures (exact replay): tread {:.2f} K, disc {:.2f} "
       "K\n",
       s.run.max_tread_difference_K, s.run.max_disc_difference_K);
+  if (s.run.solution.frozen_wear_grip_difference > 0.0) {
+    fmt::format_to(out, "  frozen wear's effect on the grip factor h(wear): {:.1e}\n",
+                   s.run.solution.frozen_wear_grip_difference);
+  }
   return text;
 }
 

@@ -184,6 +184,9 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
   StintOptions o = options;
   const int intervals = LapNodeCount(track, options.lap.step_m) - 1;
   o.lap.step_m = track.length_m() / intervals;
+  // The wear stays in the programme: it grows lap after lap (LapProblemOptions::
+  // wear_in_programme).
+  o.lap.wear_in_programme = true;
   if (options.checkpoint_every < 1) {
     throw InputError(fmt::format("checkpoint interval: {} is not a number of iterations >= 1",
                                  options.checkpoint_every));

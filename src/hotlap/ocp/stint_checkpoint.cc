@@ -138,6 +138,7 @@ std::uint64_t StintFingerprint(const StintOptions& o, const track::Track& track,
                          o.lap.pedal_smoothing_weight,
                          static_cast<double>(o.lap.convex_element_hessians),
                          static_cast<double>(o.lap.all_brake_states),
+                         static_cast<double>(o.lap.wear_in_programme),
                          o.lap.ipopt.tolerance,
                          o.lap.ipopt.constraint_tolerance,
                          track.length_m()}) {
