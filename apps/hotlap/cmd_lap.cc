@@ -54,6 +54,7 @@ struct LapArgs {
   std::optional<double> compare_disc_limit_C;  // --method ocp
   std::optional<double> ocp_step_m;            // --method ocp
   bool single_process = false;                 // --method ocp with a comparison
+  bool wear_in_programme = false;              // --method ocp
   int threads = 0;                             // --method ocp: derivative threads (0: per core)
 };
 
@@ -72,6 +73,7 @@ int RunLap(const LapArgs& a) {
     o.run.track_C = a.track_C;
     if (a.ocp_step_m) o.run.step_m = *a.ocp_step_m;
     o.single_process = a.single_process;
+    o.run.wear_in_programme = a.wear_in_programme;
     o.run.threads = a.threads;
     return RunOptimal(o);
   }
@@ -197,6 +199,9 @@ CommandRunner RegisterLapCommand(CLI::App& app) {
   sub->add_option("--ocp-step-m", args->ocp_step_m, "ocp: mesh spacing, m (default 3)");
   sub->add_flag("--single-process", args->single_process,
                 "ocp: solve the limited lap after the free one, not beside it in a second process");
+  sub->add_flag("--wear-in-programme", args->wear_in_programme,
+                "ocp: keep the tyres' wear as states of the fine solves' programmes (by default "
+                "frozen for the forces and integrated after the solve; docs/optimal-control.md)");
   sub->add_option("--threads", args->threads,
                   "ocp: threads evaluating the derivatives (0: one per core, at most 8; the "
                   "comparison's two solves take half each)")
