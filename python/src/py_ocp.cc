@@ -34,7 +34,7 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
                     const std::string& thermal_start, double ambient_C, double track_C,
                     int max_iterations,
                     const std::vector<std::pair<std::string, std::string>>& ipopt_options,
-                    int threads, const py::object& progress) {
+                    int threads, bool wear_in_programme, const py::object& progress) {
   if (threads < 0 || threads > 256) {
     throw InputError(fmt::format("threads: {} is not 0 to 256 (0: one per core)", threads));
   }
@@ -51,6 +51,7 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
   o.track_C = track_C;
   o.max_iterations = max_iterations;
   o.ipopt_options = ipopt_options;
+  o.wear_in_programme = wear_in_programme;
   // One process: a fork beside Python's own threads is not safe (docs/python.md).
   o.second_process = false;
   if (disc_limit_C && compare_disc_limit_C) {
@@ -158,7 +159,8 @@ void BindOcp(py::module_& m) {
         py::arg("ambient_temp_C") = defaults.ambient_C, py::arg("track_temp_C") = defaults.track_C,
         py::arg("max_iterations") = defaults.max_iterations,
         py::arg("ipopt_options") = std::vector<std::pair<std::string, std::string>>{},
-        py::arg("threads") = defaults.threads, py::arg("progress") = py::none(),
+        py::arg("threads") = defaults.threads,
+        py::arg("wear_in_programme") = defaults.wear_in_programme, py::arg("progress") = py::none(),
         "The minimum-time lap with tyre and brake temperatures and wear as states: one solve "
         "(optionally with a front-disc limit, degC), or with compare_disc_limit_C the free and "
         "the limited lap. Returns {'summary': dict (the keys of `hotlap optimise --json`), "
@@ -167,7 +169,10 @@ void BindOcp(py::module_& m) {
         "False stops the solve. collocation: 'trapezoid' or 'hermite-simpson' (step_m is then an "
         "interval with a node at its midpoint; the coarse solve stays trapezoid). "
         "threads: threads evaluating the derivatives (1, the default, "
-        "suits sweeps of one case per worker; 0: one per core, as the command line).");
+        "suits sweeps of one case per worker; 0: one per core, as the command line). "
+        "wear_in_programme: keep the tyres' wear as states of a solve from a solution (by "
+        "default frozen for the forces at its start's and integrated after the solve; "
+        "docs/optimal-control.md).");
   const ocp::StintOptions stint;
   m.def("stint", &Stint, py::arg("car"), py::arg("track"), py::kw_only(),
         py::arg("laps") = stint.laps, py::arg("wear_scale") = stint.wear_scale,

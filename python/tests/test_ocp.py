@@ -72,6 +72,24 @@ def test_hermite_simpson_equals_the_command_line(cli, tmp_path):
     assert summary["variables"] == expected["variables"]
 
 
+def test_wear_in_programme_equals_the_command_line(cli, tmp_path):
+    # 30 m, then 15 m from it: the fine solve freezes the wear unless asked to keep it.
+    args = ("--step-m", 15, "--coarse-step-m", 30, "--threads", 1)
+    car, track = hotlap.load_car("gen7"), hotlap.load_track("darlington")
+    for keep in (False, True):
+        out = tmp_path / f"o{keep}"
+        cli("optimise", *args, *(("--wear-in-programme",) if keep else ()), "--out", out,
+            "--json", tmp_path / f"o{keep}.json")
+        expected = read_json(tmp_path / f"o{keep}.json")
+        got = hotlap.optimal_lap(car, track, step_m=15.0, coarse_step_m=30.0,
+                                 wear_in_programme=keep)["summary"]
+        assert got["status"] == expected["status"] == "converged"
+        assert got["lap_time_s"] == expected["lap_time_s"]
+        assert got["frozen_wear_grip_difference"] == expected["frozen_wear_grip_difference"]
+        assert (got["frozen_wear_grip_difference"] == 0.0) == keep
+        assert got["frozen_wear_grip_difference"] < 1e-4
+
+
 def test_a_stint_with_checkpoints_resumes_from_them(tmp_path):
     """The second call with the same folder takes both greedy laps from their files and the
     stint's solve from its saved end: the same stint, converged at once."""
