@@ -26,6 +26,40 @@ double MaxAbsDifference(const std::vector<double>& a, const std::vector<double>&
   return d;
 }
 
+// The Darlington lap of these tests, the car and its warm-up (racing start, 25/40 degC).
+struct TestLap {
+  vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
+  track::Track track = track::LoadTrack("darlington");
+  LapWarmUp warm_up;
+  LapProblemOptions lap;
+
+  // On 30 m, or with Hermite-Simpson on 60 m intervals (their midpoints nodes: as many nodes).
+  explicit TestLap(Collocation collocation) {
+    OptimalLapOptions o;
+    o.ambient_temp = CelsiusToKelvin(25.0);
+    o.track_temp = CelsiusToKelvin(40.0);
+    warm_up = RunLapWarmUp(car, track, o);
+    lap.collocation = collocation;
+    lap.step_m = collocation == Collocation::kHermiteSimpson ? 60.0 : 30.0;
+    lap.ambient_temp = o.ambient_temp;
+    lap.track_temp = o.track_temp;
+    lap.initial = warm_up.start;
+  }
+  LapSolution Solve(const IpoptOptions& ipopt = LapIpoptOptions()) const {
+    return SolveMinimumTimeLap(car, track, lap, warm_up.guess, ipopt);
+  }
+  // Solved again from `from`'s point and multipliers (a warm start at a tiny barrier).
+  LapSolution SolveFrom(const LapSolution& from) {
+    lap.start_point = from.solve.x;
+    IpoptOptions warm = LapIpoptOptions();
+    warm.warm_z_lower = from.solve.z_lower;
+    warm.warm_z_upper = from.solve.z_upper;
+    warm.warm_lambda = from.solve.lambda;
+    warm.warm_mu = 1e-9;
+    return Solve(warm);
+  }
+};
+
 class BrakesLeftOutTest : public ::testing::TestWithParam<std::tuple<bool, Collocation>> {};
 
 // From the solution of the full programme (point and multipliers), the programme without the
@@ -33,36 +67,17 @@ class BrakesLeftOutTest : public ::testing::TestWithParam<std::tuple<bool, Collo
 // brakes integrated after the solve are the full programme's to the solver's tolerance.
 TEST_P(BrakesLeftOutTest, SameSolutionAsTheFullProgramme) {
   const auto [limited, collocation] = GetParam();
-  const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
-  const track::Track track = track::LoadTrack("darlington");
-  OptimalLapOptions o;
-  o.ambient_temp = CelsiusToKelvin(25.0);
-  o.track_temp = CelsiusToKelvin(40.0);
-  const LapWarmUp warm_up = RunLapWarmUp(car, track, o);
-
-  LapProblemOptions lap;
-  // As many nodes either way: Hermite-Simpson's intervals have their midpoints as nodes.
-  lap.collocation = collocation;
-  lap.step_m = collocation == Collocation::kHermiteSimpson ? 60.0 : 30.0;
-  lap.ambient_temp = o.ambient_temp;
-  lap.track_temp = o.track_temp;
-  lap.initial = warm_up.start;
-  if (limited) lap.front_disc_limit = CelsiusToKelvin(500.0);
+  TestLap t(collocation);
+  if (limited) t.lap.front_disc_limit = CelsiusToKelvin(500.0);
   // The wear in the programme both times (left out, it is frozen at each start point's: other
   // forces in the second solve; WearLeftOutTest).
-  lap.wear_in_programme = true;
-  lap.all_brake_states = true;
-  const LapSolution full = SolveMinimumTimeLap(car, track, lap, warm_up.guess, LapIpoptOptions());
+  t.lap.wear_in_programme = true;
+  t.lap.all_brake_states = true;
+  const LapSolution full = t.Solve();
   ASSERT_TRUE(full.solve.ok()) << full.solve.message;
 
-  lap.all_brake_states = false;
-  lap.start_point = full.solve.x;
-  IpoptOptions warm = LapIpoptOptions();
-  warm.warm_z_lower = full.solve.z_lower;
-  warm.warm_z_upper = full.solve.z_upper;
-  warm.warm_lambda = full.solve.lambda;
-  warm.warm_mu = 1e-9;
-  const LapSolution reduced = SolveMinimumTimeLap(car, track, lap, warm_up.guess, warm);
+  t.lap.all_brake_states = false;
+  const LapSolution reduced = t.SolveFrom(full);
   ASSERT_TRUE(reduced.solve.ok()) << reduced.solve.message;
 
   // The same variables (the brakes left out are fixed ones), two rows fewer per interval and brake.
@@ -109,12 +124,6 @@ INSTANTIATE_TEST_SUITE_P(
              (std::get<1>(info.param) == Collocation::kHermiteSimpson ? "HermiteSimpson" : "");
     });
 
-}  // namespace
-}  // namespace hotlap::ocp
-
-namespace hotlap::ocp {
-namespace {
-
 class WearLeftOutTest : public ::testing::TestWithParam<Collocation> {};
 
 // The wear left out of the programme (LapProblemOptions::wear_in_programme false) is frozen for
@@ -123,33 +132,14 @@ class WearLeftOutTest : public ::testing::TestWithParam<Collocation> {};
 // on the same lap (the wear's costates, which it drops, are small), and its integrated wear is the
 // full programme's.
 TEST_P(WearLeftOutTest, SameLapAndWearAsTheFullProgramme) {
-  const Collocation collocation = GetParam();
-  const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
-  const track::Track track = track::LoadTrack("darlington");
-  OptimalLapOptions o;
-  o.ambient_temp = CelsiusToKelvin(25.0);
-  o.track_temp = CelsiusToKelvin(40.0);
-  const LapWarmUp warm_up = RunLapWarmUp(car, track, o);
-
-  LapProblemOptions lap;
-  lap.collocation = collocation;
-  lap.step_m = collocation == Collocation::kHermiteSimpson ? 60.0 : 30.0;
-  lap.ambient_temp = o.ambient_temp;
-  lap.track_temp = o.track_temp;
-  lap.initial = warm_up.start;
-  lap.wear_in_programme = true;
-  const LapSolution full = SolveMinimumTimeLap(car, track, lap, warm_up.guess, LapIpoptOptions());
+  TestLap t(GetParam());
+  t.lap.wear_in_programme = true;
+  const LapSolution full = t.Solve();
   ASSERT_TRUE(full.solve.ok()) << full.solve.message;
   EXPECT_EQ(full.frozen_wear_grip_difference, 0.0);
 
-  lap.wear_in_programme = false;
-  lap.start_point = full.solve.x;
-  IpoptOptions warm = LapIpoptOptions();
-  warm.warm_z_lower = full.solve.z_lower;
-  warm.warm_z_upper = full.solve.z_upper;
-  warm.warm_lambda = full.solve.lambda;
-  warm.warm_mu = 1e-9;
-  const LapSolution reduced = SolveMinimumTimeLap(car, track, lap, warm_up.guess, warm);
+  t.lap.wear_in_programme = false;
+  const LapSolution reduced = t.SolveFrom(full);
   ASSERT_TRUE(reduced.solve.ok()) << reduced.solve.message;
 
   // The same variables (the wear is fixed ones), one defect fewer per tyre and interval.
@@ -161,7 +151,7 @@ TEST_P(WearLeftOutTest, SameLapAndWearAsTheFullProgramme) {
   for (int c = 0; c < 4; ++c) {
     const std::vector<double>& wear = reduced.corners[c].wear;
     // Integrated from the start's wear, and rising over the lap.
-    EXPECT_EQ(wear.front(), warm_up.start.tyres[c].wear) << c;
+    EXPECT_EQ(wear.front(), t.warm_up.start.tyres[c].wear) << c;
     EXPECT_GT(wear.back(), wear.front() + 1e-4) << c;
     const double lap_wear = full.corners[c].wear.back() - full.corners[c].wear.front();
     EXPECT_LT(MaxAbsDifference(wear, full.corners[c].wear), 1e-3 * lap_wear) << c;

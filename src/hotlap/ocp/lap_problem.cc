@@ -186,7 +186,8 @@ struct Builder {
                                std::optional<bool> fixed_start = std::nullopt) {
           const double value = k == 0 ? start : Sample(guess.centre_distance, hist, g_s);
           // A state left out of the programme is a fixed variable: Ipopt leaves it out of its
-          // programme, and it is integrated after the solve (IntegrateLeftOut).
+          // programme, and it is integrated after the solve (IntegrateBrakesLeftOut,
+          // IntegrateWearLeftOut).
           if (!in_programme) return nlp.AddVariable(value, value, value, scale);
           const bool fixed = fixed_start.value_or(fix);
           return nlp.AddVariable(value, fixed ? start : lo, fixed ? start : hi, scale);
