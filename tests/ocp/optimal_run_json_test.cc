@@ -52,12 +52,20 @@ TEST(OptimalRunsJson, OneSolveAndTheComparison) {
   EXPECT_EQ(j["overrides"], nlohmann::json::object());
   EXPECT_EQ(j["mesh_step_m"], 30.0);
   EXPECT_EQ(j["collocation"], "trapezoid");
+  EXPECT_EQ(j["coarse_mesh_step_m"], 15.0);
+  EXPECT_EQ(j["coarse_collocation"], "trapezoid");
+  EXPECT_EQ(j["wear_in_programme"], false);
   EXPECT_EQ(j["wall_time_s"], 12.3456789);
   EXPECT_EQ(j["mesh_check_delta_s"], 0.0123);
   EXPECT_EQ(j["lap_time_s"], 30.0);
   EXPECT_EQ(j["controls"], "pedal");
   o.independent_drive_and_brake = true;
   EXPECT_EQ(OptimalRunsJson(one, o, "darlington", car, 1.0)["controls"], "independent");
+  o.coarse_collocation = "hermite-simpson";
+  o.wear_in_programme = true;
+  EXPECT_EQ(OptimalRunsJson(one, o, "darlington", car, 1.0)["coarse_collocation"],
+            "hermite-simpson");
+  EXPECT_EQ(OptimalRunsJson(one, o, "darlington", car, 1.0)["wear_in_programme"], true);
 
   OptimalRuns two;
   two.laps = {testing::MakeExampleSolvedLap("no limit", 30.0),

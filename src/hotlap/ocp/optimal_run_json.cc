@@ -110,6 +110,9 @@ nlohmann::json OptimalRunsJson(const OptimalRuns& runs, const OptimalRunOptions&
   j["overrides"] = vehicle::OverridesJson(car.overrides);
   j["mesh_step_m"] = options.step_m;
   j["collocation"] = options.collocation;
+  j["coarse_mesh_step_m"] = options.coarse_step_m;
+  j["coarse_collocation"] = options.coarse_collocation;
+  j["wear_in_programme"] = options.wear_in_programme;
   j["controls"] = options.independent_drive_and_brake ? "independent" : "pedal";
   j["wall_time_s"] = RoundSignificant(wall_time_s);
   if (mesh_check_delta_s) j["mesh_check_delta_s"] = RoundSignificant(*mesh_check_delta_s);
