@@ -159,6 +159,21 @@ TEST_P(WearLeftOutTest, SameLapAndWearAsTheFullProgramme) {
   // Frozen at the full programme's wear: h barely differs from the integrated wear's.
   EXPECT_GT(reduced.frozen_wear_grip_difference, 0.0);
   EXPECT_LT(reduced.frozen_wear_grip_difference, 1e-6);
+  // A start whose wear began elsewhere (a lap saved from another start) is frozen at its wear
+  // gained along the lap, from this lap's start: the same lap and grip (h moves 0.01 over 0.5 mm).
+  std::vector<double> worn = full.solve.x;
+  for (int k = 0; k < full.layout.nodes; ++k) {
+    for (int c = 0; c < 4; ++c) worn[k * full.layout.vars_per_node + 5 + 5 * c + 2] += 0.5;
+  }
+  LapSolution shifted = full;
+  shifted.solve.x = worn;
+  const LapSolution from_worn = t.SolveFrom(shifted);
+  ASSERT_TRUE(from_worn.solve.ok()) << from_worn.solve.message;
+  EXPECT_NEAR(from_worn.lap_time, reduced.lap_time, 1e-6);
+  EXPECT_LT(from_worn.frozen_wear_grip_difference, 1e-6);
+  for (int c = 0; c < 4; ++c) {
+    EXPECT_LT(MaxAbsDifference(from_worn.corners[c].wear, reduced.corners[c].wear), 1e-9) << c;
+  }
   // The reduced solve's multipliers come back in the full layout, zero on the wear's defects.
   ASSERT_EQ(static_cast<int>(reduced.solve.lambda.size()), reduced.layout.rows());
   const int defects = reduced.layout.nodes * reduced.layout.rows_per_node;

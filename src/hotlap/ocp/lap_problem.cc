@@ -883,10 +883,14 @@ LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& tra
       b.nlp.set_initial(i, std::clamp(options.start_point[i], b.nlp.lower(i), b.nlp.upper(i)));
     }
     if (!options.wear_in_programme) {
-      // The wear left out is frozen at the start's (from its start at node 0).
-      for (size_t k = 1; k < b.nodes.size(); ++k) {
-        for (const int i : b.nodes[k].wear) {
-          const double v = std::max(0.0, options.start_point[i]);
+      // The wear left out is frozen at the start's wear gained along the lap, added to this
+      // lap's own start (a saved lap may have started with other wear).
+      for (int c = 0; c < 4; ++c) {
+        const double shift =
+            options.initial.tyres[c].wear - options.start_point[b.nodes[0].wear[c]];
+        for (size_t k = 1; k < b.nodes.size(); ++k) {
+          const int i = b.nodes[k].wear[c];
+          const double v = std::max(0.0, options.start_point[i] + shift);
           b.nlp.set_bounds(i, v, v);
           b.nlp.set_initial(i, v);
         }
