@@ -77,8 +77,13 @@ int RunLap(const LapArgs& a) {
     o.run.threads = a.threads;
     return RunOptimal(o);
   }
-  if (a.compare_disc_limit_C) {
-    throw InputError("--compare-disc-limit-C is for --method ocp");
+  // The optimal lap's options are refused, not ignored, by the QSS lap.
+  for (const auto& [given, name] :
+       {std::pair{a.compare_disc_limit_C.has_value(), "--compare-disc-limit-C"},
+        std::pair{a.ocp_step_m.has_value(), "--ocp-step-m"},
+        std::pair{a.single_process, "--single-process"},
+        std::pair{a.wear_in_programme, "--wear-in-programme"}}) {
+    if (given) throw InputError(fmt::format("{} is for --method ocp", name));
   }
   if (a.laps < 1 || a.laps > 1000) {
     throw InputError(fmt::format("--laps {} must be in [1, 1000]", a.laps));
