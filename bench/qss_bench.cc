@@ -1,6 +1,7 @@
 // Quasi-steady-state lap speed: one Darlington lap at 1 m resolution (2198 road points) with the
 // Gen-7 car, the thermal models replayed along it, thermal coupling on (the first lap run twice),
-// as `hotlap lap` runs it. Also the parts: the speed profile alone, and a lap without coupling.
+// as `hotlap lap` runs it (/0; /1 without the tyres' cornering drag, one profile). Also the parts:
+// the speed profile alone, and a lap without coupling.
 //
 // Run: ./build/qss_bench --benchmark_min_time=2
 
@@ -40,13 +41,18 @@ const Setup& Shared() {
   return s;
 }
 
+// Argument: the most speed profiles a pass solves for the tyres' cornering drag (QssOptions::
+// max_drag_passes): 0 the default (until the speeds settle), 1 leaves the drag out (the way
+// before 2026-11-27), 3 a fixed three.
 void BM_QssDarlingtonLap1m(benchmark::State& state) {
   const Setup& s = Shared();
-  for (auto _ : state) benchmark::DoNotOptimize(sim::RunQssLap(s.car, s.road, s.options));
-  state.counters["lap_time_s"] = sim::RunQssLap(s.car, s.road, s.options).laps[0].lap_time;
+  sim::QssOptions options = s.options;
+  if (state.range(0) > 0) options.max_drag_passes = static_cast<int>(state.range(0));
+  for (auto _ : state) benchmark::DoNotOptimize(sim::RunQssLap(s.car, s.road, options));
+  state.counters["lap_time_s"] = sim::RunQssLap(s.car, s.road, options).laps[0].lap_time;
   state.counters["points"] = static_cast<double>(s.road.size());
 }
-BENCHMARK(BM_QssDarlingtonLap1m)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_QssDarlingtonLap1m)->Arg(0)->Arg(1)->Arg(3)->Unit(benchmark::kMillisecond);
 
 void BM_QssDarlingtonLap1mUncoupled(benchmark::State& state) {
   const Setup& s = Shared();

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -56,13 +57,47 @@ struct LapArgs {
   bool single_process = false;                 // --method ocp with a comparison
   bool wear_in_programme = false;              // --method ocp
   int threads = 0;                             // --method ocp: derivative threads (0: per core)
+  // What was given on the command line (of the options that have defaults).
+  std::vector<std::string> given;
+  bool Given(std::string_view name) const {
+    return std::find(given.begin(), given.end(), name) != given.end();
+  }
 };
+
+// Each method's own options are refused, not ignored, by the other: with why where it helps.
+void RefuseOtherMethodsOptions(const LapArgs& a) {
+  if (a.method == "ocp") {
+    for (const auto& [name, instead] :
+         {std::pair{"--laps", "one lap; a stint of optimal laps: hotlap stint"},
+          std::pair{"--line", "the optimal lap chooses its line"},
+          std::pair{"--line-margin-m", "the optimal lap chooses its line"},
+          std::pair{"--step-m", "the optimal lap's mesh: --ocp-step-m"},
+          std::pair{"--tread-temp-C", "the optimal lap starts from its warm-up lap"},
+          std::pair{"--carcass-temp-C", "the optimal lap starts from its warm-up lap"},
+          std::pair{"--disc-temp-C", "the optimal lap starts from its warm-up lap"},
+          std::pair{"--calliper-temp-C", "the optimal lap starts from its warm-up lap"}}) {
+      if (a.Given(name))
+        throw InputError(fmt::format("{} is for --method qss ({})", name, instead));
+    }
+    return;
+  }
+  for (const auto& [given, name] :
+       {std::pair{a.compare_disc_limit_C.has_value(), "--compare-disc-limit-C"},
+        std::pair{a.ocp_step_m.has_value(), "--ocp-step-m"},
+        std::pair{a.single_process, "--single-process"},
+        std::pair{a.wear_in_programme, "--wear-in-programme"},
+        std::pair{a.Given("--threads"), "--threads"}}) {
+    if (given) throw InputError(fmt::format("{} is for --method ocp", name));
+  }
+}
 
 double Celsius(double kelvin) { return KelvinToCelsius(kelvin); }
 
 int RunLap(const LapArgs& a) {
+  RefuseOtherMethodsOptions(a);
   if (a.method == "ocp") {
     OptimalArgs o;
+    o.command = "lap --method ocp";
     o.track = a.track;
     o.car = a.car;
     o.set = a.set;
@@ -76,14 +111,6 @@ int RunLap(const LapArgs& a) {
     o.run.wear_in_programme = a.wear_in_programme;
     o.run.threads = a.threads;
     return RunOptimal(o);
-  }
-  // The optimal lap's options are refused, not ignored, by the QSS lap.
-  for (const auto& [given, name] :
-       {std::pair{a.compare_disc_limit_C.has_value(), "--compare-disc-limit-C"},
-        std::pair{a.ocp_step_m.has_value(), "--ocp-step-m"},
-        std::pair{a.single_process, "--single-process"},
-        std::pair{a.wear_in_programme, "--wear-in-programme"}}) {
-    if (given) throw InputError(fmt::format("{} is for --method ocp", name));
   }
   if (a.laps < 1 || a.laps > 1000) {
     throw InputError(fmt::format("--laps {} must be in [1, 1000]", a.laps));
@@ -240,7 +267,14 @@ CommandRunner RegisterLapCommand(CLI::App& app) {
   sub->add_option("--carcass-temp-C", args->carcass_C, "Starting carcass temperature");
   sub->add_option("--disc-temp-C", args->disc_C, "Starting disc temperature");
   sub->add_option("--calliper-temp-C", args->calliper_C, "Starting calliper temperature");
-  return [args] { return RunLap(*args); };
+  return [args, sub] {
+    for (const char* name :
+         {"--laps", "--line", "--line-margin-m", "--step-m", "--tread-temp-C", "--carcass-temp-C",
+          "--disc-temp-C", "--calliper-temp-C", "--threads"}) {
+      if (sub->get_option(name)->count() > 0) args->given.emplace_back(name);
+    }
+    return RunLap(*args);
+  };
 }
 
 }  // namespace hotlap::app

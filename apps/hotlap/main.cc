@@ -43,8 +43,28 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    // --help prints and exits 0; a bad option is bad input like any other: exit 2.
-    return app.exit(e) == 0 ? 0 : 2;
+    // --help and --version print and exit 0.
+    if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+    // A bad option is bad input like any other: one line on stderr, exit 2.
+    std::string where = "hotlap";
+    for (CLI::App* sub = &app;;) {
+      CLI::App* next = nullptr;
+      for (CLI::App* s : sub->get_subcommands({})) {
+        if (s->parsed()) next = s;
+      }
+      if (next == nullptr) break;
+      where += " " + next->get_name();
+      sub = next;
+    }
+    std::string what = e.what();
+    if (where == "hotlap" && argc > 1 && argv[1][0] != '-') {
+      what = "unknown command '" + std::string(argv[1]) + "'";
+    }
+    for (char& c : what) {
+      if (c == '\n') c = ' ';
+    }
+    std::fprintf(stderr, "hotlap: error: %s (%s --help)\n", what.c_str(), where.c_str());
+    return 2;
   }
   try {
     for (auto& [sub, run] : runners) {

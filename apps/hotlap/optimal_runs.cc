@@ -137,7 +137,9 @@ int RunOptimal(const OptimalArgs& a) {
   bool ok = true;
   for (const ocp::SolvedLap& s : runs.laps) ok = ok && s.run.solution.solve.ok();
   if (!a.json.empty()) {
-    WriteJsonFile(a.json, ocp::OptimalRunsJson(runs, o, track.name(), car, elapsed, mesh_delta));
+    nlohmann::json j = ocp::OptimalRunsJson(runs, o, track.name(), car, elapsed, mesh_delta);
+    j["command"] = a.command;  // the command that ran it, whether one solve or the comparison
+    WriteJsonFile(a.json, j);
     fmt::print("wrote {}\n", a.json);
   }
   return ok ? 0 : 3;

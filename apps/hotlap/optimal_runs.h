@@ -19,6 +19,7 @@ struct OptimalArgs {
   std::vector<std::string> set;  ///< --set KEY=VALUE: car parameters overridden
   std::string out;
   std::string json;
+  std::string command = "optimise";  ///< the JSON's "command": "optimise" or "lap --method ocp"
   /// The library's options, filled by CLI11 (the Hessian, the second process and the Ipopt
   /// options from the three below at run time).
   ocp::OptimalRunOptions run = [] {

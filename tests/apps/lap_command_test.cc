@@ -40,9 +40,11 @@ TEST_F(LapCommandTest, DarlingtonQssLapMeetsTheAcceptance) {
                           "top_speed_mps", "min_speed_mps", "braking_zones", "corners"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
+  // The 28.5-31.5 s was set before the QSS had the tyres' cornering drag (2026-11-27:
+  // 31.35 -> 31.72 s; the optimal lap of the same car, which always had it, is 29.66 s).
   const double lap_time = j["lap_time_s"].get<double>();
   EXPECT_GT(lap_time, 28.5);
-  EXPECT_LT(lap_time, 31.5);
+  EXPECT_LT(lap_time, 32.0);
   EXPECT_GT(j["top_speed_mps"].get<double>(), 78.0);
   EXPECT_LT(j["top_speed_mps"].get<double>(), 84.0);
   EXPECT_LT(j["min_speed_mps"].get<double>(), j["top_speed_mps"].get<double>() - 3.0);
@@ -88,7 +90,9 @@ TEST_F(LapCommandTest, DarlingtonQssLapMeetsTheAcceptance) {
 }
 
 // The channels file is a log: replaying it runs the same thermal models over the same inputs, so
-// it gives back the temperatures the lap wrote (to the replay's integration accuracy).
+// it gives back the temperatures the lap wrote (to the replay's integration accuracy). The rear
+// discs too, though each takes half the spool's braking power whatever its tyre's fx: the file's
+// brake_power columns carry it (without them the rear discs were 100-160 degC off).
 TEST_F(LapCommandTest, ChannelsReplayToTheSameTemperatures) {
   const fs::path out = dir() / "lap";
   ASSERT_EQ(Run("lap --out " + out.string() + " --step-m 2").exit_code, 0);
@@ -103,6 +107,43 @@ TEST_F(LapCommandTest, ChannelsReplayToTheSameTemperatures) {
     ASSERT_EQ(a.size(), b.size());
     for (size_t i = 0; i < a.size(); i += 50) EXPECT_NEAR(a[i], b[i], 0.05) << name << " " << i;
   }
+  for (const char* name : {"disc_temp_fl_C", "disc_temp_fr_C", "disc_temp_rl_C", "disc_temp_rr_C",
+                           "calliper_temp_rl_C", "brake_power_rl_W", "brake_power_rr_W"}) {
+    const auto& a = lap.Column(name);
+    const auto& b = rep.Column(name);
+    ASSERT_EQ(a.size(), b.size());
+    double worst = 0.0, peak = 0.0;
+    for (size_t i = 0; i < a.size(); ++i) {
+      worst = std::max(worst, std::abs(a[i] - b[i]));
+      peak = std::max(peak, std::abs(a[i]));
+    }
+    EXPECT_LE(worst, 1e-3 * peak) << name << " (peak " << peak << ")";
+  }
+  // The spool's rear brakes share the axle's braking force, though their tyres' forces differ
+  // (their powers differ by the wheels' ground speeds alone: about 1% in the turns).
+  const auto& rl = lap.Column("brake_power_rl_W");
+  const auto& rr = lap.Column("brake_power_rr_W");
+  const auto& fx_rl = lap.Column("fx_rl_N");
+  const auto& fx_rr = lap.Column("fx_rr_N");
+  double fx_gap = 0.0;
+  for (size_t i = 0; i < rl.size(); ++i) {
+    EXPECT_NEAR(rl[i], rr[i], 0.02 * std::max(rl[i], rr[i]) + 1.0) << i;
+    if (rl[i] > 1e4) fx_gap = std::max(fx_gap, std::abs(fx_rl[i] - fx_rr[i]));
+  }
+  EXPECT_GT(fx_gap, 500.0) << "the rear tyres' braking forces are expected to differ";
+}
+
+// One optimal lap from `hotlap lap`: its JSON names the command that ran it (as the comparison's
+// does), on a coarse mesh so that it solves in seconds.
+TEST_F(LapCommandTest, OneOptimalLapSaysWhichCommandRanIt) {
+  const fs::path out = dir() / "ocp", json = dir() / "ocp.json";
+  const RunResult r = Run("lap --method ocp --ocp-step-m 30 --threads 1 --out " + out.string() +
+                          " --json " + json.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = Json(json);
+  EXPECT_EQ(j["command"], "lap --method ocp");
+  EXPECT_EQ(j["mesh_step_m"].get<double>(), 30.0);
+  EXPECT_NEAR(j["lap_time_s"].get<double>(), 29.7, 0.3);
 }
 
 // A stint: one row per lap in the JSON, wear accumulating, laps column counting up.
@@ -173,6 +214,13 @@ TEST_F(LapCommandTest, BadInputFailsCleanlyWithoutOutput) {
       {"lap --method qss --ocp-step-m 6", "--ocp-step-m is for --method ocp"},
       {"lap --single-process", "--single-process is for --method ocp"},
       {"lap --wear-in-programme", "--wear-in-programme is for --method ocp"},
+      {"lap --threads 2", "--threads is for --method ocp"},
+      // And the QSS lap's by the optimal lap (refused before anything is solved).
+      {"lap --method ocp --laps 2", "--laps is for --method qss"},
+      {"lap --method ocp --step-m 2", "--ocp-step-m"},
+      {"lap --method ocp --line centre", "--line is for --method qss"},
+      {"lap --method ocp --line-margin-m 2", "--line-margin-m is for --method qss"},
+      {"lap --method ocp --disc-temp-C 300", "starts from its warm-up lap"},
       {"lap --step-m 500", "step"},
       {"lap --line " + (dir() / "missing.csv").string(), "missing.csv"},
       {"lap --line " + backwards.string(), "does not increase"},

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -132,6 +133,19 @@ TEST_F(RefusalTest, ABadOptionIsExit2WithAPlainMessage) {
   EXPECT_FALSE(fs::exists(dir() / "out"));
   EXPECT_EQ(Run("replay --no-such-option").exit_code, 2);
   EXPECT_EQ(Run("--help").exit_code, 0);
+  EXPECT_EQ(Run("--version").exit_code, 0);
+  // One line, as every other refusal, naming the command whose help to read.
+  for (const auto& [args, message] :
+       {std::pair{"nosuch", "hotlap: error: unknown command 'nosuch' (hotlap --help)\n"},
+        std::pair{"lap --laps x --out o",
+                  "hotlap: error: Could not convert: --laps = x (hotlap lap --help)\n"},
+        std::pair{"tyre eval --fz-N 5000",
+                  "hotlap: error: --model is required (hotlap tyre eval "
+                  "--help)\n"}}) {
+    const test::RunResult bad = Run(args);
+    EXPECT_EQ(bad.exit_code, 2) << args;
+    EXPECT_EQ(bad.err, message) << args;
+  }
 }
 
 }  // namespace

@@ -110,6 +110,17 @@ TEST(BrakeThermalTest, HeatFlowsMatchHandComputation) {
   EXPECT_EQ(direct.q4, q.q4);
 }
 
+// A logged braking power back to the force the brake model takes: its power at the same speed
+// is the logged one; where the speed says nothing, the tyre's own braking force.
+TEST(BrakeThermalTest, BrakeForceFromALoggedPower) {
+  EXPECT_DOUBLE_EQ(BrakeFxFromPower(50.0, 60000.0, -500.0), -1200.0);  // 60 kW at 50 m/s
+  EXPECT_DOUBLE_EQ(CalcBrakePower(50.0, BrakeFxFromPower(50.0, 60000.0, -500.0)), 60000.0);
+  EXPECT_DOUBLE_EQ(BrakeFxFromPower(-50.0, 60000.0, -500.0), -1200.0);  // |u|, as the power
+  EXPECT_EQ(BrakeFxFromPower(50.0, 0.0, 3000.0), 0.0);      // no braking, whatever the tyre
+  EXPECT_EQ(BrakeFxFromPower(0.05, 10.0, -700.0), -700.0);  // near standstill: the tyre's
+  EXPECT_EQ(BrakeFxFromPower(0.05, 10.0, 700.0), 0.0);
+}
+
 TEST(BrakeThermalTest, BrakePowerIsExactMaxOfMinusFx) {
   EXPECT_EQ(CalcBrakePower(70.0, 2000.0), 0.0);  // driving: no braking power
   EXPECT_EQ(CalcBrakePower(70.0, 0.0), 0.0);

@@ -44,7 +44,7 @@ class BrakeThermalFitTest : public ::testing::Test {
     telemetry_ = std::make_unique<Telemetry>(Telemetry::Read(dir_.path() / "log.csv"));
     inputs_ = sim::ReplayInputsFromTelemetry(*telemetry_, {});
     BrakeCornerData d;
-    d.samples = CornerSamplesOf(inputs_, kCorner);
+    d.samples = BrakeSamplesOf(inputs_, kCorner);
     d.disc = ReadLoggedChannel(*telemetry_, "disc_temp", kCorner, 223.15, 1773.15, 0.01);
     d.calliper = ReadLoggedChannel(*telemetry_, "calliper_temp", kCorner, 223.15, 1773.15, 0.01);
     d.weights = TrapezoidWeights(inputs_.time);

@@ -200,7 +200,7 @@ TEST_F(RecoveryTest, Brake) {
   int misses = 0;
   for (Corner c : kAllCorners) {
     BrakeCornerData d;
-    d.samples = CornerSamplesOf(*inputs_, c);
+    d.samples = BrakeSamplesOf(*inputs_, c);
     d.disc = ReadLoggedChannel(*telemetry_, "disc_temp", c, 223.15, 1773.15, 0.01);
     d.calliper = ReadLoggedChannel(*telemetry_, "calliper_temp", c, 223.15, 1773.15, 0.01);
     d.weights = weights;

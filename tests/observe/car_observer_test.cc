@@ -69,6 +69,7 @@ std::vector<ObserverSample> Samples(const sim::SynthLog& log) {
       const std::string n(CornerName(c));
       const sim::CornerChannels& ch = in.corners[i];
       s.inputs[i] = {ch.speed[k], ch.fx[k], ch.fy[k], ch.fz[k], ch.slip_angle[k], ch.slip_ratio[k]};
+      if (!ch.brake_fx.empty()) s.inputs[i].brake_fx = ch.brake_fx[k];  // the rear spool's share
       s.readings[i].tread_temp = CelsiusToKelvin(column("tread_temp_" + n + "_C")[k]);
       s.readings[i].disc_temp = CelsiusToKelvin(column("disc_temp_" + n + "_C")[k]);
     }

@@ -88,6 +88,7 @@ TEST(CornerFilterTest, WithoutReadingsTheMeansAreReplays) {
     for (int c = 0; c < 4; ++c) {
       const sim::CornerChannels& ch = in.corners[c];
       s.inputs[c] = {ch.speed[k], ch.fx[k], ch.fy[k], ch.fz[k], ch.slip_angle[k], ch.slip_ratio[k]};
+      if (!ch.brake_fx.empty()) s.inputs[c].brake_fx = ch.brake_fx[k];  // the rear spool's share
     }
     observer.Step(s);
     for (Corner c : kAllCorners) {

@@ -61,6 +61,22 @@ TEST(StreamIoTest, ReadsOneSampleALineInSiHoldingInputsAndMarkingDropouts) {
   EXPECT_FALSE(reader.Next());
 }
 
+// A brake_power column is the brake's input (the rear discs of a spool share the axle's power):
+// the force the brake model takes gives it back at the line's speed; an empty cell holds it.
+TEST(StreamIoTest, ABrakePowerColumnIsTheBrakesInput) {
+  std::istringstream in(Header() + ",brake_power_rl_kW\n" + Line("0", "-2", "500") + ",30\n" +
+                        Line("0.01", "-2", "500") + ",\n");
+  TelemetryLineReader reader(in, "test.csv", {300.0, 320.0});
+  const std::optional<ObserverSample> a = reader.Next();
+  ASSERT_TRUE(a);
+  EXPECT_NEAR(a->inputs[2].brake_fx, -30000.0 / 50.0, 1e-9);  // 30 kW at 180 kph
+  EXPECT_NEAR(a->inputs[2].fx, -1000.0, 1e-9);                // the tyre's own, unchanged
+  EXPECT_TRUE(std::isnan(a->inputs[0].brake_fx));             // no column: the brake sees fx
+  const std::optional<ObserverSample> b = reader.Next();
+  ASSERT_TRUE(b);
+  EXPECT_NEAR(b->inputs[2].brake_fx, -600.0, 1e-9);  // empty: held
+}
+
 TEST(StreamIoTest, RefusesWhatItCannotRead) {
   const auto error = [](const std::string& text) {
     return test::InputErrorOf([&] {

@@ -101,10 +101,42 @@ TEST(QssLapTest, FlatCircleBalancesCentripetalForce) {
   for (int k = 0; k < 4; ++k) {
     grip[k] = car.tyre(kAllCorners[k]).compound->GripFactor(o.initial.tyres[k].tread_temp, 0.0);
   }
-  const double drag = CalcResistance(q, road[0], v);
+  std::array<double, 4> fy, alpha;
+  for (int k = 0; k < 4; ++k) {
+    fy[k] = lap.corners[k].fy[0];
+    alpha[k] = lap.corners[k].slip_angle[0];
+  }
+  const double k_drag = CalcCorneringDragCoefficient(fy, alpha);
+  const double drag = CalcResistance(q, road[0], v, k_drag);
   EXPECT_NEAR(CalcForceDemand(q, road[0], v, drag, grip).max_utilization, 1.0, 1e-3);
   EXPECT_FALSE(
-      CalcForceDemand(q, road[0], v + 1.0, CalcResistance(q, road[0], v + 1.0), grip).Feasible());
+      CalcForceDemand(q, road[0], v + 1.0, CalcResistance(q, road[0], v + 1.0, k_drag), grip)
+          .Feasible());
+  // Holding its speed, the tyres' drive is the aerodynamic drag, the rolling resistance and the
+  // cornering drag: the lateral forces of tyres at a slip angle, -Fy sin(alpha) each, against
+  // the motion (to the shortfall the profile's settling leaves, 1 mm/s).
+  double cornering_drag = 0.0;
+  for (int k = 0; k < 4; ++k) cornering_drag -= fy[k] * std::sin(alpha[k]);
+  EXPECT_GT(cornering_drag, 500.0);  // about 4 degrees of slip on 17 kN of lateral force
+  EXPECT_NEAR(SumAt(lap.corners, &CornerChannels::fx, 0),
+              CalcResistance(q, road[0], v) + cornering_drag, 5.0);
+  EXPECT_NEAR(CalcResistance(q, road[0], v, k_drag), CalcResistance(q, road[0], v) + cornering_drag,
+              1e-3 * cornering_drag);  // the tyres' sum of Fy against m V^2 kappa
+}
+
+// Left out (one profile), the cornering drag makes the same circle faster: the tyres have its
+// share of their ellipses for the lateral force.
+TEST(QssLapTest, CorneringDragSlowsTheCircle) {
+  const vehicle::Car& car = Gen7();
+  const auto road = Circle(150.0, 0.0);
+  QssOptions o = Options();
+  o.couple_first_lap = false;
+  const double with = RunQssLap(car, road, o).laps.at(0).speed[0];
+  o.max_drag_passes = 1;
+  const QssLap without = RunQssLap(car, road, o).laps.at(0);
+  EXPECT_GT(without.speed[0], with + 0.05);
+  EXPECT_NEAR(SumAt(without.corners, &CornerChannels::fx, 0),
+              CalcResistance(QssVehicle(*car.vehicle), road[0], without.speed[0]), 5.0);
 }
 
 // Banked circle: the tyres make exactly what banking does not (spec section 10), and banking

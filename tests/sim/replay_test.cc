@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -283,6 +284,58 @@ TEST(ReplayTest, RejectsNonIncreasingTimeAndWrongLengths) {
   }
 }
 
+// A log's brake_power column is that brake's heat input: the force the brake takes gives the
+// logged power back at the corner's speed, resampling keeps it, and a replay's brake power is it.
+TEST(ReplayTest, ALoggedBrakePowerIsTheBrakesInput) {
+  const fs::path source = fs::path(HOTLAP_SOURCE_DIR) / "data/telemetry/darlington_example.csv";
+  const test::TempDir dir;
+  {
+    std::ifstream in(source);
+    std::ofstream out(dir.path() / "log.csv");
+    std::string line;
+    bool header = true;
+    int row = 0;
+    while (std::getline(in, line)) {
+      if (line.starts_with("#")) {
+        out << line << "\n";
+      } else if (header) {
+        out << line << ",brake_power_rl_kW\n";
+        header = false;
+      } else {
+        out << line << "," << (row++ % 2 == 0 ? "20" : "0") << "\n";  // 20 kW, every other row
+      }
+    }
+  }
+  const Telemetry log = Telemetry::Read(dir.path() / "log.csv");
+  const ReplayInputs in = ReplayInputsFromTelemetry(log, {});
+  const CornerChannels& rl = in.corners[CornerIndex(Corner::kRearLeft)];
+  ASSERT_EQ(rl.brake_fx.size(), in.time.size());
+  for (size_t k = 0; k < in.time.size(); k += 97) {
+    EXPECT_NEAR(rl.brake_fx[k] * -rl.speed[k], k % 2 == 0 ? 20000.0 : 0.0, 1e-6) << k;
+  }
+  for (Corner c : {Corner::kFrontLeft, Corner::kFrontRight, Corner::kRearRight}) {
+    EXPECT_TRUE(in.corners[CornerIndex(c)].brake_fx.empty()) << CornerName(c);
+  }
+  EXPECT_EQ(ResampleReplayInputs(in, 10.0).corners[2].brake_fx.size(),
+            ResampleReplayInputs(in, 10.0).time.size());
+  const vehicle::Car car = Gen7();
+  const ReplayResult r = RunReplay(car, in, WarmStart(car), {});
+  const CornerHistory& h = r.corners[CornerIndex(Corner::kRearLeft)];
+  const ReplayResult example = RunReplay(car, ExampleInputs(), WarmStart(car), {});
+  const CornerHistory& plain = example.corners[CornerIndex(Corner::kRearLeft)];
+  for (size_t k = 0; k < in.time.size(); k += 97) {
+    EXPECT_NEAR(h.brake_power[k], k % 2 == 0 ? 20000.0 : 0.0, 1e-6) << k;
+  }
+  // The disc integrates that power, not the tyre's: 10 kW on average all lap instead of the
+  // example's braking zones (its disc peaks near 940 degC) runs it far from the plain replay.
+  double gap = 0.0;
+  for (size_t k = 0; k < h.disc_temp.size(); ++k) {
+    gap = std::max(gap, std::abs(h.disc_temp[k] - plain.disc_temp[k]));
+  }
+  EXPECT_GT(gap, 100.0);
+  EXPECT_EQ(r.corners[0].disc_temp, example.corners[0].disc_temp);  // the other corners alike
+}
+
 TEST(ReplayTest, DivergenceIsReportedNotReturned) {
   const vehicle::Car car = Gen7();
   ReplayInputs in = ResampleReplayInputs(ExampleInputs(), 10.0);
@@ -332,7 +385,10 @@ TEST(ReplayIoTest, MissingAmbientNeedsAnOption) {
     ReplayInputsFromTelemetry(log, {});
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("none given instead (hotlap: --ambient-temp-C; Python: ambient_temp_C=)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(
+                  "none given instead (hotlap: --ambient-temp-C; Python: ambient_temp_C=)"),
+              std::string::npos)
+        << e.what();
   }
   InitialTemperatureOverrides o;
   o.ambient_temp = CelsiusToKelvin(20.0);

@@ -1,5 +1,6 @@
 #include "hotlap/brake/brake_thermal.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "hotlap/common/units.h"
@@ -32,6 +33,12 @@ template <Scalar T>
 T CalcBrakePower(const T& speed, const T& fx) {
   using std::abs;
   return ValueOf(fx) < 0.0 ? T(-abs(speed) * fx) : T(0.0);  // (000:26)
+}
+
+double BrakeFxFromPower(double speed, double power, double fx) {
+  const double u = std::abs(speed);
+  if (!(u >= 0.1)) return std::min(fx, 0.0);
+  return -std::max(power, 0.0) / u;
 }
 
 template <Scalar T>

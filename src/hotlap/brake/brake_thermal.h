@@ -136,6 +136,13 @@ struct BrakeInputTerms {
 template <Scalar T>
 T CalcBrakePower(const T& speed, const T& fx);
 
+/// The braking force, N (<= 0), whose CalcBrakePower at `speed` is a logged braking `power`, W:
+/// how a log's `brake_power_<corner>` column becomes the brake model's input where it differs
+/// from the tyre's own force (the rear discs of a spool share the axle's torque, so each takes
+/// half the axle's braking power whatever each tyre's Fx). Below 0.1 m/s, where a power says
+/// nothing about a force, the tyre's own min(fx, 0).
+double BrakeFxFromPower(double speed, double power, double fx);
+
 /// The parameter-only terms.
 template <Scalar T>
 BrakeConstants<T> CalcBrakeConstants(const BrakeThermalParams<T>& params);

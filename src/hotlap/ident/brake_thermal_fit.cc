@@ -93,7 +93,7 @@ class BrakeLogModelP {
     model_.Run<T>(l, emit);
   }
 
- private:
+  // P's entries (p11, p21, p22, p31, p32, p33) to its lower-triangular Cholesky factor.
   template <Scalar T>
   static void Cholesky(std::span<const T> p, T* l) {
     using std::sqrt;
@@ -105,6 +105,7 @@ class BrakeLogModelP {
     l[5] = sqrt(p[5] - l[3] * l[3] - l[4] * l[4]);
   }
 
+ private:
   const BrakeLogModel& model_;
 };
 
@@ -246,12 +247,28 @@ FitResult ReportInP(const BrakeLogModel& model, const std::vector<double>& all,
   std::vector<double> p_all = all;
   std::vector<FitParameter> params = lfit.parameters;
   for (int base : {kDisc, kCalliper}) {
+    // The raised diagonal must also survive the way back: P's Cholesky factor subtracts the
+    // squares of the off-diagonal entries, and a diagonal entry a million times smaller than
+    // its row's (an undetermined convection, e.g. a dead calliper sensor's) rounds away there
+    // (a zero pivot, then NaN). Raised tenfold until L -> P -> L gives L back.
     double l[6];
-    for (int e = 0; e < 6; ++e) {
-      l[e] = all[base + e];
-      if (kDiagonal[e]) l[e] = std::max(l[e], kMinDiagonal * lfit.parameters[base + e].scale);
+    std::array<double, 6> p{};
+    for (double raise = kMinDiagonal; raise <= 1.0; raise *= 10.0) {
+      for (int e = 0; e < 6; ++e) {
+        l[e] = all[base + e];
+        if (kDiagonal[e]) l[e] = std::max(l[e], raise * lfit.parameters[base + e].scale);
+      }
+      p = PEntries(l);
+      double back[6];
+      BrakeLogModelP::Cholesky<double>(std::span<const double>(p.data(), 6), back);
+      bool same = true;
+      for (int e = 0; e < 6; ++e) {
+        same =
+            same && std::isfinite(back[e]) &&
+            std::abs(back[e] - l[e]) <= 1e-6 * (std::abs(l[e]) + lfit.parameters[base + e].scale);
+      }
+      if (same) break;
     }
-    const std::array<double, 6> p = PEntries(l);
     for (int e = 0; e < 6; ++e) {
       p_all[base + e] = p[e];
       params[base + e] = {ConvectionMatrixKeys()[base - kDisc + e],

@@ -97,7 +97,7 @@ void FitTyre(const CarFitInputs& in, Corner c, CornerFitOutcome& out,
 void FitBrake(const CarFitInputs& in, Corner c, CornerFitOutcome& out,
               std::vector<FileEdit>& edits) {
   BrakeCornerData d;
-  d.samples = CornerSamplesOf(*in.replay, c);
+  d.samples = BrakeSamplesOf(*in.replay, c);
   d.disc = ReadLoggedChannel(in.log, "disc_temp", c, 223.15, 1773.15, 0.01);
   d.calliper = ReadLoggedChannel(in.log, "calliper_temp", c, 223.15, 1773.15, 0.01);
   d.weights = in.weights;

@@ -182,6 +182,13 @@ sim::CornerSamples CornerSamplesOf(const sim::ReplayInputs& in, Corner corner) {
           ch.slip_angle, ch.slip_ratio, in.ambient_temp, in.track_temp};
 }
 
+sim::CornerSamples BrakeSamplesOf(const sim::ReplayInputs& in, Corner corner) {
+  sim::CornerSamples s = CornerSamplesOf(in, corner);
+  const sim::CornerChannels& ch = in.corners[CornerIndex(corner)];
+  if (!ch.brake_fx.empty()) s.fx = ch.brake_fx;
+  return s;
+}
+
 std::vector<Corner> ParseCornerList(std::string_view text, std::string_view option) {
   text = Trim(text);
   if (text.empty() || text == "all") return {kAllCorners.begin(), kAllCorners.end()};

@@ -61,6 +61,10 @@ std::vector<double> SmoothedForGuess(std::span<const double> values);
 /// A corner's inputs as CornerSamples (spans into `inputs`, which must outlive them).
 sim::CornerSamples CornerSamplesOf(const sim::ReplayInputs& inputs, Corner corner);
 
+/// The same for the corner's brake: fx is the brake's force (brake_fx) where the inputs have it,
+/// as the replay takes it.
+sim::CornerSamples BrakeSamplesOf(const sim::ReplayInputs& inputs, Corner corner);
+
 /// Parses a comma-separated corner list ("fl,rr"); "all" or "" gives all four. InputError naming
 /// `option` for an unknown name.
 std::vector<Corner> ParseCornerList(std::string_view text, std::string_view option);

@@ -34,6 +34,9 @@ struct CornerInputs {
   double fz = 0.0;          ///< N
   double slip_angle = 0.0;  ///< rad
   double slip_ratio = 0.0;  ///< 1
+  /// The brake's force, N (< 0 braking), where it differs from the tyre's fx (a log's
+  /// brake_power column: sim/replay_io.h); NaN: the brake sees fx.
+  double brake_fx = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// One corner's readings at a sample, K; NaN where the sensor gave nothing.

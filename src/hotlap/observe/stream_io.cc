@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "hotlap/brake/brake_thermal.h"
 #include "hotlap/common/csv.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/json_output.h"
@@ -79,6 +80,16 @@ ObserverSample SampleFromRow(const Telemetry& t, size_t row, const ObserverSampl
                           t.ColumnOf("slip_angle", c));
     in.slip_ratio = input(Cell("slip_ratio", c), have ? prev->slip_ratio : 0.0, have,
                           t.ColumnOf("slip_ratio", c));
+    // A logged braking power is the brake's input (sim/replay_io.h); an empty cell holds the
+    // last one (none yet: the brake sees fx).
+    if (t.Has("brake_power", c)) {
+      const double power = Cell("brake_power", c);
+      if (std::isfinite(power)) {
+        in.brake_fx = brake::BrakeFxFromPower(in.speed, power, in.fx);
+      } else if (have) {
+        in.brake_fx = prev->brake_fx;
+      }
+    }
     CornerReadings& r = sample.readings[i];
     if (t.Has("tread_temp", c)) r.tread_temp = Cell("tread_temp", c);
     if (t.Has("disc_temp", c)) r.disc_temp = Cell("disc_temp", c);

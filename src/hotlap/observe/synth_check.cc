@@ -66,6 +66,7 @@ SynthCheck CheckObserverOnSynth(const vehicle::Car& car, const sim::SynthLog& lo
     for (int i = 0; i < 4; ++i) {
       const sim::CornerChannels& ch = in.corners[i];
       s.inputs[i] = {ch.speed[k], ch.fx[k], ch.fy[k], ch.fz[k], ch.slip_angle[k], ch.slip_ratio[k]};
+      if (!ch.brake_fx.empty()) s.inputs[i].brake_fx = ch.brake_fx[k];
       if (k > 0) out[i] = out[i] ? uniform() >= leave : uniform() < enter;
       // Readings: the log's columns.
       s.readings[i].tread_temp = CelsiusToKelvin((*tread[i])[k]);

@@ -18,6 +18,9 @@
 /// 3. At every point, the per-corner forces of that profile and the slips that make them
 ///    (vehicle/slip_inversion.h: free front wheels, rear wheels on a spool).
 /// 4. The thermal, wear and brake models replayed along the lap (sim/replay.h).
+/// Cornering drag: the lateral forces of tyres at a slip angle also act against the motion
+/// (sum of -Fy sin(alpha), about 1.6 kN mid-turn at Darlington); steps 1-3 are solved again with
+/// the drag the last forces and slip angles gave until the profile settles (qss_profile.h).
 /// Thermal coupling: a lap's grip factors come from the previous lap's temperatures and wear at
 /// the same point; the first lap is run twice, first at the starting temperatures.
 ///
@@ -64,6 +67,11 @@ struct QssOptions {
   bool couple_first_lap = true;
   /// Centre-line length of the lap, m (closes centre_distance); 0: the road's own length.
   double track_length = 0.0;
+  /// Most speed profiles a pass solves for the tyres' cornering drag (sim/qss_profile.h,
+  /// CalcResistance): 1 leaves it out (the profile and forces without it); each further profile
+  /// takes the coefficients the last forces and slip angles gave, until the speeds move by less
+  /// than 1 mm/s on average.
+  int max_drag_passes = 6;
 };
 
 /// One lap's profile and the per-corner channels the thermal models ran on; N + 1 samples (the

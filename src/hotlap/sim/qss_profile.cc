@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -43,14 +44,28 @@ QssVehicle::QssVehicle(const VehicleParams& p) : params(&p) {
   }
 }
 
+double CalcLateralForce(const QssVehicle& car, const RoadPoint& point, double speed) {
+  const double m = car.params->chassis.mass;
+  return m * speed * speed * PathCurvature(point) -
+         m * kGravity * std::sin(point.bank) * std::cos(point.grade);
+}
+
+double CalcCorneringDragCoefficient(const std::array<double, 4>& fy,
+                                    const std::array<double, 4>& slip_angle) {
+  double drag = 0.0, lateral = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    drag -= fy[k] * std::sin(slip_angle[k]);
+    lateral += fy[k];
+  }
+  return std::abs(lateral) < 100.0 ? 0.0 : drag / (lateral * lateral);
+}
+
 ForceDemand CalcForceDemand(const QssVehicle& car, const RoadPoint& point, double speed,
                             double sum_fx, const std::array<double, 4>& grip) {
   const VehicleParams& p = *car.params;
-  const double m = p.chassis.mass;
   const double kappa_g = PathCurvature(point);
   ForceDemand d;
-  d.sum_fy =
-      m * speed * speed * kappa_g - m * kGravity * std::sin(point.bank) * std::cos(point.grade);
+  d.sum_fy = CalcLateralForce(car, point, speed);
   const vehicle::ChassisMotion<double> motion{speed, 0.0, speed * kappa_g, 0.0};
   d.fz = vehicle::CalcNormalLoads(p, motion, Road(point), sum_fx, d.sum_fy);
 
@@ -108,7 +123,8 @@ ForceDemand CalcForceDemand(const QssVehicle& car, const RoadPoint& point, doubl
   return d;
 }
 
-double CalcResistance(const QssVehicle& car, const RoadPoint& point, double speed) {
+double CalcResistance(const QssVehicle& car, const RoadPoint& point, double speed,
+                      double cornering_drag) {
   const VehicleParams& p = *car.params;
   const vehicle::AeroLoads<double> aero = vehicle::CalcAeroLoads(p.aero, speed);
   const double normal = p.chassis.mass * (kGravity * std::cos(point.bank) * std::cos(point.grade) +
@@ -116,7 +132,9 @@ double CalcResistance(const QssVehicle& car, const RoadPoint& point, double spee
                         aero.downforce_front + aero.downforce_rear;
   double crr = 0.0;
   for (double c : car.rolling_coefficient) crr += 0.25 * c;
-  return aero.drag + crr * normal + p.chassis.mass * kGravity * std::sin(point.grade);
+  const double lateral = cornering_drag == 0.0 ? 0.0 : CalcLateralForce(car, point, speed);
+  return aero.drag + crr * normal + p.chassis.mass * kGravity * std::sin(point.grade) +
+         cornering_drag * lateral * lateral;
 }
 
 namespace {
@@ -153,11 +171,11 @@ double LargestFeasible(double lo, double f_lo, double hi, double f_hi, double to
 }  // namespace
 
 double CalcCorneringLimit(const QssVehicle& car, const RoadPoint& point,
-                          const std::array<double, 4>& grip) {
+                          const std::array<double, 4>& grip, double cornering_drag) {
   const double power = car.params->powertrain.WheelPower();
   // Excess over the limits: tyre utilisation beyond 1, or power beyond the wheel power.
   const auto excess = [&](double v) {
-    const double fx = CalcResistance(car, point, v);
+    const double fx = CalcResistance(car, point, v, cornering_drag);
     const double u = CalcForceDemand(car, point, v, fx, grip).max_utilization;
     return std::max(u - 1.0, (fx * v - power) / power);
   };
@@ -197,8 +215,13 @@ double CalcMaxBrakeForce(const QssVehicle& car, const RoadPoint& point, double s
 }
 
 SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> road,
-                              const std::array<std::vector<double>, 4>& grip) {
+                              const std::array<std::vector<double>, 4>& grip,
+                              std::span<const double> cornering_drag) {
   const size_t n = road.size();
+  if (!cornering_drag.empty() && cornering_drag.size() != n) {
+    throw std::invalid_argument("CalcSpeedProfile: one cornering-drag coefficient per point");
+  }
+  const auto drag_at = [&](size_t i) { return cornering_drag.empty() ? 0.0 : cornering_drag[i]; };
   const double ds = road[1].distance - road[0].distance;
   const double m = car.params->chassis.mass;
   const auto grip_at = [&](size_t i) {
@@ -208,7 +231,7 @@ SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> 
   out.cornering_limit.resize(n);
   out.limit.assign(n, SpeedLimit::kCornering);
   for (size_t i = 0; i < n; ++i) {
-    out.cornering_limit[i] = CalcCorneringLimit(car, road[i], grip_at(i));
+    out.cornering_limit[i] = CalcCorneringLimit(car, road[i], grip_at(i), drag_at(i));
     if (!(out.cornering_limit[i] > 0.0)) {
       throw NumericalError(fmt::format(
           "QSS lap: no speed is feasible at {:.1f} m (curvature {:.5f} 1/m, bank {:.1f} deg): "
@@ -227,7 +250,7 @@ SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> 
     SpeedLimit why = SpeedLimit::kTraction;
     const double v = out.speed[prev];
     const double drive = CalcMaxDriveForce(car, road[prev], v, grip_at(prev), &why);
-    const double a = (drive - CalcResistance(car, road[prev], v)) / m;
+    const double a = (drive - CalcResistance(car, road[prev], v, drag_at(prev))) / m;
     const double reachable = std::sqrt(std::max(v * v + 2.0 * a * ds, 0.25));
     if (reachable < out.speed[i] - 1e-6) {  // a limit search tolerance is not a limit
       out.speed[i] = reachable;
@@ -239,7 +262,7 @@ SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> 
     const size_t next = (start + n - k + 1) % n, i = (start + n - k) % n;
     const double v = out.speed[next];
     const double brake = CalcMaxBrakeForce(car, road[next], v, grip_at(next));
-    const double d = (brake + CalcResistance(car, road[next], v)) / m;
+    const double d = (brake + CalcResistance(car, road[next], v, drag_at(next))) / m;
     const double reachable = std::sqrt(std::max(v * v + 2.0 * d * ds, 0.25));
     if (reachable < out.speed[i] - 1e-6) {  // a limit search tolerance is not a limit
       out.speed[i] = reachable;

@@ -42,14 +42,30 @@ struct ForceDemand {
 ForceDemand CalcForceDemand(const QssVehicle& car, const RoadPoint& point, double speed,
                             double sum_fx, const std::array<double, 4>& grip);
 
+/// The lateral force the tyres make together at `point` and `speed`: m V^2 kappa_g less the
+/// bank's share of the weight, N (left +).
+double CalcLateralForce(const QssVehicle& car, const RoadPoint& point, double speed);
+
 /// Longitudinal resistance at a point besides the tyres' drive or brake force: drag, rolling
-/// resistance and the grade, N (positive opposes forward motion).
-double CalcResistance(const QssVehicle& car, const RoadPoint& point, double speed);
+/// resistance, the grade and the tyres' cornering drag, N (positive opposes forward motion).
+/// Cornering drag: a tyre running at a slip angle alpha turns -Fy sin(alpha) of its lateral force
+/// against the direction it travels (the power its lateral sliding dissipates, over the speed);
+/// taken as `cornering_drag` times the squared total lateral force (CalcLateralForce), quadratic
+/// as in the tyres' linear range, the coefficient measured at the point's last solution
+/// (CalcCorneringDragCoefficient) so that it is exact there.
+double CalcResistance(const QssVehicle& car, const RoadPoint& point, double speed,
+                      double cornering_drag = 0.0);
+
+/// The cornering-drag coefficient of CalcResistance at a solved point: sum of -Fy sin(alpha)
+/// over the four tyres (wheel axes, ISO slip angles) over the squared total lateral force, 1/N;
+/// 0 where the lateral force is below 100 N (a straight: no drag to speak of).
+double CalcCorneringDragCoefficient(const std::array<double, 4>& fy,
+                                    const std::array<double, 4>& slip_angle);
 
 /// Highest speed at which the car holds its speed at `point` with every tyre inside its ellipse
 /// and the power to overcome the resistance (bisection to 1 mm/s). 0 if not even a crawl works.
 double CalcCorneringLimit(const QssVehicle& car, const RoadPoint& point,
-                          const std::array<double, 4>& grip);
+                          const std::array<double, 4>& grip, double cornering_drag = 0.0);
 
 /// Largest total drive force (>= 0) at (point, speed) within the ellipses and the wheel power.
 /// Sets `limit` to kPower or kTraction.
@@ -66,8 +82,10 @@ struct SpeedProfile {
   std::vector<SpeedLimit> limit;
 };
 
-/// The closed-lap speed profile for per-point grip factors grip[c][i].
+/// The closed-lap speed profile for per-point grip factors grip[c][i] and cornering-drag
+/// coefficients (CalcResistance; empty: none).
 SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> road,
-                              const std::array<std::vector<double>, 4>& grip);
+                              const std::array<std::vector<double>, 4>& grip,
+                              std::span<const double> cornering_drag = {});
 
 }  // namespace hotlap::sim

@@ -183,6 +183,10 @@ ReplayInputs ResampleReplayInputs(const ReplayInputs& in, double rate_hz, int la
     b.fz = resample(a.fz);
     b.slip_angle = resample(a.slip_angle);
     b.slip_ratio = resample(a.slip_ratio);
+    if (!a.brake_fx.empty()) {
+      CheckLength(a.brake_fx, n, "brake_fx_" + std::string(CornerName(static_cast<Corner>(c))));
+      b.brake_fx = resample(a.brake_fx);
+    }
   }
   out.ambient_temp = resample(in.ambient_temp);
   out.track_temp = resample(in.track_temp);

@@ -24,7 +24,7 @@ struct CornerChannels {
   std::vector<double> slip_ratio;  ///< 1
   /// Braking force of this corner's brake, N, signed as fx (< 0 braking), when it differs from
   /// the tyre's fx: e.g. two wheels on a locked axle share one brake torque while their tyres'
-  /// forces differ. Empty: the brake sees fx, as in a log.
+  /// forces differ; from a log, its brake_power column (replay_io.h). Empty: the brake sees fx.
   std::vector<double> brake_fx;
 };
 

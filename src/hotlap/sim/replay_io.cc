@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "hotlap/brake/brake_thermal.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
 
@@ -38,6 +39,14 @@ ReplayInputs ReplayInputsFromTelemetry(const Telemetry& log,
     ch.fz = log.FilledChannel("fz", c);
     ch.slip_angle = log.FilledChannel("slip_angle", c);
     ch.slip_ratio = log.FilledChannel("slip_ratio", c);
+    // A logged braking power is the brake model's heat input (brake/brake_thermal.h).
+    if (log.Has("brake_power", c)) {
+      const std::vector<double> power = log.FilledChannel("brake_power", c);
+      ch.brake_fx.resize(power.size());
+      for (size_t k = 0; k < power.size(); ++k) {
+        ch.brake_fx[k] = brake::BrakeFxFromPower(ch.speed[k], power[k], ch.fx[k]);
+      }
+    }
   }
   in.ambient_temp = AmbientLike(log, "ambient_temp", overrides.ambient_temp,
                                 "hotlap: --ambient-temp-C; Python: ambient_temp_C=");

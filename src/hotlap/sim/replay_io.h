@@ -23,6 +23,8 @@ struct InitialTemperatureOverrides {
 /// Reads the replay inputs from a log: per corner speed (speed_<c> or speed), fx, fy, fz,
 /// slip_angle, slip_ratio; ambient_temp and track_temp columns, else the overrides. Gaps are
 /// filled linearly. InputError (naming the file and the missing column) if something is absent.
+/// A corner's brake_power column, where the log has one, is its brake's heat input (brake_fx,
+/// brake::BrakeFxFromPower); without one the brake sees u max(-fx, 0).
 ReplayInputs ReplayInputsFromTelemetry(const Telemetry& log,
                                        const InitialTemperatureOverrides& overrides);
 

@@ -200,6 +200,7 @@ SynthLog SynthesizeLog(const vehicle::Car& car, std::span<const RoadPoint> road,
         to.fz.push_back(from.fz[i]);
         to.slip_angle.push_back(from.slip_angle[i]);
         to.slip_ratio.push_back(from.slip_ratio[i]);
+        if (!from.brake_fx.empty()) to.brake_fx.push_back(from.brake_fx[i]);
       }
     }
     t0 += lap.time.back();
@@ -252,6 +253,9 @@ SynthLog SynthesizeLog(const vehicle::Car& car, std::span<const RoadPoint> road,
     add("fz", c, ch.fz);
     add("slip_angle", c, ch.slip_angle);
     add("slip_ratio", c, ch.slip_ratio);
+    // The brakes' heat input: where the lap's brakes differ from the tyres' forces (the rear
+    // discs share the spool's torque) a replay of the log needs it (sim/replay_io.h).
+    add("brake_power", c, h.brake_power);
     add("tread_temp", c, sensed(h.tread_temp, o.sensor_lag_s, o.temp_noise_K));
     add("carcass_temp", c, sensed(h.carcass_temp, o.sensor_lag_s, o.temp_noise_K));
     add("disc_temp", c, sensed(h.disc_temp, o.sensor_lag_s, o.temp_noise_K));
