@@ -110,11 +110,15 @@ std::vector<DisagreementWarning> CarObserver::Step(const ObserverSample& sample)
                                 slip_ratio = {x.slip_ratio, y.slip_ratio};
     const sim::CornerSamples in{time, speed, fx, fy, fz, slip_angle, slip_ratio, ambient, track};
     tyres_[i].Predict(in);
-    const std::array<double, 2> brake_fx = {std::isfinite(x.brake_fx) ? x.brake_fx : x.fx,
-                                            std::isfinite(y.brake_fx) ? y.brake_fx : y.fx};
-    sim::CornerSamples brake_in = in;
-    brake_in.fx = brake_fx;
-    brakes_[i].Predict(brake_in);
+    if (std::isfinite(x.brake_fx) || std::isfinite(y.brake_fx)) {  // the brake's own force
+      const std::array<double, 2> brake_fx = {std::isfinite(x.brake_fx) ? x.brake_fx : x.fx,
+                                              std::isfinite(y.brake_fx) ? y.brake_fx : y.fx};
+      sim::CornerSamples brake_in = in;
+      brake_in.fx = brake_fx;
+      brakes_[i].Predict(brake_in);
+    } else {
+      brakes_[i].Predict(in);
+    }
   }
   Correct(sample, warnings);
   previous_ = sample;
