@@ -89,6 +89,36 @@ TEST_F(BrakeThermalFitTest, RecoversGammaAndXiFromFarAndReportsP) {
   EXPECT_EQ(BrakeParameterKeys()[13], "calliper_convection_cholesky_sqrtW_per_K.l33");
 }
 
+// A disc sensor with a 0.2 s lag fitted as if it had none: the residuals follow one another
+// (white sensor noise would give about 0), and the fit says so; with the lag modelled it does not.
+TEST_F(BrakeThermalFitTest, AModelThatMissesTheLagIsSaidToMissSomething) {
+  sim::SynthOptions o;
+  o.sensor_lag_s = 0.2;
+  sim::WriteSynthLog(dir_.path() / "lagged.csv", sim::SynthesizeLog(*truth_, test::OvalRoad(), o));
+  const Telemetry log = Telemetry::Read(dir_.path() / "lagged.csv");
+  const sim::ReplayInputs in = sim::ReplayInputsFromTelemetry(log, {});
+  BrakeCornerData d;
+  d.samples = BrakeSamplesOf(in, kCorner);
+  d.disc = ReadLoggedChannel(log, "disc_temp", kCorner, 223.15, 1773.15, 0.01);
+  d.calliper = ReadLoggedChannel(log, "calliper_temp", kCorner, 223.15, 1773.15, 0.01);
+  d.weights = TrapezoidWeights(in.time);
+  const auto misses = [](const BrakeFitResult& r) {
+    for (const std::string& w : r.warnings) {
+      if (w.find("disc_temp: the residuals follow one another") != std::string::npos) return true;
+    }
+    return false;
+  };
+  const BrakeFitResult unmodelled = FitBrakeCorner(truth_->brake(kCorner), d, LogFitOptions{});
+  ASSERT_TRUE(unmodelled.fit);
+  EXPECT_GT(unmodelled.fit->channels[0].autocorrelation, 0.9);
+  EXPECT_TRUE(misses(unmodelled)) << ::testing::PrintToString(unmodelled.warnings);
+  LogFitOptions with_lag;
+  with_lag.sensor_lag_s = 0.2;
+  const BrakeFitResult modelled = FitBrakeCorner(truth_->brake(kCorner), d, with_lag);
+  ASSERT_TRUE(modelled.fit);
+  EXPECT_FALSE(misses(modelled)) << ::testing::PrintToString(modelled.warnings);
+}
+
 TEST_F(BrakeThermalFitTest, DeadCalliperSensorIsExcludedWithAWarning) {
   const BrakeCornerData d = Data(true);
   EXPECT_FALSE(d.calliper.usable);  // 0 degC read as 273.15 K everywhere: stuck

@@ -394,6 +394,7 @@ BrakeFitResult FitBrakeCorner(const brake::BrakeFile& brake, const BrakeCornerDa
     for (size_t i = 0; i < free.size(); ++i) all[free[i]] = r.cholesky_fit->estimates[i].value;
     r.fit = ReportInP(model, all, free, *r.cholesky_fit, channels, time, options.solver);
     AddLagWarnings(*r.cholesky_fit, options.sensor_lag_s, &r.warnings);
+    AddMisfitWarnings(*r.cholesky_fit, &r.warnings);
   } else {
     r.warnings.push_back(
         "no usable disc or calliper temperature: the brake parameters are kept from the car file");

@@ -61,12 +61,26 @@ void AddLagWarnings(const FitResult& fit, double modelled_lag_s, std::vector<std
   for (const ChannelStats& st : fit.channels) {
     if (!std::isfinite(st.apparent_lag) || !std::isfinite(st.apparent_lag_std_error)) continue;
     if (st.apparent_lag > 0.02 && st.apparent_lag > 3.0 * st.apparent_lag_std_error) {
+      // One linearised step from a fit that left the lag out: it sees part of a large lag (a
+      // disc's 0.2 s as 0.07-0.14 s), so the advice is to refit and look again.
       out->push_back(fmt::format(
-          "{}: the measurements trail the model as a sensor lag of about {:.2f} s{} would "
-          "(+/- {:.2f} s); if the sensor lags, refit with --sensor-lag-s {:.2f}",
+          "{}: the measurements trail the model as a sensor lag of at least about {:.2f} s{} "
+          "would (+/- {:.3f} s); if the sensor lags, refit with --sensor-lag-s {:.2f} and look "
+          "again",
           st.name, st.apparent_lag, modelled_lag_s > 0.0 ? " beyond the modelled one" : "",
           st.apparent_lag_std_error, modelled_lag_s + st.apparent_lag));
     }
+  }
+}
+
+void AddMisfitWarnings(const FitResult& fit, std::vector<std::string>* out) {
+  for (const ChannelStats& st : fit.channels) {
+    if (st.samples < 20 || !(st.autocorrelation > 0.9)) continue;
+    out->push_back(fmt::format(
+        "{}: the residuals follow one another (lag-one autocorrelation {:.2f}, RMS {:.3g}): the "
+        "model misses something in this channel (a sensor lag, an input, a held parameter), and "
+        "the intervals assume it does not: read them as too narrow",
+        st.name, st.autocorrelation, st.rms));
   }
 }
 

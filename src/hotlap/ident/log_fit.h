@@ -54,4 +54,9 @@ double LogUniform(std::mt19937_64& rng, double lo, double hi);
 /// lag above 0.02 s and three of its standard errors).
 void AddLagWarnings(const FitResult& fit, double modelled_lag_s, std::vector<std::string>* out);
 
+/// Adds a warning for every channel whose residuals follow one another (lag-one
+/// autocorrelation above 0.9; white sensor noise gives about 0): the model misses something
+/// there, and the intervals, which assume it does not, are too narrow.
+void AddMisfitWarnings(const FitResult& fit, std::vector<std::string>* out);
+
 }  // namespace hotlap::ident

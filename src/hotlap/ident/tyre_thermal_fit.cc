@@ -320,6 +320,7 @@ TyreFitResult FitTyreCorner(const tyre::TyreFile& tyre, const TyreCornerData& d,
       all[free_thermal[i]] = r.thermal->estimates[i].value;
     }
     AddLagWarnings(*r.thermal, options.sensor_lag_s, &r.warnings);
+    AddMisfitWarnings(*r.thermal, &r.warnings);
   } else {
     r.warnings.push_back("no usable tread or carcass temperature: p1..p5 kept from the car file");
   }
