@@ -114,7 +114,8 @@ TEST(DiscLimitComparisonTest, LimitBelowTheStartingDiscIsBadInput) {
   EXPECT_TRUE(lines.empty());
 }
 
-// Coarse to fine, the limited lap is solved in a child process beside the free one: the same
+// Coarse to fine, the limited lap is solved in a child process beside the free one's fine solve,
+// starting from the free coarse solution: the same
 // laps as solving it afterwards in this process, bit for bit (the fine solve's MUMPS ordering,
 // SCOTCH's, is reproducible on one thread, which SolveWithIpopt sets; on several its laps
 // differed by 1e-14 relative between processes).
@@ -127,10 +128,20 @@ TEST(DiscLimitComparisonTest, SecondProcessGivesTheSameLaps) {
   std::vector<std::string> lines;
   const auto log = [&](const std::string& line) { lines.push_back(line); };
   const DiscLimitComparison two = CompareDiscLimit(car, track, o, CelsiusToKelvin(480.0), {}, log);
-  EXPECT_TRUE(test::Contains(lines.at(0), "solving in a second process"));
+  // The child starts once the free coarse solve has ended, its coarse solve from that one's.
+  ASSERT_GE(lines.size(), 3u);
+  EXPECT_TRUE(test::Contains(lines[0], "no limit: solving"));
+  EXPECT_TRUE(test::Contains(lines[1], "discs <= 480 degC: solving in a second process"));
+  EXPECT_TRUE(test::Contains(lines[1], "its coarse solve from this one's"));
+  EXPECT_TRUE(test::Contains(lines[2], "no limit: coarse solve"));
   EXPECT_TRUE(two.limited_in_second_process);
   o.second_process = false;
-  const DiscLimitComparison one = CompareDiscLimit(car, track, o, CelsiusToKelvin(480.0));
+  lines.clear();
+  const DiscLimitComparison one = CompareDiscLimit(car, track, o, CelsiusToKelvin(480.0), {}, log);
+  EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [](const std::string& l) {
+    return test::Contains(l, "discs <= 480 degC: solving (30.0 m mesh") &&
+           test::Contains(l, "the coarse solve from the other lap's");
+  }));
   EXPECT_FALSE(one.limited_in_second_process);
   ASSERT_TRUE(two.converged() && one.converged());
   EXPECT_EQ(two.limited.run.solution.lap_time, one.limited.run.solution.lap_time);
@@ -143,6 +154,14 @@ TEST(DiscLimitComparisonTest, SecondProcessGivesTheSameLaps) {
   for (size_t k = 0; k < disc1.size(); ++k) EXPECT_EQ(disc2[k], disc1[k]) << k;
   EXPECT_EQ(two.free.run.solution.lap_time, one.free.run.solution.lap_time);
   EXPECT_EQ(two.delta_s(), one.delta_s());
+  // The limited coarse solve from the free one's takes fewer iterations than from the QSS guess,
+  // to the same lap.
+  OptimalLapOptions cold = o;
+  cold.front_disc_limit = CelsiusToKelvin(480.0);
+  const SolvedLap from_guess = SolveLap(car, track, cold, "from the guess");
+  ASSERT_TRUE(from_guess.run.coarse.ok());
+  EXPECT_LT(one.limited.run.coarse.iterations, from_guess.run.coarse.iterations);
+  EXPECT_NEAR(one.limited.run.solution.lap_time, from_guess.run.solution.lap_time, 0.01);
 }
 
 }  // namespace

@@ -34,7 +34,9 @@ SolvedLap SolveLap(const vehicle::Car& car, const track::Track& track, OptimalLa
         options.front_disc_limit
             ? fmt::format(", front discs <= {:g} degC", KelvinToCelsius(*options.front_disc_limit))
             : "",
-        from == nullptr ? "" : ", from the other solution"));
+        from != nullptr        ? ", from the other solution"
+        : options.coarse_start ? ", the coarse solve from the other lap's"
+                               : ""));
   }
   SolvedLap s;
   s.label = label;
@@ -87,9 +89,11 @@ DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track
 
   // The limited lap: coarse to fine like the free one where that is on, else warm-started from
   // the free lap. Where the limit changes the lap much (the Gen-7-like car's front-left disc
-  // from 901 to 500 degC) the free lap is a poor start: 241 iterations (206 s) on the 3 m mesh
-  // from it against 66 after 91 on the 15 m mesh (46 s in all), the same lap. Coarse to fine,
-  // the two solves are independent: the limited one runs in a child process beside the free one.
+  // from 846 to 500 degC) the free lap is a poor start: 241 iterations (206 s) on the 3 m mesh
+  // from it against 66 after 91 on the 15 m mesh (46 s in all), the same lap. The limited coarse
+  // solve starts from the free one's (52 iterations against 324 from the QSS guess, the same
+  // lap; docs/optimal-control.md, "Speed"), and from there the two laps are independent: the
+  // limited one runs in a child process beside the free one's fine solve.
   const bool coarse_to_fine = options.coarse_step_m > options.step_m;
   if (coarse_to_fine) {
     // The two solves share the derivative threads when side by side; so they do one after the
@@ -98,16 +102,24 @@ DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track
         std::max(1, options.derivative_threads / 2);
   }
   std::optional<ChildSolve> child;
-  if (coarse_to_fine && options.second_process) {
-    if (log) log(fmt::format("{}: solving in a second process", limited_label));
-    child.emplace([&] {
-      const SolvedLap l =
-          SolveLap(car, track, limited_options, limited_label, nullptr, progress, {}, &warm_up);
-      return std::vector<SolveResult>{l.run.coarse, l.run.solution.solve};
-    });
+  if (coarse_to_fine) {
+    free_options.on_coarse_solve = [&](const LapSolution& coarse) {
+      if (!coarse.solve.ok()) return;  // the limited lap then starts from the QSS guess
+      limited_options.coarse_start = OptimalLapOptions::CoarseStart{coarse.layout, coarse.solve};
+      if (!options.second_process) return;
+      if (log)
+        log(fmt::format("{}: solving in a second process, its coarse solve from this one's",
+                        limited_label));
+      child.emplace([&] {
+        const SolvedLap l =
+            SolveLap(car, track, limited_options, limited_label, nullptr, progress, {}, &warm_up);
+        return std::vector<SolveResult>{l.run.coarse, l.run.solution.solve};
+      });
+    };
   }
   DiscLimitComparison c;
   c.free = SolveLap(car, track, free_options, "no limit", nullptr, progress, log, &warm_up);
+  free_options.on_coarse_solve = nullptr;
   const SolveResult& free = c.free.run.solution.solve;
   if (child) {
     std::optional<std::vector<SolveResult>> r = child->Join();

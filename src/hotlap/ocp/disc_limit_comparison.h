@@ -66,8 +66,10 @@ struct DiscLimitComparison {
 };
 
 /// Solves the lap without a disc limit, then with the front discs at most `front_disc_limit` (K)
-/// at every node: coarse to fine like the free lap where `options.coarse_step_m` turns that on,
-/// else warm-started from the free solution (a continuation: the same neighbourhood, fewer
+/// at every node: coarse to fine like the free lap where `options.coarse_step_m` turns that on
+/// (its coarse solve from the free lap's coarse solution, then its fine solve beside the free
+/// lap's in a child process where `options.second_process`), else warm-started from the free
+/// solution (a continuation: the same neighbourhood, fewer
 /// iterations where the limit changes the lap little); if coarse to fine does not converge, the
 /// continuation is tried too (iterations and seconds of both counted). The problem is not convex,
 /// and the limited lap is a feasible point of the free problem: if it is faster, the free solve

@@ -144,9 +144,20 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
     LapProblemOptions coarse = lap;
     coarse.step_m = options.coarse_step_m;
     coarse.collocation = options.coarse_collocation;
+    IpoptOptions coarse_ipopt = options.ipopt;
+    if (options.coarse_start) {
+      // From another coarse solution: as any solve from a solution (below), the wear frozen unless
+      // asked and SCOTCH's ordering.
+      StartFromSolution(options.coarse_start->solve, options.coarse_start->layout,
+                        LapNodeCount(track, coarse.step_m, coarse.collocation), coarse.collocation,
+                        true, coarse.start_point, coarse_ipopt);
+      coarse.wear_in_programme = options.wear_in_programme;
+      coarse_ipopt.extra.insert(coarse_ipopt.extra.begin(), {"mumps_pivot_order", "3"});
+    }
     const LapSolution c =
-        SolveMinimumTimeLap(car, track, coarse, w.guess, options.ipopt,
+        SolveMinimumTimeLap(car, track, coarse, w.guess, coarse_ipopt,
                             options.presolved ? &options.presolved->coarse : nullptr);
+    if (options.on_coarse_solve) options.on_coarse_solve(c);
     run.coarse = c.solve;
     run.coarse_lap_time = c.lap_time;
     if (c.solve.ok()) {
