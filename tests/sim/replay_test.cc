@@ -284,6 +284,27 @@ TEST(ReplayTest, RejectsNonIncreasingTimeAndWrongLengths) {
   }
 }
 
+// A corner's samples are spans into the inputs; its brake's take the brake's own force where the
+// inputs have one, and refuse one of another length than time (RunStochasticReplay had no check).
+TEST(ReplayTest, BrakeSamplesTakeTheBrakesOwnForce) {
+  ReplayInputs in = ResampleReplayInputs(ExampleInputs(), 10.0);
+  const CornerSamples tyre = CornerSamplesOf(in, Corner::kRearLeft);
+  EXPECT_EQ(tyre.fx.data(), in.corners[2].fx.data());
+  EXPECT_EQ(tyre.ambient_temp.data(), in.ambient_temp.data());
+  EXPECT_EQ(BrakeSamplesOf(in, Corner::kRearLeft).fx.data(), in.corners[2].fx.data());
+  in.corners[2].brake_fx.assign(in.time.size(), -100.0);
+  const CornerSamples brake = BrakeSamplesOf(in, Corner::kRearLeft);
+  EXPECT_EQ(brake.fx.data(), in.corners[2].brake_fx.data());
+  EXPECT_EQ(brake.fy.data(), in.corners[2].fy.data());
+  in.corners[2].brake_fx.pop_back();
+  try {
+    BrakeSamplesOf(in, Corner::kRearLeft);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(test::Contains(e.what(), "the brake force of corner rl")) << e.what();
+  }
+}
+
 // A log's brake_power column is that brake's heat input: the force the brake takes gives the
 // logged power back at the corner's speed, resampling keeps it, and a replay's brake power is it.
 TEST(ReplayTest, ALoggedBrakePowerIsTheBrakesInput) {

@@ -176,19 +176,6 @@ std::vector<double> SmoothedForGuess(std::span<const double> values) {
   return out;
 }
 
-sim::CornerSamples CornerSamplesOf(const sim::ReplayInputs& in, Corner corner) {
-  const sim::CornerChannels& ch = in.corners[CornerIndex(corner)];
-  return {in.time,       ch.speed,      ch.fx,           ch.fy,        ch.fz,
-          ch.slip_angle, ch.slip_ratio, in.ambient_temp, in.track_temp};
-}
-
-sim::CornerSamples BrakeSamplesOf(const sim::ReplayInputs& in, Corner corner) {
-  sim::CornerSamples s = CornerSamplesOf(in, corner);
-  const sim::CornerChannels& ch = in.corners[CornerIndex(corner)];
-  if (!ch.brake_fx.empty()) s.fx = ch.brake_fx;
-  return s;
-}
-
 std::vector<Corner> ParseCornerList(std::string_view text, std::string_view option) {
   text = Trim(text);
   if (text.empty() || text == "all") return {kAllCorners.begin(), kAllCorners.end()};

@@ -58,12 +58,9 @@ double RobustFirstValue(std::span<const double> time, std::span<const double> va
 /// running median of five: good enough for an equation-error starting guess, not for fitting.
 std::vector<double> SmoothedForGuess(std::span<const double> values);
 
-/// A corner's inputs as CornerSamples (spans into `inputs`, which must outlive them).
-sim::CornerSamples CornerSamplesOf(const sim::ReplayInputs& inputs, Corner corner);
-
-/// The same for the corner's brake: fx is the brake's force (brake_fx) where the inputs have it,
-/// as the replay takes it.
-sim::CornerSamples BrakeSamplesOf(const sim::ReplayInputs& inputs, Corner corner);
+/// A corner's inputs as CornerSamples, and its brake's (sim/replay.h).
+using sim::BrakeSamplesOf;
+using sim::CornerSamplesOf;
 
 /// Parses a comma-separated corner list ("fl,rr"); "all" or "" gives all four. InputError naming
 /// `option` for an unknown name.

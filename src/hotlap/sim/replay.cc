@@ -65,6 +65,24 @@ void CheckCornerChannels(const CornerChannels& ch, size_t n, Corner c) {
 
 }  // namespace
 
+CornerSamples CornerSamplesOf(const ReplayInputs& in, Corner corner) {
+  const CornerChannels& ch = in.corners[CornerIndex(corner)];
+  return {in.time,       ch.speed,      ch.fx,           ch.fy,        ch.fz,
+          ch.slip_angle, ch.slip_ratio, in.ambient_temp, in.track_temp};
+}
+
+CornerSamples BrakeSamplesOf(const ReplayInputs& in, Corner corner) {
+  CornerSamples s = CornerSamplesOf(in, corner);
+  const CornerChannels& ch = in.corners[CornerIndex(corner)];
+  if (ch.brake_fx.empty()) return s;
+  if (ch.brake_fx.size() != in.time.size()) {
+    throw InputError(fmt::format("the brake force of corner {} has {} samples, time has {}",
+                                 CornerName(corner), ch.brake_fx.size(), in.time.size()));
+  }
+  s.fx = ch.brake_fx;
+  return s;
+}
+
 ReplayResult RunReplay(const vehicle::Car& car, const ReplayInputs& in,
                        const ReplayInitialState& initial, const ReplayOptions& options) {
   const size_t n = CheckTimesAndTemperatures(in);
@@ -76,8 +94,7 @@ ReplayResult RunReplay(const vehicle::Car& car, const ReplayInputs& in,
     const CornerChannels& ch = in.corners[CornerIndex(c)];
     CheckCornerChannels(ch, n, c);
 
-    const CornerSamples samples{in.time,       ch.speed,      ch.fx,           ch.fy,        ch.fz,
-                                ch.slip_angle, ch.slip_ratio, in.ambient_temp, in.track_temp};
+    const CornerSamples samples = CornerSamplesOf(in, c);
     const tyre::TyreFile& tyre_file = car.tyre(c);
     const brake::BrakeFile& brake_file = car.brake(c);
     CornerHistory& h = result.corners[CornerIndex(c)];
@@ -105,11 +122,8 @@ ReplayResult RunReplay(const vehicle::Car& car, const ReplayInputs& in,
             for (int i = 0; i < 7; ++i) h.heat_flows[i][k] = flows[i];
           }
         });
-    CornerSamples brake_samples = samples;
-    if (!ch.brake_fx.empty()) {
-      CheckLength(ch.brake_fx, n, "brake_fx_" + std::string(CornerName(c)));
-      brake_samples.fx = ch.brake_fx;
-    }
+    if (!ch.brake_fx.empty()) CheckLength(ch.brake_fx, n, "brake_fx_" + std::string(CornerName(c)));
+    const CornerSamples brake_samples = BrakeSamplesOf(in, c);
     IntegrateBrake<double>(brake_file.params, brake_samples, initial.brakes[CornerIndex(c)],
                            options.max_step_s, [&](size_t k, const brake::BrakeState<double>& x) {
                              CheckTemperature(x.disc_temp, "disc", c, in.time[k]);

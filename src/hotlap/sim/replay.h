@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "hotlap/common/corner.h"
+#include "hotlap/sim/sampled_inputs.h"
 #include "hotlap/vehicle/car.h"
 
 namespace hotlap::sim {
@@ -35,6 +36,13 @@ struct ReplayInputs {
   std::vector<double> ambient_temp;
   std::vector<double> track_temp;
 };
+
+/// A corner's inputs as CornerSamples (spans into `inputs`, which must outlive them).
+CornerSamples CornerSamplesOf(const ReplayInputs& inputs, Corner corner);
+
+/// The same for the corner's brake: fx is the brake's own force (CornerChannels::brake_fx) where
+/// the inputs have it, as the replay takes it. InputError if brake_fx is not as long as time.
+CornerSamples BrakeSamplesOf(const ReplayInputs& inputs, Corner corner);
 
 /// Starting state of every corner, K and mm.
 struct ReplayInitialState {

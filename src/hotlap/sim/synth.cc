@@ -90,10 +90,8 @@ ReplayResult RunStochasticReplay(const vehicle::Car& car, const ReplayInputs& in
                                      CornerName(c), v->size(), n));
       }
     }
-    const CornerSamples samples{in.time,       ch.speed,      ch.fx,           ch.fy,        ch.fz,
-                                ch.slip_angle, ch.slip_ratio, in.ambient_temp, in.track_temp};
-    CornerSamples brake_samples = samples;
-    if (!ch.brake_fx.empty()) brake_samples.fx = ch.brake_fx;
+    const CornerSamples samples = CornerSamplesOf(in, c);
+    const CornerSamples brake_samples = BrakeSamplesOf(in, c);
     const tyre::TyreFile& tyre_file = car.tyre(c);
     const brake::BrakeFile& brake_file = car.brake(c);
     const tyre::TyreThermalParams<double>& tp = tyre_file.params;
