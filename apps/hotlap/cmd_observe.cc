@@ -234,7 +234,9 @@ int RunObserve(const ObserveArgs& a) {
       fmt::print(text, "{:<6} {:<14} {:>8} {:>8} {:>8} {:>8} {:>9.3f} {:>19} {}\n", CornerName(c),
                  observe::SensorQuantity(s), m.readings, m.used, m.rejected, m.missing, m.MeanNis(),
                  fmt::format("[{:.3f}, {:.3f}]", lo, hi),
-                 m.Consistent() ? "consistent" : "INCONSISTENT");
+                 m.Consistent()           ? "consistent"
+                 : m.GateRejectsTooMany() ? "INCONSISTENT (too many rejected)"
+                                          : "INCONSISTENT");
     }
   }
   fmt::print(text, "{} disagreement warning(s); wrote {} in {:.3f} s ({:.0f} times real time)\n",

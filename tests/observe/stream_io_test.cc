@@ -61,6 +61,30 @@ TEST(StreamIoTest, ReadsOneSampleALineInSiHoldingInputsAndMarkingDropouts) {
   EXPECT_FALSE(reader.Next());
 }
 
+// Values just outside their range are warned of once per column, as for a whole log: the lines
+// of a wheel in the air in one warning with their count and first and last lines, and a locked
+// wheel two lines later in its own (they were one warning a line, the first 20 only).
+TEST(StreamIoTest, WarnsOncePerColumnOfTreatedValues) {
+  std::string text = Header() + "\n";
+  for (int k = 0; k < 30; ++k) {
+    std::string line = Line(std::to_string(0.01 * k), "-2", "500");
+    if (k >= 3 && k < 28) line.replace(line.find(",5000,"), 6, ",-100,");  // fz of fl
+    if (k == 29) line.replace(line.rfind(",-0.01,"), 7, ",-1.02,");        // slip ratio of rr
+    text += line + "\n";
+  }
+  std::istringstream in(text);
+  TelemetryLineReader reader(in, "test.csv", {300.0, 320.0});
+  while (reader.Next()) {
+  }
+  ASSERT_EQ(reader.warning_count(), 2);
+  ASSERT_EQ(reader.warnings().size(), 2u);
+  EXPECT_TRUE(test::Contains(reader.warnings()[0], "'fz_fl_N': 25 values")) << reader.warnings()[0];
+  EXPECT_TRUE(test::Contains(reader.warnings()[0], "(lines 5-29)")) << reader.warnings()[0];
+  EXPECT_TRUE(test::Contains(reader.warnings()[1], "'slip_ratio_rr': 1 value"))
+      << reader.warnings()[1];
+  EXPECT_TRUE(test::Contains(reader.warnings()[1], "(lines 31-31)")) << reader.warnings()[1];
+}
+
 // A brake_power column is the brake's input (the rear discs of a spool share the axle's power):
 // the force the brake model takes gives it back at the line's speed; an empty cell holds it.
 TEST(StreamIoTest, ABrakePowerColumnIsTheBrakesInput) {
@@ -211,6 +235,25 @@ TEST(ConsistencyTest, WarnsOnceWhenTheRunningMeanStaysHighLongerThanTheSetTime) 
   EXPECT_EQ(m.disagreements, 1);
   EXPECT_NEAR(m.MeanNis(), 1.0, 1e-12);
   EXPECT_GT(m.disagree_time_s, 9.0);
+  // The used readings' mean NIS is 1, but half the readings were beyond the gate: not consistent
+  // (a sensor offset from t = 5 s gave "consistent" before the rejections counted).
+  EXPECT_TRUE(m.GateRejectsTooMany());
+  EXPECT_FALSE(m.Consistent());
+}
+
+// A wild reading now and then (1 in 200) leaves a sensor consistent; 3 in 200 do not.
+TEST(ConsistencyTest, AFewRejectedReadingsAreAllowedNotAStreak) {
+  for (const int wild : {1, 3}) {
+    SensorMonitor m;
+    for (int k = 0; k < 200; ++k) {
+      const bool rejected = k % 50 == 7 && k / 50 < wild;
+      // NIS alternating 0.5 and 1.5: a mean of 1, inside the bounds.
+      m.Record(0.1 * k, rejected ? 400.0 : (k % 2 == 0 ? 0.5 : 1.5), !rejected, 1.0, 9.0, 3.0);
+    }
+    EXPECT_EQ(m.rejected, wild);
+    EXPECT_EQ(m.GateRejectsTooMany(), wild == 3) << wild;
+    EXPECT_EQ(m.Consistent(), wild == 1) << wild;
+  }
 }
 
 }  // namespace

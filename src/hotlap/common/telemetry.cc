@@ -350,12 +350,23 @@ void Telemetry::ApplyLimits(const ChannelLimits& limits, const std::string& colu
     }
   }
   if (treated > 0) {
-    warnings_.push_back(fmt::format(
-        "{}: '{}': {} value{} from {:g} to below {:g}{} (lines {}-{}) taken as {:g}{}: {}", file,
-        column, treated, treated == 1 ? "" : "s", in_unit(limits.refuse_below),
-        in_unit(limits.physical_min), unit_text, first_line, last_line,
-        in_unit(limits.physical_min), unit_text, limits.treated_as));
+    LimitTreatment t{file,
+                     column,
+                     treated,
+                     first_line,
+                     last_line,
+                     fmt::format("from {:g} to below {:g}{}", in_unit(limits.refuse_below),
+                                 in_unit(limits.physical_min), unit_text),
+                     fmt::format("taken as {:g}{}: {}", in_unit(limits.physical_min), unit_text,
+                                 limits.treated_as)};
+    warnings_.push_back(t.Message());
+    treatments_.push_back(std::move(t));
   }
+}
+
+std::string Telemetry::LimitTreatment::Message() const {
+  return fmt::format("{}: '{}': {} value{} {} (lines {}-{}) {}", file, column, count,
+                     count == 1 ? "" : "s", range, first_line, last_line, treatment);
 }
 
 const Telemetry::StoredChannel* Telemetry::Find(std::string_view quantity,

@@ -166,6 +166,20 @@ class Telemetry {
   /// Values further out are refused by Read() and FromTable() instead.
   const std::vector<std::string>& warnings() const { return warnings_; }
 
+  /// One column's treated values (a line of warnings()), for merging the warnings of a log read a
+  /// line at a time into one per column (observe/stream_io.h).
+  struct LimitTreatment {
+    std::string file, column;
+    size_t count = 0;  ///< values treated
+    int first_line = 0, last_line = 0;
+    std::string range;  ///< the values' range in the column's unit, e.g. "from -1e+04 to below 0 N"
+    std::string treatment;  ///< e.g. "taken as 0 N: a wheel in the air"
+    /// The warning's line: file, column, count, range, lines and treatment.
+    std::string Message() const;
+  };
+  /// The treatments behind warnings(), in the same order.
+  const std::vector<LimitTreatment>& treatments() const { return treatments_; }
+
   /// 1-based file line of row `row` (for messages). Throws std::out_of_range past the end.
   int LineOf(size_t row) const { return line_numbers_.at(row); }
 
@@ -201,6 +215,7 @@ class Telemetry {
   std::map<std::string, StoredChannel, std::less<>> channels_;
   std::vector<std::pair<std::string, std::vector<double>>> unknown_columns_;
   std::vector<std::string> warnings_;
+  std::vector<LimitTreatment> treatments_;
   // For a MoTeC export: channel key -> the MoTeC names that map to it, and the map's path.
   std::map<std::string, std::vector<std::string>, std::less<>> source_names_;
   std::filesystem::path channel_map_;

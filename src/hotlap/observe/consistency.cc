@@ -32,7 +32,12 @@ double SensorMonitor::MeanNis() const {
   return used > 0 ? nis_sum / static_cast<double>(used) : std::numeric_limits<double>::quiet_NaN();
 }
 
+bool SensorMonitor::GateRejectsTooMany() const {
+  return rejected > kMaxRejectedFraction * static_cast<double>(used + rejected);
+}
+
 bool SensorMonitor::Consistent() const {
+  if (GateRejectsTooMany()) return false;
   if (used == 0) return true;
   const auto [lo, hi] = Bounds95();
   const double m = MeanNis();

@@ -55,7 +55,13 @@ class SensorMonitor {
   double MeanNis() const;
   /// MeanNisBounds95(used).
   std::pair<double, double> Bounds95() const { return MeanNisBounds95(used); }
-  /// The mean NIS lies within its 95% bounds.
+  /// More than kMaxRejectedFraction of the readings were beyond the gate. A consistent filter's
+  /// 5-sigma gate rejects 5.7e-7 of them; a sensor that drifted or broke is rejected on and on,
+  /// and the used readings (those before) can still look consistent.
+  static constexpr double kMaxRejectedFraction = 0.01;
+  bool GateRejectsTooMany() const;
+  /// The mean NIS of the used readings lies within its 95% bounds and the gate did not reject
+  /// too many (GateRejectsTooMany).
   bool Consistent() const;
   /// The running mean NIS (1 before any reading).
   double nis_average() const { return average_; }

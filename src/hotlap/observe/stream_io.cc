@@ -1,5 +1,7 @@
 #include "hotlap/observe/stream_io.h"
 
+#include <algorithm>
+
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -176,9 +178,20 @@ std::optional<ObserverSample> TelemetryLineReader::Next() {
     table.values[i] = {v};
   }
   const Telemetry t = Telemetry::FromTable(std::move(table));
-  for (const std::string& w : t.warnings()) {
-    if (warnings_.size() < 20) warnings_.push_back(w);
-    ++warning_count_;
+  // One warning per column, as a whole log's: this line's treatments merged into the column's.
+  for (const Telemetry::LimitTreatment& w : t.treatments()) {
+    const auto it = std::find_if(treatments_.begin(), treatments_.end(),
+                                 [&](const auto& u) { return u.column == w.column; });
+    if (it == treatments_.end()) {
+      treatments_.push_back(w);
+      if (warnings_.size() < 20) warnings_.push_back(w.Message());
+      ++warning_count_;
+      continue;
+    }
+    it->count += w.count;
+    it->last_line = w.last_line;
+    const size_t k = static_cast<size_t>(it - treatments_.begin());
+    if (k < warnings_.size()) warnings_[k] = it->Message();
   }
 
   ObserverSample sample = SampleFromRow(t, 0, last_ ? &*last_ : nullptr, defaults_, source_, line_);

@@ -44,8 +44,9 @@ class TelemetryLineReader {
 
   /// 1-based line of the last sample returned.
   int line() const { return line_; }
-  /// What reading did to values just outside their physical range (telemetry.h), at most the
-  /// first 20 lines; warning_count() counts them all.
+  /// What reading did to values just outside their physical range (telemetry.h): one line per
+  /// column as for a whole log (count and lines so far), at most 20; warning_count() counts them
+  /// all.
   const std::vector<std::string>& warnings() const { return warnings_; }
   long warning_count() const { return warning_count_; }
   /// The header's metadata lines.
@@ -62,7 +63,7 @@ class TelemetryLineReader {
   std::vector<std::string> columns_;
   std::vector<std::pair<std::string, std::string>> metadata_;
   std::optional<ObserverSample> last_;
-  // Whether each corner input (6 per corner) and ambient, track have had a value.
+  std::vector<Telemetry::LimitTreatment> treatments_;  // one per column, merged over the lines
   std::vector<std::string> warnings_;
   long warning_count_ = 0;
 };
