@@ -148,6 +148,23 @@ std::string ErrorOfEdited(const std::string& from, const std::string& to) {
   return ErrorOf([&] { Telemetry::Read(file); });
 }
 
+// An unmapped channel with text in it (a gear shown as "N") is left out and said so in the
+// metadata (the whole log was refused); text in a mapped channel is still an error.
+TEST(MotecCsvTest, AnUnmappedChannelWithTextIsLeftOut) {
+  test::TempDir dir;
+  const std::string text = ReadTextFile(kMotec);
+  const fs::path file = WriteTextFile(dir.path() / "gear.csv",
+                                      ReplaceOnce(text, "\"1.250\",\"8000\"", "\"N\",\"8000\""));
+  const Telemetry log = Telemetry::Read(file);
+  EXPECT_EQ(Value(log, "unmapped channels"), "Engine RPM");
+  EXPECT_EQ(Value(log, "channels left out (text, not numbers)"), "G Force Lat");
+  EXPECT_EQ(log.size(), 291u);
+  for (const auto& [name, values] : log.unknown_columns()) EXPECT_NE(name, "G Force Lat");
+  EXPECT_TRUE(
+      Contains(ErrorOfEdited("\"0.300\",\"22.70\",\"273.015\"", "\"0.300\",\"22.70\",\"fast\""),
+               "is not a number"));
+}
+
 TEST(MotecCsvTest, BadFilesRefusedWithFileAndLine) {
   // A ragged row (line 20: the third data row).
   EXPECT_TRUE(
@@ -183,6 +200,24 @@ TEST(MotecCsvTest, BadFilesRefusedWithFileAndLine) {
                        "bad.csv:22: text after the closing quote of cell 1"));
 }
 
+// An export with the ';' list separator and ',' decimals of a European Windows locale is named for
+// what it is (it was read as a hotlap CSV and failed on its second line's "not a number").
+TEST(MotecCsvTest, ASemicolonSeparatedExportIsNamed) {
+  test::TempDir dir;
+  const fs::path path =
+      dir.Write("eu.csv",
+                "\"Format\";\"MoTeC CSV File\";;;\"Workbook\";\"x.mtc\"\r\n"
+                "\"Venue\";\"Spa\"\r\n\r\n\"Time\";\"Ground Speed\"\r\n\"s\";\"km/h\"\r\n"
+                "\"0,000\";\"100,5\"\r\n");
+  try {
+    Telemetry::Read(path);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(Contains(e.what(), "eu.csv:1: a MoTeC CSV export with ';' between its cells"))
+        << e.what();
+  }
+}
+
 TEST(MotecChannelMapTest, UnitConversionsAgainstHandComputedValues) {
   const auto convert = [](double v, const char* unit, const char* quantity) {
     return MotecConversionFor(unit, quantity, "test").Apply(v);
@@ -192,6 +227,19 @@ TEST(MotecChannelMapTest, UnitConversionsAgainstHandComputedValues) {
   EXPECT_NEAR(convert(12.5, "m/s", "speed"), 12.5, 0.0);
   EXPECT_NEAR(convert(212.0, "degF", "disc_temp"), 100.0, 1e-12);  // (212 - 32) * 5 / 9
   EXPECT_NEAR(convert(-40.0, "degF", "tread_temp"), -40.0, 1e-12);
+  EXPECT_NEAR(convert(104.0, "F", "track_temp"), 40.0, 1e-12);
+  // The degree sign in UTF-8 and as a Windows export's single Latin-1 byte 0xB0.
+  EXPECT_NEAR(convert(212.0, "\u00B0F", "disc_temp"), 100.0, 1e-12);
+  EXPECT_NEAR(convert(212.0,
+                      "\xB0"
+                      "F",
+                      "disc_temp"),
+              100.0, 1e-12);
+  EXPECT_NEAR(convert(300.0,
+                      "\xB0"
+                      "C",
+                      "disc_temp"),
+              300.0, 0.0);
   EXPECT_NEAR(convert(773.15, "K", "disc_temp"), 500.0, 1e-12);  // degC
   EXPECT_NEAR(convert(85.0, "degC", "ambient_temp"), 85.0, 0.0);
   EXPECT_NEAR(convert(2.5, "kN", "fz"), 2500.0, 0.0);

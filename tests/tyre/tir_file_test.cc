@@ -290,6 +290,9 @@ TEST(TirFileTest, UnsupportedOrMissingFittypIsAnError) {
     ExpectParseError(test::ReplaceOnce(kMinimal, "FITTYP = 61", std::string("FITTYP = ") + bad),
                      {"bad.tir:11:", "FITTYP", "not supported"});
   }
+  // Quoted: text, not the version number, said so.
+  ExpectParseError(test::ReplaceOnce(kMinimal, "FITTYP = 61", "FITTYP = '61'"),
+                   {"bad.tir:11:", "FITTYP = '61' is quoted text", "(FITTYP = 61)"});
   // A file on disk: the message names it.
   test::TempDir dir;
   const auto path = dir.Write("v52.tir", test::ReplaceOnce(kMinimal, "FITTYP = 61", "FITTYP = 52"));
@@ -308,6 +311,20 @@ TEST(TirFileTest, UnsupportedOrMissingFittypIsAnError) {
         test::ReplaceOnce(kMinimal, "FITTYP = 61", std::string("FITTYP = ") + fittyp);
     EXPECT_EQ(ParseTirFile(text, "x.tir").params.version, version) << fittyp;
   }
+}
+
+// Numbers with a Fortran-style exponent (D for E), as Fortran tools write them, are read; two
+// exponents are not numbers.
+TEST(TirFileTest, ReadsFortranStyleExponents) {
+  const TirFile a =
+      ParseTirFile(test::ReplaceOnce(kMinimal, "FNOMIN = 6752", "FNOMIN = 6.752D+03"), "x.tir");
+  const TirFile b =
+      ParseTirFile(test::ReplaceOnce(kMinimal, "FNOMIN = 6752", "FNOMIN = 6752.0d0"), "x.tir");
+  const TirFile c = ParseTirFile(kMinimal, "x.tir");
+  EXPECT_EQ(a.params.FNOMIN, c.params.FNOMIN);
+  EXPECT_EQ(b.params.FNOMIN, c.params.FNOMIN);
+  ExpectParseError(test::ReplaceOnce(kMinimal, "FNOMIN = 6752", "FNOMIN = 6.7D+0D3"),
+                   {"bad.tir:16:", "FNOMIN"});
 }
 
 TEST(TirFileTest, TableListsEveryFieldOnce) {

@@ -53,6 +53,15 @@ constexpr std::array kUnits = {
     // The degree sign as .ld loggers write it (Latin-1 0xB0, read as UTF-8).
     MotecUnit{"\u00B0C", Kind::kTemperature, 1.0, 0.0},
     MotecUnit{"\u00B0F", Kind::kTemperature, 5.0 / 9.0, -32.0 * 5.0 / 9.0},
+    // The same in a CSV exported in a Windows code page (the single byte 0xB0), and Fahrenheit
+    // as "F" beside "C".
+    MotecUnit{"\xB0"
+              "C",
+              Kind::kTemperature, 1.0, 0.0},
+    MotecUnit{"\xB0"
+              "F",
+              Kind::kTemperature, 5.0 / 9.0, -32.0 * 5.0 / 9.0},
+    MotecUnit{"F", Kind::kTemperature, 5.0 / 9.0, -32.0 * 5.0 / 9.0},
     MotecUnit{"g", Kind::kAcceleration, kStandardGravity, 0.0},
     MotecUnit{"m/s^2", Kind::kAcceleration, 1.0, 0.0},
     MotecUnit{"deg", Kind::kAngle, std::numbers::pi / 180.0, 0.0},

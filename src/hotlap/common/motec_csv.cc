@@ -159,6 +159,16 @@ bool IsMotecCsv(const std::filesystem::path& path) {
   if (!in || !std::getline(in, line)) return false;
   std::string_view first = line;
   if (first.substr(0, 3) == "\xEF\xBB\xBF") first.remove_prefix(3);
+  // An export in a locale whose list separator is ';' (and decimal mark ','): not readable as
+  // either format, so say what it is rather than fail on its first number.
+  const std::string_view format_cell = first.substr(0, first.find(';'));
+  if ((format_cell == "\"Format\"" || format_cell == "Format") &&
+      first.find("MoTeC CSV File") != std::string_view::npos) {
+    throw InputError(fmt::format(
+        "{}:1: a MoTeC CSV export with ';' between its cells (a Windows locale's list separator, "
+        "with ',' as its decimal mark): export it again with ',' between cells and '.' decimals",
+        path.string()));
+  }
   try {
     const std::vector<std::string> cells = SplitRecord(first, path.string());
     return cells.size() >= 2 && cells[0] == "Format" && cells[1] == "MoTeC CSV File";
@@ -243,8 +253,10 @@ MotecTable ReadMotecCsv(const std::filesystem::path& path, const MotecChannelMap
     out.channels.push_back({channel_names[c], units.cells[c], std::nan(""), 0});
   }
 
-  // Data rows.
+  // Data rows. An unmapped channel with text in it (a gear shown as "N") cannot be carried as
+  // numbers: it is left out, and the metadata says so; a mapped one's text is an error.
   table.values.assign(width, {});
+  std::vector<bool> text_channel(width, false);
   for (size_t d = r + 2; d < records.size(); ++d) {
     const Record& row = records[d];
     check_width(row, "this row");
@@ -252,6 +264,11 @@ MotecTable ReadMotecCsv(const std::filesystem::path& path, const MotecChannelMap
       double value = kNaN;
       if (!row.cells[c].empty()) {
         const std::optional<double> number = ParseNumber(row.cells[c]);
+        if (!number && plans[c].entry == nullptr && c > 0) {
+          text_channel[c] = true;
+          table.values[c].push_back(kNaN);
+          continue;
+        }
         if (!number) {
           throw InputError(fmt::format("{}:{}: channel '{}' (column {}): '{}' is not a number",
                                        file, row.line, channel_names[c], c + 1, row.cells[c]));
@@ -261,6 +278,17 @@ MotecTable ReadMotecCsv(const std::filesystem::path& path, const MotecChannelMap
       table.values[c].push_back(value);
     }
     table.line_numbers.push_back(row.line);
+  }
+
+  std::string dropped;
+  for (size_t c = width; c-- > 0;) {
+    if (!text_channel[c]) continue;
+    dropped = channel_names[c] + (dropped.empty() ? "" : ", ") + dropped;
+    table.columns.erase(table.columns.begin() + static_cast<std::ptrdiff_t>(c));
+    table.values.erase(table.values.begin() + static_cast<std::ptrdiff_t>(c));
+    out.channels.erase(out.channels.begin() + static_cast<std::ptrdiff_t>(c));
+    const auto it = std::find(unmapped.begin(), unmapped.end(), channel_names[c]);
+    if (it != unmapped.end()) unmapped.erase(it);
   }
 
   // Lap numbers from the beacons, by the logged time.
@@ -284,6 +312,8 @@ MotecTable ReadMotecCsv(const std::filesystem::path& path, const MotecChannelMap
     for (const std::string& name : unmapped) list += (list.empty() ? "" : ", ") + name;
     table.metadata.emplace_back("unmapped channels", list);
   }
+  if (!dropped.empty())
+    table.metadata.emplace_back("channels left out (text, not numbers)", dropped);
   table.metadata.emplace_back("channel map", map.path.string());
 
   out.sources = MotecSources(map);

@@ -48,7 +48,8 @@ struct MotecTable {
 };
 
 /// True if the file's first record (after a byte-order mark) is `"Format","MoTeC CSV File"`.
-/// False for a file that cannot be read (the CSV reader then says why).
+/// False for a file that cannot be read (the CSV reader then says why). InputError for a MoTeC
+/// export with ';' between its cells (a Windows locale's), which neither reader can read.
 bool IsMotecCsv(const std::filesystem::path& path);
 
 /// The lap number of time `t` given the beacon times (ascending): 1 + the number of beacons at

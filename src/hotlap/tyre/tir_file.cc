@@ -45,9 +45,15 @@ std::string Lower(std::string_view s) {
 std::optional<double> ParseNumber(std::string_view s) {
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
   if (s.empty()) return std::nullopt;
+  // A Fortran-style exponent (1.2D+03, as files written by Fortran tools have it) is an E.
+  std::string text(s);
+  const size_t d = text.find_first_of("dD");
+  if (d != std::string::npos && d > 0 && text.find_first_of("dD", d + 1) == std::string::npos) {
+    text[d] = 'e';
+  }
   double value = 0.0;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
-  if (ec != std::errc() || end != s.data() + s.size()) return std::nullopt;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + s.size(), value);
+  if (ec != std::errc() || end != text.data() + s.size()) return std::nullopt;
   // from_chars reads "nan", "inf" and "infinity" too: not numbers a .tir file holds.
   if (!std::isfinite(value)) return std::nullopt;
   return value;
@@ -382,6 +388,12 @@ MagicFormulaVersion ReadVersion(TirFile& tir, const std::string& file) {
       default:
         break;
     }
+  }
+  if (fittyp->quoted) {
+    throw InputError(
+        fmt::format("{}:{}: FITTYP = '{}' is quoted text; it is the Magic Formula "
+                    "version number: write it without quotes (FITTYP = {})",
+                    file, fittyp->line, fittyp->value, fittyp->value));
   }
   throw InputError(
       fmt::format("{}:{}: FITTYP = {} is not supported; supported: 5, 6 or 21 (MF 5.2), 61 (MF "
