@@ -418,5 +418,37 @@ TEST(ReplayIoTest, MissingAmbientNeedsAnOption) {
   EXPECT_DOUBLE_EQ(in.track_temp[0], CelsiusToKelvin(40.0));
 }
 
+// A column with no value on any row (a dead air-temperature sensor) is as good as none: the option
+// stands in for it, and without one the message names the option (it refused even with one).
+TEST(ReplayIoTest, AnEmptyAmbientColumnTakesTheOption) {
+  std::ostringstream f;
+  f << "time_s,speed_mps";
+  for (const char* c : {"fl", "fr", "rl", "rr"}) {
+    f << ",fx_" << c << "_N,fy_" << c << "_N,fz_" << c << "_N,slip_angle_" << c
+      << "_rad,slip_ratio_" << c;
+  }
+  f << ",ambient_temp_C,track_temp_C\n";
+  for (int k = 0; k < 3; ++k) {
+    f << k * 0.1 << ",50";
+    for (int c = 0; c < 4; ++c) f << ",100,200,4000,0.01,0.001";
+    f << ",,40\n";
+  }
+  const test::TempDir dir;
+  const Telemetry log = Telemetry::Read(dir.Write("log.csv", f.str()));
+  try {
+    ReplayInputsFromTelemetry(log, {});
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(test::Contains(e.what(),
+                               "column 'ambient_temp_C' (or '_K') has no value on any row, "
+                               "and none given instead (hotlap: --ambient-temp-C"))
+        << e.what();
+  }
+  InitialTemperatureOverrides o;
+  o.ambient_temp = CelsiusToKelvin(5.0);
+  const ReplayInputs in = ReplayInputsFromTelemetry(log, o);
+  EXPECT_DOUBLE_EQ(in.ambient_temp[1], CelsiusToKelvin(5.0));
+}
+
 }  // namespace
 }  // namespace hotlap::sim

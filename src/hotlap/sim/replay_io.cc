@@ -12,8 +12,15 @@ namespace {
 
 std::vector<double> AmbientLike(const Telemetry& log, std::string_view quantity,
                                 const std::optional<double>& fallback, std::string_view option) {
-  if (log.Has(quantity)) return log.FilledChannel(quantity);
+  // A column with no value on any row (a dead sensor) is as good as none: the option stands in.
+  if (log.Has(quantity) && log.FirstValue(quantity)) return log.FilledChannel(quantity);
   if (fallback) return std::vector<double>(log.size(), *fallback);
+  if (log.Has(quantity)) {
+    throw InputError(
+        fmt::format("{}: column '{}_C' (or '_K') has no value on any row, and none "
+                    "given instead ({})",
+                    log.path().string(), quantity, option));
+  }
   throw InputError(fmt::format("{}: no '{}_C' (or '{}_K') column, and none given instead ({})",
                                log.path().string(), quantity, quantity, option));
 }
