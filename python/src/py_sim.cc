@@ -135,12 +135,20 @@ std::vector<vehicle::CarOverride> OverridesFrom(const py::handle& overrides) {
                       std::string(py::repr(key))));
     }
     const std::string name = key.cast<std::string>();
-    if (py::isinstance<py::bool_>(value) ||
-        !(py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value))) {
+    // Any real number: Python's int and float, NumPy's integer and floating scalars (a value
+    // from np.arange or a pandas column); not a bool.
+    static const py::object real = py::module_::import("numbers").attr("Real");
+    if (py::isinstance<py::bool_>(value) || !py::isinstance(value, real)) {
       throw InputError(fmt::format("override '{}': the value {} is not a number", name,
                                    std::string(py::repr(value))));
     }
-    out.push_back({name, value.cast<double>()});
+    const double number = PyFloat_AsDouble(value.ptr());  // its __float__
+    if (number == -1.0 && PyErr_Occurred() != nullptr) {
+      PyErr_Clear();
+      throw InputError(fmt::format("override '{}': the value {} is not a number", name,
+                                   std::string(py::repr(value))));
+    }
+    out.push_back({name, number});
   }
   return out;
 }

@@ -97,6 +97,20 @@ def test_load_car_overrides_are_refused_with_the_command_lines_messages(cli, tmp
         hotlap.load_car(overrides={"chassis.mass_kg": "1600"})
     with pytest.raises(ValueError, match="must be a dict"):
         hotlap.load_car(overrides=[("chassis.mass_kg", 1600)])
+    with pytest.raises(ValueError, match="is not a number"):
+        hotlap.load_car(overrides={"chassis.mass_kg": True})
+    # NumPy's scalars are numbers (np.arange, a pandas column): the same car as Python's.
+    plain = hotlap.load_car(overrides={"chassis.mass_kg": 1600.0})
+    for value in (np.int64(1600), np.float32(1600.0), np.float64(1600.0)):
+        car = hotlap.load_car(overrides={"chassis.mass_kg": value})
+        assert hotlap.qss_lap(car, hotlap.load_track(), step_m=4)["summary"]["lap_time_s"] == \
+            hotlap.qss_lap(plain, hotlap.load_track(), step_m=4)["summary"]["lap_time_s"]
+
+
+def test_a_line_margin_that_leaves_the_road_is_refused():
+    # A negative margin took the line off the road and lapped faster; the command line refused it.
+    with pytest.raises(ValueError, match=r"margin from the edges, -3 m, must be > 0"):
+        hotlap.qss_lap(hotlap.load_car(), hotlap.load_track(), line_margin_m=-3)
     keys = hotlap.override_keys("gen7")
     assert "chassis.mass_kg" in keys and "brakes.rr.duct_factor" in keys
     assert "tyre_forces.fl.file" not in keys

@@ -1,6 +1,8 @@
 #include "hotlap/common/data_path.h"
 
+#include <cstdlib>
 #include <filesystem>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -29,6 +31,24 @@ TEST(DataPathTest, UnknownTyreListsTheBuiltIns) {
   // A car's thermal parameter files are not force models: not offered, not taken.
   EXPECT_FALSE(Contains(message, "gen7/fl")) << message;
   EXPECT_TRUE(Contains(InputErrorOf([] { ResolveTyreFile("gen7/fl"); }), "no tyre 'gen7/fl'"));
+}
+
+// Where the data folder is missing (an install whose data is not where the library looks), the
+// message for a name says so and how to point at it (a bare "(built-in: (none))" before).
+TEST(DataPathTest, AMissingDataFolderIsNamed) {
+  const test::TempDir dir;
+  const std::string missing = (dir.path() / "no_such_data").string();
+  ASSERT_EQ(setenv("HOTLAP_DATA_DIR", missing.c_str(), 1), 0);
+  const std::string car = InputErrorOf([] { ResolveCarFile("gen7"); });
+  const std::string track = InputErrorOf([] { ResolveTrackFile("darlington"); });
+  const std::string tyre = InputErrorOf([] { ResolveTyreFile("gen7/left"); });
+  unsetenv("HOTLAP_DATA_DIR");
+  for (const std::string& m : {car, track, tyre}) {
+    EXPECT_TRUE(Contains(m, "there is no data folder at '" + missing + "'")) << m;
+    EXPECT_TRUE(Contains(m, "set HOTLAP_DATA_DIR")) << m;
+  }
+  // With the data where it is, no such note.
+  EXPECT_FALSE(Contains(InputErrorOf([] { ResolveCarFile("gen8"); }), "no data folder"));
 }
 
 }  // namespace

@@ -49,6 +49,11 @@ if [ -d "$build/python/hotlap" ]; then
   PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 -c \
     "import hotlap; assert hotlap.__file__.startswith('$prefix'); assert hotlap.load_car('gen7').name == 'gen7'" ||
     fail "the installed Python package does not import"
+  # Without HOTLAP_DATA_DIR it finds the data installed beside it (<prefix>/share/hotlap/data),
+  # wherever --prefix put it, not the source tree's nor the configured prefix's.
+  env -u HOTLAP_DATA_DIR PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 -c \
+    "import hotlap, os; d = os.path.realpath(str(hotlap.data_dir())); assert d == os.path.realpath('$prefix/share/hotlap/data'), d" ||
+    fail "the installed Python package does not find the installed data by itself"
 fi
 
 # Every installed header in one translation unit, against the installed targets.

@@ -13,6 +13,24 @@
 namespace hotlap::ocp {
 namespace {
 
+// The command line's ranges hold for every caller (the Python package passed step_m = 200,
+// coarse_step_m = -5 and max_iterations = -1 straight to the solver).
+TEST(MakeOptimalLapOptions, RefusesWhatTheCommandLineRefuses) {
+  const auto error_of = [](auto edit) {
+    OptimalRunOptions o;
+    edit(o);
+    return test::InputErrorOf([&] { MakeOptimalLapOptions(o); });
+  };
+  EXPECT_TRUE(test::Contains(error_of([](auto& o) { o.step_m = 200.0; }),
+                             "step_m: 200 m is not 0.5 to 50 m"));
+  EXPECT_TRUE(test::Contains(error_of([](auto& o) { o.step_m = 0.1; }), "step_m: 0.1 m"));
+  EXPECT_TRUE(test::Contains(error_of([](auto& o) { o.coarse_step_m = -5.0; }),
+                             "coarse_step_m: -5 m is not 0 to 100 m"));
+  EXPECT_TRUE(test::Contains(error_of([](auto& o) { o.max_iterations = -1; }),
+                             "max_iterations: -1 is not 1 or more"));
+  EXPECT_NO_THROW(MakeOptimalLapOptions({}));
+}
+
 TEST(MakeOptimalLapOptions, TakesTheRunsOptionsInSolverUnits) {
   OptimalRunOptions o;
   o.step_m = 30.0;

@@ -1,5 +1,6 @@
 #include "hotlap/common/data_path.h"
 
+#include <dlfcn.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -20,6 +21,29 @@ fs::path ExecutableDir() {
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   return ec ? fs::path() : exe.parent_path();
 }
+
+// The folder of the shared object that holds this code (the Python module, a shared build of the
+// library), or empty where that is the executable (a program linked with the static libraries).
+fs::path SharedObjectDir() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<const void*>(&SharedObjectDir), &info) == 0 ||
+      info.dli_fname == nullptr) {
+    return {};
+  }
+  std::error_code ec;
+  const fs::path object = fs::canonical(info.dli_fname, ec);
+  const fs::path exe = fs::canonical("/proc/self/exe", ec);
+  return ec || object == exe ? fs::path() : object.parent_path();
+}
+
+// " (there is no data folder at ...)" where the data folder is missing, for the messages of names
+// that are not built in: an install whose data is not where the library looks.
+std::string MissingDataNote(const fs::path& data) {
+  std::error_code ec;
+  if (fs::is_directory(data, ec)) return "";
+  return "; there is no data folder at '" + data.string() +
+         "': set HOTLAP_DATA_DIR to the installed share/hotlap/data";
+}
 }  // namespace
 
 fs::path DataDir() {
@@ -29,6 +53,14 @@ fs::path DataDir() {
   std::error_code ec;
   const fs::path installed = ExecutableDir() / ".." / "share" / "hotlap" / "data";
   if (fs::is_directory(installed, ec)) return installed;
+  // The installed Python package (<prefix>/lib/python3/dist-packages/hotlap/_hotlap...so): the
+  // prefix's share/hotlap/data four folders up, wherever `cmake --install --prefix` put it.
+  fs::path dir = SharedObjectDir();
+  for (int up = 0; up < 5 && !dir.empty(); ++up, dir = dir.parent_path()) {
+    const fs::path data = dir / "share" / "hotlap" / "data";
+    if (fs::is_directory(data, ec)) return data;
+    if (dir == dir.root_path()) break;
+  }
   // A program of the user's linked against the library: the source tree it was built from, or,
   // once that is gone, the data `cmake --install` put in place.
   const fs::path source = fs::path(HOTLAP_SOURCE_DIR) / "data";
@@ -52,9 +84,9 @@ fs::path ResolveCarFile(std::string_view name_or_path) {
       names.push_back(entry.path().filename().string());
     }
   }
-  throw InputError(
-      "no car '" + std::string(name_or_path) +
-      "': not a car.yaml file, and not a built-in car (built-in: " + QuotedList(names) + ")");
+  throw InputError("no car '" + std::string(name_or_path) +
+                   "': not a car.yaml file, and not a built-in car (built-in: " +
+                   QuotedList(names) + ")" + MissingDataNote(DataDir()));
 }
 
 fs::path ResolveTrackFile(std::string_view name_or_path) {
@@ -81,7 +113,7 @@ fs::path ResolveTrackFile(std::string_view name_or_path) {
   throw InputError("no track '" + std::string(name_or_path) +
                    "': not a track file (.yaml, .yml, .csv or .xml), and not a built-in track "
                    "(built-in: " +
-                   QuotedList(names) + ")");
+                   QuotedList(names) + ")" + MissingDataNote(DataDir()));
 }
 
 fs::path ResolveTyreFile(std::string_view name_or_path) {
@@ -124,7 +156,7 @@ fs::path ResolveTyreFile(std::string_view name_or_path) {
   std::sort(names.begin(), names.end());
   throw InputError("no tyre '" + std::string(name_or_path) +
                    "': not a tyre file, and not a built-in tyre (built-in: " + QuotedList(names) +
-                   ")");
+                   ")" + MissingDataNote(data));
 }
 
 }  // namespace hotlap

@@ -8,8 +8,10 @@
 namespace hotlap {
 
 /// The data folder: $HOTLAP_DATA_DIR if set, else `<prefix>/share/hotlap/data` beside an
-/// installed binary, else the source tree's `data/` while it exists, else the data folder of the
-/// install prefix the library was configured for (`cmake --install`).
+/// installed binary, else up to four folders above the shared object holding the library (the
+/// installed Python package), else the source tree's `data/` while it exists, else the data
+/// folder of the install prefix the library was configured for (CMAKE_INSTALL_PREFIX; a program
+/// of the user's linked with the static libraries installed elsewhere needs HOTLAP_DATA_DIR).
 std::filesystem::path DataDir();
 
 /// A car given as a built-in name ("gen7" -> DataDir()/cars/gen7/car.yaml) or a path to a

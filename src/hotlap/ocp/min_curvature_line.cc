@@ -42,6 +42,11 @@ struct CurvatureFn {
 
 track::RacingLine MinimumCurvatureLine(const track::Track& track,
                                        const MinimumCurvatureOptions& options) {
+  // A negative margin would take the line off the road (the QSS then lapped faster on it).
+  if (!(options.margin_m > 0.0)) {
+    throw InputError(fmt::format("racing line: the margin from the edges, {:g} m, must be > 0",
+                                 options.margin_m));
+  }
   track::RacingLine line = track::CentreLine(track, options.step_m);
   const size_t n = line.s_m.size();
   std::vector<std::array<double, 2>> centre(n), lateral(n);

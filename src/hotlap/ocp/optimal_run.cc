@@ -5,11 +5,23 @@
 
 #include <fmt/format.h>
 
+#include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
 
 namespace hotlap::ocp {
 
 OptimalLapOptions MakeOptimalLapOptions(const OptimalRunOptions& a) {
+  // The command line's ranges, for callers that do not go through it (the Python package).
+  if (!(a.step_m >= 0.5 && a.step_m <= 50.0)) {
+    throw InputError(fmt::format("step_m: {:g} m is not 0.5 to 50 m", a.step_m));
+  }
+  if (!(a.coarse_step_m >= 0.0 && a.coarse_step_m <= 100.0)) {
+    throw InputError(fmt::format("coarse_step_m: {:g} m is not 0 to 100 m (0: no coarse solve)",
+                                 a.coarse_step_m));
+  }
+  if (a.max_iterations < 1) {
+    throw InputError(fmt::format("max_iterations: {} is not 1 or more", a.max_iterations));
+  }
   OptimalLapOptions o;
   o.step_m = a.step_m;
   o.coarse_step_m = a.coarse_step_m;
