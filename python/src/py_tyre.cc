@@ -67,6 +67,7 @@ py::dict TyreForces(const Model& model, const std::vector<Array>& inputs) {
           throw InputError(fmt::format("tyre_forces: fz_N[{}] = {} N; the load must be > 0",
                                        i * stride[0], in[0][i * stride[0]]));
         }
+        tyre::CheckOperatingPoint(points[j], "tyre_forces: ");  // as `hotlap tyre eval`'s
       }
       tyre::CalcTyreForcesBatch(model, std::span(points.data(), count),
                                 std::span(out.data(), count));

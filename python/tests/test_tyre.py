@@ -39,6 +39,11 @@ def test_bad_input_raises_value_error():
         hotlap.tyre_forces(model, fz_N=np.array([100.0, -5.0]))
     with pytest.raises(ValueError, match="unknown input"):
         hotlap.tyre_forces(model, fz_N=1000.0, slip_angle=0.1)
+    # Points no tyre is at, as `hotlap tyre eval` refuses them.
+    with pytest.raises(ValueError, match="a tread is above absolute zero"):
+        hotlap.tyre_forces(model, fz_N=1000.0, tread_temp_C=-300.0)
+    with pytest.raises(ValueError, match="a pressure is not negative"):
+        hotlap.tyre_forces(model, fz_N=1000.0, pressure_kPa=-10.0)
     with pytest.raises(ValueError, match="broadcast"):
         hotlap.tyre_forces(model, fz_N=np.ones(3), slip_ratio=np.ones(4))
     with pytest.raises(ValueError, match="nope.tir"):

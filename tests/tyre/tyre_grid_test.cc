@@ -33,6 +33,19 @@ TEST(OperatingPointFromTest, ConvertsEveryInputToSi) {
   EXPECT_DOUBLE_EQ(op.tread_temp, 333.15);
   EXPECT_EQ(DefaultOperatingPointValues().size(), OperatingPointInputs().size());
   EXPECT_THROW(OperatingPointFrom({1.0, 2.0}), InputError);
+  // Points no tyre is at are refused, naming the input (UniTire at -300 degC had 48% more grip).
+  const auto error_of = [](std::vector<double> v) {
+    return test::InputErrorOf([&] { OperatingPointFrom(v); });
+  };
+  EXPECT_TRUE(test::Contains(error_of({3000, 5, 0, 0, 30, 180, -300}),
+                             "tread_temp_C = -300: a tread is above absolute zero"));
+  EXPECT_TRUE(test::Contains(error_of({3000, 5, 0, 0, 30, 180, 2500}), "below 2000 degC"));
+  EXPECT_TRUE(test::Contains(error_of({3000, 5, 0, 0, 30, -50, 60}),
+                             "pressure_kPa = -50: a pressure is not negative"));
+  EXPECT_TRUE(test::Contains(error_of({3000, 95, 0, 0, 30, 180, 60}),
+                             "slip_angle_deg = 95: a slip angle is within +-90 deg"));
+  EXPECT_TRUE(test::Contains(error_of({3000, 5, 0, 0, NAN, 180, 60}), "speed_mps is not a finite"));
+  EXPECT_NO_THROW(OperatingPointFrom({3000, -90, -1, 0, -5, 0, -40}));  // reversing, cold: fine
 }
 
 TEST(ParseGridAxisTest, ReadsNameAndRange) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -57,6 +58,30 @@ std::vector<double> DefaultOperatingPointValues() {
   return {4000.0, 0.0, 0.0, 0.0, 20.0, 0.0, 25.0};
 }
 
+void CheckOperatingPoint(const TyreOperatingPoint<double>& op, std::string_view where) {
+  for (const OperatingPointInput& input : OperatingPointInputs()) {
+    if (!std::isfinite(op.*input.field)) {
+      throw InputError(fmt::format("{}{} is not a finite number", where, input.column));
+    }
+  }
+  if (op.pressure < 0.0) {
+    throw InputError(
+        fmt::format("{}pressure_kPa = {:g}: a pressure is not negative (0: the "
+                    "model's nominal pressure)",
+                    where, op.pressure / 1e3));
+  }
+  if (!(op.tread_temp > 0.0 && op.tread_temp <= kZeroCelsius + 2000.0)) {
+    throw InputError(
+        fmt::format("{}tread_temp_C = {:g}: a tread is above absolute zero "
+                    "(-273.15 degC) and below 2000 degC",
+                    where, op.tread_temp - kZeroCelsius));
+  }
+  if (std::abs(op.slip_angle) > std::numbers::pi / 2.0 + 1e-12) {
+    throw InputError(fmt::format("{}slip_angle_deg = {:g}: a slip angle is within +-90 deg", where,
+                                 op.slip_angle / kDeg));
+  }
+}
+
 TyreOperatingPoint<double> OperatingPointFrom(const std::vector<double>& values) {
   CheckCount(values);
   TyreOperatingPoint<double> op;
@@ -64,6 +89,7 @@ TyreOperatingPoint<double> OperatingPointFrom(const std::vector<double>& values)
   for (size_t i = 0; i < inputs.size(); ++i) {
     op.*inputs[i].field = values[i] * inputs[i].scale + inputs[i].shift;
   }
+  CheckOperatingPoint(op, "tyre operating point: ");
   return op;
 }
 

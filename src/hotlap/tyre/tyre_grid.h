@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "hotlap/tyre/compound.h"
@@ -36,8 +37,14 @@ const std::vector<OperatingPointInput>& OperatingPointInputs();
 /// deg, 20 m/s, 0 kPa (the model's nominal pressure), 25 degC.
 std::vector<double> DefaultOperatingPointValues();
 
+/// InputError, its message starting with `where`, for an operating point no tyre is at: a value
+/// that is not finite, a pressure below 0 (0 is the model's nominal one), a tread temperature not
+/// above absolute zero or above 2000 degC, a slip angle beyond +-90 deg (UniTire at -300 degC gave
+/// half as much grip again as at 25 degC before this was checked).
+void CheckOperatingPoint(const TyreOperatingPoint<double>& op, std::string_view where);
+
 /// The operating point (SI) of values ordered as OperatingPointInputs(). InputError if the count
-/// is wrong.
+/// is wrong or the point is not physical (CheckOperatingPoint).
 TyreOperatingPoint<double> OperatingPointFrom(const std::vector<double>& values);
 
 /// One swept input: its index in OperatingPointInputs() and its values (own units).
