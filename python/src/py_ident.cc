@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "hotlap/common/corner.h"
 #include "hotlap/common/error.h"
@@ -37,9 +38,11 @@ py::dict Fit(const vehicle::Car& car, const py::handle& telemetry, const std::st
              const std::string& corners, const std::string& loss, const std::string& initial_state,
              std::optional<double> ambient_C, std::optional<double> track_C,
              const std::map<std::string, double>& wear_per_lap_mm, int threads,
-             const std::string& out, double loss_scale, double max_relative_ci, int random_starts,
-             uint64_t seed, double sensor_lag_s, double max_step_s, std::optional<int> laps,
-             double wear_sd_mm, const py::object& channel_map, std::optional<int> lap) {
+             const std::filesystem::path& out_path, double loss_scale, double max_relative_ci,
+             int random_starts, uint64_t seed, double sensor_lag_s, double max_step_s,
+             std::optional<int> laps, double wear_sd_mm, const py::object& channel_map,
+             std::optional<int> lap) {
+  const std::string out = out_path.string();
   ident::CarFitOptions options;
   std::string command;
   if (kind == "tyre") {

@@ -13,6 +13,7 @@
 #include <pybind11/functional.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
@@ -109,7 +110,7 @@ py::dict Stint(const vehicle::Car& car, const track::Track& track, int laps, dou
                double fuel_kg, std::optional<double> disc_limit_C, double step_m,
                double coarse_step_m, const std::string& thermal_start, double ambient_C,
                double track_C, int max_iterations, int threads,
-               std::optional<std::string> checkpoint_dir, int checkpoint_every) {
+               std::optional<std::filesystem::path> checkpoint_dir, int checkpoint_every) {
   if (threads < 0 || threads > 256) {
     throw InputError(fmt::format("threads: {} is not 0 to 256 (0: one per core)", threads));
   }

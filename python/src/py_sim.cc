@@ -10,6 +10,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "hotlap/common/csv.h"
 #include "hotlap/common/data_path.h"
@@ -72,9 +73,10 @@ py::dict Replay(const vehicle::Car& car, const py::handle& telemetry, bool heat_
 }
 
 py::dict QssLap(const vehicle::Car& car, const track::Track& track, int laps, double step_m,
-                const std::string& line, double line_margin_m, double ambient_C, double track_C,
-                std::optional<double> tread_C, std::optional<double> carcass_C,
+                const std::filesystem::path& line_path, double line_margin_m, double ambient_C,
+                double track_C, std::optional<double> tread_C, std::optional<double> carcass_C,
                 std::optional<double> disc_C, std::optional<double> calliper_C) {
+  const std::string line = line_path.string();  // a name or a file (str or os.PathLike)
   vehicle::RequireVehicle(car, "hotlap.qss_lap");
   if (laps < 1 || laps > 1000) throw InputError(fmt::format("laps {} must be in [1, 1000]", laps));
   if (!(step_m > 0.0)) throw InputError(fmt::format("step_m {} must be > 0", step_m));
@@ -178,8 +180,8 @@ void BindSim(py::module_& m) {
       });
   m.def(
       "load_car",
-      [](const std::string& name_or_path, const py::object& overrides) {
-        return vehicle::LoadCar(ResolveCarFile(name_or_path), OverridesFrom(overrides));
+      [](const std::filesystem::path& name_or_path, const py::object& overrides) {
+        return vehicle::LoadCar(ResolveCarFile(name_or_path.string()), OverridesFrom(overrides));
       },
       py::arg("name_or_path") = "gen7", py::arg("overrides") = py::none(),
       "A built-in car by name ('gen7') or a car.yaml (or its folder) by path; `overrides` "
@@ -188,13 +190,16 @@ void BindSim(py::module_& m) {
       "'brakes.fl.duct_factor': 0.8}.");
   m.def(
       "override_keys",
-      [](const std::string& name_or_path) {
-        return vehicle::OverrideKeys(ResolveCarFile(name_or_path));
+      [](const std::filesystem::path& name_or_path) {
+        return vehicle::OverrideKeys(ResolveCarFile(name_or_path.string()));
       },
       py::arg("name_or_path") = "gen7",
       "Every key load_car's overrides (and --set) accept for this car, in file order.");
   m.def(
-      "load_track", [](const std::string& name_or_path) { return track::LoadTrack(name_or_path); },
+      "load_track",
+      [](const std::filesystem::path& name_or_path) {
+        return track::LoadTrack(name_or_path.string());
+      },
       py::arg("name_or_path") = "darlington",
       "A built-in track by name ('darlington') or a track file by path.");
   m.def("replay", &Replay, py::arg("car"), py::arg("telemetry"), py::kw_only(),

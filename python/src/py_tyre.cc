@@ -12,6 +12,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/error.h"
@@ -108,8 +109,8 @@ void BindTyre(py::module_& m) {
            [](const Model& model) { return fmt::format("<hotlap.TyreModel {}>", model.kind()); });
   m.def(
       "load_tyre",
-      [](const std::string& name_or_path) {
-        return tyre::LoadTyreForceModel(ResolveTyreFile(name_or_path));
+      [](const std::filesystem::path& name_or_path) {
+        return tyre::LoadTyreForceModel(ResolveTyreFile(name_or_path.string()));
       },
       py::arg("name_or_path"),
       "Loads a tyre force model: a .tir file (Magic Formula) or a .yaml file (brush, UniTire), or "

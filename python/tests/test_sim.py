@@ -114,3 +114,14 @@ def test_a_line_margin_that_leaves_the_road_is_refused():
     keys = hotlap.override_keys("gen7")
     assert "chassis.mass_kg" in keys and "brakes.rr.duct_factor" in keys
     assert "tyre_forces.fl.file" not in keys
+
+
+def test_paths_may_be_pathlib_paths():
+    # Every path argument takes an os.PathLike as well as a str (some refused a pathlib.Path).
+    from conftest import LEFT_TIR, REPO
+    car_file = REPO / "data" / "cars" / "gen7" / "car.yaml"
+    assert hotlap.load_car(car_file).name == hotlap.load_car(str(car_file)).name
+    assert "chassis.mass_kg" in hotlap.override_keys(car_file)
+    track_file = REPO / "data" / "tracks" / "darlington.yaml"
+    assert hotlap.load_track(track_file).length_m == hotlap.load_track("darlington").length_m
+    assert hotlap.load_tyre(LEFT_TIR).kind == "mf"

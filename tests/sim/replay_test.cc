@@ -386,22 +386,27 @@ TEST(ReplayIoTest, InitialStatePrefersMeasuredThenOverridesThenCar) {
   EXPECT_DOUBLE_EQ(s.tyres[2].wear, 0.0);
 }
 
-TEST(ReplayIoTest, MissingAmbientNeedsAnOption) {
+// A three-line log with every corner input, then the columns `header` names (",name,...") with
+// the cells `cells` (",value,...") on every line.
+std::string SmallLog(const std::string& header, const std::string& cells) {
   std::ostringstream f;
   f << "time_s,speed_mps";
   for (const char* c : {"fl", "fr", "rl", "rr"}) {
     f << ",fx_" << c << "_N,fy_" << c << "_N,fz_" << c << "_N,slip_angle_" << c
       << "_rad,slip_ratio_" << c;
   }
-  f << ",track_temp_C\n";
+  f << header << "\n";
   for (int k = 0; k < 3; ++k) {
     f << k * 0.1 << ",50";
     for (int c = 0; c < 4; ++c) f << ",100,200,4000,0.01,0.001";
-    f << ",40\n";
+    f << cells << "\n";
   }
+  return f.str();
+}
+
+TEST(ReplayIoTest, MissingAmbientNeedsAnOption) {
   const test::TempDir dir;
-  const fs::path csv = dir.Write("log.csv", f.str());
-  const Telemetry log = Telemetry::Read(csv);
+  const Telemetry log = Telemetry::Read(dir.Write("log.csv", SmallLog(",track_temp_C", ",40")));
   try {
     ReplayInputsFromTelemetry(log, {});
     FAIL() << "expected InputError";
@@ -421,20 +426,9 @@ TEST(ReplayIoTest, MissingAmbientNeedsAnOption) {
 // A column with no value on any row (a dead air-temperature sensor) is as good as none: the option
 // stands in for it, and without one the message names the option (it refused even with one).
 TEST(ReplayIoTest, AnEmptyAmbientColumnTakesTheOption) {
-  std::ostringstream f;
-  f << "time_s,speed_mps";
-  for (const char* c : {"fl", "fr", "rl", "rr"}) {
-    f << ",fx_" << c << "_N,fy_" << c << "_N,fz_" << c << "_N,slip_angle_" << c
-      << "_rad,slip_ratio_" << c;
-  }
-  f << ",ambient_temp_C,track_temp_C\n";
-  for (int k = 0; k < 3; ++k) {
-    f << k * 0.1 << ",50";
-    for (int c = 0; c < 4; ++c) f << ",100,200,4000,0.01,0.001";
-    f << ",,40\n";
-  }
   const test::TempDir dir;
-  const Telemetry log = Telemetry::Read(dir.Write("log.csv", f.str()));
+  const Telemetry log =
+      Telemetry::Read(dir.Write("log.csv", SmallLog(",ambient_temp_C,track_temp_C", ",,40")));
   try {
     ReplayInputsFromTelemetry(log, {});
     FAIL() << "expected InputError";
