@@ -34,7 +34,11 @@ struct LogArgs {
 
 int RunLogInfo(const LogArgs& a) {
   if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
-  const LogInfo info = DescribeLog(ReadLogTable(a.file, a.ReadOptions()));
+  const LogTable log = ReadLogTable(a.file, a.ReadOptions());
+  // The reader's checks, as convert and every command that reads the log make them (a repeated
+  // time, a value out of its range): what info describes is a log the others read.
+  (void)Telemetry::FromTable(log.table);
+  const LogInfo info = DescribeLog(log);
   PrintLogInfo(std::cout, info);
   if (!a.json.empty()) {
     WriteJsonFile(a.json, LogInfoJson(info));

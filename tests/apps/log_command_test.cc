@@ -89,6 +89,22 @@ TEST_F(LogCommandTest, InfoOfBothCsvFormats) {
   EXPECT_EQ(j["laps"].size(), 3u);
 }
 
+// info refuses what convert (and every command reading the log) refuses: a time that repeats
+// (info described such a MoTeC export that convert then refused).
+TEST_F(LogCommandTest, InfoRefusesARepeatedTimeAsConvertDoes) {
+  const fs::path bad = hotlap::test::WriteTextFile(
+      dir() / "repeat.csv",
+      hotlap::test::ReplaceOnce(hotlap::test::ReadTextFile(kMotec), "\"0.100\",", "\"0.000\","));
+  for (const char* command : {"log info ", "log convert "}) {
+    const auto r =
+        Run(command + bad.string() +
+            (std::string(command) == "log convert " ? " --out " + (dir() / "o.csv").string()
+                                                    : std::string()));
+    EXPECT_EQ(r.exit_code, 2) << command;
+    EXPECT_TRUE(Contains(r.err, "must be strictly increasing")) << command << r.err;
+  }
+}
+
 TEST_F(LogCommandTest, ConvertALdLapToHotlapCsv) {
   const fs::path ld = hotlap::test::WriteDarlingtonLd(dir());
   const fs::path out = dir() / "lap2.csv";
