@@ -1,7 +1,6 @@
 #include "hotlap/observe/stream_io.h"
 
 #include <algorithm>
-
 #include <cerrno>
 #include <cmath>
 #include <cstring>
