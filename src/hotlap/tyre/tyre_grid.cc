@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
+#include "hotlap/common/telemetry_limits.h"
 #include "hotlap/common/units.h"
 
 namespace hotlap::tyre {
@@ -70,13 +70,14 @@ void CheckOperatingPoint(const TyreOperatingPoint<double>& op, std::string_view 
                     "model's nominal pressure)",
                     where, op.pressure / 1e3));
   }
-  if (!(op.tread_temp > 0.0 && op.tread_temp <= kZeroCelsius + 2000.0)) {
+  // The telemetry readers' limits (common/telemetry_limits.h), and strictly above 0 K.
+  if (!(op.tread_temp > 0.0) || IsRefused("tread_temp", op.tread_temp)) {
     throw InputError(
         fmt::format("{}tread_temp_C = {:g}: a tread is above absolute zero "
                     "(-273.15 degC) and below 2000 degC",
                     where, op.tread_temp - kZeroCelsius));
   }
-  if (std::abs(op.slip_angle) > std::numbers::pi / 2.0 + 1e-12) {
+  if (IsRefused("slip_angle", op.slip_angle)) {
     throw InputError(fmt::format("{}slip_angle_deg = {:g}: a slip angle is within +-90 deg", where,
                                  op.slip_angle / kDeg));
   }
