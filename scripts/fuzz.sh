@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Builds (if needed) and runs hotlap's libFuzzer targets (fuzz/, docs/reliability.md).
 #
-#   bash scripts/fuzz.sh [TARGET|all] [SECONDS]   # default: all, 60 s each
+#   bash scripts/fuzz.sh [TARGET|all] [SECONDS]   # default: all, 60 CPU seconds each (CPU time, not
+#                                                 # wall time: a loaded machine makes a run take
+#                                                 # longer, not do less or report a false hang)
 #   bash scripts/fuzz.sh --list                   # the targets
 #   bash scripts/fuzz.sh --summary                # fuzz/budget.tsv per target (runs, minutes, ...)
 #   bash scripts/fuzz.sh --budget [TARGET|all]     # each target until the goal of
@@ -208,7 +210,10 @@ run_one() {
   # --budget runs the target in chunks of HOTLAP_FUZZ_CHUNK_S CPU seconds (default 600), each
   # recorded as it ends, until the goal: a run stopped any way loses at most one chunk.
   while :; do
-    local rc=0 limits=(-max_total_time="$seconds") prefix=() cpu_limit=0
+    # A run of SECONDS CPU seconds (RLIMIT_CPU: SIGXCPU ends it), not libFuzzer's
+    # -max_total_time, which is wall time: the same work however loaded the machine is.
+    local rc=0 limits=(-max_total_time=0) cpu_limit=$seconds
+    local prefix=(prlimit --cpu="$seconds:$((seconds + 30))" --)
     if [ "$budget" -eq 1 ] && [ -e "$build/budget.stop" ]; then return 0; fi
     if [ "$budget" -eq 1 ]; then
       local done_runs done_cpu
@@ -251,11 +256,10 @@ run_one() {
     cpu_seconds=$(awk -v s="$started_cpu" -v hz="$(getconf CLK_TCK)" \
       '{ printf "%.0f", ($14 + $15 + $16 + $17 - s) / hz }' "/proc/$me/stat")
     # The CPU limit reached (SIGXCPU, exit 152, which only the limit sends; or SIGKILL at the
-    # hard limit, 137, with the CPU time to show for it): the chunk ended, not a finding. (The
-    # CPU time counted here can fall short of the limit's: 591 s for a 600 s chunk, twice on
+    # hard limit, 137, with the CPU time to show for it): the run or chunk ended, not a finding.
+    # (The CPU time counted here can fall short of the limit's: 591 s for a 600 s chunk, twice on
     # 2026-11-27, which then counted as findings.)
-    if [ "$budget" -eq 1 ] && { [ "$rc" -eq 152 ] ||
-      { [ "$rc" -eq 137 ] && [ "$cpu_seconds" -ge $((cpu_limit - 5)) ]; }; }; then
+    if [ "$rc" -eq 152 ] || { [ "$rc" -eq 137 ] && [ "$cpu_seconds" -ge $((cpu_limit - 5)) ]; }; then
       rc=0
     fi
     local runs
@@ -268,11 +272,12 @@ run_one() {
     # Stopped by hand (SIGINT: libFuzzer's interrupted_exitcode, 72): counted, not a finding.
     if [ "$rc" -eq 72 ]; then outcome=stopped; fi
     if [ "$rc" -ne 0 ] && [ "$rc" -ne 72 ]; then outcome="FOUND (exit $rc; $log)"; fi
-    # libFuzzer's -timeout is wall-clock: the niced budget starved by other work (a build, a CI
-    # run on both cores) reports an input that took 1 CPU-second as a 10 s hang (twice on
-    # 2026-11-27, both at the start of a CI run). Replay it: under 5 CPU-seconds it was the
-    # starvation, recorded as such (the input kept as starved-*), and the target goes on.
-    if [ "$budget" -eq 1 ] && [ "$rc" -ne 0 ] && grep -q "ERROR: libFuzzer: timeout" "$log"; then
+    # libFuzzer's -timeout is wall-clock: a fuzzer starved by other work (a build, a CI run on
+    # both cores, the smokes' parallel jobs) reports an input that took 1 CPU-second as a 10 s
+    # hang (twice on 2026-11-27, both at the start of a CI run). Replay it: under 5 CPU-seconds
+    # it was the starvation, recorded as such (the input kept as starved-*), and the target goes
+    # on; a hang is judged by CPU time, in a smoke as in the budget.
+    if [ "$rc" -ne 0 ] && grep -q "ERROR: libFuzzer: timeout" "$log"; then
       local unit
       unit=$(sed -n 's/.*Test unit written to \(.*timeout-[0-9a-f]*\).*/\1/p' "$log" | tail -1)
       if [ -n "$unit" ] && [ -f "$unit" ]; then
@@ -292,8 +297,7 @@ run_one() {
       outcome="FOUND (left its temporary folder $(basename "$left_behind") behind)"
       rc=1
     fi
-    local wall=$seconds
-    if [ "$budget" -eq 1 ]; then wall=$(($(date +%s) - started_wall)); fi
+    local wall=$(($(date +%s) - started_wall))
     printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$(date -u +%FT%TZ)" "$t" "$wall" "${runs:-?}" \
       "$files" "$outcome" "$cpu_seconds" >>"$stats"
     echo "fuzz: $t: ${runs:-?} executions in $wall s ($cpu_seconds CPU s), corpus $files files: $outcome"

@@ -4,10 +4,12 @@
 #   bash scripts/sanitize.sh --fast   # CI's part (scripts/test.sh --sanitize-fast, after the tests):
 #                                     # Clang build in build-fuzz of the reader areas (common, tyre,
 #                                     # brake, track, vehicle) and their unit tests, those tests,
-#                                     # then a 10-second smoke of every fuzz target
+#                                     # then a smoke of 10 CPU seconds of every fuzz target
 #   bash scripts/sanitize.sh --full   # every test (ctest) of an ASan + UBSan build of everything,
 #                                     # in build-sanitize with the default compiler (slow: the
-#                                     # optimal-control and FE tests run several times slower)
+#                                     # optimal-control and FE tests run several times slower;
+#                                     # without the Python package, whose tests are then not
+#                                     # registered: python/CMakeLists.txt)
 #
 # Undefined behaviour is fatal (-fno-sanitize-recover; UBSAN_OPTIONS halt_on_error), as are leaks
 # and memory errors. Needs clang for --fast (scripts/install-deps.sh --fuzz).
