@@ -6,16 +6,18 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <chrono>
+#include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <regex>
 #include <string>
-#include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "apps/run_hotlap.h"
+#include "child_lines.h"
 #include "hotlap/common/csv.h"
 #include "report/chromium.h"
 #include "test_util.h"
@@ -85,39 +87,37 @@ TEST_F(StintCommandTest, TwoLapsWriteTheTableTheChannelsTheJsonAndTheReport) {
 
 // Faults survived (issue 25): `kill -9` during the stint's solve, then the same command again
 // with the same --checkpoint folder: the greedy laps come from their files (the same laps, not
-// solved again), the stint from its last saved iterate, at most one interval (3 iterations)
-// behind what the killed run reported, and the run ends converged.
+// solved again), the stint from the last iterate the killed run said it saved, at most one
+// interval (an iteration) behind the furthest iteration it reached, and the run ends converged.
+// The kill waits for an event, not for time: the run's line saying its third iterate is saved
+// (iteration 3; the solve takes 7), read from its output as it comes. (A checkpoint file that
+// kept its first iterate would resume from iteration 1, two behind.)
 TEST_F(StintCommandTest, KilledStintResumesFromItsCheckpoints) {
+  const int every = 1, kill_at_save = 3;
   const fs::path checkpoints = dir() / "checkpoints", json = dir() / "resumed.json";
   const std::string common =
       "stint --laps 2 --step-m 30 --coarse-step-m 0 --wear-scale 5 --checkpoint " +
-      checkpoints.string() + " --checkpoint-every 3 --out ";
-  const fs::path killed_out = dir() / "killed_stdout.txt";
-  const std::string command = "exec " + std::string(HOTLAP_BINARY) + " " + common +
-                              (dir() / "killed").string() + " >" + killed_out.string() +
-                              " 2>/dev/null";
-  const pid_t pid = ::fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  // Killed as soon as the stint's solve has saved its first iterate (its third iteration; the
-  // solve takes about 10 on this mesh).
-  const fs::path iterate = checkpoints / "stint_iterate.bin";
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(300);
-  while (!fs::exists(iterate) && std::chrono::steady_clock::now() < deadline) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  ::kill(pid, SIGKILL);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it was killed";
-  ASSERT_TRUE(fs::exists(iterate));
-  EXPECT_FALSE(fs::exists(dir() / "killed" / "stint.csv"));
-  // What the killed run printed: its greedy laps, and the stint's iterations (every tenth).
-  const std::string killed = test::ReadTextFile(killed_out);
+      checkpoints.string() + " --checkpoint-every " + std::to_string(every) + " --out ";
+  test::ChildLines child("exec " + std::string(HOTLAP_BINARY) + " " + common +
+                             (dir() / "killed").string() + " 2>/dev/null",
+                         STDOUT_FILENO);
+  const std::regex saved_line(R"(the stint: iterate of iteration (\d+) saved)");
   std::smatch m;
+  int saves = 0;
+  while (const std::optional<std::string> line = child.NextLine()) {
+    if (std::regex_search(*line, m, saved_line) && ++saves == kill_at_save) break;
+  }
+  ASSERT_EQ(saves, kill_at_save) << "the run ended before it saved its iterate " << kill_at_save
+                                 << " times:\n"
+                                 << child.text();
+  const int status = child.KillAndWait();
+  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL)
+      << "the run ended before it was killed";
+  ASSERT_TRUE(fs::exists(checkpoints / "stint_iterate.bin"));
+  EXPECT_FALSE(fs::exists(dir() / "killed" / "stint.csv"));
+  // What the killed run printed: its greedy laps, and in the stint's solve the iterations it
+  // reached (every tenth is printed) and the iterates it saved.
+  const std::string killed = child.text();
   std::vector<std::string> greedy;
   const std::regex greedy_line(R"(greedy lap \d of 2: [0-9.]+ s)");
   for (auto it = std::sregex_iterator(killed.begin(), killed.end(), greedy_line);
@@ -125,15 +125,21 @@ TEST_F(StintCommandTest, KilledStintResumesFromItsCheckpoints) {
     greedy.push_back(it->str());
   }
   ASSERT_EQ(greedy.size(), 2u) << killed;
-  int reached = 0;
-  const size_t stint_starts = killed.find("the stint:");
+  const size_t stint_starts = killed.find("the stint: 2 laps as one problem");
   ASSERT_NE(stint_starts, std::string::npos) << killed;
   const std::string stint_part = killed.substr(stint_starts);
+  int reached = 0, last_saved = 0;
   const std::regex iteration_line(R"(iteration +(\d+):)");
   for (auto it = std::sregex_iterator(stint_part.begin(), stint_part.end(), iteration_line);
        it != std::sregex_iterator(); ++it) {
     reached = std::max(reached, std::stoi((*it)[1]));
   }
+  for (auto it = std::sregex_iterator(stint_part.begin(), stint_part.end(), saved_line);
+       it != std::sregex_iterator(); ++it) {
+    last_saved = std::max(last_saved, std::stoi((*it)[1]));
+  }
+  reached = std::max(reached, last_saved);
+  ASSERT_GE(last_saved, kill_at_save * every) << killed;
 
   const test::RunResult r = Run(common + (dir() / "resumed").string() + " --json " + json.string());
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
@@ -149,9 +155,9 @@ TEST_F(StintCommandTest, KilledStintResumesFromItsCheckpoints) {
   EXPECT_EQ(j.at("greedy_laps_resumed"), 2);
   const int from = j.at("resumed_from_iteration").get<int>();
   EXPECT_EQ(from, std::stoi(m[1]));
-  EXPECT_GE(from, 3);
-  EXPECT_EQ(from % 3, 0);
-  EXPECT_GE(from, reached - 3) << "the surviving iterate is more than one interval behind";
+  EXPECT_EQ(from % every, 0);
+  EXPECT_EQ(from, last_saved) << "the surviving iterate is not the last one the run saved";
+  EXPECT_GE(from, reached - every) << "the surviving iterate is more than one interval behind";
 }
 
 TEST_F(StintCommandTest, BadOptionsAreRefusedBeforeAnyWork) {

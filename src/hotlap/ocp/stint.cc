@@ -202,9 +202,11 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
   const auto save = [&](const std::function<void()>& write) {
     try {
       write();
+      return true;
     } catch (const std::exception& e) {
       if (!checkpoint_warned && log) log(fmt::format("warning: no checkpoint: {}", e.what()));
       checkpoint_warned = true;
+      return false;
     }
   };
 
@@ -298,10 +300,13 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
   if (checkpoints) {
     so.lap.ipopt.checkpoint_every = options.checkpoint_every;
     const int offset = result.resumed_from_iteration;
-    so.lap.ipopt.on_checkpoint = [&checkpoints, &save, offset](const SolveResult& at) {
+    // Each iterate saved is said once it is in its file (the event a test of a kill waits for).
+    so.lap.ipopt.on_checkpoint = [&checkpoints, &save, &say, offset](const SolveResult& at) {
       SolveResult saved = at;
       saved.iterations += offset;
-      save([&] { checkpoints->WriteStintIterate(saved); });
+      if (save([&] { checkpoints->WriteStintIterate(saved); })) {
+        say(fmt::format("the stint: iterate of iteration {} saved", saved.iterations));
+      }
     };
   }
   if (checkpoints && checkpoints->foreign_files() > 0) {
