@@ -165,6 +165,11 @@ int RunFeCommand(const FeArgs& a) {
     std::fprintf(stderr, "fe %s: t = %.5f s (%.0f%%), about %s left\n", step.c_str(), t,
                  100.0 * done, eta.c_str());
   };
+  // Each checkpoint once it is whole on disk (the event a test of a kill waits for); the time as
+  // a restart from it reports it.
+  hooks.checkpoint_written = [](double t) {
+    std::fprintf(stderr, "fe abs: checkpoint written at t = %.6g s\n", t);
+  };
   hooks.frame = [&](const std::string& step, int frame) {
     fe::WriteVtu(out / fmt::format("{}_{:03d}.vtu", step, frame), solver);
   };

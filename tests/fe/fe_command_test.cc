@@ -7,18 +7,19 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <regex>
 #include <string>
-#include <thread>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "child_lines.h"
 #include "hotlap/fe/explicit_solver.h"
 #include "report/chromium.h"
 #include "test_util.h"
@@ -170,55 +171,62 @@ TEST_F(FeCommandTest, RunStoppedAtACheckpointAndRestartedEqualsAStraightRun) {
 }
 
 // Faults survived (issue 25): `kill -9` in the middle of a checkpointed braking step leaves a
-// whole checkpoint no older than one checkpoint interval behind the run, and the run continued
-// from it ends bit for bit where the run straight through ends.
+// whole checkpoint, the last one the run said it wrote, no older than one checkpoint interval
+// behind the run, and the run continued from it ends bit for bit where the run straight through
+// ends. The kill waits for an event, not for time: the run's line saying its fifth checkpoint is
+// written (of 30), read from its output as it comes.
 TEST_F(FeCommandTest, KilledRunRestartsFromItsLastCheckpointLosingAtMostOneInterval) {
   const fs::path cfg = CoarseConfig(), straight = dir_ / "straight", killed = dir_ / "killed",
                  resumed = dir_ / "resumed";
   const std::string common = "abs --config " + cfg.string() + " --duration-s 0.3 --threads 1 ";
   ASSERT_EQ(Run(common + "--out " + straight.string() + " --checkpoint-every-s 1"), 0) << err_;
 
-  // The run to kill, as its own process (exec: the pid is hotlap's, not a shell's).
+  // The run to kill, as its own process (exec: the pid is hotlap's, not a shell's), its standard
+  // error read line by line.
   const double interval_s = 0.01;
-  const fs::path err = dir_ / "killed_stderr.txt", checkpoint = killed / "abs_checkpoint.bin";
-  const std::string command = "exec env OMP_WAIT_POLICY=passive " + std::string(HOTLAP_BINARY) +
-                              " fe " + common + "--out " + killed.string() +
-                              " --checkpoint-every-s 0.01 >/dev/null 2>" + err.string();
-  const pid_t pid = ::fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
+  const int kill_at_checkpoint = 5;
+  const fs::path checkpoint = killed / "abs_checkpoint.bin";
+  hotlap::test::ChildLines child("exec env OMP_WAIT_POLICY=passive " + std::string(HOTLAP_BINARY) +
+                                     " fe " + common + "--out " + killed.string() +
+                                     " --checkpoint-every-s 0.01 >/dev/null",
+                                 STDERR_FILENO);
+  const std::regex written(R"(fe abs: checkpoint written at t = ([0-9.e+-]+) s)");
+  std::smatch m;
+  int checkpoints = 0;
+  while (const std::optional<std::string> line = child.NextLine()) {
+    if (std::regex_search(*line, m, written) && ++checkpoints == kill_at_checkpoint) break;
   }
-  // Killed 0.3 s (wall) after its first checkpoint, when it has written several.
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  while (!fs::exists(checkpoint) && std::chrono::steady_clock::now() < deadline) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  ::kill(pid, SIGKILL);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it was killed";
+  ASSERT_EQ(checkpoints, kill_at_checkpoint)
+      << "the run ended before its checkpoint " << kill_at_checkpoint << ":\n"
+      << child.text();
+  const int status = child.KillAndWait();
+  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL)
+      << "the run ended before it was killed";
   ASSERT_TRUE(fs::exists(checkpoint));
 
-  // The latest simulated time the killed run reported reaching.
-  double reached_s = 0.0;
-  const std::string killed_err = ReadTextFile(err);
+  // The latest simulated time the killed run reported reaching, and its last checkpoint.
+  double reached_s = 0.0, last_written_s = 0.0;
+  const std::string killed_err = child.text();
   const std::regex progress(R"(fe abs: t = ([0-9.]+) s)");
   for (auto it = std::sregex_iterator(killed_err.begin(), killed_err.end(), progress);
        it != std::sregex_iterator(); ++it) {
     reached_s = std::max(reached_s, std::stod((*it)[1]));
   }
+  for (auto it = std::sregex_iterator(killed_err.begin(), killed_err.end(), written);
+       it != std::sregex_iterator(); ++it) {
+    last_written_s = std::max(last_written_s, std::stod((*it)[1]));
+  }
+  reached_s = std::max(reached_s, last_written_s);
   ASSERT_EQ(Run(common + "--out " + resumed.string() + " --checkpoint-every-s 1 --restart " +
                 checkpoint.string()),
             0)
       << err_;
-  std::smatch m;
   ASSERT_TRUE(
       std::regex_search(err_, m, std::regex(R"(restarting from '.*' at t = ([0-9.e-]+) s)")))
       << err_;
   const double checkpoint_s = std::stod(m[1]);
+  EXPECT_EQ(checkpoint_s, last_written_s)
+      << "the surviving checkpoint is not the last one the run wrote";
   EXPECT_GE(checkpoint_s, reached_s - interval_s - 1e-9)
       << "the surviving checkpoint is more than one interval behind the run";
   EXPECT_TRUE(ReadTextFile(straight / "abs_checkpoint.bin") ==

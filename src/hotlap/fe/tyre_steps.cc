@@ -105,12 +105,16 @@ void TyreRun::RunUntil(const std::string& step, double t_end, const StepHooks& h
     checkpoint_now = solver_.time() >= next_checkpoint - 0.5 * dt;
     if (checkpoint_now) {
       hooks.checkpoint();
+      if (hooks.checkpoint_written) hooks.checkpoint_written(solver_.time());
       while (next_checkpoint < solver_.time() + 0.5 * dt) next_checkpoint += interval;
     }
   }
   if (hooks.frame) hooks.frame(step, frames - 1);
   if (hooks.progress) hooks.progress(step, solver_.time(), t_end);
-  if (hooks.checkpoint && !checkpoint_now) hooks.checkpoint();
+  if (hooks.checkpoint && !checkpoint_now) {
+    hooks.checkpoint();
+    if (hooks.checkpoint_written) hooks.checkpoint_written(solver_.time());
+  }
 }
 
 InflateResult TyreRun::Inflate(const StepHooks& hooks) {

@@ -57,6 +57,9 @@ struct StepHooks {
   /// step's start, and at its end; may be empty.
   std::function<void()> checkpoint;
   double checkpoint_interval_s = 0.0;  ///< s (0: only at the end)
+  /// Called with the simulated time, s, after each call of `checkpoint` has returned (the
+  /// checkpoint is then whole on disk); may be empty.
+  std::function<void(double t)> checkpoint_written;
 };
 
 struct InflateResult {
