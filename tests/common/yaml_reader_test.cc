@@ -291,10 +291,12 @@ TEST_F(YamlReaderTest, KeyThatIsNotANameIsAnInputError) {
 }
 
 TEST_F(YamlReaderTest, AliasesThatHoldThemselvesOrExplodeAreRefused) {
+  // yaml-cpp takes the alias as the node that holds it (a cycle); the walk meets it as depth.
   try {
     YamlReader::Load(Write("name: x\na: &x [1, *x]\n"));
-  } catch (const InputError& e) {  // yaml-cpp may refuse the alias itself, or the walk may
-    SUCCEED() << e.what();         // meet the cycle: either way an InputError
+    ADD_FAILURE() << "an alias that holds itself accepted";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(Contains(e.what(), "an alias that holds itself")) << e.what();
   }
   std::string laughs = "name: x\nl0: &l0 [1, 1, 1, 1, 1, 1, 1, 1, 1, 1]\n";
   for (int i = 1; i <= 7; ++i) {
