@@ -88,6 +88,11 @@ def test_a_resumed_sweep_redoes_nothing(tmp_path):
     assert third["skipped"] == 3 and third["ran"] == 1
 
 
+def _processing_transitions(dask_scheduler, key):
+    """How many times the scheduler sent the task `key` to a worker (its transition log)."""
+    return sum(1 for t in dask_scheduler.transition_log if t[0] == key and t[2] == "processing")
+
+
 def test_a_worker_killed_during_a_case_leaves_every_case_done(tmp_path):
     import dask
     from distributed import Client, LocalCluster
@@ -98,7 +103,7 @@ def test_a_worker_killed_during_a_case_leaves_every_case_done(tmp_path):
     with dask.config.set({"distributed.scheduler.allowed-failures": 2}):
         cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None)
     client = Client(cluster)
-    killed = []
+    killed = []  # (pid, the cases its worker was running when it was killed)
 
     def kill_one_busy_worker():
         deadline = time.monotonic() + 60
@@ -107,20 +112,31 @@ def test_a_worker_killed_during_a_case_leaves_every_case_done(tmp_path):
             if busy:
                 time.sleep(0.5)  # well inside the case
                 pid = client.run(os.getpid, workers=[busy[0]])[busy[0]]
-                os.kill(pid, signal.SIGKILL)
-                killed.append(pid)
+                running = list(client.processing().get(busy[0], ()))
+                if running:  # still in a case: killed in it
+                    os.kill(pid, signal.SIGKILL)
+                    killed.append((pid, running))
             time.sleep(0.05)
 
     killer = threading.Thread(target=kill_one_busy_worker)
     killer.start()
     try:
         summary = sweep.sweep(cases, tmp_path, scheduler=client, progress=None)
+        # What the scheduler did with the cases the killed worker was running.
+        sent = {key: client.run_on_scheduler(_processing_transitions, key=key)
+                for _, running in killed for key in running}
     finally:
         killer.join()
         client.close()
         cluster.close()
     assert killed, "no worker was busy to kill"
-    assert summary["by_status"] == {"ok": 3} and summary["lost"] == []
+    assert summary["by_status"] == {"ok": 3} and summary["lost"] == [] and summary["ran"] == 3
+    # The case it was running went to a worker again (not just finished before the kill), and
+    # every case has its result.
+    assert sent and all(n >= 2 for n in sent.values()), "the killed case was not run again: %s" % sent
+    for case in cases:
+        with open(tmp_path / "cases" / case["case"] / "result.json") as f:
+            assert json.load(f)["status"] == "ok"
 
 
 def test_case_tables_are_checked_with_suggestions(tmp_path):
