@@ -36,6 +36,36 @@ namespace hotlap::app {
 
 namespace {
 
+double Celsius(double kelvin) { return KelvinToCelsius(kelvin); }
+
+// The last lap's means and energy audit per corner (docs/lap-simulation.md, "Heat over a run").
+void PrintLastLapHeat(const sim::LapFigures& f, const vehicle::Car& car) {
+  fmt::print("last lap means and energy audit:\n");
+  fmt::print("{:<6} {:>7} {:>9} {:>6} {:>6} {:>8} {:>9} {:>8} {:>8} {:>7} {:>9} {:>9}\n", "corner",
+             "tread C", "carcass C", "gas C", "rim C", "hot kPa", "build psi", "bulk C", "work kW",
+             "heat kW", "heat/work", "closure");
+  for (Corner c : kAllCorners) {
+    const int k = CornerIndex(c);
+    const sim::CornerLapMeans& m = f.means[k];
+    const sim::CornerEnergyAudit& a = f.audit[k];
+    const double span = a.duration_s > 0.0 ? a.duration_s : 1.0;
+    const auto opt = [](bool has, double v, const char* fmt_spec) {
+      return has ? fmt::format(fmt::runtime(fmt_spec), v) : std::string("-");
+    };
+    const bool gas = m.gas > 0.0;
+    fmt::print(
+        "{:<6} {:>7.1f} {:>9.1f} {:>6} {:>6} {:>8} {:>9} {:>8} {:>8.2f} {:>7.2f} {:>9.3f} "
+        "{:>9.1e}\n",
+        CornerName(c), Celsius(m.tread), Celsius(m.carcass), opt(gas, Celsius(m.gas), "{:.1f}"),
+        opt(gas, Celsius(m.rim), "{:.1f}"), opt(gas, 1e-3 * m.pressure, "{:.0f}"),
+        opt(gas, (m.pressure - car.tyre(c).params.cold_pressure) / kPsi, "{:+.1f}"),
+        opt(m.disc_bulk > 0.0, Celsius(m.disc_bulk), "{:.0f}"), 1e-3 * a.MechanicalWork() / span,
+        1e-3 * a.GeneratedHeat() / span, a.HeatOverWork(),
+        std::max(
+            {std::abs(a.TyreClosure()), std::abs(a.RimClosure()), std::abs(a.BrakeClosure())}));
+  }
+}
+
 namespace fs = std::filesystem;
 
 struct LapArgs {
@@ -51,7 +81,9 @@ struct LapArgs {
   double step_m = 1.0;
   double ambient_C = 25.0;
   double track_C = 40.0;
-  std::optional<double> tread_C, carcass_C, disc_C, calliper_C;
+  std::optional<double> tread_C, carcass_C, disc_C, calliper_C, rim_C, disc_bulk_C;
+  std::string caution_laps;          // --method qss: laps behind the pace car, e.g. "11-15,40"
+  double caution_speed_kph = 110.0;  // --method qss: the pace car's speed
   std::optional<double> compare_disc_limit_C;  // --method ocp
   std::optional<double> ocp_step_m;            // --method ocp
   bool single_process = false;                 // --method ocp with a comparison
@@ -75,7 +107,11 @@ void RefuseOtherMethodsOptions(const LapArgs& a) {
           std::pair{"--tread-temp-C", "the optimal lap starts from its warm-up lap"},
           std::pair{"--carcass-temp-C", "the optimal lap starts from its warm-up lap"},
           std::pair{"--disc-temp-C", "the optimal lap starts from its warm-up lap"},
-          std::pair{"--calliper-temp-C", "the optimal lap starts from its warm-up lap"}}) {
+          std::pair{"--calliper-temp-C", "the optimal lap starts from its warm-up lap"},
+          std::pair{"--rim-temp-C", "the optimal lap starts from its warm-up lap"},
+          std::pair{"--disc-bulk-temp-C", "the optimal lap starts from its warm-up lap"},
+          std::pair{"--caution-laps", "a run of QSS laps"},
+          std::pair{"--caution-speed-kph", "a run of QSS laps"}}) {
       if (a.Given(name))
         throw InputError(fmt::format("{} is for --method qss ({})", name, instead));
     }
@@ -90,8 +126,6 @@ void RefuseOtherMethodsOptions(const LapArgs& a) {
     if (given) throw InputError(fmt::format("{} is for --method ocp", name));
   }
 }
-
-double Celsius(double kelvin) { return KelvinToCelsius(kelvin); }
 
 int RunLap(const LapArgs& a) {
   RefuseOtherMethodsOptions(a);
@@ -145,14 +179,18 @@ int RunLap(const LapArgs& a) {
   options.track_length = track.length_m();
   options.ambient_temp = CelsiusToKelvin(a.ambient_C);
   options.track_temp = CelsiusToKelvin(a.track_C);
+  options.caution_laps = sim::ParseLapList(a.caution_laps, a.laps, "--caution-laps");
+  options.caution_speed = sim::CheckCautionSpeed(a.caution_speed_kph, "--caution-speed-kph");
   const auto pick = [](const std::optional<double>& c, double kelvin) {
     return c ? CelsiusToKelvin(*c) : kelvin;
   };
   for (int k = 0; k < 4; ++k) {
     options.initial.tyres[k] = {pick(a.tread_C, car.initial.tread_temp),
-                                pick(a.carcass_C, car.initial.carcass_temp), 0.0};
+                                pick(a.carcass_C, car.initial.carcass_temp), 0.0,
+                                pick(a.rim_C, car.initial.rim_temp)};
     options.initial.brakes[k] = {pick(a.disc_C, car.initial.disc_temp),
-                                 pick(a.calliper_C, car.initial.calliper_temp)};
+                                 pick(a.calliper_C, car.initial.calliper_temp),
+                                 pick(a.disc_bulk_C, car.initial.disc_bulk_temp)};
   }
   fmt::print(
       "hotlap lap: car '{}' on {} ({:.1f} m; {} line, {:.1f} m, {} points), {} lap{}, "
@@ -186,6 +224,7 @@ int RunLap(const LapArgs& a) {
                Celsius(s.peak_tread_temp), Celsius(s.peak_carcass_temp), Celsius(s.peak_disc_temp),
                Celsius(s.peak_calliper_temp), s.wear_per_lap_mm);
   }
+  PrintLastLapHeat(stint.laps.back(), car);
   if (stint.slip_points_not_reached > 0) {
     fmt::print(
         "note: at {} samples a tyre could not make the force the speed profile gave it (largest "
@@ -267,10 +306,19 @@ CommandRunner RegisterLapCommand(CLI::App& app) {
   sub->add_option("--carcass-temp-C", args->carcass_C, "Starting carcass temperature");
   sub->add_option("--disc-temp-C", args->disc_C, "Starting disc temperature");
   sub->add_option("--calliper-temp-C", args->calliper_C, "Starting calliper temperature");
+  sub->add_option("--rim-temp-C", args->rim_C, "Starting rim temperature (gas-and-rim tyres)");
+  sub->add_option("--disc-bulk-temp-C", args->disc_bulk_C,
+                  "Starting disc bulk temperature (surface-and-bulk discs)");
+  sub->add_option("--caution-laps", args->caution_laps,
+                  "Laps run behind the pace car, e.g. 11-15,40 (the tyres and brakes cool)");
+  sub->add_option("--caution-speed-kph", args->caution_speed_kph,
+                  "The pace car's speed under caution, km/h")
+      ->capture_default_str();
   return [args, sub] {
     for (const char* name :
          {"--laps", "--line", "--line-margin-m", "--step-m", "--tread-temp-C", "--carcass-temp-C",
-          "--disc-temp-C", "--calliper-temp-C", "--threads"}) {
+          "--disc-temp-C", "--calliper-temp-C", "--rim-temp-C", "--disc-bulk-temp-C",
+          "--caution-laps", "--caution-speed-kph", "--threads"}) {
       if (sub->get_option(name)->count() > 0) args->given.emplace_back(name);
     }
     return RunLap(*args);

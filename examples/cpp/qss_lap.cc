@@ -26,10 +26,7 @@ int main(int argc, char** argv) {
     options.track_length = track.length_m();
     options.ambient_temp = CelsiusToKelvin(25.0);
     options.track_temp = CelsiusToKelvin(40.0);
-    for (int k = 0; k < 4; ++k) {
-      options.initial.tyres[k] = {car.initial.tread_temp, car.initial.carcass_temp, 0.0};
-      options.initial.brakes[k] = {car.initial.disc_temp, car.initial.calliper_temp};
-    }
+    options.initial = sim::CarStartState(car);  // the car's initial_state (car.yaml)
     const sim::QssResult result = sim::RunQssLap(car, road, options);
     std::printf("%s on %s (%.1f m)\n", car.name.c_str(), track.name().c_str(), track.length_m());
     for (size_t i = 0; i < result.laps.size(); ++i) {

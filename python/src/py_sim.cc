@@ -75,7 +75,9 @@ py::dict Replay(const vehicle::Car& car, const py::handle& telemetry, bool heat_
 py::dict QssLap(const vehicle::Car& car, const track::Track& track, int laps, double step_m,
                 const std::filesystem::path& line_path, double line_margin_m, double ambient_C,
                 double track_C, std::optional<double> tread_C, std::optional<double> carcass_C,
-                std::optional<double> disc_C, std::optional<double> calliper_C) {
+                std::optional<double> disc_C, std::optional<double> calliper_C,
+                std::optional<double> rim_C, std::optional<double> disc_bulk_C,
+                const std::string& caution_laps, double caution_speed_kph) {
   const std::string line = line_path.string();  // a name or a file (str or os.PathLike)
   vehicle::RequireVehicle(car, "hotlap.qss_lap");
   if (laps < 1 || laps > 1000) throw InputError(fmt::format("laps {} must be in [1, 1000]", laps));
@@ -99,14 +101,18 @@ py::dict QssLap(const vehicle::Car& car, const track::Track& track, int laps, do
   options.track_length = track.length_m();
   options.ambient_temp = CelsiusToKelvin(ambient_C);
   options.track_temp = CelsiusToKelvin(track_C);
+  options.caution_laps = sim::ParseLapList(caution_laps, laps, "caution_laps");
+  options.caution_speed = sim::CheckCautionSpeed(caution_speed_kph, "caution_speed_kph");
   const auto pick = [](const std::optional<double>& c, double kelvin) {
     return c ? CelsiusToKelvin(*c) : kelvin;
   };
   for (int k = 0; k < 4; ++k) {
     options.initial.tyres[k] = {pick(tread_C, car.initial.tread_temp),
-                                pick(carcass_C, car.initial.carcass_temp), 0.0};
+                                pick(carcass_C, car.initial.carcass_temp), 0.0,
+                                pick(rim_C, car.initial.rim_temp)};
     options.initial.brakes[k] = {pick(disc_C, car.initial.disc_temp),
-                                 pick(calliper_C, car.initial.calliper_temp)};
+                                 pick(calliper_C, car.initial.calliper_temp),
+                                 pick(disc_bulk_C, car.initial.disc_bulk_temp)};
   }
   sim::QssResult result;
   {
@@ -218,6 +224,8 @@ void BindSim(py::module_& m) {
         py::arg("ambient_temp_C") = 25.0, py::arg("track_temp_C") = 40.0,
         py::arg("tread_temp_C") = py::none(), py::arg("carcass_temp_C") = py::none(),
         py::arg("disc_temp_C") = py::none(), py::arg("calliper_temp_C") = py::none(),
+        py::arg("rim_temp_C") = py::none(), py::arg("disc_bulk_temp_C") = py::none(),
+        py::arg("caution_laps") = "", py::arg("caution_speed_kph") = 110.0,
         "Quasi-steady-state laps with the thermal models, on the minimum-curvature line, the "
         "centre line ('centre') or a line from a file (as `hotlap lap --line`): {'channels', "
         "'summary'} as `hotlap lap --method qss` writes them.");

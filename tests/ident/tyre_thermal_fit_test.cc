@@ -85,8 +85,8 @@ TEST_F(TyreThermalFitTest, NoSlidingLeavesP1Undetermined) {
     std::fill(in.corners[CornerIndex(kCorner)].slip_ratio.begin(),
               in.corners[CornerIndex(kCorner)].slip_ratio.end(), 0.0);
     sim::ReplayInitialState initial;
-    for (auto& t : initial.tyres) t = {333.15, 333.15, 0.0};
-    for (auto& b : initial.brakes) b = {423.15, 353.15};
+    for (auto& t : initial.tyres) t = {333.15, 333.15, 0.0, 318.15};
+    for (auto& b : initial.brakes) b = {423.15, 353.15, 393.15};
     const sim::ReplayResult r = sim::RunReplay(truth_, in, initial, {});
     sim::GaussianNoise noise(3);
     const auto& h = r.corners[CornerIndex(kCorner)];

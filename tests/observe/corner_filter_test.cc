@@ -69,14 +69,12 @@ size_t BrakingSample(const sim::ReplayInputs& in, int c) {
 TEST(CornerFilterTest, WithoutReadingsTheMeansAreReplays) {
   const Fixture f;
   const sim::ReplayInputs& in = f.in;
-  sim::ReplayInitialState initial;
-  for (int c = 0; c < 4; ++c) {
-    initial.tyres[c] = {f.car.initial.tread_temp, f.car.initial.carcass_temp, 0.0};
-    initial.brakes[c] = {f.car.initial.disc_temp, f.car.initial.calliper_temp};
-  }
+  // The filters run the paper's models (docs/observer.md): their means are that replay's.
+  const vehicle::Car paper = vehicle::PaperModelsOf(f.car);
+  const sim::ReplayInitialState initial = sim::CarStartState(paper);
   sim::ReplayOptions options;
   options.max_step_s = f.config.max_step_s;
-  const sim::ReplayResult replay = sim::RunReplay(f.car, in, initial, options);
+  const sim::ReplayResult replay = sim::RunReplay(paper, in, initial, options);
 
   CarObserver observer(f.car, f.config);
   double worst = 0.0;

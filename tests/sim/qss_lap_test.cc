@@ -26,8 +26,8 @@ QssOptions Options(int laps = 1) {
   o.ambient_temp = CelsiusToKelvin(25.0);
   o.track_temp = CelsiusToKelvin(40.0);
   for (int k = 0; k < 4; ++k) {
-    o.initial.tyres[k] = {car.initial.tread_temp, car.initial.carcass_temp, 0.0};
-    o.initial.brakes[k] = {car.initial.disc_temp, car.initial.calliper_temp};
+    o.initial.tyres[k] = CarStartState(car).tyres[k];
+    o.initial.brakes[k] = CarStartState(car).brakes[k];
   }
   return o;
 }

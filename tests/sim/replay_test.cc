@@ -36,14 +36,7 @@ ReplayInputs ExampleInputs() {
   return ReplayInputsFromTelemetry(log, {});
 }
 
-ReplayInitialState WarmStart(const vehicle::Car& car) {
-  ReplayInitialState s;
-  for (int c = 0; c < 4; ++c) {
-    s.tyres[c] = {car.initial.tread_temp, car.initial.carcass_temp, 0.0};
-    s.brakes[c] = {car.initial.disc_temp, car.initial.calliper_temp};
-  }
-  return s;
-}
+ReplayInitialState WarmStart(const vehicle::Car& car) { return CarStartState(car); }
 
 // Largest difference of any temperature (K) between two results on the same samples.
 double MaxTemperatureDifference(const ReplayResult& a, const ReplayResult& b) {
@@ -107,8 +100,8 @@ TEST(ReplayTest, ConvergesAtFourthOrderOnSmoothInputs) {
   }
   ReplayInitialState start;
   for (int c = 0; c < 4; ++c) {
-    start.tyres[c] = {CelsiusToKelvin(48.0), CelsiusToKelvin(50.0), 0.0};
-    start.brakes[c] = {CelsiusToKelvin(300.0), CelsiusToKelvin(120.0)};
+    start.tyres[c] = {CelsiusToKelvin(48.0), CelsiusToKelvin(50.0), 0.0, CelsiusToKelvin(40.0)};
+    start.brakes[c] = {CelsiusToKelvin(300.0), CelsiusToKelvin(120.0), CelsiusToKelvin(250.0)};
   }
   const auto final_temps = [&](double step) {
     ReplayOptions o;
@@ -137,6 +130,76 @@ TEST(ReplayTest, ConvergesAtFourthOrderOnSmoothInputs) {
   EXPECT_GT(errors[0], 1e-9);  // the test resolves a real error
   EXPECT_NEAR(order1, 4.0, 0.6);
   EXPECT_NEAR(order2, 4.0, 0.6);
+}
+
+// With the paper's models (thermal_model paper, disc_model lumped) the replay is the published
+// two-mass tyre and lumped disc integrated apart, bit for bit: the same integrator the fits use
+// (sim::IntegrateTyre, sim::IntegrateBrake), so the gas-and-rim model left the paper's untouched.
+TEST(ReplayTest, ThePaperModelsReplayAsPublished) {
+  const vehicle::Car car = vehicle::PaperModelsOf(Gen7());
+  const ReplayInputs in = ExampleInputs();
+  const ReplayInitialState start = WarmStart(car);
+  const ReplayResult r = RunReplay(car, in, start, {});
+  for (Corner c : kAllCorners) {
+    const int i = CornerIndex(c);
+    const CornerHistory& h = r.corners[i];
+    EXPECT_TRUE(h.gas_temp.empty() && h.rim_temp.empty() && h.disc_bulk_temp.empty());
+    const CornerSamples samples = CornerSamplesOf(in, c);
+    size_t checked = 0;
+    IntegrateTyre<double>(car.tyre(c).params, *car.tyre(c).compound, samples, start.tyres[i], 0.02,
+                          [&](size_t k, const tyre::TyreState<double>& x) {
+                            ASSERT_EQ(h.tread_temp[k], x.tread_temp) << k;
+                            ASSERT_EQ(h.carcass_temp[k], x.carcass_temp) << k;
+                            ASSERT_EQ(h.wear[k], x.wear) << k;
+                            ++checked;
+                          });
+    IntegrateBrake<double>(car.brake(c).params, BrakeSamplesOf(in, c), start.brakes[i], 0.02,
+                           [&](size_t k, const brake::BrakeState<double>& x) {
+                             ASSERT_EQ(h.disc_temp[k], x.disc_temp) << k;
+                             ASSERT_EQ(h.calliper_temp[k], x.calliper_temp) << k;
+                             ++checked;
+                           });
+    EXPECT_EQ(checked, 2 * in.time.size());
+  }
+  // The audit closes for the paper's models too (it is bookkeeping), and says where their carcass
+  // heat comes from: nothing the car pays for.
+  for (const CornerEnergyAudit& a : r.audits.at(0)) {
+    EXPECT_LT(std::abs(a.TyreClosure()), 1e-9);
+    EXPECT_LT(std::abs(a.BrakeClosure()), 1e-9);
+  }
+}
+
+// The gas-and-rim car over the same log: each balance closes to rounding, a stretch boundary
+// splits the run's audit into two that add up to it, and no tyre makes more heat than work.
+TEST(ReplayTest, TheAuditClosesAndAddsUpOverStretches) {
+  const vehicle::Car car = Gen7();
+  const ReplayInputs in = ExampleInputs();
+  const ReplayResult whole = RunReplay(car, in, WarmStart(car), {});
+  ReplayOptions split;
+  split.audit_starts = {in.time.size() / 3};
+  const ReplayResult parts = RunReplay(car, in, WarmStart(car), split);
+  ASSERT_EQ(whole.audits.size(), 1u);
+  ASSERT_EQ(parts.audits.size(), 2u);
+  for (int c = 0; c < 4; ++c) {
+    const CornerEnergyAudit& a = whole.audits[0][c];
+    EXPECT_TRUE(a.has_rim);
+    EXPECT_GT(a.GeneratedHeat(), 0.0);
+    EXPECT_LT(std::abs(a.TyreClosure()), 1e-9);
+    EXPECT_LT(std::abs(a.RimClosure()), 1e-9);
+    EXPECT_LT(std::abs(a.BrakeClosure()), 1e-9);
+    EXPECT_LE(a.HeatOverWork(), 1.0);
+    const CornerEnergyAudit& p = parts.audits[0][c];
+    const CornerEnergyAudit& q = parts.audits[1][c];
+    EXPECT_NEAR(p.GeneratedHeat() + q.GeneratedHeat(), a.GeneratedHeat(), 1e-9 * a.GeneratedHeat());
+    EXPECT_NEAR(p.tyre_stored + q.tyre_stored, a.tyre_stored, 1e-6);
+    EXPECT_NEAR(p.duration_s + q.duration_s, a.duration_s, 1e-9);
+  }
+  ReplayOptions bad;
+  bad.audit_starts = {0};
+  EXPECT_THROW(RunReplay(car, in, WarmStart(car), bad), InputError);
+  ReplayInitialState no_rim = WarmStart(car);
+  no_rim.tyres[1].rim_temp = 0.0;
+  EXPECT_THROW(RunReplay(car, in, no_rim, {}), InputError);
 }
 
 TEST(ReplayTest, HistoryStatsUseTimeWeightedMean) {

@@ -72,10 +72,9 @@ TEST_F(SynthTest, WritesTheSharedFormatWithEveryChannelAFitNeeds) {
 }
 
 TEST_F(SynthTest, TruthIsTheReplayOfTheWrittenInputs) {
-  ReplayInitialState initial;
-  for (auto& s : initial.tyres) s = {car_->initial.tread_temp, car_->initial.carcass_temp, 0.0};
-  for (auto& s : initial.brakes) s = {car_->initial.disc_temp, car_->initial.calliper_temp};
-  const ReplayResult r = RunReplay(*car_, log_->inputs, initial, {});
+  // The truth runs the paper's models (synth.h).
+  const vehicle::Car paper = vehicle::PaperModelsOf(*car_);
+  const ReplayResult r = RunReplay(paper, log_->inputs, CarStartState(paper), {});
   for (int c = 0; c < 4; ++c) {
     EXPECT_EQ(r.corners[c].tread_temp, log_->truth.corners[c].tread_temp);
     EXPECT_EQ(r.corners[c].disc_temp, log_->truth.corners[c].disc_temp);
@@ -129,10 +128,9 @@ TEST_F(SynthTest, SameSeedSameLogOtherSeedOtherNoise) {
 
 // The stochastic truth with zero intensities is the deterministic replay, interval by interval.
 TEST_F(SynthTest, StochasticTruthWithoutNoiseIsTheReplay) {
-  ReplayInitialState initial;
-  for (auto& s : initial.tyres) s = {car_->initial.tread_temp, car_->initial.carcass_temp, 0.0};
-  for (auto& s : initial.brakes) s = {car_->initial.disc_temp, car_->initial.calliper_temp};
-  const ReplayResult r = RunStochasticReplay(*car_, log_->inputs, initial, 0.02, {}, 1);
+  const vehicle::Car paper = vehicle::PaperModelsOf(*car_);
+  const ReplayResult r =
+      RunStochasticReplay(paper, log_->inputs, CarStartState(paper), 0.02, {}, 1);
   for (int c = 0; c < 4; ++c) {
     const CornerHistory& a = r.corners[c];
     const CornerHistory& b = log_->truth.corners[c];

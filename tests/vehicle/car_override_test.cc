@@ -161,11 +161,13 @@ TEST(CarOverride, DuctFactorScalesTheConvectiveConductance) {
       EXPECT_NEAR(q.calliper_convection.Conductance(u, t), 0.5 * calliper, 1e-12 * calliper);
     }
   }
-  std::set<std::string> expected;
+  // The duct's air also cools a bulk disc's vanes: their conductance scales with it.
+  EXPECT_NEAR(q.bulk_convection, 0.5 * p.bulk_convection, 1e-12);
+  std::set<std::string> expected = {"brakes.fl.disc_bulk.vane_convection_W_per_K"};
   for (const brake::BrakeThermalField& f : brake::BrakeThermalFields()) {
     if (f.polynomial && f.Of(p) != 0.0) expected.insert("brakes.fl." + f.Path());
   }
-  EXPECT_EQ(expected.size(), 12u);
+  EXPECT_EQ(expected.size(), 13u);
   EXPECT_EQ(Differences(Numbers(plain), Numbers(car)), expected);
   EXPECT_EQ(car.vehicle->chassis.mass, plain.vehicle->chassis.mass);
 }

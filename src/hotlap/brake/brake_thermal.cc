@@ -74,7 +74,7 @@ BrakeInputTerms<T> CalcBrakeInputTerms(const BrakeThermalParams<T>& p, const Bra
 
 template <Scalar T>
 BrakeHeatFlows<T> CalcBrakeHeatFlows(const BrakeThermalParams<T>& p, const BrakeState<T>& x,
-                                     const BrakeInputTerms<T>& t) {
+                                     const BrakeInputTerms<T>& t, const T& rim_temp) {
   const T& td = x.disc_temp;
   const T& tk = x.calliper_temp;
   const T& t0 = t.input.cooling_air_temp;
@@ -87,6 +87,25 @@ BrakeHeatFlows<T> CalcBrakeHeatFlows(const BrakeThermalParams<T>& p, const Brake
   q.q4 = p.disc_convection.Conductance(t.disc_at_speed, td) * (td - t0);          // (000:30)
   q.q5 = t.constants.calliper_radiation * (tk2 * tk2 - t.cooling_air_temp4);      // (000:29)
   q.q6 = p.calliper_convection.Conductance(t.calliper_at_speed, tk) * (tk - t0);  // (000:31)
+  if (p.HasBulk()) {
+    using std::abs;
+    using std::exp;
+    using std::log;
+    const T& tb = x.bulk_temp;
+    // The share of the surface's radiation that the rim sees leaves against the rim's temperature.
+    const T tr2 = rim_temp * rim_temp;
+    q.radiation_to_rim = p.rim_view_fraction * t.constants.disc_radiation * (td2 * td2 - tr2 * tr2);
+    q.q3 = (1.0 - p.rim_view_fraction) * q.q3;
+    q.to_bulk = p.bulk_conductance * (td - tb);
+    // Vane flow: G (still + (1 - still) (|u| / 50 m/s)^0.8), as the tyre's conductances.
+    const T u = abs(t.input.speed);
+    const T speed_factor = ValueOf(u) == 0.0
+                               ? p.bulk_still_air_fraction
+                               : p.bulk_still_air_fraction + (1.0 - p.bulk_still_air_fraction) *
+                                                                 exp(0.8 * log(T(u / 50.0)));
+    q.bulk_convection = p.bulk_convection * speed_factor * (tb - t0);
+    q.hub_to_rim = p.hub_conductance * (tb - rim_temp);
+  }
   return q;
 }
 
@@ -98,12 +117,20 @@ BrakeHeatFlows<T> CalcBrakeHeatFlows(const BrakeThermalParams<T>& p, const Brake
 
 template <Scalar T>
 BrakeState<T> CalcBrakeDerivatives(const BrakeThermalParams<T>& p, const BrakeState<T>& x,
-                                   const BrakeInputTerms<T>& t, BrakeHeatFlows<T>* flows) {
-  const BrakeHeatFlows<T> q = CalcBrakeHeatFlows(p, x, t);
+                                   const BrakeInputTerms<T>& t, BrakeHeatFlows<T>* flows,
+                                   const T& rim_temp) {
+  const BrakeHeatFlows<T> q = CalcBrakeHeatFlows(p, x, t, rim_temp);
   if (flows != nullptr) *flows = q;
   BrakeState<T> dx;
-  dx.disc_temp =
-      (p.heat_partition * q.q1 - q.q2 - q.q3 - q.q4) * t.constants.inv_disc_capacity;  // (000:24)
+  if (p.HasBulk()) {
+    dx.disc_temp = (p.heat_partition * q.q1 - q.q2 - q.q3 - q.q4 - q.to_bulk - q.radiation_to_rim) *
+                   t.constants.inv_disc_capacity;
+    dx.bulk_temp = (q.to_bulk - q.bulk_convection - q.hub_to_rim) /
+                   ((1.0 - p.mass_participation) * p.disc_mass * p.disc_heat_capacity);
+  } else {
+    dx.disc_temp =
+        (p.heat_partition * q.q1 - q.q2 - q.q3 - q.q4) * t.constants.inv_disc_capacity;  // (000:24)
+  }
   dx.calliper_temp = ((1.0 - p.heat_partition) * q.q1 + q.q2 - q.q5 - q.q6) *
                      t.constants.inv_calliper_capacity;  // (000:25)
   return dx;
@@ -126,13 +153,13 @@ BrakeState<T> CalcBrakeDerivatives(const BrakeThermalParams<T>& p, const BrakeSt
   template BrakeHeatFlows<T> CalcBrakeHeatFlows<T>(const BrakeThermalParams<T>&,                  \
                                                    const BrakeState<T>&, const BrakeInput<T>&);   \
   template BrakeHeatFlows<T> CalcBrakeHeatFlows<T>(                                               \
-      const BrakeThermalParams<T>&, const BrakeState<T>&, const BrakeInputTerms<T>&);             \
+      const BrakeThermalParams<T>&, const BrakeState<T>&, const BrakeInputTerms<T>&, const T&);   \
   template BrakeState<T> CalcBrakeDerivatives<T>(const BrakeThermalParams<T>&,                    \
                                                  const BrakeState<T>&, const BrakeInput<T>&,      \
                                                  BrakeHeatFlows<T>*);                             \
   template BrakeState<T> CalcBrakeDerivatives<T>(const BrakeThermalParams<T>&,                    \
                                                  const BrakeState<T>&, const BrakeInputTerms<T>&, \
-                                                 BrakeHeatFlows<T>*);
+                                                 BrakeHeatFlows<T>*, const T&);
 HOTLAP_FOR_EACH_SCALAR(HOTLAP_INSTANTIATE_BRAKE_THERMAL)
 // The optimal-control lap's brake elements have 5 inputs.
 HOTLAP_INSTANTIATE_BRAKE_THERMAL(::hotlap::SecondOrder<5>)

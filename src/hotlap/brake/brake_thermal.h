@@ -37,6 +37,17 @@ struct ConvectionPolynomial {
   }
 };
 
+/// Which disc a brake runs (the brake file's `disc_model`, docs/models.md).
+enum class DiscModel {
+  /// The paper's lumped disc (000:24): only its surface layer, xi m_d, with no conduction into the
+  /// rest of the disc.
+  kLumped,
+  /// The surface layer on the disc's bulk ((1 - xi) m_d), which soaks heat from it, is cooled by
+  /// the vanes' air, conducts heat through the hub into the rim; a share of the surface's
+  /// radiation falls on the rim. The paper's lumped disc is the case without a bulk.
+  kSurfaceBulk,
+};
+
 /// Parameters of one corner's brake, SI.
 template <Scalar T>
 struct BrakeThermalParams {
@@ -55,6 +66,15 @@ struct BrakeThermalParams {
   T calliper_radiating_area{};  ///< A_cal, m^2 (000:29)
   ConvectionPolynomial<T> disc_convection;      ///< hA_d(u, T_d) (000:30, 32)
   ConvectionPolynomial<T> calliper_convection;  ///< hA_k(u, T_k) (000:31, 33)
+  // The surface-and-bulk disc (DiscModel::kSurfaceBulk); unused by the lumped disc.
+  T bulk_conductance{};         ///< surface layer -> bulk, W/K
+  T bulk_convection{};          ///< bulk -> cooling air through the vanes at 50 m/s, W/K
+  T bulk_still_air_fraction{};  ///< share of bulk_convection left at standstill, 1
+  T hub_conductance{};          ///< bulk -> rim through the hat and hub, W/K
+  T rim_view_fraction{};        ///< share of the surface's radiation that falls on the rim, 1
+  DiscModel disc_model = DiscModel::kLumped;
+
+  bool HasBulk() const { return disc_model == DiscModel::kSurfaceBulk; }
 
   template <class Self>
   static auto FieldsOf(Self& s) {
@@ -62,7 +82,8 @@ struct BrakeThermalParams {
         std::tie(s.heat_partition, s.mass_participation, s.disc_mass, s.disc_heat_capacity,
                  s.calliper_mass, s.calliper_heat_capacity, s.pad_conductivity, s.pad_area,
                  s.pad_thickness, s.disc_emissivity, s.calliper_emissivity, s.disc_radiating_area,
-                 s.calliper_radiating_area),
+                 s.calliper_radiating_area, s.bulk_conductance, s.bulk_convection,
+                 s.bulk_still_air_fraction, s.hub_conductance, s.rim_view_fraction),
         decltype(s.disc_convection)::FieldsOf(s.disc_convection),
         decltype(s.calliper_convection)::FieldsOf(s.calliper_convection));
   }
@@ -70,6 +91,7 @@ struct BrakeThermalParams {
   BrakeThermalParams<U> Cast() const {
     BrakeThermalParams<U> out;
     CastFields(*this, out);
+    out.disc_model = disc_model;
     return out;
   }
 };
@@ -83,17 +105,20 @@ struct BrakeInput {
   T cooling_air_temp{};
 };
 
-/// Disc surface and calliper temperatures, K; the same struct holds their derivatives (K/s).
+/// Disc surface, calliper and (surface-and-bulk disc only) disc bulk temperatures, K; the same
+/// struct holds their derivatives (K/s).
 template <Scalar T>
 struct BrakeState {
   T disc_temp{};
   T calliper_temp{};
+  T bulk_temp{};
 
   friend BrakeState operator+(const BrakeState& a, const BrakeState& b) {
-    return {a.disc_temp + b.disc_temp, a.calliper_temp + b.calliper_temp};
+    return {a.disc_temp + b.disc_temp, a.calliper_temp + b.calliper_temp,
+            a.bulk_temp + b.bulk_temp};
   }
   friend BrakeState operator*(double k, const BrakeState& a) {
-    return {k * a.disc_temp, k * a.calliper_temp};
+    return {k * a.disc_temp, k * a.calliper_temp, k * a.bulk_temp};
   }
 };
 
@@ -107,6 +132,15 @@ struct BrakeHeatFlows {
   T q4{};  ///< disc convection (000:30)
   T q5{};  ///< calliper radiation (000:29)
   T q6{};  ///< calliper convection (000:31)
+  // The surface-and-bulk disc's further flows (zero for the lumped disc); q3 is then the
+  // radiation to the air alone.
+  T to_bulk{};           ///< surface -> bulk
+  T bulk_convection{};   ///< bulk -> air through the vanes
+  T hub_to_rim{};        ///< bulk -> rim through the hub
+  T radiation_to_rim{};  ///< surface -> rim by radiation
+
+  /// The heat the brake gives the rim, W.
+  T ToRim() const { return hub_to_rim + radiation_to_rim; }
 };
 
 /// The parts of the model that depend only on the parameters, computed once per integration.
@@ -161,20 +195,22 @@ BrakeInputTerms<T> CalcBrakeInputTerms(const BrakeThermalParams<T>& params,
 template <Scalar T>
 BrakeHeatFlows<T> CalcBrakeHeatFlows(const BrakeThermalParams<T>& params,
                                      const BrakeState<T>& state, const BrakeInput<T>& input);
-/// All six heat flows from precomputed input terms.
+/// All six heat flows from precomputed input terms; the surface-and-bulk disc's further flows
+/// with the rim at `rim_temp` (K; ignored by the lumped disc).
 template <Scalar T>
 BrakeHeatFlows<T> CalcBrakeHeatFlows(const BrakeThermalParams<T>& params,
-                                     const BrakeState<T>& state, const BrakeInputTerms<T>& terms);
+                                     const BrakeState<T>& state, const BrakeInputTerms<T>& terms,
+                                     const T& rim_temp = T(0.0));
 
 /// Time derivative of the brake state (000:24-25). If `flows` is given, the heat flows used are
 /// written there.
 template <Scalar T>
 BrakeState<T> CalcBrakeDerivatives(const BrakeThermalParams<T>& params, const BrakeState<T>& state,
                                    const BrakeInput<T>& input, BrakeHeatFlows<T>* flows = nullptr);
-/// As above, from precomputed input terms.
+/// As above, from precomputed input terms; `rim_temp` as in CalcBrakeHeatFlows.
 template <Scalar T>
 BrakeState<T> CalcBrakeDerivatives(const BrakeThermalParams<T>& params, const BrakeState<T>& state,
                                    const BrakeInputTerms<T>& terms,
-                                   BrakeHeatFlows<T>* flows = nullptr);
+                                   BrakeHeatFlows<T>* flows = nullptr, const T& rim_temp = T(0.0));
 
 }  // namespace hotlap::brake

@@ -14,6 +14,7 @@ using L = ConvectionPolynomial<double>;
 
 constexpr std::string_view kDisc = "disc_convection_cholesky_sqrtW_per_K";
 constexpr std::string_view kCalliper = "calliper_convection_cholesky_sqrtW_per_K";
+constexpr std::string_view kBulk = "disc_bulk";
 
 // How the log fit bounds and shows the parameters it frees (ident/brake_thermal_fit.cc).
 constexpr FitHint kGammaFit{"gamma", "", 0.0, 1.0, 0.1};
@@ -45,6 +46,12 @@ BrakeThermalField Top(std::string_view key, double P::*member, Range range,
           .range = std::move(range),
           .to_si = to_si,
           .fit = fit};
+}
+
+// A number in a section of its own.
+BrakeThermalField In(std::string_view section, std::string_view key, double P::*member,
+                     Range range) {
+  return {.section = section, .key = key, .member = member, .range = std::move(range)};
 }
 
 // A Cholesky entry; its file range follows its fit hint's (non-negative on the diagonal).
@@ -87,12 +94,17 @@ std::span<const BrakeThermalField> Table() {
       Entry(kCalliper, "l31", &P::calliper_convection, &L::l31, kCalliperFit[3]),
       Entry(kCalliper, "l32", &P::calliper_convection, &L::l32, kCalliperFit[4]),
       Entry(kCalliper, "l33", &P::calliper_convection, &L::l33, kCalliperFit[5]),
+      In(kBulk, "surface_bulk_conductance_W_per_K", &P::bulk_conductance, Range::Positive("W/K")),
+      In(kBulk, "vane_convection_W_per_K", &P::bulk_convection, Range::NonNegative("W/K")),
+      In(kBulk, "still_air_fraction", &P::bulk_still_air_fraction, Range::Closed(0.0, 1.0, "")),
+      In(kBulk, "hub_conductance_W_per_K", &P::hub_conductance, Range::NonNegative("W/K")),
+      In(kBulk, "rim_view_fraction", &P::rim_view_fraction, Range::Closed(0.0, 1.0, "")),
   });
   // clang-format on
   return table;
 }
 
-constexpr std::array<std::string_view, 3> kSections = {"", kDisc, kCalliper};
+constexpr std::array<std::string_view, 4> kSections = {"", kDisc, kCalliper, kBulk};
 
 }  // namespace
 

@@ -45,12 +45,16 @@ struct BrakeThermalField {
 };
 
 /// Every member of BrakeThermalParams<double>, in file order: the top-level keys, then the disc's
-/// and the calliper's convection polynomials (l11, l21, l22, l31, l32, l33 each). The file's
-/// `geometry` map documents the part and is not part of the parameters (brake_params_io.cc).
+/// and the calliper's convection polynomials (l11, l21, l22, l31, l32, l33 each), then the
+/// `disc_bulk` section (read only with `disc_model: surface_bulk`). The file's `geometry` map
+/// documents the part and is not part of the parameters (brake_params_io.cc).
 std::span<const BrakeThermalField> BrakeThermalFields();
 
-/// The sections of the table in file order, "" (the top level) first.
+/// The sections of the table in file order, "" (the top level) first, `disc_bulk` last.
 std::span<const std::string_view> BrakeThermalSections();
+
+/// The section only a surface-and-bulk disc has.
+inline constexpr std::string_view kDiscBulkSection = "disc_bulk";
 
 /// The entries of one section, in file order.
 std::vector<const BrakeThermalField*> BrakeThermalFieldsIn(std::string_view section);

@@ -12,6 +12,8 @@ inline constexpr double kGravity = 9.80665;
 /// 0 degC in kelvin.
 inline constexpr double kZeroCelsius = 273.15;
 inline constexpr double kPi = 3.14159265358979323846;
+/// One pound per square inch in pascals (crew chiefs' pressures).
+inline constexpr double kPsi = 6894.757293168;
 
 constexpr double CelsiusToKelvin(double c) { return c + kZeroCelsius; }
 constexpr double KelvinToCelsius(double k) { return k - kZeroCelsius; }

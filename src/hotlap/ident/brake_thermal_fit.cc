@@ -341,8 +341,11 @@ const std::vector<std::string>& ConvectionMatrixKeys() {
   return keys;
 }
 
-BrakeFitResult FitBrakeCorner(const brake::BrakeFile& brake, const BrakeCornerData& d,
+BrakeFitResult FitBrakeCorner(const brake::BrakeFile& any_brake, const BrakeCornerData& d,
                               const LogFitOptions& options) {
+  // The fit identifies the paper's lumped disc (docs/fitting.md): a bulk disc is fitted as it.
+  brake::BrakeFile brake = any_brake;
+  brake.params.disc_model = brake::DiscModel::kLumped;
   const std::span<const double> time = d.samples.time;
   if (time.empty()) throw InputError("the log has no samples");
   BrakeFitResult r;

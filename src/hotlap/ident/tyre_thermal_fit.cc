@@ -271,8 +271,12 @@ const std::vector<std::string>& TyreParameterKeys() {
   return keys;
 }
 
-TyreFitResult FitTyreCorner(const tyre::TyreFile& tyre, const TyreCornerData& d,
+TyreFitResult FitTyreCorner(const tyre::TyreFile& any_tyre, const TyreCornerData& d,
                             const LogFitOptions& options) {
+  // The fit identifies the paper's two masses (docs/fitting.md): a gas-and-rim tyre is fitted as
+  // its paper part.
+  tyre::TyreFile tyre = any_tyre;
+  tyre.params.model = tyre::TyreThermalModel::kPaper;
   const std::span<const double> time = d.samples.time;
   if (time.empty()) throw InputError("the log has no samples");
   TyreFitResult r;

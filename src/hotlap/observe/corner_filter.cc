@@ -68,15 +68,30 @@ void CheckTemperature(double temp, const char* what, double time) {
 
 }  // namespace
 
+namespace {
+
+// The filters' states are the paper's (docs/observer.md): a gas-and-rim tyre is observed as its
+// paper part, a bulk disc as the lumped one.
+tyre::TyreThermalParams<double> PaperPart(tyre::TyreThermalParams<double> p) {
+  p.model = tyre::TyreThermalModel::kPaper;
+  return p;
+}
+brake::BrakeThermalParams<double> LumpedPart(brake::BrakeThermalParams<double> p) {
+  p.disc_model = brake::DiscModel::kLumped;
+  return p;
+}
+
+}  // namespace
+
 TyreFilter::TyreFilter(const tyre::TyreThermalParams<double>& params,
                        std::shared_ptr<const tyre::TyreCompound> compound,
                        const ProcessNoise& process, const P5Scale& p5_scale, double max_step_s,
                        double tread_lag_s)
     : with_p5_(p5_scale.estimate),
-      params_(params),
-      params_jet2_(params.Cast<Jet2>()),
-      params_jet5_(params.Cast<Jet5>()),
-      constants_(tyre::CalcTyreConstants(params)),
+      params_(PaperPart(params)),
+      params_jet2_(params_.Cast<Jet2>()),
+      params_jet5_(params_.Cast<Jet5>()),
+      constants_(tyre::CalcTyreConstants(params_)),
       compound_(std::move(compound)),
       max_step_s_(max_step_s),
       lag_({kTread}, {tread_lag_s}) {
@@ -170,9 +185,9 @@ void TyreFilter::PredictWith(const sim::CornerSamples& in, const tyre::TyreTherm
 BrakeFilter::BrakeFilter(const brake::BrakeThermalParams<double>& params,
                          const ProcessNoise& process, double max_step_s, double disc_lag_s,
                          double calliper_lag_s)
-    : params_(params),
-      params_jet_(params.Cast<Jet2>()),
-      constants_(brake::CalcBrakeConstants(params)),
+    : params_(LumpedPart(params)),
+      params_jet_(params_.Cast<Jet2>()),
+      constants_(brake::CalcBrakeConstants(params_)),
       max_step_s_(max_step_s),
       lag_({kDisc, kCalliper}, {disc_lag_s, calliper_lag_s}) {
   q_ << process.disc_temp, process.calliper_temp;

@@ -84,6 +84,7 @@ struct Builder {
   std::array<tyre::TyreThermalParams<double>, 4> tyre_d;
   std::array<tyre::TyreThermalParams<SecondOrder<10>>, 4> tyre_so;
   std::array<tyre::TyreThermalParams<Jet10>, 4> tyre_jet;
+  std::array<brake::BrakeThermalParams<double>, 4> brake_d;
   std::array<brake::BrakeThermalParams<SecondOrder<5>>, 4> brake_so;
   std::array<brake::BrakeThermalParams<Jet5>, 4> brake_jet;
   std::array<double, 4> rolling{};
@@ -115,21 +116,19 @@ struct Builder {
       }
     }
     for (int k = 0; k < 4; ++k) {
+      // The programme's states are the paper's two masses and lumped disc
+      // (docs/optimal-control.md): a gas-and-rim tyre or a bulk disc runs here as its paper part.
       tyre_d[k] = car.tyres[k].params;
+      tyre_d[k].model = tyre::TyreThermalModel::kPaper;
       tyre_d[k].smoothing = options.thermal_smoothing;
       tyre_so[k] = tyre_d[k].Cast<SecondOrder<10>>();
       tyre_jet[k] = tyre_d[k].Cast<Jet10>();
-      brake_so[k] = car.brakes[k].params.Cast<SecondOrder<5>>();
-      brake_jet[k] = car.brakes[k].params.Cast<Jet5>();
+      brake_d[k] = car.brakes[k].params;
+      brake_d[k].disc_model = brake::DiscModel::kLumped;
+      brake_so[k] = brake_d[k].Cast<SecondOrder<5>>();
+      brake_jet[k] = brake_d[k].Cast<Jet5>();
       // Rolling resistance as the QSS takes it: -My / (R Fz) at a quarter of the weight.
-      const vehicle::CornerSetup& setup = p.corners[k];
-      tyre::TyreOperatingPoint<double> op;
-      op.fz = 0.25 * p.Weight();
-      op.camber = setup.camber;
-      op.speed = 50.0;
-      op.pressure = setup.pressure;
-      rolling[k] = std::max(
-          0.0, -tyre::CalcTyreForces(setup.forces, op).my / (setup.rolling_radius * op.fz));
+      rolling[k] = vehicle::CalcFreeRollingCoefficient(p.corners[k], 0.25 * p.Weight());
     }
   }
 
@@ -522,8 +521,8 @@ struct Builder {
           options.track_temp});
       const double share =
           IsFront(corner) ? 0.5 * p.brakes.front_share : 0.5 * (1.0 - p.brakes.front_share);
-      brake_fns[c] = std::make_shared<internal::BrakeFn>(internal::BrakeFn{
-          &car.brakes[c].params, &brake_so[c], &brake_jet[c], share, options.ambient_temp});
+      brake_fns[c] = std::make_shared<internal::BrakeFn>(
+          internal::BrakeFn{&brake_d[c], &brake_so[c], &brake_jet[c], share, options.ambient_temp});
       brake_elements[c] = MakeElement<5, 2>(*brake_fns[c]);
     }
     layout.nodes = intervals + 1;

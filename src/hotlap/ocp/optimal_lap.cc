@@ -16,15 +16,6 @@ namespace hotlap::ocp {
 
 namespace {
 
-sim::ReplayInitialState CarStart(const vehicle::Car& car) {
-  sim::ReplayInitialState s;
-  for (int k = 0; k < 4; ++k) {
-    s.tyres[k] = {car.initial.tread_temp, car.initial.carcass_temp, 0.0};
-    s.brakes[k] = {car.initial.disc_temp, car.initial.calliper_temp};
-  }
-  return s;
-}
-
 // The QSS options of the warm-up's first two laps (and of the QSS lap on the optimal line).
 sim::QssOptions WarmUpQss(const vehicle::Car& car, const track::Track& track,
                           const OptimalLapOptions& options) {
@@ -32,7 +23,7 @@ sim::QssOptions WarmUpQss(const vehicle::Car& car, const track::Track& track,
   qss.laps = 2;
   qss.ambient_temp = options.ambient_temp;
   qss.track_temp = options.track_temp;
-  qss.initial = CarStart(car);
+  qss.initial = sim::CarStartState(car);
   qss.track_length = track.length_m();
   return qss;
 }
@@ -47,8 +38,10 @@ ThermalStart ParseThermalStart(const std::string& name) {
   throw InputError(fmt::format("thermal start '{}': expected racing, warm, car or periodic", name));
 }
 
-LapWarmUp RunLapWarmUp(const vehicle::Car& car, const track::Track& track,
+LapWarmUp RunLapWarmUp(const vehicle::Car& any_car, const track::Track& track,
                        const OptimalLapOptions& options) {
+  // The programme runs the paper's models (lap_problem.cc): so do its warm-up laps.
+  const vehicle::Car car = vehicle::PaperModelsOf(any_car);
   vehicle::RequireVehicle(car, "the optimal lap");
   // On the minimum-curvature line from the car's starting state: one out-lap (the warm start),
   // or laps until the carcasses rise slowly (the racing start); the flying lap after it seeds the
@@ -92,15 +85,17 @@ LapWarmUp RunLapWarmUp(const vehicle::Car& car, const track::Track& track,
     warm.laps[1] = std::move(sim::RunQssLap(car, road, one).laps[0]);
   }
   if (options.thermal_start == ThermalStart::kCar) {
-    w.start = CarStart(car);
+    w.start = sim::CarStartState(car);
     w.start_laps = 0;
   }
   w.guess = std::move(warm.laps[1]);
   return w;
 }
 
-OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
+OptimalLapRun RunOptimalLap(const vehicle::Car& any_car, const track::Track& track,
                             const OptimalLapOptions& options, const LapWarmUp* warm_up) {
+  // The programme runs the paper's models (lap_problem.cc): so do its guess and its replay.
+  const vehicle::Car car = vehicle::PaperModelsOf(any_car);
   vehicle::RequireVehicle(car, "the optimal lap");
   const LapWarmUp own_warm_up = warm_up ? LapWarmUp{} : RunLapWarmUp(car, track, options);
   const LapWarmUp& w = warm_up ? *warm_up : own_warm_up;

@@ -5,14 +5,40 @@
 
 namespace hotlap::sim {
 
+nlohmann::json LapCornerJson(const CornerLapMeans& m, const CornerEnergyAudit& audit,
+                             const tyre::TyreThermalParams<double>& tyre) {
+  const auto celsius = [](double k) { return RoundSignificant(KelvinToCelsius(k)); };
+  nlohmann::json j = {{"mean_tread_temp_C", celsius(m.tread)},
+                      {"mean_carcass_temp_C", celsius(m.carcass)},
+                      {"mean_disc_temp_C", celsius(m.disc)}};
+  if (m.gas > 0.0) {
+    j["mean_gas_temp_C"] = celsius(m.gas);
+    j["mean_rim_temp_C"] = celsius(m.rim);
+    j["mean_pressure_kPa"] = RoundSignificant(1e-3 * m.pressure);
+    j["peak_pressure_kPa"] = RoundSignificant(1e-3 * m.peak_pressure);
+    j["cold_pressure_kPa"] = RoundSignificant(1e-3 * tyre.cold_pressure);
+    j["mean_pressure_build_psi"] = RoundSignificant((m.pressure - tyre.cold_pressure) / kPsi);
+  }
+  if (m.disc_bulk > 0.0) j["mean_disc_bulk_temp_C"] = celsius(m.disc_bulk);
+  j["energy_audit"] = AuditJson(audit);
+  return j;
+}
+
 nlohmann::json StintJson(const StintSummary& stint, const track::Track& track,
                          const vehicle::Car& car, const std::string& out_csv,
                          const std::string& out_report) {
   nlohmann::json laps = nlohmann::json::array();
   for (const LapFigures& f : stint.laps) {
+    nlohmann::json lap_corners;
+    for (Corner c : kAllCorners) {
+      const int k = CornerIndex(c);
+      lap_corners[std::string(CornerName(c))] =
+          LapCornerJson(f.means[k], f.audit[k], car.tyre(c).params);
+    }
     laps.push_back({{"lap_time_s", RoundSignificant(f.lap_time_s)},
                     {"top_speed_mps", RoundSignificant(f.top_speed)},
-                    {"min_speed_mps", RoundSignificant(f.min_speed)}});
+                    {"min_speed_mps", RoundSignificant(f.min_speed)},
+                    {"corners", lap_corners}});
   }
   nlohmann::json braking = nlohmann::json::array();
   for (const BrakingZone& z : stint.braking_zones) {

@@ -76,6 +76,20 @@ LapFigures CalcLapFigures(const QssLap& lap) {
     f.peak_disc_temp[k] = peak(h.disc_temp);
     f.peak_calliper_temp[k] = peak(h.calliper_temp);
     f.wear[k] = h.wear.back() - h.wear.front();
+    CornerLapMeans& m = f.means[k];
+    const std::vector<double>& t = lap.thermal.time;
+    m.tread = CalcHistoryStats(t, h.tread_temp).mean;
+    m.carcass = CalcHistoryStats(t, h.carcass_temp).mean;
+    m.disc = CalcHistoryStats(t, h.disc_temp).mean;
+    if (!h.gas_temp.empty()) {
+      m.gas = CalcHistoryStats(t, h.gas_temp).mean;
+      m.rim = CalcHistoryStats(t, h.rim_temp).mean;
+      const HistoryStats p = CalcHistoryStats(t, h.pressure);
+      m.pressure = p.mean;
+      m.peak_pressure = p.peak;
+    }
+    if (!h.disc_bulk_temp.empty()) m.disc_bulk = CalcHistoryStats(t, h.disc_bulk_temp).mean;
+    if (!lap.thermal.audits.empty()) f.audit[k] = lap.thermal.audits.front()[k];
   }
   return f;
 }
@@ -96,6 +110,7 @@ ColumnSet LapResultColumns(const QssResult& result, const track::Track& track, d
                track_t = column("track_temp_C");
   struct CornerColumns {
     size_t speed, fx, fy, fz, alpha, kappa, tread, carcass, wear, grip, disc, calliper, power;
+    std::vector<std::pair<size_t, std::vector<double> CornerHistory::*>> extra;  // the models' own
   };
   std::array<CornerColumns, 4> cc;
   for (Corner c : kAllCorners) {
@@ -114,6 +129,12 @@ ColumnSet LapResultColumns(const QssResult& result, const track::Track& track, d
     k.disc = column(fmt::format("disc_temp_{}_C", n));
     k.calliper = column(fmt::format("calliper_temp_{}_C", n));
     k.power = column(fmt::format("brake_power_{}_W", n));
+    // The channels only the gas-and-rim tyre and the bulk disc have.
+    const CornerHistory& first = result.laps.front().thermal.corners[CornerIndex(c)];
+    for (const auto& [name, member] : ModelChannels()) {
+      if (!(first.*member).empty())
+        k.extra.emplace_back(column(fmt::format(fmt::runtime(name), n)), member);
+    }
   }
   const auto push = [&](size_t col, double v) { out.values[col].push_back(v); };
   double distance0 = 0.0, path0 = 0.0, time0 = 0.0;
@@ -153,6 +174,9 @@ ColumnSet LapResultColumns(const QssResult& result, const track::Track& track, d
         push(cc[k].disc, KelvinToCelsius(h.disc_temp[i]));
         push(cc[k].calliper, KelvinToCelsius(h.calliper_temp[i]));
         push(cc[k].power, h.brake_power[i]);
+        for (const auto& [col, member] : cc[k].extra) {
+          push(col, ModelChannelValue(member, (h.*member)[i]));
+        }
       }
     }
     distance0 += lap.centre_distance.back() - lap.centre_distance.front();

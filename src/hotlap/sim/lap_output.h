@@ -30,6 +30,13 @@ struct BrakingZone {
 std::vector<BrakingZone> FindBrakingZones(const QssLap& lap, int lap_number,
                                           double min_decel = 0.5);
 
+/// One corner's lap means (time-weighted), K and Pa; zero where the models have no such node.
+struct CornerLapMeans {
+  double tread = 0.0, carcass = 0.0, disc = 0.0;
+  double gas = 0.0, rim = 0.0, pressure = 0.0, disc_bulk = 0.0;
+  double peak_pressure = 0.0;
+};
+
 /// Per-lap figures.
 struct LapFigures {
   double lap_time_s = 0.0;
@@ -38,6 +45,8 @@ struct LapFigures {
   std::array<double, 4> peak_tread_temp{}, peak_carcass_temp{};  ///< K
   std::array<double, 4> peak_disc_temp{}, peak_calliper_temp{};  ///< K
   std::array<double, 4> wear{};                                  ///< mm lost on this lap
+  std::array<CornerLapMeans, 4> means;                           ///< the lap's means
+  std::array<CornerEnergyAudit, 4> audit;                        ///< the lap's energy audit
 };
 
 LapFigures CalcLapFigures(const QssLap& lap);

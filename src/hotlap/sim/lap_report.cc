@@ -1,6 +1,7 @@
 #include "hotlap/sim/lap_report.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,70 @@
 #include "hotlap/report/html_report.h"
 
 namespace hotlap::sim {
+
+namespace {
+
+// Lap by lap: each corner's lap means (do the temperatures and pressures settle?) and the last
+// lap's energy audit (docs/lap-simulation.md, "Heat over a run").
+void AddRunSettling(report::HtmlReport& page, const StintSummary& stint) {
+  page.AddHeading("Heat over the run");
+  std::vector<double> lap_numbers;
+  for (size_t l = 0; l < stint.laps.size(); ++l) lap_numbers.push_back(static_cast<double>(l + 1));
+  const auto per_lap = [&](const char* title, const char* label, const char* unit,
+                           double CornerLapMeans::*member, double scale, double offset) {
+    report::LineChart chart{.title = title,
+                            .x_axis = {.label = "lap", .unit = ""},
+                            .y_axis = {.label = label, .unit = unit}};
+    for (Corner c : kAllCorners) {
+      std::vector<double> y;
+      for (const LapFigures& f : stint.laps) {
+        y.push_back(scale * (f.means[CornerIndex(c)].*member) + offset);
+      }
+      chart.series.push_back(
+          {.label = std::string(CornerName(c)), .x = lap_numbers, .y = y, .corner = c});
+    }
+    page.AddLineChart(chart);
+  };
+  per_lap("Lap mean tread temperature", "tread", "\u00b0C", &CornerLapMeans::tread, 1.0,
+          -kZeroCelsius);
+  per_lap("Lap mean carcass temperature", "carcass", "\u00b0C", &CornerLapMeans::carcass, 1.0,
+          -kZeroCelsius);
+  const LapFigures& last = stint.laps.back();
+  if (last.means[0].gas > 0.0) {
+    per_lap("Lap mean gas temperature", "gas", "\u00b0C", &CornerLapMeans::gas, 1.0, -kZeroCelsius);
+    per_lap("Lap mean hot pressure (gauge)", "pressure", "psi", &CornerLapMeans::pressure,
+            1.0 / kPsi, 0.0);
+  }
+  if (last.means[0].disc_bulk > 0.0) {
+    per_lap("Lap mean disc bulk temperature", "disc bulk", "\u00b0C", &CornerLapMeans::disc_bulk,
+            1.0, -kZeroCelsius);
+  }
+  std::vector<std::vector<std::string>> rows;
+  for (Corner c : kAllCorners) {
+    const CornerEnergyAudit& a = last.audit[CornerIndex(c)];
+    const double kw = a.duration_s > 0.0 ? 1e-3 / a.duration_s : 0.0;
+    const TyreEnergies& t = a.tyre;
+    rows.push_back(
+        {std::string(CornerName(c)), fmt::format("{:.2f}", kw * t[kSlidingWork]),
+         fmt::format("{:.2f}", kw * t[kRollingWork]), fmt::format("{:.2f}", kw * t[kTreadHeat]),
+         fmt::format("{:.2f}", kw * t[kCarcassHeat]), fmt::format("{:.3f}", a.HeatOverWork()),
+         fmt::format("{:.2f}", kw * (t[kTreadConvection] + t[kTreadRadiation])),
+         fmt::format("{:.2f}", kw * t[kTrackConduction]),
+         fmt::format("{:.2f}", kw * (t[kSidewallConvection] + t[kSidewallRadiation])),
+         fmt::format("{:.2f}", kw * t[kCarcassToGas]), fmt::format("{:.2f}", kw * t[kBrakeToRim]),
+         fmt::format("{:.2f}", kw * a.brake[kBrakeWork]),
+         fmt::format("{:.1e}", std::max({std::abs(a.TyreClosure()), std::abs(a.RimClosure()),
+                                         std::abs(a.BrakeClosure())}))});
+  }
+  page.AddTable(
+      {.title = fmt::format("Energy audit of lap {} (mean kW; docs/models.md)", stint.laps.size()),
+       .header = {"corner", "sliding work", "rolling work", "tread heat Q1", "carcass heat Q2",
+                  "heat / work", "tread to air", "to track", "sidewalls to air",
+                  "carcass to gas and rim", "brake to rim", "brake work", "largest closure"},
+       .rows = rows});
+}
+
+}  // namespace
 
 void WriteLapReport(const std::filesystem::path& path, const LapReportSettings& a,
                     const vehicle::Car& car, const track::Track& track, const ColumnSet& columns,
@@ -107,8 +172,20 @@ void WriteLapReport(const std::filesystem::path& path, const LapReportSettings& 
   corners_chart("Grip factor g(T) h(wear)", "grip factor", "", "grip_factor_{}");
   corners_chart("Slip angle", "slip angle", "deg", "slip_angle_{}_deg");
   corners_chart("Slip ratio", "slip ratio", "", "slip_ratio_{}");
+  const auto has = [&](const std::string& name) {
+    return std::find(columns.names.begin(), columns.names.end(), name) != columns.names.end();
+  };
+  if (has("gas_temp_fl_C")) {
+    corners_chart("Inflation gas temperature", "gas", "\u00b0C", "gas_temp_{}_C");
+    corners_chart("Hot pressure (gauge)", "pressure", "kPa", "pressure_{}_kPa");
+    corners_chart("Rim temperature", "rim", "\u00b0C", "rim_temp_{}_C");
+  }
+  AddRunSettling(page, stint);
   page.AddHeading("Brakes");
   corners_chart("Disc temperature", "disc", "\u00b0C", "disc_temp_{}_C");
+  if (has("disc_bulk_temp_fl_C")) {
+    corners_chart("Disc bulk temperature", "disc bulk", "\u00b0C", "disc_bulk_temp_{}_C");
+  }
   corners_chart("Calliper temperature", "calliper", "\u00b0C", "calliper_temp_{}_C");
   corners_chart("Braking power", "braking power", "W", "brake_power_{}_W");
   page.Write(path);

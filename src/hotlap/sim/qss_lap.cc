@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include <fmt/format.h>
 
@@ -64,7 +65,8 @@ struct Prepared {
 QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, double track_length,
                 const SpeedProfile& profile, const std::array<std::vector<double>, 4>& grip,
                 const std::array<std::vector<double>, 4>& tread_temp,
-                std::span<const double> cornering_drag, std::vector<double>* solved_drag) {
+                std::span<const double> cornering_drag, std::span<const double> rolling,
+                std::vector<double>* solved_drag) {
   const VehicleParams& p = *prep.params;
   const size_t n = road.size();
   const double ds = road[1].distance - road[0].distance;
@@ -97,7 +99,8 @@ QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, double tr
     const double v_prev = profile.speed[(i + n - 1) % n], v_next = profile.speed[(i + 1) % n];
     const double accel = (v_next * v_next - v_prev * v_prev) / (4.0 * ds);
     const std::array<double, 4> g = {grip[0][i], grip[1][i], grip[2][i], grip[3][i]};
-    const double sum_fx = m * accel + CalcResistance(prep.qss, point, v, cornering_drag[i]);
+    const double sum_fx = m * accel + CalcResistance(prep.qss, point, v, cornering_drag[i],
+                                                     rolling.empty() ? -1.0 : rolling[i]);
     const ForceDemand demand = CalcForceDemand(prep.qss, point, v, sum_fx, g);
     const double kappa_g = point.curvature * std::cos(point.bank);
     const double yaw_rate = v * kappa_g;
@@ -240,17 +243,44 @@ std::vector<double> InterpolatePeriodic(std::span<const RoadPoint> from,
   return out;
 }
 
-ReplayInitialState EndState(const ReplayResult& r) {
-  ReplayInitialState s;
-  for (int k = 0; k < 4; ++k) {
-    const CornerHistory& h = r.corners[k];
-    s.tyres[k] = {h.tread_temp.back(), h.carcass_temp.back(), h.wear.back()};
-    s.brakes[k] = {h.disc_temp.back(), h.calliper_temp.back()};
+}  // namespace
+
+std::vector<int> ParseLapList(const std::string& text, int laps, std::string_view option) {
+  std::vector<int> out;
+  if (text.empty()) return out;
+  std::stringstream items(text);
+  std::string item;
+  while (std::getline(items, item, ',')) {
+    const size_t dash = item.find('-');
+    int first = 0, last = 0;
+    try {
+      size_t used = 0;
+      first = std::stoi(item.substr(0, dash), &used);
+      if (used != (dash == std::string::npos ? item.size() : dash)) throw std::invalid_argument("");
+      last = first;
+      if (dash != std::string::npos) {
+        last = std::stoi(item.substr(dash + 1), &used);
+        if (used != item.size() - dash - 1) throw std::invalid_argument("");
+      }
+    } catch (const std::exception&) {
+      throw InputError(
+          fmt::format("{} '{}': '{}' is not a lap or a range such as 11-15", option, text, item));
+    }
+    if (first < 1 || last > laps || last < first || (!out.empty() && first - 1 <= out.back())) {
+      throw InputError(fmt::format("{} '{}': '{}' must be increasing laps within 1 to {}", option,
+                                   text, item, laps));
+    }
+    for (int l = first; l <= last; ++l) out.push_back(l - 1);
   }
-  return s;
+  return out;
 }
 
-}  // namespace
+double CheckCautionSpeed(double kph, std::string_view option) {
+  if (!(kph > 20.0 && kph <= 250.0)) {
+    throw InputError(fmt::format("{} {:g} must be in (20, 250] km/h", option, kph));
+  }
+  return kph / 3.6;
+}
 
 QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
                     const QssOptions& options) {
@@ -258,7 +288,7 @@ QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
   CheckRoad(road);
   if (options.laps < 1) throw InputError("QSS lap: laps must be >= 1");
   const size_t n = road.size();
-  const Prepared prep(car, params);
+  Prepared prep(car, params);
   // The centre line's length closes centre_distance; a centre-line road is its own.
   const double track_length =
       options.track_length > 0.0 ? options.track_length : n * (road[1].distance - road[0].distance);
@@ -275,6 +305,12 @@ QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
   // The cornering-drag coefficients of the last solution on the full road (CalcResistance): the
   // next lap's first guess, so that it needs one or two profiles where the first needs three.
   std::vector<double> road_drag(n, 0.0);
+  // The rolling-resistance coefficients the last lap's tyres had at each point, where a tyre's
+  // thermal model carries its own (the gas-and-rim tyre: the car pays for its hysteresis); empty:
+  // the car's force models' (CalcResistance).
+  std::vector<double> road_rolling;
+  bool own_rolling = false;
+  for (Corner c : kAllCorners) own_rolling = own_rolling || car.tyre(c).params.HasGasAndRim();
   // One pass: speed profile, forces and slips, thermal replay from `from`. The profile and the
   // forces are solved again with the cornering drag the last forces and slip angles gave, until
   // the speeds move by less than 1 mm/s on average (each coefficient is then its point's own to
@@ -282,21 +318,21 @@ QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
   const auto run_pass =
       [&](std::span<const RoadPoint> r, const std::array<std::vector<double>, 4>& g,
           const std::array<std::vector<double>, 4>& t, const ReplayInitialState& from,
-          std::vector<double>& drag, int max_passes) {
+          std::vector<double>& drag, std::span<const double> rolling, int max_passes) {
         if (max_passes <= 1) std::fill(drag.begin(), drag.end(), 0.0);
-        SpeedProfile profile = CalcSpeedProfile(prep.qss, r, g, drag);
+        SpeedProfile profile = CalcSpeedProfile(prep.qss, r, g, drag, rolling);
         std::vector<double> solved;
-        QssLap lap = BuildLap(prep, r, track_length, profile, g, t, drag, &solved);
+        QssLap lap = BuildLap(prep, r, track_length, profile, g, t, drag, rolling, &solved);
         for (int pass = 1; pass < max_passes; ++pass) {
           drag = solved;
-          SpeedProfile next = CalcSpeedProfile(prep.qss, r, g, drag);
+          SpeedProfile next = CalcSpeedProfile(prep.qss, r, g, drag, rolling);
           // The mean change: a few points where the limit switches (a braking point moving by a
           // point) keep moving by 0.02-0.04 m/s while the rest settle.
           double moved = 0.0;
           for (size_t i = 0; i < r.size(); ++i) moved += std::abs(next.speed[i] - profile.speed[i]);
           moved /= static_cast<double>(r.size());
           profile = std::move(next);
-          lap = BuildLap(prep, r, track_length, profile, g, t, drag, &solved);
+          lap = BuildLap(prep, r, track_length, profile, g, t, drag, rolling, &solved);
           if (moved < 1e-3) break;
         }
         drag = std::move(solved);
@@ -308,18 +344,36 @@ QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
         lap.thermal = RunReplay(car, inputs, from, options.replay);
         return lap;
       };
-  // The grip and tread temperature a lap left at each point drive the next pass.
+  // The grip and tread temperature a lap left at each point drive the next pass; so do the
+  // tyres' rolling-resistance coefficients, weighted by their loads there.
   const auto take_thermal = [&](const QssLap& lap, std::array<std::vector<double>, 4>& g,
-                                std::array<std::vector<double>, 4>& t) {
+                                std::array<std::vector<double>, 4>& t,
+                                std::vector<double>& rolling) {
     for (int k = 0; k < 4; ++k) {
       const CornerHistory& h = lap.thermal.corners[k];
       g[k].assign(h.grip_factor.begin(), h.grip_factor.end() - 1);
       t[k].assign(h.tread_temp.begin(), h.tread_temp.end() - 1);
     }
+    if (!own_rolling) return;
+    const size_t m = lap.speed.size() - 1;
+    rolling.assign(m, 0.0);
+    for (size_t i = 0; i < m; ++i) {
+      double load = 0.0, weighted = 0.0;
+      for (int k = 0; k < 4; ++k) {
+        const CornerHistory& h = lap.thermal.corners[k];
+        const double fz = std::max(lap.corners[k].fz[i], 0.0);
+        const double c = h.rolling_resistance.empty() ? prep.qss.rolling_coefficient[k]
+                                                      : h.rolling_resistance[i];
+        load += fz;
+        weighted += c * fz;
+      }
+      rolling[i] = load > 0.0 ? weighted / load : -1.0;
+    }
   };
 
   QssResult result;
   for (int lap_index = 0; lap_index < options.laps; ++lap_index) {
+    prep.qss.speed_cap = options.SpeedCapOfLap(lap_index);
     if (lap_index == 0 && options.couple_first_lap) {
       // Thermal coupling of the first lap: a first pass on a road of about 4 m spacing (the
       // temperatures it gives vary over tens of metres) from the starting temperatures, its grip
@@ -331,18 +385,21 @@ QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
         t[k].assign(coarse.size(), tread[k][0]);
       }
       std::vector<double> coarse_drag(coarse.size(), 0.0);
+      std::vector<double> coarse_rolling;
       // Two profiles here: this pass only sets the grip the real one starts from.
       const QssLap first =
-          run_pass(coarse, g, t, state, coarse_drag, std::min(options.max_drag_passes, 2));
-      take_thermal(first, g, t);
+          run_pass(coarse, g, t, state, coarse_drag, {}, std::min(options.max_drag_passes, 2));
+      take_thermal(first, g, t, coarse_rolling);
       for (int k = 0; k < 4; ++k) {
         grip[k] = InterpolatePeriodic(coarse, g[k], road);
         tread[k] = InterpolatePeriodic(coarse, t[k], road);
       }
       road_drag = InterpolatePeriodic(coarse, coarse_drag, road);  // the full road's first guess
+      if (own_rolling) road_rolling = InterpolatePeriodic(coarse, coarse_rolling, road);
     }
-    QssLap lap = run_pass(road, grip, tread, state, road_drag, options.max_drag_passes);
-    take_thermal(lap, grip, tread);
+    QssLap lap =
+        run_pass(road, grip, tread, state, road_drag, road_rolling, options.max_drag_passes);
+    take_thermal(lap, grip, tread, road_rolling);
     state = EndState(lap.thermal);
     result.laps.push_back(std::move(lap));
   }

@@ -24,13 +24,18 @@
 /// Thermal coupling: a lap's grip factors come from the previous lap's temperatures and wear at
 /// the same point; the first lap is run twice, first at the starting temperatures.
 ///
+/// Rolling resistance: a gas-and-rim tyre's own coefficient (its carcass hysteresis, falling with
+/// carcass temperature and pressure), from the last lap at each point, weighted by the tyres'
+/// loads; the paper's tyres roll with their force model's coefficient at nominal load.
+///
 /// Simplifications (stated, not hidden): the car follows the centre line with no body slip in
 /// the limit search; yaw moments of the longitudinal forces and of the spool are left out of the
-/// axle split; rolling resistance uses each tyre's coefficient at its nominal load; steady-state
-/// tyres (no relaxation).
+/// axle split; steady-state tyres (no relaxation).
 
 #include <array>
 #include <span>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "hotlap/sim/replay.h"
@@ -72,6 +77,18 @@ struct QssOptions {
   /// takes the coefficients the last forces and slip angles gave, until the speeds move by less
   /// than 1 mm/s on average.
   int max_drag_passes = 6;
+  /// Laps run behind the pace car (0-based indices, increasing): every point of those laps at
+  /// most `caution_speed`; the temperatures and pressures fall as they do under a caution.
+  std::vector<int> caution_laps;
+  double caution_speed = 0.0;  ///< m/s, > 0 where there are caution laps
+
+  /// The speed cap of lap `index`, m/s (0: none).
+  double SpeedCapOfLap(int index) const {
+    for (int l : caution_laps) {
+      if (l == index) return caution_speed;
+    }
+    return 0.0;
+  }
 };
 
 /// One lap's profile and the per-corner channels the thermal models ran on; N + 1 samples (the
@@ -97,6 +114,13 @@ struct QssLap {
 struct QssResult {
   std::vector<QssLap> laps;
 };
+
+/// The 0-based lap indices of a list such as "11-15,40" (1-based laps, ranges inclusive,
+/// increasing, each in [1, laps]); empty text: none. InputError naming `option` otherwise.
+std::vector<int> ParseLapList(const std::string& text, int laps, std::string_view option);
+/// A caution's pace-car speed in km/h as m/s, checked in (20, 250] km/h (InputError naming
+/// `option`).
+double CheckCautionSpeed(double kph, std::string_view option);
 
 /// Runs the QSS lap(s). `road` must have at least 16 points at uniform spacing. InputError if the
 /// car has no vehicle sections or the road is malformed; NumericalError if no speed is feasible

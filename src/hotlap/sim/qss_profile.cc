@@ -34,13 +34,8 @@ QssVehicle::QssVehicle(const VehicleParams& p) : params(&p) {
     const vehicle::CornerSetup& setup = p.corner(c);
     capacity.emplace_back(setup, max_load, 48, kCapacitySpeed);
     // Rolling resistance coefficient at a quarter of the weight, free rolling.
-    tyre::TyreOperatingPoint<double> op;
-    op.fz = 0.25 * p.Weight();
-    op.camber = setup.camber;
-    op.speed = kCapacitySpeed;
-    op.pressure = setup.pressure;
-    const double my = tyre::CalcTyreForces(setup.forces, op).my;
-    rolling_coefficient[CornerIndex(c)] = std::max(0.0, -my / (setup.rolling_radius * op.fz));
+    rolling_coefficient[CornerIndex(c)] =
+        vehicle::CalcFreeRollingCoefficient(setup, 0.25 * p.Weight());
   }
 }
 
@@ -124,14 +119,17 @@ ForceDemand CalcForceDemand(const QssVehicle& car, const RoadPoint& point, doubl
 }
 
 double CalcResistance(const QssVehicle& car, const RoadPoint& point, double speed,
-                      double cornering_drag) {
+                      double cornering_drag, double rolling_coefficient) {
   const VehicleParams& p = *car.params;
   const vehicle::AeroLoads<double> aero = vehicle::CalcAeroLoads(p.aero, speed);
   const double normal = p.chassis.mass * (kGravity * std::cos(point.bank) * std::cos(point.grade) +
                                           speed * speed * point.curvature * std::sin(point.bank)) +
                         aero.downforce_front + aero.downforce_rear;
-  double crr = 0.0;
-  for (double c : car.rolling_coefficient) crr += 0.25 * c;
+  double crr = rolling_coefficient;
+  if (crr < 0.0) {
+    crr = 0.0;
+    for (double c : car.rolling_coefficient) crr += 0.25 * c;
+  }
   const double lateral = cornering_drag == 0.0 ? 0.0 : CalcLateralForce(car, point, speed);
   return aero.drag + crr * normal + p.chassis.mass * kGravity * std::sin(point.grade) +
          cornering_drag * lateral * lateral;
@@ -171,11 +169,12 @@ double LargestFeasible(double lo, double f_lo, double hi, double f_hi, double to
 }  // namespace
 
 double CalcCorneringLimit(const QssVehicle& car, const RoadPoint& point,
-                          const std::array<double, 4>& grip, double cornering_drag) {
+                          const std::array<double, 4>& grip, double cornering_drag,
+                          double rolling_coefficient) {
   const double power = car.params->powertrain.WheelPower();
   // Excess over the limits: tyre utilisation beyond 1, or power beyond the wheel power.
   const auto excess = [&](double v) {
-    const double fx = CalcResistance(car, point, v, cornering_drag);
+    const double fx = CalcResistance(car, point, v, cornering_drag, rolling_coefficient);
     const double u = CalcForceDemand(car, point, v, fx, grip).max_utilization;
     return std::max(u - 1.0, (fx * v - power) / power);
   };
@@ -216,12 +215,17 @@ double CalcMaxBrakeForce(const QssVehicle& car, const RoadPoint& point, double s
 
 SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> road,
                               const std::array<std::vector<double>, 4>& grip,
-                              std::span<const double> cornering_drag) {
+                              std::span<const double> cornering_drag,
+                              std::span<const double> rolling) {
   const size_t n = road.size();
   if (!cornering_drag.empty() && cornering_drag.size() != n) {
     throw std::invalid_argument("CalcSpeedProfile: one cornering-drag coefficient per point");
   }
+  if (!rolling.empty() && rolling.size() != n) {
+    throw std::invalid_argument("CalcSpeedProfile: one rolling-resistance coefficient per point");
+  }
   const auto drag_at = [&](size_t i) { return cornering_drag.empty() ? 0.0 : cornering_drag[i]; };
+  const auto rolling_at = [&](size_t i) { return rolling.empty() ? -1.0 : rolling[i]; };
   const double ds = road[1].distance - road[0].distance;
   const double m = car.params->chassis.mass;
   const auto grip_at = [&](size_t i) {
@@ -231,13 +235,17 @@ SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> 
   out.cornering_limit.resize(n);
   out.limit.assign(n, SpeedLimit::kCornering);
   for (size_t i = 0; i < n; ++i) {
-    out.cornering_limit[i] = CalcCorneringLimit(car, road[i], grip_at(i), drag_at(i));
+    out.cornering_limit[i] =
+        CalcCorneringLimit(car, road[i], grip_at(i), drag_at(i), rolling_at(i));
     if (!(out.cornering_limit[i] > 0.0)) {
       throw NumericalError(fmt::format(
           "QSS lap: no speed is feasible at {:.1f} m (curvature {:.5f} 1/m, bank {:.1f} deg): "
           "the tyres cannot hold the car there",
           road[i].distance, road[i].curvature, RadToDeg(road[i].bank)));
     }
+  }
+  if (car.speed_cap > 0.0) {
+    for (double& v : out.cornering_limit) v = std::min(v, car.speed_cap);
   }
   // Start both passes at the slowest corner, where the speed is its cornering limit.
   const size_t start =
@@ -250,7 +258,8 @@ SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> 
     SpeedLimit why = SpeedLimit::kTraction;
     const double v = out.speed[prev];
     const double drive = CalcMaxDriveForce(car, road[prev], v, grip_at(prev), &why);
-    const double a = (drive - CalcResistance(car, road[prev], v, drag_at(prev))) / m;
+    const double a =
+        (drive - CalcResistance(car, road[prev], v, drag_at(prev), rolling_at(prev))) / m;
     const double reachable = std::sqrt(std::max(v * v + 2.0 * a * ds, 0.25));
     if (reachable < out.speed[i] - 1e-6) {  // a limit search tolerance is not a limit
       out.speed[i] = reachable;
@@ -262,7 +271,8 @@ SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> 
     const size_t next = (start + n - k + 1) % n, i = (start + n - k) % n;
     const double v = out.speed[next];
     const double brake = CalcMaxBrakeForce(car, road[next], v, grip_at(next));
-    const double d = (brake + CalcResistance(car, road[next], v, drag_at(next))) / m;
+    const double d =
+        (brake + CalcResistance(car, road[next], v, drag_at(next), rolling_at(next))) / m;
     const double reachable = std::sqrt(std::max(v * v + 2.0 * d * ds, 0.25));
     if (reachable < out.speed[i] - 1e-6) {  // a limit search tolerance is not a limit
       out.speed[i] = reachable;

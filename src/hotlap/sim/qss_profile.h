@@ -20,6 +20,8 @@ struct QssVehicle {
   const vehicle::VehicleParams* params = nullptr;
   std::vector<vehicle::TyreCapacity> capacity;  ///< per corner (CornerIndex)
   std::array<double, 4> rolling_coefficient{};  ///< -My / (R Fz) at zero slip, nominal load
+  /// The highest speed the driver takes anywhere, m/s (a caution lap behind the pace car); 0: none.
+  double speed_cap = 0.0;
 
   explicit QssVehicle(const vehicle::VehicleParams& p);
 };
@@ -52,9 +54,11 @@ double CalcLateralForce(const QssVehicle& car, const RoadPoint& point, double sp
 /// against the direction it travels (the power its lateral sliding dissipates, over the speed);
 /// taken as `cornering_drag` times the squared total lateral force (CalcLateralForce), quadratic
 /// as in the tyres' linear range, the coefficient measured at the point's last solution
-/// (CalcCorneringDragCoefficient) so that it is exact there.
+/// (CalcCorneringDragCoefficient) so that it is exact there. Rolling resistance: the normal load
+/// times `rolling_coefficient` (the tyres' own where their thermal model has one, gas-and-rim
+/// tyres), or times the mean of the car's rolling_coefficient where it is negative.
 double CalcResistance(const QssVehicle& car, const RoadPoint& point, double speed,
-                      double cornering_drag = 0.0);
+                      double cornering_drag = 0.0, double rolling_coefficient = -1.0);
 
 /// The cornering-drag coefficient of CalcResistance at a solved point: sum of -Fy sin(alpha)
 /// over the four tyres (wheel axes, ISO slip angles) over the squared total lateral force, 1/N;
@@ -65,7 +69,8 @@ double CalcCorneringDragCoefficient(const std::array<double, 4>& fy,
 /// Highest speed at which the car holds its speed at `point` with every tyre inside its ellipse
 /// and the power to overcome the resistance (bisection to 1 mm/s). 0 if not even a crawl works.
 double CalcCorneringLimit(const QssVehicle& car, const RoadPoint& point,
-                          const std::array<double, 4>& grip, double cornering_drag = 0.0);
+                          const std::array<double, 4>& grip, double cornering_drag = 0.0,
+                          double rolling_coefficient = -1.0);
 
 /// Largest total drive force (>= 0) at (point, speed) within the ellipses and the wheel power.
 /// Sets `limit` to kPower or kTraction.
@@ -82,10 +87,12 @@ struct SpeedProfile {
   std::vector<SpeedLimit> limit;
 };
 
-/// The closed-lap speed profile for per-point grip factors grip[c][i] and cornering-drag
-/// coefficients (CalcResistance; empty: none).
+/// The closed-lap speed profile for per-point grip factors grip[c][i], cornering-drag
+/// coefficients (CalcResistance; empty: none) and rolling-resistance coefficients (CalcResistance;
+/// empty: the car's), never above the car's speed_cap where it has one.
 SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> road,
                               const std::array<std::vector<double>, 4>& grip,
-                              std::span<const double> cornering_drag = {});
+                              std::span<const double> cornering_drag = {},
+                              std::span<const double> rolling = {});
 
 }  // namespace hotlap::sim

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -11,6 +12,7 @@
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
 #include "hotlap/sim/sampled_inputs.h"
+#include "hotlap/vehicle/vehicle_model.h"
 
 namespace hotlap::sim {
 
@@ -83,56 +85,348 @@ CornerSamples BrakeSamplesOf(const ReplayInputs& in, Corner corner) {
   return s;
 }
 
+ReplayInitialState CarStartState(const vehicle::Car& car) {
+  const vehicle::InitialTemperatures& t = car.initial;
+  ReplayInitialState s;
+  for (int k = 0; k < 4; ++k) {
+    s.tyres[k] = {t.tread_temp, t.carcass_temp, 0.0, t.rim_temp};
+    s.brakes[k] = {t.disc_temp, t.calliper_temp, t.disc_bulk_temp};
+  }
+  return s;
+}
+
+ReplayInitialState StateAt(const ReplayResult& r, size_t k) {
+  ReplayInitialState s;
+  for (int c = 0; c < 4; ++c) {
+    const CornerHistory& h = r.corners[c];
+    s.tyres[c] = {h.tread_temp[k], h.carcass_temp[k], h.wear[k],
+                  h.rim_temp.empty() ? 0.0 : h.rim_temp[k]};
+    s.brakes[c] = {h.disc_temp[k], h.calliper_temp[k],
+                   h.disc_bulk_temp.empty() ? 0.0 : h.disc_bulk_temp[k]};
+  }
+  return s;
+}
+
+ReplayInitialState EndState(const ReplayResult& r) { return StateAt(r, r.time.size() - 1); }
+
+std::span<const std::pair<std::string_view, std::vector<double> CornerHistory::*>> ModelChannels() {
+  static const std::array<std::pair<std::string_view, std::vector<double> CornerHistory::*>, 7>
+      kChannels = {{{"gas_temp_{}_C", &CornerHistory::gas_temp},
+                    {"rim_temp_{}_C", &CornerHistory::rim_temp},
+                    {"pressure_{}_kPa", &CornerHistory::pressure},
+                    {"rolling_resistance_{}", &CornerHistory::rolling_resistance},
+                    {"liner_gas_temp_{}_C", &CornerHistory::liner_gas_temp},
+                    {"liner_pressure_{}_kPa", &CornerHistory::liner_pressure},
+                    {"disc_bulk_temp_{}_C", &CornerHistory::disc_bulk_temp}}};
+  return kChannels;
+}
+
+double ModelChannelValue(std::vector<double> CornerHistory::*member, double si) {
+  if (member == &CornerHistory::pressure || member == &CornerHistory::liner_pressure) {
+    return 1e-3 * si;
+  }
+  if (member == &CornerHistory::rolling_resistance) return si;
+  return KelvinToCelsius(si);
+}
+
+namespace {
+
+using TyreParams = tyre::TyreThermalParams<double>;
+using BrakeParams = brake::BrakeThermalParams<double>;
+
+// Heat held by the nodes, J (from 0 K: only its changes are used).
+double TyreStored(const TyreParams& p, const tyre::TyreState<double>& x) {
+  return p.tread_mass * p.tread_heat_capacity * x.tread_temp +
+         p.carcass_mass * p.carcass_heat_capacity * x.carcass_temp;
+}
+double RimStored(const TyreParams& p, const tyre::TyreState<double>& x) {
+  return p.HasGasAndRim() ? p.rim_mass * p.rim_heat_capacity * x.rim_temp : 0.0;
+}
+double BrakeStored(const BrakeParams& p, const brake::BrakeState<double>& x) {
+  const double disc = p.disc_mass * p.disc_heat_capacity;
+  double e = p.mass_participation * disc * x.disc_temp +
+             p.calliper_mass * p.calliper_heat_capacity * x.calliper_temp;
+  if (p.HasBulk()) e += (1.0 - p.mass_participation) * disc * x.bulk_temp;
+  return e;
+}
+
+// The rates of the accumulated energies, W.
+void TyreRates(const TyreParams& p, const tyre::TyreHeatFlows<double>& q,
+               const tyre::TyreInputTerms<double>& t, double vehicle_rolling, double* d) {
+  using std::abs;
+  d[kSlidingWork] = t.sliding_power;
+  // The gas-and-rim tyre's rolling resistance is the car's; the paper's tyre is rolled by the
+  // vehicle model's coefficient (its .tir's QSY1).
+  d[kRollingWork] =
+      p.HasGasAndRim() ? q.rolling_power : abs(t.input.speed) * vehicle_rolling * abs(t.input.fz);
+  d[kTreadHeat] = q.q1;
+  d[kCarcassHeat] = q.q2;
+  d[kTreadConvection] = q.q3;
+  d[kTrackConduction] = q.q4;
+  d[kTreadRadiation] = q.q6;
+  d[kSidewallRadiation] = q.q7;
+  d[kSidewallConvection] = q.sidewall_convection;
+  d[kCarcassToGas] = q.carcass_to_gas;
+  d[kRimToAir] = q.rim_to_air;
+  d[kBrakeToRim] = q.brake_to_rim;
+}
+void BrakeRates(const brake::BrakeHeatFlows<double>& q, double* d) {
+  d[kBrakeWork] = q.q1;
+  d[kDiscRadiation] = q.q3;
+  d[kDiscConvection] = q.q4;
+  d[kCalliperRadiation] = q.q5;
+  d[kCalliperConvection] = q.q6;
+  d[kVaneConvection] = q.bulk_convection;
+  d[kHubToRim] = q.hub_to_rim;
+  d[kRadiationToRim] = q.radiation_to_rim;
+}
+
+// What a corner's integration leaves at each audit boundary.
+struct Boundary {
+  TyreEnergies tyre{};
+  BrakeEnergies brake{};
+  double tyre_stored = 0.0, rim_stored = 0.0, brake_stored = 0.0;
+};
+
+// Sample k's position among the boundaries, or -1.
+int BoundaryIndex(const std::vector<size_t>& boundaries, size_t k) {
+  const auto it = std::lower_bound(boundaries.begin(), boundaries.end(), k);
+  return it != boundaries.end() && *it == k ? static_cast<int>(it - boundaries.begin()) : -1;
+}
+
+// The first sample, each audit start, the last sample.
+std::vector<size_t> AuditBoundaries(const std::vector<size_t>& starts, size_t n) {
+  std::vector<size_t> b = {0};
+  for (size_t s : starts) {
+    if (s <= b.back() || s >= n - 1) {
+      throw InputError(fmt::format("replay audit start {} is not inside the run (1 to {}) after {}",
+                                   s, n - 2, b.back()));
+    }
+    b.push_back(s);
+  }
+  b.push_back(n - 1);
+  return b;
+}
+
+// Records a tyre state at sample k.
+struct TyreRecorder {
+  const TyreParams& p;
+  const tyre::TyreCompound& compound;
+  const CornerSamples& samples;
+  const ReplayOptions& options;
+  CornerHistory& h;
+  Corner corner;
+
+  void operator()(size_t k, const tyre::TyreState<double>& x, double brake_to_rim) const {
+    CheckTemperature(x.tread_temp, "tread", corner, samples.time[k]);
+    CheckTemperature(x.carcass_temp, "carcass", corner, samples.time[k]);
+    h.tread_temp[k] = x.tread_temp;
+    h.carcass_temp[k] = x.carcass_temp;
+    h.wear[k] = x.wear;
+    h.grip_factor[k] = compound.GripFactor(x.tread_temp, x.wear);
+    if (p.HasGasAndRim()) {
+      CheckTemperature(x.rim_temp, "rim", corner, samples.time[k]);
+      const tyre::TyreGas<double> gas =
+          tyre::CalcTyreGas(p, x.carcass_temp, x.rim_temp, samples.speed[k]);
+      h.rim_temp[k] = x.rim_temp;
+      h.gas_temp[k] = gas.gas_temp;
+      h.pressure[k] = gas.pressure;
+      h.rolling_resistance[k] = gas.rolling_resistance;
+      if (!h.liner_gas_temp.empty()) {
+        h.liner_gas_temp[k] = gas.liner_temp;
+        h.liner_pressure[k] = gas.liner_pressure;
+      }
+    }
+    if (options.record_heat_flows) {
+      const auto q = tyre::CalcTyreHeatFlows(
+          p, x, tyre::CalcTyreInputTerms(p, compound, samples.TyreInputAt<double>(k, 0.0)),
+          brake_to_rim);
+      const std::array<double, 7> flows = {q.q1, q.q2, q.q3, q.q4, q.q5, q.q6, q.q7};
+      for (int i = 0; i < 7; ++i) h.heat_flows[i][k] = flows[i];
+    }
+  }
+};
+
+// Records a brake state at sample k.
+void RecordBrake(size_t k, const brake::BrakeState<double>& x, const BrakeParams& p,
+                 const CornerSamples& samples, CornerHistory& h, Corner c) {
+  CheckTemperature(x.disc_temp, "disc", c, samples.time[k]);
+  CheckTemperature(x.calliper_temp, "calliper", c, samples.time[k]);
+  h.disc_temp[k] = x.disc_temp;
+  h.calliper_temp[k] = x.calliper_temp;
+  h.brake_power[k] = brake::CalcBrakePower(samples.speed[k], samples.fx[k]);
+  if (p.HasBulk()) {
+    CheckTemperature(x.bulk_temp, "disc bulk", c, samples.time[k]);
+    h.disc_bulk_temp[k] = x.bulk_temp;
+  }
+}
+
+// The vehicle model's free-rolling resistance coefficient of each corner (0 for a thermal-only
+// car): what the car spends rolling a paper-model tyre.
+std::array<double, 4> VehicleRollingCoefficients(const vehicle::Car& car) {
+  std::array<double, 4> c{};
+  if (!car.vehicle) return c;
+  for (Corner corner : kAllCorners) {
+    c[CornerIndex(corner)] = vehicle::CalcFreeRollingCoefficient(car.vehicle->corner(corner),
+                                                                 0.25 * car.vehicle->Weight());
+  }
+  return c;
+}
+
+}  // namespace
+
 ReplayResult RunReplay(const vehicle::Car& car, const ReplayInputs& in,
                        const ReplayInitialState& initial, const ReplayOptions& options) {
   const size_t n = CheckTimesAndTemperatures(in);
   if (!(options.max_step_s > 0.0)) throw InputError("replay max step must be > 0 s");
+  const std::vector<size_t> boundaries = AuditBoundaries(options.audit_starts, n);
+  const std::array<double, 4> vehicle_rolling = VehicleRollingCoefficients(car);
 
   ReplayResult result;
   result.time = in.time;
+  result.audits.resize(boundaries.size() - 1);
   for (Corner c : kAllCorners) {
-    const CornerChannels& ch = in.corners[CornerIndex(c)];
+    const int ci = CornerIndex(c);
+    const CornerChannels& ch = in.corners[ci];
     CheckCornerChannels(ch, n, c);
+    if (!ch.brake_fx.empty()) CheckLength(ch.brake_fx, n, "brake_fx_" + std::string(CornerName(c)));
 
     const CornerSamples samples = CornerSamplesOf(in, c);
+    const CornerSamples brake_samples = BrakeSamplesOf(in, c);
     const tyre::TyreFile& tyre_file = car.tyre(c);
     const brake::BrakeFile& brake_file = car.brake(c);
-    CornerHistory& h = result.corners[CornerIndex(c)];
+    const TyreParams& tp = tyre_file.params;
+    const BrakeParams& bp = brake_file.params;
+    const tyre::TyreCompound& compound = *tyre_file.compound;
+    CornerHistory& h = result.corners[ci];
     for (auto* v : {&h.tread_temp, &h.carcass_temp, &h.wear, &h.grip_factor, &h.disc_temp,
                     &h.calliper_temp, &h.brake_power}) {
       v->resize(n);
     }
+    // The states only some models have need a start of their own (CarStartState gives the car's).
+    if (tp.HasGasAndRim() && !(initial.tyres[ci].rim_temp > 0.0)) {
+      throw InputError(
+          fmt::format("replay: the starting rim temperature of corner {} is {:g} K; "
+                      "its gas-and-rim tyre needs one (sim::CarStartState gives the car's)",
+                      CornerName(c), initial.tyres[ci].rim_temp));
+    }
+    if (bp.HasBulk() && !(initial.brakes[ci].bulk_temp > 0.0)) {
+      throw InputError(fmt::format(
+          "replay: the starting disc bulk temperature of corner {} is "
+          "{:g} K; its surface-and-bulk disc needs one (sim::CarStartState gives the car's)",
+          CornerName(c), initial.brakes[ci].bulk_temp));
+    }
+    if (tp.HasGasAndRim()) {
+      for (auto* v : {&h.rim_temp, &h.gas_temp, &h.pressure, &h.rolling_resistance}) v->resize(n);
+      if (tp.gas_liner_conductance > 0.0) {
+        h.liner_gas_temp.resize(n);
+        h.liner_pressure.resize(n);
+      }
+    }
+    if (bp.HasBulk()) h.disc_bulk_temp.resize(n);
     if (options.record_heat_flows) {
       for (auto& q : h.heat_flows) q.resize(n);
     }
+    std::vector<Boundary> at(boundaries.size());
+    const TyreRecorder record_tyre{tp, compound, samples, options, h, c};
+    const tyre::TyreConstants<double> tyre_constants = tyre::CalcTyreConstants(tp);
+    const brake::BrakeConstants<double> brake_constants = brake::CalcBrakeConstants(bp);
+    const auto tyre_terms = [&](size_t k, double f, const tyre::TyreInputTerms<double>* near) {
+      return tyre::CalcTyreInputTerms(tp, tyre_constants, compound,
+                                      samples.TyreInputAt<double>(k, f), near);
+    };
+    const auto brake_terms = [&](size_t k, double f) {
+      return brake::CalcBrakeInputTerms(bp, brake_constants,
+                                        brake_samples.BrakeInputAt<double>(k, f));
+    };
 
-    IntegrateTyre<double>(
-        tyre_file.params, *tyre_file.compound, samples, initial.tyres[CornerIndex(c)],
-        options.max_step_s, [&](size_t k, const tyre::TyreState<double>& x) {
-          CheckTemperature(x.tread_temp, "tread", c, in.time[k]);
-          CheckTemperature(x.carcass_temp, "carcass", c, in.time[k]);
-          h.tread_temp[k] = x.tread_temp;
-          h.carcass_temp[k] = x.carcass_temp;
-          h.wear[k] = x.wear;
-          h.grip_factor[k] = tyre_file.compound->GripFactor(x.tread_temp, x.wear);
-          if (options.record_heat_flows) {
-            const auto q =
-                tyre::CalcTyreHeatFlows(tyre_file.params, x, samples.TyreInputAt<double>(k, 0.0));
-            const std::array<double, 7> flows = {q.q1, q.q2, q.q3, q.q4, q.q5, q.q6, q.q7};
-            for (int i = 0; i < 7; ++i) h.heat_flows[i][k] = flows[i];
-          }
-        });
-    if (!ch.brake_fx.empty()) CheckLength(ch.brake_fx, n, "brake_fx_" + std::string(CornerName(c)));
-    const CornerSamples brake_samples = BrakeSamplesOf(in, c);
-    IntegrateBrake<double>(brake_file.params, brake_samples, initial.brakes[CornerIndex(c)],
-                           options.max_step_s, [&](size_t k, const brake::BrakeState<double>& x) {
-                             CheckTemperature(x.disc_temp, "disc", c, in.time[k]);
-                             CheckTemperature(x.calliper_temp, "calliper", c, in.time[k]);
-                             h.disc_temp[k] = x.disc_temp;
-                             h.calliper_temp[k] = x.calliper_temp;
-                             h.brake_power[k] =
-                                 brake::CalcBrakePower(ch.speed[k], brake_samples.fx[k]);
-                           });
+    if (tp.HasGasAndRim()) {
+      // The tyre and its brake together: the rim takes the brake's heat.
+      constexpr size_t kN = kTyreEnergyCount + kBrakeEnergyCount;
+      using State = WithEnergies<WheelState<double>, kN>;
+      using Terms = std::pair<tyre::TyreInputTerms<double>, brake::BrakeInputTerms<double>>;
+      const State start{{initial.tyres[ci], initial.brakes[ci]}, {}};
+      IntegrateOverSamples(
+          samples, start, options.max_step_s,
+          [&](size_t k, double f, const Terms* near) {
+            return Terms{tyre_terms(k, f, near ? &near->first : nullptr), brake_terms(k, f)};
+          },
+          [&](const State& s, const Terms& t) {
+            State d;
+            brake::BrakeHeatFlows<double> bq;
+            d.x.brake =
+                brake::CalcBrakeDerivatives(bp, s.x.brake, t.second, &bq, s.x.tyre.rim_temp);
+            tyre::TyreHeatFlows<double> tq;
+            d.x.tyre = tyre::CalcTyreDerivatives(tp, compound, s.x.tyre, t.first, &tq, bq.ToRim());
+            TyreRates(tp, tq, t.first, vehicle_rolling[ci], d.e.data());
+            BrakeRates(bq, d.e.data() + kTyreEnergyCount);
+            return d;
+          },
+          [&](size_t k, const State& s) {
+            const double to_rim = options.record_heat_flows
+                                      ? brake::CalcBrakeHeatFlows(
+                                            bp, s.x.brake, brake_terms(k, 0.0), s.x.tyre.rim_temp)
+                                            .ToRim()
+                                      : 0.0;
+            record_tyre(k, s.x.tyre, to_rim);
+            RecordBrake(k, s.x.brake, bp, brake_samples, h, c);
+            if (const int b = BoundaryIndex(boundaries, k); b >= 0) {
+              std::copy_n(s.e.begin(), kTyreEnergyCount, at[b].tyre.begin());
+              std::copy_n(s.e.begin() + kTyreEnergyCount, kBrakeEnergyCount, at[b].brake.begin());
+              at[b].tyre_stored = TyreStored(tp, s.x.tyre);
+              at[b].rim_stored = RimStored(tp, s.x.tyre);
+              at[b].brake_stored = BrakeStored(bp, s.x.brake);
+            }
+          },
+          &brake_samples);
+    } else {
+      // The paper's tyre has no rim: tyre and brake run apart, as published.
+      using TyreRun = WithEnergies<tyre::TyreState<double>, kTyreEnergyCount>;
+      IntegrateOverSamples(
+          samples, TyreRun{initial.tyres[ci], {}}, options.max_step_s, tyre_terms,
+          [&](const TyreRun& s, const tyre::TyreInputTerms<double>& t) {
+            TyreRun d;
+            tyre::TyreHeatFlows<double> q;
+            d.x = tyre::CalcTyreDerivatives(tp, compound, s.x, t, &q);
+            TyreRates(tp, q, t, vehicle_rolling[ci], d.e.data());
+            return d;
+          },
+          [&](size_t k, const TyreRun& s) {
+            record_tyre(k, s.x, 0.0);
+            if (const int b = BoundaryIndex(boundaries, k); b >= 0) {
+              at[b].tyre = s.e;
+              at[b].tyre_stored = TyreStored(tp, s.x);
+            }
+          });
+      using BrakeRun = WithEnergies<brake::BrakeState<double>, kBrakeEnergyCount>;
+      IntegrateOverSamples(
+          brake_samples, BrakeRun{initial.brakes[ci], {}}, options.max_step_s,
+          [&](size_t k, double f, const brake::BrakeInputTerms<double>*) {
+            return brake_terms(k, f);
+          },
+          [&](const BrakeRun& s, const brake::BrakeInputTerms<double>& t) {
+            BrakeRun d;
+            brake::BrakeHeatFlows<double> q;
+            // Without a rim the bulk disc's hub and rim shares are zero (vehicle::LoadCar).
+            d.x = brake::CalcBrakeDerivatives(bp, s.x, t, &q, t.input.cooling_air_temp);
+            BrakeRates(q, d.e.data());
+            return d;
+          },
+          [&](size_t k, const BrakeRun& s) {
+            RecordBrake(k, s.x, bp, brake_samples, h, c);
+            if (const int b = BoundaryIndex(boundaries, k); b >= 0) {
+              at[b].brake = s.e;
+              at[b].brake_stored = BrakeStored(bp, s.x);
+            }
+          });
+    }
+    for (size_t b = 0; b + 1 < boundaries.size(); ++b) {
+      result.audits[b][ci] = AuditBetween(
+          at[b].tyre, at[b + 1].tyre, at[b].brake, at[b + 1].brake,
+          at[b + 1].tyre_stored - at[b].tyre_stored, at[b + 1].rim_stored - at[b].rim_stored,
+          at[b + 1].brake_stored - at[b].brake_stored,
+          in.time[boundaries[b + 1]] - in.time[boundaries[b]], tp.HasGasAndRim());
+    }
   }
   return result;
 }
@@ -235,6 +529,12 @@ std::array<CornerReplaySummary, 4> SummarizeReplay(const ReplayResult& result) {
     s.carcass = CalcHistoryStats(t, h.carcass_temp);
     s.disc = CalcHistoryStats(t, h.disc_temp);
     s.calliper = CalcHistoryStats(t, h.calliper_temp);
+    if (!h.gas_temp.empty()) {
+      s.gas = CalcHistoryStats(t, h.gas_temp);
+      s.rim = CalcHistoryStats(t, h.rim_temp);
+      s.pressure = CalcHistoryStats(t, h.pressure);
+    }
+    if (!h.disc_bulk_temp.empty()) s.disc_bulk = CalcHistoryStats(t, h.disc_bulk_temp);
     s.final_wear_mm = h.wear.empty() ? 0.0 : h.wear.back();
     s.min_grip_factor =
         h.grip_factor.empty() ? 0.0 : *std::min_element(h.grip_factor.begin(), h.grip_factor.end());

@@ -9,9 +9,13 @@
 
 #include <array>
 #include <optional>
+#include <span>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "hotlap/common/corner.h"
+#include "hotlap/sim/energy_audit.h"
 #include "hotlap/sim/sampled_inputs.h"
 #include "hotlap/vehicle/car.h"
 
@@ -44,28 +48,57 @@ CornerSamples CornerSamplesOf(const ReplayInputs& inputs, Corner corner);
 /// the inputs have it, as the replay takes it. InputError if brake_fx is not as long as time.
 CornerSamples BrakeSamplesOf(const ReplayInputs& inputs, Corner corner);
 
-/// Starting state of every corner, K and mm.
+/// Starting state of every corner, K and mm (the rims and disc bulks are read by the models that
+/// have them).
 struct ReplayInitialState {
   std::array<tyre::TyreState<double>, 4> tyres;
   std::array<brake::BrakeState<double>, 4> brakes;
 };
 
+/// The car's own starting temperatures (car.yaml's initial_state), no wear.
+ReplayInitialState CarStartState(const vehicle::Car& car);
+
 struct ReplayOptions {
   double max_step_s = 0.02;        ///< longest RK4 sub-step
   bool record_heat_flows = false;  ///< also return q1..q7 of every tyre
+  /// Sample indices (increasing, inside the run) where a new stretch of the energy audit starts;
+  /// empty: one stretch, the whole run.
+  std::vector<size_t> audit_starts;
 };
 
-/// Histories of one corner at the sample times (K, mm, W).
+/// Histories of one corner at the sample times (K, mm, W, Pa).
 struct CornerHistory {
   std::vector<double> tread_temp, carcass_temp, wear, grip_factor;
   std::vector<double> disc_temp, calliper_temp, brake_power;
   std::array<std::vector<double>, 7> heat_flows;  ///< q1..q7, when recorded
+  /// The gas-and-rim tyre's: rim and gas temperatures (K), hot gauge pressure (Pa), rolling
+  /// resistance coefficient; empty for the paper's tyre.
+  std::vector<double> rim_temp, gas_temp, pressure, rolling_resistance;
+  /// The liner's gas (K) and hot gauge pressure (Pa), where the tyre has a liner.
+  std::vector<double> liner_gas_temp, liner_pressure;
+  /// The surface-and-bulk disc's bulk, K; empty for the lumped disc.
+  std::vector<double> disc_bulk_temp;
 };
 
 struct ReplayResult {
   std::vector<double> time;
   std::array<CornerHistory, 4> corners;
+  /// The energy audit of each stretch (ReplayOptions::audit_starts), per corner.
+  std::vector<std::array<CornerEnergyAudit, 4>> audits;
 };
+
+/// The channels only some models have (the gas-and-rim tyre's, the bulk disc's), each with its
+/// column name pattern ({} is the corner), in file order: gas_temp_{}_C, rim_temp_{}_C,
+/// pressure_{}_kPa (hot gauge), rolling_resistance_{}, liner_gas_temp_{}_C, liner_pressure_{}_kPa,
+/// disc_bulk_temp_{}_C. A history whose member is empty has no such channel.
+std::span<const std::pair<std::string_view, std::vector<double> CornerHistory::*>> ModelChannels();
+/// A model channel's SI value in its column's unit (degC, kPa, 1).
+double ModelChannelValue(std::vector<double> CornerHistory::*member, double si);
+
+/// The state of every corner at sample k of a run (as a next run would start from it).
+ReplayInitialState StateAt(const ReplayResult& result, size_t k);
+/// The state at the run's last sample.
+ReplayInitialState EndState(const ReplayResult& result);
 
 /// Checks sizes and values (InputError naming the channel and sample if something is off), then
 /// integrates. Throws NumericalError if a temperature leaves [0 K, 3000 K].
@@ -97,6 +130,9 @@ HistoryStats CalcHistoryStats(const std::vector<double>& time, const std::vector
 /// the lowest grip factor and the brake's work over the run (trapezoid of the brake power, J).
 struct CornerReplaySummary {
   HistoryStats tread, carcass, disc, calliper;
+  /// The gas-and-rim tyre's gas, rim and hot gauge pressure (Pa); the bulk disc's bulk; all zero
+  /// where the models have none.
+  HistoryStats gas, rim, pressure, disc_bulk;
   double final_wear_mm = 0.0;
   double min_grip_factor = 0.0;
   double brake_energy_J = 0.0;

@@ -74,6 +74,9 @@ ReplayInitialState InitialStateFor(const Telemetry& log, const vehicle::Car& car
     s.brakes[i].disc_temp = StartValue(log, "disc_temp", c, o.disc_temp, car.initial.disc_temp);
     s.brakes[i].calliper_temp =
         StartValue(log, "calliper_temp", c, o.calliper_temp, car.initial.calliper_temp);
+    // No logger reads a rim or a disc's bulk: the car's starting values.
+    s.tyres[i].rim_temp = car.initial.rim_temp;
+    s.brakes[i].bulk_temp = car.initial.disc_bulk_temp;
   }
   return s;
 }
@@ -99,6 +102,12 @@ ColumnSet ReplayResultColumns(const ReplayResult& result, bool with_heat_flows) 
     add(fmt::format("disc_temp_{}_C", n), celsius(h.disc_temp));
     add(fmt::format("calliper_temp_{}_C", n), celsius(h.calliper_temp));
     add(fmt::format("brake_power_{}_W", n), h.brake_power);
+    for (const auto& [name, member] : ModelChannels()) {
+      if ((h.*member).empty()) continue;
+      std::vector<double> values = h.*member;
+      for (double& v : values) v = ModelChannelValue(member, v);
+      add(fmt::format(fmt::runtime(name), n), std::move(values));
+    }
     if (with_heat_flows) {
       for (int q = 0; q < 7; ++q) add(fmt::format("q{}_{}_W", q + 1, n), h.heat_flows[q]);
     }

@@ -40,6 +40,18 @@ nlohmann::json ReplayJson(const ReplayResult& result,
         {"min_grip_factor", RoundSignificant(s.min_grip_factor)},
         {"brake_energy_J", RoundSignificant(s.brake_energy_J)},
     };
+    nlohmann::json& j = corners[std::string(CornerName(c))];
+    if (s.gas.peak > 0.0) {
+      j["gas_temp_C"] = StatsJson(s.gas, true);
+      j["rim_temp_C"] = StatsJson(s.rim, true);
+      j["pressure_kPa"] = {{"peak", RoundSignificant(1e-3 * s.pressure.peak)},
+                           {"mean", RoundSignificant(1e-3 * s.pressure.mean)},
+                           {"final", RoundSignificant(1e-3 * s.pressure.final)}};
+    }
+    if (s.disc_bulk.peak > 0.0) j["disc_bulk_temp_C"] = StatsJson(s.disc_bulk, true);
+    // The whole log's audit (the stretches of a replay with audit starts are the library's).
+    if (!result.audits.empty())
+      j["energy_audit"] = AuditJson(result.audits.front()[CornerIndex(c)]);
   }
   return {
       {"command", "replay"},

@@ -55,22 +55,33 @@ inline int SubStepsFor(double length, double max_step) {
 /// zero between samples k and k+1 (speed, fx, fy, slip angle, slip ratio). The models' right-hand
 /// sides have a kink there, which would cost RK4 its order; the integrator steps onto it instead.
 struct Kinks {
-  std::array<double, 5> at{};
+  std::array<double, 10> at{};
   int count = 0;
+
+  /// Inserts `fraction` in order, once (a kink two sample sets share is one kink).
+  void Add(double fraction) {
+    for (int i = 0; i < count; ++i) {
+      if (at[i] == fraction) return;
+    }
+    if (count == static_cast<int>(at.size())) return;
+    int i = count++;
+    for (; i > 0 && at[i - 1] > fraction; --i) at[i] = at[i - 1];
+    at[i] = fraction;
+  }
 };
 
-inline Kinks KinksBetween(const CornerSamples& in, size_t k) {
+/// The kinks of `in` between samples k and k+1; with `also`, those of its inputs too (a tyre and
+/// its brake integrated together: the brake's force may cross zero elsewhere).
+inline Kinks KinksBetween(const CornerSamples& in, size_t k, const CornerSamples* also = nullptr) {
   Kinks kinks;
   const size_t j = k + 1;
-  for (std::span<const double> v : {in.speed, in.fx, in.fy, in.slip_angle, in.slip_ratio}) {
-    const double a = v[k], b = v[j];
-    const bool crosses = (a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0);
-    if (!crosses || kinks.count == static_cast<int>(kinks.at.size())) continue;
-    // Insert in order (at most five entries).
-    const double fraction = a / (a - b);
-    int i = kinks.count++;
-    for (; i > 0 && kinks.at[i - 1] > fraction; --i) kinks.at[i] = kinks.at[i - 1];
-    kinks.at[i] = fraction;
+  for (const CornerSamples* s : {&in, also}) {
+    if (s == nullptr) continue;
+    for (std::span<const double> v : {s->speed, s->fx, s->fy, s->slip_angle, s->slip_ratio}) {
+      const double a = v[k], b = v[j];
+      const bool crosses = (a < 0.0 && b > 0.0) || (a > 0.0 && b < 0.0);
+      if (crosses) kinks.Add(a / (a - b));
+    }
   }
   return kinks;
 }
@@ -81,10 +92,11 @@ inline Kinks KinksBetween(const CornerSamples& in, size_t k) {
 /// k+1, and may reuse parts of `near` (the previous stage's terms, or null). Each interval is
 /// split at the kinks of `samples` and every piece is covered by RK4 steps no longer than
 /// max_step; the input terms are computed once per distinct stage time (a step's end is the next
-/// step's start, across samples too).
+/// step's start, across samples too). With `also_kinks`, its kinks are stepped onto as well.
 template <class State, class TermsAt, class Derivative, class OnSample>
 void IntegrateOverSamples(const CornerSamples& samples, State state, double max_step,
-                          TermsAt&& terms_at, Derivative&& derivative, OnSample&& on_sample) {
+                          TermsAt&& terms_at, Derivative&& derivative, OnSample&& on_sample,
+                          const CornerSamples* also_kinks = nullptr) {
   const std::span<const double> time = samples.time;
   on_sample(size_t{0}, state);
   auto start = terms_at(size_t{0}, 0.0, nullptr);
@@ -95,7 +107,7 @@ void IntegrateOverSamples(const CornerSamples& samples, State state, double max_
     const auto f = [&](const State& x, const auto& terms) {
       return interval * derivative(x, terms);
     };
-    const Kinks kinks = KinksBetween(samples, k);
+    const Kinks kinks = KinksBetween(samples, k, also_kinks);
     double from = 0.0;
     for (int piece = 0; piece <= kinks.count; ++piece) {
       const double to = piece < kinks.count ? kinks.at[piece] : 1.0;
@@ -118,6 +130,37 @@ void IntegrateOverSamples(const CornerSamples& samples, State state, double max_
     on_sample(k + 1, state);
   }
 }
+
+/// A state with energy accumulators (J) integrated beside it by the same Runge-Kutta stages, so
+/// that the accumulated heat flows are exactly the integrator's own (sim/energy_audit.h).
+template <class State, size_t N>
+struct WithEnergies {
+  State x;
+  std::array<double, N> e{};
+
+  friend WithEnergies operator+(const WithEnergies& a, const WithEnergies& b) {
+    WithEnergies r{a.x + b.x, {}};
+    for (size_t i = 0; i < N; ++i) r.e[i] = a.e[i] + b.e[i];
+    return r;
+  }
+  friend WithEnergies operator*(double k, const WithEnergies& a) {
+    WithEnergies r{k * a.x, {}};
+    for (size_t i = 0; i < N; ++i) r.e[i] = k * a.e[i];
+    return r;
+  }
+};
+
+/// A tyre and its brake integrated together (the gas-and-rim tyre's rim takes the brake's heat).
+template <Scalar T>
+struct WheelState {
+  tyre::TyreState<T> tyre;
+  brake::BrakeState<T> brake;
+
+  friend WheelState operator+(const WheelState& a, const WheelState& b) {
+    return {a.tyre + b.tyre, a.brake + b.brake};
+  }
+  friend WheelState operator*(double k, const WheelState& a) { return {k * a.tyre, k * a.brake}; }
+};
 
 /// Integrates one tyre over the samples; `on_sample(k, state)` as above.
 template <Scalar T, class OnSample>

@@ -71,9 +71,11 @@ CornerSamples Interval(const CornerSamples& in, size_t k) {
 
 }  // namespace
 
-ReplayResult RunStochasticReplay(const vehicle::Car& car, const ReplayInputs& in,
+ReplayResult RunStochasticReplay(const vehicle::Car& any_car, const ReplayInputs& in,
                                  const ReplayInitialState& initial, double max_step_s,
                                  const SynthProcessNoise& q, uint64_t seed) {
+  // The stochastic truth is the paper's models' (synth.h).
+  const vehicle::Car car = vehicle::PaperModelsOf(any_car);
   const size_t n = in.time.size();
   if (n < 2) throw InputError("synth: the stochastic truth needs at least two samples");
   if (!(max_step_s > 0.0)) throw InputError("synth: max step must be > 0 s");
@@ -157,18 +159,18 @@ ReplayResult RunStochasticReplay(const vehicle::Car& car, const ReplayInputs& in
   return result;
 }
 
-SynthLog SynthesizeLog(const vehicle::Car& car, std::span<const RoadPoint> road,
+SynthLog SynthesizeLog(const vehicle::Car& any_car, std::span<const RoadPoint> road,
                        const SynthOptions& o) {
   CheckOptions(o);
-  vehicle::RequireVehicle(car, "hotlap synth (the lap simulation)");
+  vehicle::RequireVehicle(any_car, "hotlap synth (the lap simulation)");
+  // The truth is the paper's models, which the fits identify and the observer tracks
+  // (docs/fitting.md): a gas-and-rim tyre or a bulk disc runs as its paper part.
+  const vehicle::Car car = vehicle::PaperModelsOf(any_car);
   ReplayInitialState initial;
   if (o.initial) {
     initial = *o.initial;
   } else {
-    for (int i = 0; i < 4; ++i) {
-      initial.tyres[i] = {car.initial.tread_temp, car.initial.carcass_temp, 0.0};
-      initial.brakes[i] = {car.initial.disc_temp, car.initial.calliper_temp};
-    }
+    initial = CarStartState(car);
   }
   QssOptions qss;
   qss.laps = o.laps;

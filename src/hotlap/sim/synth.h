@@ -78,7 +78,9 @@ struct SynthLog {
   double lap_time_s = 0.0;
 };
 
-/// Runs the lap(s) and the sensors. InputError for bad options (laps < 1, rate <= 0, negative
+/// Runs the lap(s) and the sensors. The truth is the paper's models (vehicle::PaperModelsOf), which
+/// the fits identify and the observer tracks: a gas-and-rim tyre or a bulk disc runs as its paper
+/// part. InputError for bad options (laps < 1, rate <= 0, negative
 /// noise, lag or process noise) and for a car without vehicle sections; RunQssLap's errors
 /// otherwise.
 SynthLog SynthesizeLog(const vehicle::Car& car, std::span<const RoadPoint> road,
@@ -88,7 +90,8 @@ SynthLog SynthesizeLog(const vehicle::Car& car, std::span<const RoadPoint> road,
 /// replay does (sampled_inputs.h, RK4 sub-steps no longer than max_step_s, split at kinks), then
 /// sqrt(q dt) N(0, 1) added to each state, drawn from GaussianNoise(seed) corner by corner (fl,
 /// fr, rl, rr), interval by interval, in the order tread, carcass, wear, then disc, calliper.
-/// With all intensities zero it is RunReplay's result to rounding. NumericalError if a
+/// With all intensities zero it is RunReplay's result to rounding on the paper's models, which it
+/// runs whatever the car's (vehicle::PaperModelsOf). NumericalError if a
 /// temperature leaves [0 K, 3000 K].
 ReplayResult RunStochasticReplay(const vehicle::Car& car, const ReplayInputs& inputs,
                                  const ReplayInitialState& initial, double max_step_s,

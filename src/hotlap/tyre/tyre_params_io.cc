@@ -1,5 +1,7 @@
 #include "hotlap/tyre/tyre_params_io.h"
 
+#include <optional>
+
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
@@ -93,13 +95,25 @@ TyreFile LoadTyreFile(const std::filesystem::path& path,
   out.compound = std::make_shared<const TyreCompound>(LoadTyreCompound(out.compound_path));
 
   TyreThermalParams<double>& p = out.params;
+  // The paper's equations unless the file says otherwise (docs/models.md).
+  const std::string model = y.Has("thermal_model") ? y.Choice("thermal_model", {"paper", "gas_rim"})
+                                                   : std::string("paper");
+  p.model = model == "gas_rim" ? TyreThermalModel::kGasRim : TyreThermalModel::kPaper;
   for (std::string_view section : TyreThermalSections()) {
+    if (IsGasRimSection(section) && !p.HasGasAndRim()) continue;
     YamlReader s = y.Map(section);
     for (const TyreThermalField* f : TyreThermalFieldsIn(section)) {
       const double value = s.Number(f->key, f->range);
       f->Of(p) = FieldToSi(*f, value);
     }
     if (section == "construction") CheckConstruction(s, p);
+    // A car without tyre forces has no set-up pressure: the tyre file may give it
+    // (vehicle::LoadCar).
+    // Read only where present: it is refused for a car with tyre forces, so it is no override key.
+    if (section == "gas" && s.Has("cold_pressure_kPa")) {
+      p.cold_pressure = 1e3 * s.Number("cold_pressure_kPa", Range::Closed(20.0, 1000.0, "kPa"));
+      out.cold_pressure_in_file = true;
+    }
     s.Finish();
   }
   y.Finish();

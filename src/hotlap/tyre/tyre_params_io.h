@@ -22,6 +22,9 @@ struct TyreFile {
   std::filesystem::path compound_path;
   TyreThermalParams<double> params;
   std::shared_ptr<const TyreCompound> compound;
+  /// The gas-and-rim model's cold pressure came from the file's gas.cold_pressure_kPa (for a car
+  /// without tyre forces; a car with them sets it from tyre_forces.<c>.pressure_kPa).
+  bool cold_pressure_in_file = false;
 };
 
 /// Loads a compound file (`model: cubic_grip_wear`).

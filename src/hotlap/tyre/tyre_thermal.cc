@@ -152,9 +152,11 @@ TyreInputTerms<T> CalcHeatInputTerms(const TyreThermalParams<T>& p, const TyreCo
                             (p.non_sliding_fraction_high - p.non_sliding_fraction_low) +
                         p.non_sliding_fraction_low;
   t.adhesion_area = p.contact_width * non_sliding * contact_length;  // A_cp (000:18)
-  t.q1 = p.p1 * speed *
-         (Magnitude(T(in.fx * in.slip_ratio), eps.force_N) +
-          Magnitude(T(in.fy * tan(in.slip_angle)), eps.force_N));  // (000:9)
+  t.patch_area = p.contact_width * contact_length;
+  const T slip_sum = Magnitude(T(in.fx * in.slip_ratio), eps.force_N) +
+                     Magnitude(T(in.fy * tan(in.slip_angle)), eps.force_N);
+  t.q1 = p.p1 * speed * slip_sum;  // (000:9)
+  t.sliding_power = speed * slip_sum;
   t.q2 = speed * k.carcass_heating *
          (p.p2 * Magnitude(in.fx, eps.force_N) + p.p3 * Magnitude(in.fy, eps.force_N) +
           p.p4 * abs(in.fz));  // (000:10)
@@ -209,9 +211,22 @@ TyreInputTerms<T> CalcTyreInputTerms(const TyreThermalParams<T>& p, const TyreCo
   return CalcTyreInputTerms<T>(p, CalcTyreConstants(p), compound, in, nullptr);
 }
 
+namespace {
+
+// G (still + (1 - still) (|u| / 50 m/s)^0.8): the gas-and-rim model's speed-dependent
+// conductances, turbulent forced convection (Nu ~ Re^0.8) above a still-air share.
 template <Scalar T>
-TyreHeatFlows<T> CalcTyreHeatFlows(const TyreThermalParams<T>& p, const TyreState<T>& x,
-                                   const TyreInputTerms<T>& t) {
+T SpeedFactor(const TyreThermalParams<T>& p, const T& speed) {
+  using std::abs;
+  const T u = abs(speed);
+  if (ValueOf(u) == 0.0) return p.still_air_fraction;
+  return p.still_air_fraction +
+         (1.0 - p.still_air_fraction) * PowPositive(T(u / kConductanceReferenceSpeed), 0.8);
+}
+
+// The paper's seven flows (000:9-22).
+template <Scalar T>
+TyreHeatFlows<T> PaperHeatFlows(const TyreState<T>& x, const TyreInputTerms<T>& t) {
   const TyreInput<T>& in = t.input;
   const T film_temp = 0.5 * (x.tread_temp + in.ambient_temp);
   const T tread2 = x.tread_temp * x.tread_temp;
@@ -226,6 +241,114 @@ TyreHeatFlows<T> CalcTyreHeatFlows(const TyreThermalParams<T>& p, const TyreStat
   q.q6 = t.tread_radiation * (tread2 * tread2 - t.ambient_temp4);         // (000:21)
   q.q7 = t.sidewall_radiation * (carcass2 * carcass2 - t.ambient_temp4);  // (000:22)
   return q;
+}
+
+// The gas-and-rim model's flows (docs/models.md): the paper's tread flows on a contact patch
+// shortened by the hot pressure, the carcass heated by the power the car spends on the tyre, and
+// the paths through the sidewalls, the gas and the rim.
+template <Scalar T>
+TyreHeatFlows<T> GasRimHeatFlows(const TyreThermalParams<T>& p, const TyreState<T>& x,
+                                 const TyreInputTerms<T>& t, const T& brake_to_rim) {
+  using std::abs;
+  const TyreInput<T>& in = t.input;
+  const TyreGas<T> gas = CalcTyreGas(p, x.carcass_temp, x.rim_temp, in.speed);
+  // The patch's length scales as (p / p_cold)^-n: a stiffer, hotter tyre has a shorter patch.
+  const T pressure_ratio = gas.pressure / p.cold_pressure;
+  const T patch_scale = PowPositive(T(ValueOf(pressure_ratio) > 0.1 ? pressure_ratio : T(0.1)),
+                                    T(-p.contact_length_pressure_exponent));
+  const T convection_area = t.tread_area - patch_scale * t.patch_area;  // A_conv (000:12)
+  const T adhesion_area = patch_scale * t.adhesion_area;                // A_cp (000:18)
+  const T film_temp = 0.5 * (x.tread_temp + in.ambient_temp);
+  const T tread2 = x.tread_temp * x.tread_temp;
+  const T carcass2 = x.carcass_temp * x.carcass_temp;
+  const T speed_factor = SpeedFactor(p, in.speed);
+  TyreHeatFlows<T> q;
+  q.q1 = t.q1;  // (000:9)
+  // Carcass hysteresis: a share of the sliding power the tread does not take, and all of the
+  // rolling resistance's power (what the car pays for it).
+  q.rolling_power = abs(in.speed) * gas.rolling_resistance * abs(in.fz);
+  q.q2 = p.carcass_slip_share * (1.0 - p.p1) * t.sliding_power + q.rolling_power;
+  q.q3 = 0.0239 / t.length * t.speed_length_pow * convection_area * AirConvectionFactor(film_temp) *
+         (x.tread_temp - in.ambient_temp);                                      // (000:11, 15)
+  q.q4 = p.track_conductance * adhesion_area * (x.tread_temp - in.track_temp);  // (000:17)
+  q.q5 = t.tread_to_carcass * (x.carcass_temp - x.tread_temp);                  // (000:20)
+  q.q6 = p.emissivity * kStefanBoltzmann * (t.tread_area - adhesion_area) *
+         (tread2 * tread2 - t.ambient_temp4);                             // (000:21)
+  q.q7 = t.sidewall_radiation * (carcass2 * carcass2 - t.ambient_temp4);  // (000:22)
+  q.sidewall_convection =
+      p.sidewall_air_conductance * speed_factor * (x.carcass_temp - in.ambient_temp);
+  q.carcass_to_gas = gas.carcass_to_gas;
+  q.rim_to_air = p.rim_air_conductance * speed_factor * (x.rim_temp - in.ambient_temp);
+  q.brake_to_rim = brake_to_rim;
+  return q;
+}
+
+}  // namespace
+
+template <Scalar T>
+TyreGas<T> CalcTyreGas(const TyreThermalParams<T>& p, const T& carcass_temp, const T& rim_temp,
+                       const T& speed) {
+  const T s = SpeedFactor(p, speed);
+  const T g_cg = p.carcass_gas_conductance * s;
+  const T g_gr = p.gas_rim_conductance * s;
+  const T g_gl = p.gas_liner_conductance * s;
+  const T g_lr = p.liner_rim_conductance * s;
+  TyreGas<T> gas;
+  if (ValueOf(g_gl) == 0.0) {
+    // G_cg (T_c - T_g) = G_gr (T_g - T_r)
+    gas.gas_temp = (g_cg * carcass_temp + g_gr * rim_temp) / (g_cg + g_gr);
+    gas.liner_temp = gas.gas_temp;
+  } else {
+    // The tyre's gas between the carcass and the liner, the liner's gas between the liner and the
+    // rim: G_cg (T_c - T_g) = G_gl (T_g - T_l) + G_gr (T_g - T_r), G_gl (T_g - T_l) = G_lr (T_l -
+    // T_r).
+    const T a11 = g_cg + g_gl + g_gr, a22 = g_gl + g_lr;
+    const T b1 = g_cg * carcass_temp + g_gr * rim_temp, b2 = g_lr * rim_temp;
+    const T det = a11 * a22 - g_gl * g_gl;
+    gas.gas_temp = (b1 * a22 + g_gl * b2) / det;
+    gas.liner_temp = (a11 * b2 + g_gl * b1) / det;
+  }
+  // Constant volume: absolute pressure in proportion to the absolute temperature.
+  gas.pressure = (p.cold_pressure + kAtmosphericPressure) * gas.gas_temp / p.cold_set_temp -
+                 kAtmosphericPressure;
+  gas.liner_pressure = ValueOf(g_gl) == 0.0
+                           ? T(0.0)
+                           : (p.cold_pressure + p.liner_pressure_offset + kAtmosphericPressure) *
+                                     gas.liner_temp / p.cold_set_temp -
+                                 kAtmosphericPressure;
+  gas.carcass_to_gas = g_cg * (carcass_temp - gas.gas_temp);
+  gas.rolling_resistance = CalcRollingResistance(p, carcass_temp, gas.pressure);
+  return gas;
+}
+
+template <Scalar T>
+T CalcRollingResistance(const TyreThermalParams<T>& p, const T& carcass_temp, const T& pressure) {
+  using std::exp;
+  const T temp_factor = p.rolling_temp_floor + (1.0 - p.rolling_temp_floor) *
+                                                   exp(-p.rolling_temp_coefficient *
+                                                       (carcass_temp - p.rolling_reference_temp));
+  // Below a tenth of the reference pressure the law is held (a flat tyre is outside it).
+  const T ratio = pressure / p.rolling_reference_pressure;
+  const T pressure_factor =
+      PowPositive(T(ValueOf(ratio) > 0.1 ? ratio : T(0.1)), T(-p.rolling_pressure_exponent));
+  return p.rolling_resistance * temp_factor * pressure_factor;
+}
+
+template <Scalar T>
+TyreMechanicalPower<T> CalcTyreMechanicalPower(const TyreInput<T>& in,
+                                               const T& rolling_coefficient) {
+  using std::abs;
+  using std::tan;
+  const T speed = abs(in.speed);
+  return {speed * (abs(T(in.fx * in.slip_ratio)) + abs(T(in.fy * tan(in.slip_angle)))),
+          speed * rolling_coefficient * abs(in.fz)};
+}
+
+template <Scalar T>
+TyreHeatFlows<T> CalcTyreHeatFlows(const TyreThermalParams<T>& p, const TyreState<T>& x,
+                                   const TyreInputTerms<T>& t, const T& brake_to_rim) {
+  if (p.HasGasAndRim()) return GasRimHeatFlows(p, x, t, brake_to_rim);
+  return PaperHeatFlows(x, t);
 }
 
 template <Scalar T>
@@ -245,13 +368,20 @@ T CalcWearRate(const TyreThermalParams<T>& params, const TyreCompound& compound,
 template <Scalar T>
 TyreState<T> CalcTyreDerivatives(const TyreThermalParams<T>& p, const TyreCompound& compound,
                                  const TyreState<T>& x, const TyreInputTerms<T>& t,
-                                 TyreHeatFlows<T>* flows) {
-  const TyreHeatFlows<T> q = CalcTyreHeatFlows(p, x, t);
+                                 TyreHeatFlows<T>* flows, const T& brake_to_rim) {
+  const TyreHeatFlows<T> q = CalcTyreHeatFlows(p, x, t, brake_to_rim);
   if (flows != nullptr) *flows = q;
   TyreState<T> dx;
   dx.tread_temp = (q.q1 - q.q3 - q.q4 + q.q5 - q.q6) * t.inv_tread_capacity;  // (000:7)
-  dx.carcass_temp = (q.q2 - q.q5 - q.q7) * t.inv_carcass_capacity;            // (000:8)
-  dx.wear = t.wear_rate_factor * compound.wear_rate.Evaluate(x.tread_temp);   // (000:23)
+  if (p.HasGasAndRim()) {
+    dx.carcass_temp =
+        (q.q2 - q.q5 - q.q7 - q.sidewall_convection - q.carcass_to_gas) * t.inv_carcass_capacity;
+    dx.rim_temp =
+        (q.carcass_to_gas + q.brake_to_rim - q.rim_to_air) / (p.rim_mass * p.rim_heat_capacity);
+  } else {
+    dx.carcass_temp = (q.q2 - q.q5 - q.q7) * t.inv_carcass_capacity;  // (000:8)
+  }
+  dx.wear = t.wear_rate_factor * compound.wear_rate.Evaluate(x.tread_temp);  // (000:23)
   return dx;
 }
 
@@ -276,7 +406,10 @@ TyreState<T> CalcTyreDerivatives(const TyreThermalParams<T>& p, const TyreCompou
   template TyreHeatFlows<T> CalcTyreHeatFlows<T>(const TyreThermalParams<T>&, const TyreState<T>&, \
                                                  const TyreInput<T>&);                             \
   template TyreHeatFlows<T> CalcTyreHeatFlows<T>(const TyreThermalParams<T>&, const TyreState<T>&, \
-                                                 const TyreInputTerms<T>&);                        \
+                                                 const TyreInputTerms<T>&, const T&);              \
+  template TyreGas<T> CalcTyreGas<T>(const TyreThermalParams<T>&, const T&, const T&, const T&);   \
+  template T CalcRollingResistance<T>(const TyreThermalParams<T>&, const T&, const T&);            \
+  template TyreMechanicalPower<T> CalcTyreMechanicalPower<T>(const TyreInput<T>&, const T&);       \
   template T CalcWearRate<T>(const TyreThermalParams<T>&, const TyreCompound&, const T&,           \
                              const T&);                                                            \
   template TyreState<T> CalcTyreDerivatives<T>(const TyreThermalParams<T>&, const TyreCompound&,   \
@@ -284,7 +417,7 @@ TyreState<T> CalcTyreDerivatives(const TyreThermalParams<T>& p, const TyreCompou
                                                TyreHeatFlows<T>*);                                 \
   template TyreState<T> CalcTyreDerivatives<T>(const TyreThermalParams<T>&, const TyreCompound&,   \
                                                const TyreState<T>&, const TyreInputTerms<T>&,      \
-                                               TyreHeatFlows<T>*);
+                                               TyreHeatFlows<T>*, const T&);
 HOTLAP_FOR_EACH_SCALAR(HOTLAP_INSTANTIATE_TYRE_THERMAL)
 // The optimal-control lap's thermal elements have 10 inputs.
 HOTLAP_INSTANTIATE_TYRE_THERMAL(::hotlap::SecondOrder<10>)

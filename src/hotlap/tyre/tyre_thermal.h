@@ -29,6 +29,27 @@ struct TyreThermalSmoothing {
   double angle_rad = 0.0;  ///< eps for |alpha| in the non-sliding share (000:19), rad
 };
 
+/// Which equations a tyre runs (the tyre file's `thermal_model`, docs/models.md).
+enum class TyreThermalModel {
+  /// The paper's two masses (000:7-22) as published: the carcass heated by (000:10), cooled only
+  /// through the tread and by sidewall radiation. Fitted on one lap; over a run its carcass has
+  /// no exit for its heat.
+  kPaper,
+  /// The same two masses with the inflation gas (quasi-static, with an inner liner where one is
+  /// run), the rim (heated by the gas and the brake, cooled by the air) and the sidewalls'
+  /// convection; the carcass heated only by power the car spends on the tyre: a share of the
+  /// sliding power and the rolling resistance, whose coefficient falls with carcass temperature
+  /// and inflation pressure (000, beside equation 10: "a nonlinear function of the temperature and
+  /// the inflation-induced initial stress"). The hot pressure shortens the contact patch.
+  kGasRim,
+};
+
+/// Reference speed of the speed-dependent conductances of the gas-and-rim model, m/s: each is
+/// G (still + (1 - still) (|u| / 50 m/s)^0.8), the turbulent forced-convection law.
+inline constexpr double kConductanceReferenceSpeed = 50.0;
+/// Standard atmosphere, Pa: gauge pressures are above it.
+inline constexpr double kAtmosphericPressure = 101325.0;
+
 /// Parameters of one tyre; SI units (angles in rad).
 template <Scalar T>
 struct TyreThermalParams {
@@ -44,21 +65,46 @@ struct TyreThermalParams {
   T contact_length_coeff{};     ///< p_cp1
   T contact_length_exponent{};  ///< p_cp2
   // Constants (000 Table 3).
-  T tread_mass{};                  ///< m_t, kg
-  T carcass_mass{};                ///< m_c, kg
-  T tread_heat_capacity{};         ///< c_t, J/(kg K)
-  T carcass_heat_capacity{};       ///< c_c, J/(kg K)
-  T track_conductance{};           ///< h_tt, W/(m^2 K) (000:17)
-  T contact_width{};               ///< c_w, m
-  T reference_slip_angle{};        ///< alpha_c, rad (000:19)
-  T non_sliding_fraction_low{};    ///< c_s1 (000:19)
-  T non_sliding_fraction_high{};   ///< c_s2 (000:19)
-  T unloaded_radius{};             ///< r0, m (000:22)
-  T rim_radius{};                  ///< r_rim, m (000:22)
-  T diameter{};                    ///< D, m, as printed (see the file comment)
-  T width{};                       ///< W, m
-  T emissivity{};                  ///< eps of rubber, 1
+  T tread_mass{};                 ///< m_t, kg
+  T carcass_mass{};               ///< m_c, kg
+  T tread_heat_capacity{};        ///< c_t, J/(kg K)
+  T carcass_heat_capacity{};      ///< c_c, J/(kg K)
+  T track_conductance{};          ///< h_tt, W/(m^2 K) (000:17)
+  T contact_width{};              ///< c_w, m
+  T reference_slip_angle{};       ///< alpha_c, rad (000:19)
+  T non_sliding_fraction_low{};   ///< c_s1 (000:19)
+  T non_sliding_fraction_high{};  ///< c_s2 (000:19)
+  T unloaded_radius{};            ///< r0, m (000:22)
+  T rim_radius{};                 ///< r_rim, m (000:22)
+  T diameter{};                   ///< D, m, as printed (see the file comment)
+  T width{};                      ///< W, m
+  T emissivity{};                 ///< eps of rubber, 1
+  // The gas-and-rim model (TyreThermalModel::kGasRim); unused by the paper's.
+  T carcass_slip_share{};  ///< share of the sliding power not in the tread that heats the carcass,
+                           ///< 1
+  T rolling_resistance{};  ///< c_rr at the reference carcass temperature and pressure, 1
+  T rolling_reference_temp{};            ///< K
+  T rolling_reference_pressure{};        ///< gauge, Pa
+  T rolling_temp_coefficient{};          ///< k_T of exp(-k_T (T_c - T_ref)), 1/K
+  T rolling_temp_floor{};                ///< share of c_rr that does not fall with temperature, 1
+  T rolling_pressure_exponent{};         ///< n of (p / p_ref)^-n, 1
+  T contact_length_pressure_exponent{};  ///< c_l times (p / p_cold)^-n, 1
+  T cold_set_temp{};                     ///< gas temperature at which the cold pressure is set, K
+  T cold_pressure{};                     ///< gauge, Pa: the car's tyre_forces.<c>.pressure_kPa
+  T liner_pressure_offset{};             ///< the liner's cold pressure above the tyre's, Pa
+  T carcass_gas_conductance{};           ///< carcass -> gas at 50 m/s, W/K
+  T gas_rim_conductance{};               ///< gas -> rim at 50 m/s, W/K
+  T gas_liner_conductance{};  ///< gas -> liner gas through the liner at 50 m/s, W/K (0: no liner)
+  T liner_rim_conductance{};  ///< liner gas -> rim at 50 m/s, W/K
+  T sidewall_air_conductance{};  ///< carcass (sidewalls) -> air at 50 m/s, W/K
+  T rim_air_conductance{};       ///< rim -> air at 50 m/s, W/K
+  T still_air_fraction{};        ///< share of those conductances left at standstill, 1
+  T rim_mass{};                  ///< kg
+  T rim_heat_capacity{};         ///< J/(kg K)
+  TyreThermalModel model = TyreThermalModel::kPaper;
   TyreThermalSmoothing smoothing;  ///< exact model unless an optimiser sets it
+
+  bool HasGasAndRim() const { return model == TyreThermalModel::kGasRim; }
 
   template <class Self>
   static auto FieldsOf(Self& s) {
@@ -67,13 +113,20 @@ struct TyreThermalParams {
                     s.tread_heat_capacity, s.carcass_heat_capacity, s.track_conductance,
                     s.contact_width, s.reference_slip_angle, s.non_sliding_fraction_low,
                     s.non_sliding_fraction_high, s.unloaded_radius, s.rim_radius, s.diameter,
-                    s.width, s.emissivity);
+                    s.width, s.emissivity, s.carcass_slip_share, s.rolling_resistance,
+                    s.rolling_reference_temp, s.rolling_reference_pressure,
+                    s.rolling_temp_coefficient, s.rolling_temp_floor, s.rolling_pressure_exponent,
+                    s.contact_length_pressure_exponent, s.cold_set_temp, s.cold_pressure,
+                    s.liner_pressure_offset, s.carcass_gas_conductance, s.gas_rim_conductance,
+                    s.gas_liner_conductance, s.liner_rim_conductance, s.sidewall_air_conductance,
+                    s.rim_air_conductance, s.still_air_fraction, s.rim_mass, s.rim_heat_capacity);
   }
   /// The same parameters in another scalar type (derivative parts start at zero).
   template <Scalar U>
   TyreThermalParams<U> Cast() const {
     TyreThermalParams<U> out;
     CastFields(*this, out);
+    out.model = model;
     out.smoothing = smoothing;
     return out;
   }
@@ -93,18 +146,21 @@ struct TyreInput {
 };
 
 /// The state of one tyre: temperatures in K, wear (tread depth lost) in mm. The same struct holds
-/// its time derivative (K/s, mm/s).
+/// its time derivative (K/s, mm/s). The rim is a state of the gas-and-rim model only (the paper's
+/// leaves it as it is).
 template <Scalar T>
 struct TyreState {
   T tread_temp{};
   T carcass_temp{};
   T wear{};
+  T rim_temp{};
 
   friend TyreState operator+(const TyreState& a, const TyreState& b) {
-    return {a.tread_temp + b.tread_temp, a.carcass_temp + b.carcass_temp, a.wear + b.wear};
+    return {a.tread_temp + b.tread_temp, a.carcass_temp + b.carcass_temp, a.wear + b.wear,
+            a.rim_temp + b.rim_temp};
   }
   friend TyreState operator*(double k, const TyreState& a) {
-    return {k * a.tread_temp, k * a.carcass_temp, k * a.wear};
+    return {k * a.tread_temp, k * a.carcass_temp, k * a.wear, k * a.rim_temp};
   }
 };
 
@@ -119,6 +175,32 @@ struct TyreHeatFlows {
   T q5{};  ///< conduction from the carcass to the tread (000:20)
   T q6{};  ///< radiation from the tread (000:21)
   T q7{};  ///< radiation from the sidewalls (000:22)
+  // The gas-and-rim model's further flows (zero in the paper's).
+  T sidewall_convection{};  ///< carcass -> air by the sidewalls
+  T carcass_to_gas{};       ///< carcass -> gas, = gas (and liner gas) -> rim (quasi-static gas)
+  T rim_to_air{};           ///< rim -> air
+  T brake_to_rim{};         ///< brake -> rim (hub conduction and the disc's radiation), an input
+  T rolling_power{};        ///< u c_rr |Fz|: the rolling resistance's power, all of it in q2
+};
+
+/// The inflation gas of the gas-and-rim model at one instant (quasi-static: its heat capacity,
+/// about 0.1 kJ/K, settles in seconds against the carcass's 17.6 kJ/K).
+template <Scalar T>
+struct TyreGas {
+  T gas_temp{};            ///< K
+  T liner_temp{};          ///< the liner's gas, K (the gas's own where there is no liner)
+  T pressure{};            ///< hot gauge pressure, Pa (constant volume from the cold set)
+  T liner_pressure{};      ///< the liner's hot gauge pressure, Pa (0 where there is no liner)
+  T carcass_to_gas{};      ///< W, = heat into the rim from the gases
+  T rolling_resistance{};  ///< c_rr at this carcass temperature and pressure, 1
+};
+
+/// What the car spends on one tyre, W: the sliding power u (|Fx kappa| + |Fy tan(alpha)|) (the
+/// force times the slip velocity, longitudinal and lateral) and the rolling resistance's power.
+template <Scalar T>
+struct TyreMechanicalPower {
+  T sliding{};
+  T rolling{};
 };
 
 /// Coefficients C(a, n), n = 0..8, of the binomial series (1 + r)^a = sum C(a, n) r^n.
@@ -157,6 +239,8 @@ struct TyreInputTerms {
   T tread_area{};         ///< A_tot = pi D W, m^2 (000:13)
   T convection_area{};    ///< A_conv, m^2 (000:12)
   T adhesion_area{};      ///< A_cp, m^2 (000:18)
+  T patch_area{};         ///< c_w c_l, m^2 (000:12)
+  T sliding_power{};      ///< u (|Fx kappa| + |Fy tan(alpha)|), W (000:9 without p1)
   T q1{};                 ///< W (000:9)
   T q2{};                 ///< W (000:10)
   T wear_power_factor{};  ///< (Q1 / Q_ref)^wp2 (000:23)
@@ -207,10 +291,29 @@ TyreInputTerms<T> CalcTyreInputTerms(const TyreThermalParams<T>& params,
 template <Scalar T>
 TyreHeatFlows<T> CalcTyreHeatFlows(const TyreThermalParams<T>& params, const TyreState<T>& state,
                                    const TyreInput<T>& input);
-/// All seven heat flows from precomputed input terms.
+/// All seven heat flows from precomputed input terms; with the gas-and-rim model also its further
+/// flows, `brake_to_rim` (W) the heat the brake gives the rim.
 template <Scalar T>
 TyreHeatFlows<T> CalcTyreHeatFlows(const TyreThermalParams<T>& params, const TyreState<T>& state,
-                                   const TyreInputTerms<T>& terms);
+                                   const TyreInputTerms<T>& terms, const T& brake_to_rim = T(0.0));
+
+/// The gas-and-rim model's gas at carcass temperature `carcass_temp`, rim `rim_temp` and speed
+/// `speed` (quasi-static balance of the gas, and of the liner's gas where there is a liner).
+template <Scalar T>
+TyreGas<T> CalcTyreGas(const TyreThermalParams<T>& params, const T& carcass_temp, const T& rim_temp,
+                       const T& speed);
+
+/// Rolling-resistance coefficient of the gas-and-rim model at a carcass temperature and hot gauge
+/// pressure: c_rr (f + (1 - f) exp(-k_T (T_c - T_ref))) (p / p_ref)^-n.
+template <Scalar T>
+T CalcRollingResistance(const TyreThermalParams<T>& params, const T& carcass_temp,
+                        const T& pressure);
+
+/// What the car spends on the tyre for an input, W; the rolling part with `rolling_coefficient`
+/// (the gas-and-rim model's own c_rr, or the vehicle model's for the paper's).
+template <Scalar T>
+TyreMechanicalPower<T> CalcTyreMechanicalPower(const TyreInput<T>& input,
+                                               const T& rolling_coefficient);
 
 /// Wear rate, mm/s: wp1 * w(T_t) * (Q1 / Q_ref)^wp2 (000:23).
 template <Scalar T>
@@ -223,10 +326,10 @@ template <Scalar T>
 TyreState<T> CalcTyreDerivatives(const TyreThermalParams<T>& params, const TyreCompound& compound,
                                  const TyreState<T>& state, const TyreInput<T>& input,
                                  TyreHeatFlows<T>* flows = nullptr);
-/// As above, from precomputed input terms.
+/// As above, from precomputed input terms; `brake_to_rim` as in CalcTyreHeatFlows.
 template <Scalar T>
 TyreState<T> CalcTyreDerivatives(const TyreThermalParams<T>& params, const TyreCompound& compound,
                                  const TyreState<T>& state, const TyreInputTerms<T>& terms,
-                                 TyreHeatFlows<T>* flows = nullptr);
+                                 TyreHeatFlows<T>* flows = nullptr, const T& brake_to_rim = T(0.0));
 
 }  // namespace hotlap::tyre

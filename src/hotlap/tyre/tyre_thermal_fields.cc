@@ -25,6 +25,8 @@ constexpr FitHint kPcp1Fit{"p_cp1", "m/N^p_cp2", 1e-8, 1.0, 1e-6};
 constexpr FitHint kPcp2Fit{"p_cp2", "", 0.0, 2.0, 0.1};
 
 double DegreesToSi(double deg) { return DegToRad(deg); }
+double CelsiusToSi(double c) { return CelsiusToKelvin(c); }
+double KilopascalsToSi(double kpa) { return 1e3 * kpa; }
 
 std::span<const TyreThermalField> Table() {
   // clang-format off
@@ -52,13 +54,32 @@ std::span<const TyreThermalField> Table() {
       {"construction", "diameter_m", &P::diameter, Range::Positive("m")},
       {"construction", "width_m", &P::width, Range::Positive("m")},
       {"construction", "emissivity", &P::emissivity, Range::Closed(0.0, 1.0, "")},
+      {"hysteresis", "carcass_slip_share", &P::carcass_slip_share, Range::Closed(0.0, 1.0, "")},
+      {"hysteresis", "rolling_resistance_coefficient", &P::rolling_resistance, Range::Closed(0.0, 0.1, "")},
+      {"hysteresis", "reference_carcass_temp_C", &P::rolling_reference_temp, Range::Closed(-50.0, 300.0, "degC"), &CelsiusToSi},
+      {"hysteresis", "reference_pressure_kPa", &P::rolling_reference_pressure, Range::Closed(20.0, 1000.0, "kPa"), &KilopascalsToSi},
+      {"hysteresis", "temp_coefficient_per_K", &P::rolling_temp_coefficient, Range::Closed(0.0, 0.1, "1/K")},
+      {"hysteresis", "temp_floor", &P::rolling_temp_floor, Range::Closed(0.0, 1.0, "")},
+      {"hysteresis", "pressure_exponent", &P::rolling_pressure_exponent, Range::Closed(0.0, 2.0, "")},
+      {"gas", "cold_set_temp_C", &P::cold_set_temp, Range::Closed(-40.0, 80.0, "degC"), &CelsiusToSi},
+      {"gas", "liner_pressure_above_tyre_kPa", &P::liner_pressure_offset, Range::Closed(0.0, 1000.0, "kPa"), &KilopascalsToSi},
+      {"gas", "carcass_gas_W_per_K", &P::carcass_gas_conductance, Range::Positive("W/K")},
+      {"gas", "gas_rim_W_per_K", &P::gas_rim_conductance, Range::Positive("W/K")},
+      {"gas", "gas_liner_W_per_K", &P::gas_liner_conductance, Range::NonNegative("W/K")},
+      {"gas", "liner_rim_W_per_K", &P::liner_rim_conductance, Range::NonNegative("W/K")},
+      {"gas", "contact_length_pressure_exponent", &P::contact_length_pressure_exponent, Range::Closed(0.0, 2.0, "")},
+      {"rim", "rim_mass_kg", &P::rim_mass, Range::Positive("kg")},
+      {"rim", "rim_heat_capacity_J_per_kgK", &P::rim_heat_capacity, Range::Positive("J/(kg K)")},
+      {"rim", "rim_air_W_per_K", &P::rim_air_conductance, Range::NonNegative("W/K")},
+      {"rim", "sidewall_air_W_per_K", &P::sidewall_air_conductance, Range::NonNegative("W/K")},
+      {"rim", "still_air_fraction", &P::still_air_fraction, Range::Closed(0.0, 1.0, "")},
   });
   // clang-format on
   return table;
 }
 
-constexpr std::array<std::string_view, 4> kSections = {"heat_generation", "wear", "contact_length",
-                                                       "construction"};
+constexpr std::array<std::string_view, 7> kSections = {
+    "heat_generation", "wear", "contact_length", "construction", "hysteresis", "gas", "rim"};
 
 }  // namespace
 
@@ -67,6 +88,10 @@ std::string TyreThermalField::Path() const { return std::string(section) + "." +
 std::span<const TyreThermalField> TyreThermalFields() { return Table(); }
 
 std::span<const std::string_view> TyreThermalSections() { return kSections; }
+
+bool IsGasRimSection(std::string_view section) {
+  return section == "hysteresis" || section == "gas" || section == "rim";
+}
 
 std::vector<const TyreThermalField*> TyreThermalFieldsIn(std::string_view section) {
   return FieldsIn(Table(), section);

@@ -36,12 +36,17 @@ struct TyreThermalField {
   double Of(const TyreThermalParams<double>& p) const { return p.*member; }
 };
 
-/// Every member of TyreThermalParams<double> (but `smoothing`, which no file holds), in file
-/// order: sections heat_generation, wear, contact_length, construction.
+/// Every member of TyreThermalParams<double> (but `smoothing`, `model` and `cold_pressure`, which
+/// the tyre file does not hold: the cold pressure is the car's tyre_forces.<c>.pressure_kPa), in
+/// file order: sections heat_generation, wear, contact_length, construction, then the gas-and-rim
+/// model's hysteresis, gas and rim.
 std::span<const TyreThermalField> TyreThermalFields();
 
 /// The sections of the table, in file order.
 std::span<const std::string_view> TyreThermalSections();
+
+/// True for the sections only the gas-and-rim model reads (hysteresis, gas, rim).
+bool IsGasRimSection(std::string_view section);
 
 /// The entries of one section, in file order.
 std::vector<const TyreThermalField*> TyreThermalFieldsIn(std::string_view section);

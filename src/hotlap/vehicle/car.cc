@@ -13,10 +13,44 @@ namespace hotlap::vehicle {
 
 namespace {
 
-// The duct factor: hA = z' L L' z times `factor`, every Cholesky entry times its square root.
+// The duct factor: hA = z' L L' z times `factor`, every Cholesky entry times its square root;
+// the duct's air also runs through a bulk disc's vanes.
 void ScaleConvection(brake::BrakeThermalParams<double>& p, double factor) {
   for (const brake::BrakeThermalField& f : brake::BrakeThermalFields()) {
     if (f.polynomial) f.Of(p) *= std::sqrt(factor);
+  }
+  p.bulk_convection *= factor;
+}
+
+// The gas-and-rim tyres take their cold pressure from the car's set-up; a bulk disc that heats
+// the rim needs a tyre that has one.
+void CoupleCorners(const YamlReader& y, Car& car) {
+  for (Corner c : kAllCorners) {
+    const int i = CornerIndex(c);
+    tyre::TyreThermalParams<double>& tyre = car.tyres[i].params;
+    const brake::BrakeThermalParams<double>& brake = car.brakes[i].params;
+    if (tyre.HasGasAndRim()) {
+      const std::string file = car.tyres[i].path.string();
+      if (car.vehicle && car.tyres[i].cold_pressure_in_file) {
+        y.Fail("tyres", fmt::format("{}: gas.cold_pressure_kPa is set once, in the car's "
+                                    "tyre_forces.{}.pressure_kPa; leave it out of the tyre file",
+                                    file, CornerName(c)));
+      }
+      if (car.vehicle) {
+        tyre.cold_pressure = car.vehicle->corners[i].pressure;
+      } else if (!car.tyres[i].cold_pressure_in_file) {
+        y.Fail("tyres", fmt::format("{}: thermal_model gas_rim needs the cold pressure: the car's "
+                                    "tyre_forces.{}.pressure_kPa, or gas.cold_pressure_kPa in the "
+                                    "tyre file of a car without tyre forces",
+                                    file, CornerName(c)));
+      }
+    } else if (brake.HasBulk() && (brake.hub_conductance > 0.0 || brake.rim_view_fraction > 0.0)) {
+      y.Fail("brakes",
+             fmt::format("{}: the disc heats the rim (hub_conductance_W_per_K, "
+                         "rim_view_fraction), but the {} tyre ({}) has no rim: give it "
+                         "thermal_model gas_rim or set both to 0",
+                         car.brakes[i].path.string(), CornerName(c), car.tyres[i].path.string()));
+    }
   }
 }
 
@@ -56,6 +90,13 @@ Car LoadCar(const std::filesystem::path& path, const std::vector<CarOverride>& o
     car.initial.carcass_temp = CelsiusToKelvin(init.Number("carcass_temp_C", temp));
     car.initial.disc_temp = CelsiusToKelvin(init.Number("disc_temp_C", temp));
     car.initial.calliper_temp = CelsiusToKelvin(init.Number("calliper_temp_C", temp));
+    // The gas-and-rim tyre's rim and the bulk disc's bulk; by default as the carcass and the disc.
+    car.initial.rim_temp =
+        CelsiusToKelvin(init.OptionalNumber("rim_temp_C", temp)
+                            .value_or(KelvinToCelsius(car.initial.carcass_temp)));
+    car.initial.disc_bulk_temp =
+        CelsiusToKelvin(init.OptionalNumber("disc_bulk_temp_C", temp)
+                            .value_or(KelvinToCelsius(car.initial.disc_temp)));
     init.Finish();
   }
   constexpr std::array<std::string_view, 5> kVehicleSections = {"chassis", "aero", "powertrain",
@@ -73,8 +114,16 @@ Car LoadCar(const std::filesystem::path& path, const std::vector<CarOverride>& o
       }
     }
   }
+  CoupleCorners(y, car);
   y.Finish();
   return car;
+}
+
+Car PaperModelsOf(const Car& car) {
+  Car out = car;
+  for (tyre::TyreFile& t : out.tyres) t.params.model = tyre::TyreThermalModel::kPaper;
+  for (brake::BrakeFile& b : out.brakes) b.params.disc_model = brake::DiscModel::kLumped;
+  return out;
 }
 
 const VehicleParams& RequireVehicle(const Car& car, std::string_view purpose) {

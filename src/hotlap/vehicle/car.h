@@ -26,6 +26,8 @@ struct InitialTemperatures {
   double carcass_temp = 0.0;
   double disc_temp = 0.0;
   double calliper_temp = 0.0;
+  double rim_temp = 0.0;        ///< the gas-and-rim tyres' rims
+  double disc_bulk_temp = 0.0;  ///< the surface-and-bulk discs' bulk
 };
 
 struct Car {
@@ -52,6 +54,11 @@ Car LoadCar(const std::filesystem::path& path);
 /// corner alone, so corners sharing a file get their own values. InputError for any override
 /// PlanCarOverrides refuses.
 Car LoadCar(const std::filesystem::path& path, const std::vector<CarOverride>& overrides);
+
+/// The same car with the paper's models at every corner: the two-mass tyre without gas and rim
+/// (thermal_model paper) and the lumped disc (disc_model lumped); their other parameters as they
+/// are. For the solvers whose states are the paper's (the optimal lap).
+Car PaperModelsOf(const Car& car);
 
 /// The car's vehicle parameters; InputError naming the car file and what `purpose` needs if the
 /// file has none.

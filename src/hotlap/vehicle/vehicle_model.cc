@@ -1,5 +1,6 @@
 #include "hotlap/vehicle/vehicle_model.h"
 
+#include <algorithm>
 #include <cmath>
 #include <type_traits>
 
@@ -47,6 +48,16 @@ std::array<CornerForces<T>, 4> CalcCornerForces(const VehicleParams& p,
     }
   }
   return out;
+}
+
+double CalcFreeRollingCoefficient(const CornerSetup& setup, double fz) {
+  tyre::TyreOperatingPoint<double> op;
+  op.fz = fz;
+  op.camber = setup.camber;
+  op.speed = 50.0;
+  op.pressure = setup.pressure;
+  const double my = tyre::CalcTyreForces(setup.forces, op).my;
+  return std::max(0.0, -my / (setup.rolling_radius * fz));
 }
 
 template <Scalar T>

@@ -183,6 +183,10 @@ std::array<CornerForces<T>, 4> CalcCornerForces(const VehicleParams& p,
                                                 const std::array<WheelKinematics<T>, 4>& wheels,
                                                 const std::array<CornerState<T>, 4>& corners);
 
+/// The free-rolling resistance coefficient -My / (R Fz) of a corner's force model at load `fz`
+/// (N), zero slip, 50 m/s and the set-up's pressure and camber; at least 0.
+double CalcFreeRollingCoefficient(const CornerSetup& setup, double fz);
+
 /// Body-axis accelerations of the planar chassis:
 ///   du/dt = (sum Fx + rolling resistance - drag) / m + g_x + v r
 ///   dv/dt = sum Fy / m + g_y - u r
