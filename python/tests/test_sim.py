@@ -56,6 +56,29 @@ def test_qss_lap_equals_the_command_line(cli, tmp_path):
         np.testing.assert_array_equal(got["channels"][name], values, err_msg=name)
 
 
+def test_a_caution_lap_and_the_gas_equal_the_command_line(cli, tmp_path):
+    # From a run's settled temperatures (docs/vehicle.md), so that a caution cools.
+    cli("lap", "--method", "qss", "--laps", 3, "--step-m", 4, "--caution-laps", 2,
+        "--carcass-temp-C", 130, "--rim-temp-C", 75, "--out", tmp_path / "q", "--json",
+        tmp_path / "q.json")
+    expected = read_json(tmp_path / "q.json")
+    got = hotlap.qss_lap(hotlap.load_car("gen7"), hotlap.load_track("darlington"), laps=3,
+                         step_m=4, caution_laps="2", carcass_temp_C=130, rim_temp_C=75)
+    assert got["summary"]["laps"] == expected["laps"]
+    # Behind the pace car (110 km/h) the lap is slow and the right front's gas cools.
+    laps = got["summary"]["laps"]
+    assert laps[1]["top_speed_mps"] == pytest.approx(110 / 3.6, rel=1e-6)
+    assert laps[1]["corners"]["fr"]["mean_gas_temp_C"] < laps[0]["corners"]["fr"]["mean_gas_temp_C"]
+    for name in ("gas_temp_fr_C", "rim_temp_fr_C", "pressure_fr_kPa", "disc_bulk_temp_fl_C"):
+        assert name in got["channels"], name
+    audit = laps[0]["corners"]["fl"]["energy_audit"]
+    assert abs(audit["tyre_closure"]) < 1e-9
+    assert audit["heat_over_work"] <= 1.0
+    with pytest.raises(ValueError, match="caution_laps"):
+        hotlap.qss_lap(hotlap.load_car("gen7"), hotlap.load_track("darlington"), laps=3,
+                       caution_laps="4")
+
+
 def test_loading_reports_what_is_wrong():
     with pytest.raises(ValueError, match="no-such-car"):
         hotlap.load_car("no-such-car")

@@ -202,6 +202,29 @@ TEST_F(BadBrakeFileTest, YamlSyntaxError) {
 
 // What fuzz/brake_yaml_fuzz found (tests/data/fuzz_regressions/brake_yaml): each file is refused
 // with an InputError (a mapping as a key escaped as yaml-cpp's TypedBadConversion).
+// The disc's bulk: needed with disc_model surface_bulk, kept (and checked) by a lumped disc's
+// file, and its whole mass cannot be the surface layer.
+TEST_F(BadBrakeFileTest, TheBulkSectionIsNeededByTheBulkDiscAlone) {
+  path_ = dir_.Write("front.yaml",
+                     test::ReplaceOnce(text_, "disc_model: surface_bulk", "disc_model: lumped"));
+  const BrakeFile lumped = LoadBrakeFile(path_);
+  EXPECT_FALSE(lumped.params.HasBulk());
+  EXPECT_EQ(lumped.params.hub_conductance, 1.5);
+  const std::string without = text_.substr(0, text_.find("\ndisc_bulk:")) + "\n";
+  path_ = dir_.Write("front.yaml", without);
+  std::string missing;
+  try {
+    LoadBrakeFile(path_);
+  } catch (const InputError& e) {
+    missing = e.what();
+  }
+  EXPECT_TRUE(Contains(missing, "disc_bulk")) << missing;
+  const std::string all_surface = LoadError("mass_participation: 0.1", "mass_participation: 1");
+  EXPECT_TRUE(Contains(all_surface, "rest of the disc is its bulk")) << all_surface;
+  const std::string view = LoadError("rim_view_fraction: 0.15", "rim_view_fraction: 1.5");
+  EXPECT_TRUE(Contains(view, "field 'disc_bulk.rim_view_fraction'")) << view;
+}
+
 TEST(BrakeParamsIoTest, FuzzRegressionsAreInputErrors) {
   for (const auto& file : test::FuzzRegressions("brake_yaml")) {
     EXPECT_THROW(LoadBrakeFile(file), InputError) << file;

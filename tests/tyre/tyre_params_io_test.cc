@@ -259,5 +259,43 @@ TEST(TyreParamsIoTest, FuzzRegressionsAreInputErrors) {
   }
 }
 
+// The gas-and-rim model's sections: needed with thermal_model gas_rim (the message names the
+// missing section), kept and unused by the paper's model, and checked in both.
+TEST_F(BadTyreFileTest, GasRimSectionsAreNeededByThatModelAlone) {
+  tyre_path_ = dir_.Write(
+      "rr.yaml", test::ReplaceOnce(tyre_text_, "thermal_model: gas_rim", "thermal_model: paper"));
+  dir_.Write("compound.yaml", compound_text_);
+  const TyreFile paper = LoadTyreFile(tyre_path_);
+  EXPECT_EQ(paper.params.model, TyreThermalModel::kPaper);
+  EXPECT_EQ(paper.params.rim_mass, 11.3);  // read and checked, not used
+  const std::string without_gas = tyre_text_.substr(0, tyre_text_.find("\ngas:")) +
+                                  tyre_text_.substr(tyre_text_.find("\nrim:"));
+  tyre_path_ = dir_.Write("rr.yaml", without_gas);
+  std::string m;
+  try {
+    LoadTyreFile(tyre_path_);
+  } catch (const InputError& e) {
+    m = e.what();
+  }
+  EXPECT_TRUE(Contains(m, tyre_path_.string())) << m;
+  EXPECT_TRUE(Contains(m, "gas")) << m;
+  // Without the gas-and-rim sections a paper-model file loads as it always has.
+  const std::string bare =
+      test::ReplaceOnce(tyre_text_.substr(0, tyre_text_.find("\n# The gas-and-rim model")),
+                        "thermal_model: gas_rim", "thermal_model: paper");
+  tyre_path_ = dir_.Write("rr.yaml", bare + "\n");
+  EXPECT_EQ(LoadTyreFile(tyre_path_).params.model, TyreThermalModel::kPaper);
+}
+
+TEST_F(BadTyreFileTest, GasRimValuesOutOfRangeAreRefused) {
+  const std::string m = TyreError("rim_mass_kg: 11.3", "rim_mass_kg: -1");
+  EXPECT_TRUE(Contains(m, "field 'rim.rim_mass_kg'"));
+  const std::string liner = TyreError("liner_rim_W_per_K: 20", "liner_rim_W_per_K: 0");
+  EXPECT_TRUE(Contains(liner, "liner_rim_W_per_K")) << liner;
+  EXPECT_TRUE(Contains(liner, "no other way out")) << liner;
+  const std::string model = TyreError("thermal_model: gas_rim", "thermal_model: three_node");
+  EXPECT_TRUE(Contains(model, "thermal_model")) << model;
+}
+
 }  // namespace
 }  // namespace hotlap::tyre

@@ -46,7 +46,8 @@ BrakeFile LoadBrakeFile(const std::filesystem::path& path,
                                                : std::string("lumped");
   out.params.disc_model = disc == "surface_bulk" ? DiscModel::kSurfaceBulk : DiscModel::kLumped;
   for (std::string_view section : BrakeThermalSections()) {
-    if (section == kDiscBulkSection && !out.params.HasBulk()) continue;
+    // Needed by the bulk disc alone; a lumped disc's file may keep it (checked, unused).
+    if (section == kDiscBulkSection && !out.params.HasBulk() && !y.Has(section)) continue;
     if (section.empty()) {
       ReadSection(y, section, out.params);
       out.geometry = ReadGeometry(y);  // documents the part; not a thermal parameter
@@ -54,7 +55,8 @@ BrakeFile LoadBrakeFile(const std::filesystem::path& path,
     }
     YamlReader s = y.Map(section);
     ReadSection(s, section, out.params);
-    if (section == kDiscBulkSection && !(out.params.mass_participation < 1.0)) {
+    if (section == kDiscBulkSection && out.params.HasBulk() &&
+        !(out.params.mass_participation < 1.0)) {
       y.Fail("mass_participation",
              "must be below 1 with disc_model surface_bulk: the rest of the disc is its bulk");
     }

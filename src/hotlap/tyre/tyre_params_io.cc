@@ -100,16 +100,22 @@ TyreFile LoadTyreFile(const std::filesystem::path& path,
                                                    : std::string("paper");
   p.model = model == "gas_rim" ? TyreThermalModel::kGasRim : TyreThermalModel::kPaper;
   for (std::string_view section : TyreThermalSections()) {
-    if (IsGasRimSection(section) && !p.HasGasAndRim()) continue;
+    // The gas-and-rim sections are needed by that model alone; a paper-model file may keep them
+    // (checked, unused), so switching thermal_model compares the two on the same file.
+    if (IsGasRimSection(section) && !p.HasGasAndRim() && !y.Has(section)) continue;
     YamlReader s = y.Map(section);
     for (const TyreThermalField* f : TyreThermalFieldsIn(section)) {
       const double value = s.Number(f->key, f->range);
       f->Of(p) = FieldToSi(*f, value);
     }
     if (section == "construction") CheckConstruction(s, p);
+    if (section == "gas" && p.gas_liner_conductance > 0.0 && !(p.liner_rim_conductance > 0.0)) {
+      s.Fail("liner_rim_W_per_K",
+             "must be > 0 where gas_liner_W_per_K is: the liner's gas has no other way out");
+    }
     // A car without tyre forces has no set-up pressure: the tyre file may give it
-    // (vehicle::LoadCar).
-    // Read only where present: it is refused for a car with tyre forces, so it is no override key.
+    // (vehicle::LoadCar). Read only where present: it is refused for a car with tyre forces, so
+    // it is no override key.
     if (section == "gas" && s.Has("cold_pressure_kPa")) {
       p.cold_pressure = 1e3 * s.Number("cold_pressure_kPa", Range::Closed(20.0, 1000.0, "kPa"));
       out.cold_pressure_in_file = true;
