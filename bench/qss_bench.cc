@@ -14,6 +14,7 @@
 #include "hotlap/common/units.h"
 #include "hotlap/sim/qss_lap.h"
 #include "hotlap/sim/qss_profile.h"
+#include "hotlap/sim/replay.h"
 #include "hotlap/sim/road.h"
 #include "hotlap/track/track_io.h"
 
@@ -29,10 +30,7 @@ struct Setup {
   Setup() {
     options.ambient_temp = CelsiusToKelvin(25.0);
     options.track_temp = CelsiusToKelvin(40.0);
-    for (int k = 0; k < 4; ++k) {
-      options.initial.tyres[k] = {car.initial.tread_temp, car.initial.carcass_temp, 0.0};
-      options.initial.brakes[k] = {car.initial.disc_temp, car.initial.calliper_temp};
-    }
+    options.initial = sim::CarStartState(car);
   }
 };
 

@@ -64,6 +64,16 @@ BrakeInputTerms<T> CalcBrakeInputTerms(const BrakeThermalParams<T>& p, const Bra
   const T t0_2 = in.cooling_air_temp * in.cooling_air_temp;
   t.cooling_air_temp4 = t0_2 * t0_2;
   t.constants = k;
+  if (p.HasBulk()) {
+    // Vane flow: G (still + (1 - still) (|u| / 50 m/s)^0.8), as the tyre's conductances.
+    using std::exp;
+    using std::log;
+    const T u = abs(in.speed);
+    t.vane_factor = ValueOf(u) == 0.0
+                        ? p.bulk_still_air_fraction
+                        : p.bulk_still_air_fraction +
+                              (1.0 - p.bulk_still_air_fraction) * exp(0.8 * log(T(u / 50.0)));
+  }
   return t;
 }
 
@@ -88,22 +98,13 @@ BrakeHeatFlows<T> CalcBrakeHeatFlows(const BrakeThermalParams<T>& p, const Brake
   q.q5 = t.constants.calliper_radiation * (tk2 * tk2 - t.cooling_air_temp4);      // (000:29)
   q.q6 = p.calliper_convection.Conductance(t.calliper_at_speed, tk) * (tk - t0);  // (000:31)
   if (p.HasBulk()) {
-    using std::abs;
-    using std::exp;
-    using std::log;
     const T& tb = x.bulk_temp;
     // The share of the surface's radiation that the rim sees leaves against the rim's temperature.
     const T tr2 = rim_temp * rim_temp;
     q.radiation_to_rim = p.rim_view_fraction * t.constants.disc_radiation * (td2 * td2 - tr2 * tr2);
     q.q3 = (1.0 - p.rim_view_fraction) * q.q3;
     q.to_bulk = p.bulk_conductance * (td - tb);
-    // Vane flow: G (still + (1 - still) (|u| / 50 m/s)^0.8), as the tyre's conductances.
-    const T u = abs(t.input.speed);
-    const T speed_factor = ValueOf(u) == 0.0
-                               ? p.bulk_still_air_fraction
-                               : p.bulk_still_air_fraction + (1.0 - p.bulk_still_air_fraction) *
-                                                                 exp(0.8 * log(T(u / 50.0)));
-    q.bulk_convection = p.bulk_convection * speed_factor * (tb - t0);
+    q.bulk_convection = p.bulk_convection * t.vane_factor * (tb - t0);
     q.hub_to_rim = p.hub_conductance * (tb - rim_temp);
   }
   return q;

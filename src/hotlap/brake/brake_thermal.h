@@ -163,6 +163,7 @@ struct BrakeInputTerms {
   typename ConvectionPolynomial<T>::AtSpeed disc_at_speed;      ///< for hA_d (000:30)
   typename ConvectionPolynomial<T>::AtSpeed calliper_at_speed;  ///< for hA_k (000:31)
   T cooling_air_temp4{};                                        ///< T_0^4, K^4
+  T vane_factor{};  ///< a bulk disc's vane cooling at this speed over its 50 m/s value (else 0)
   BrakeConstants<T> constants;
 };
 

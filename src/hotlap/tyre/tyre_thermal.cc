@@ -124,6 +124,17 @@ T Magnitude(const T& x, double eps) {
   return sqrt(x * x + eps * eps) - eps;
 }
 
+// G (still + (1 - still) (|u| / 50 m/s)^0.8): the gas-and-rim model's speed-dependent
+// conductances, turbulent forced convection (Nu ~ Re^0.8) above a still-air share.
+template <Scalar T>
+T SpeedFactor(const TyreThermalParams<T>& p, const T& speed) {
+  using std::abs;
+  const T u = abs(speed);
+  if (ValueOf(u) == 0.0) return p.still_air_fraction;
+  return p.still_air_fraction +
+         (1.0 - p.still_air_fraction) * PowPositive(T(u / kConductanceReferenceSpeed), 0.8);
+}
+
 // Every input term except the wear factor, which needs the compound.
 // With `near` given (terms of a nearby input), its powers seed this input's (PowPositiveNear).
 template <Scalar T>
@@ -157,6 +168,7 @@ TyreInputTerms<T> CalcHeatInputTerms(const TyreThermalParams<T>& p, const TyreCo
                      Magnitude(T(in.fy * tan(in.slip_angle)), eps.force_N);
   t.q1 = p.p1 * speed * slip_sum;  // (000:9)
   t.sliding_power = speed * slip_sum;
+  if (p.HasGasAndRim()) t.speed_factor = SpeedFactor(p, in.speed);
   t.q2 = speed * k.carcass_heating *
          (p.p2 * Magnitude(in.fx, eps.force_N) + p.p3 * Magnitude(in.fy, eps.force_N) +
           p.p4 * abs(in.fz));  // (000:10)
@@ -213,82 +225,11 @@ TyreInputTerms<T> CalcTyreInputTerms(const TyreThermalParams<T>& p, const TyreCo
 
 namespace {
 
-// G (still + (1 - still) (|u| / 50 m/s)^0.8): the gas-and-rim model's speed-dependent
-// conductances, turbulent forced convection (Nu ~ Re^0.8) above a still-air share.
+// The gas at a carcass and rim temperature with the speed-dependent conductances' S(u) given
+// (CalcTyreGas).
 template <Scalar T>
-T SpeedFactor(const TyreThermalParams<T>& p, const T& speed) {
-  using std::abs;
-  const T u = abs(speed);
-  if (ValueOf(u) == 0.0) return p.still_air_fraction;
-  return p.still_air_fraction +
-         (1.0 - p.still_air_fraction) * PowPositive(T(u / kConductanceReferenceSpeed), 0.8);
-}
-
-// The paper's seven flows (000:9-22).
-template <Scalar T>
-TyreHeatFlows<T> PaperHeatFlows(const TyreState<T>& x, const TyreInputTerms<T>& t) {
-  const TyreInput<T>& in = t.input;
-  const T film_temp = 0.5 * (x.tread_temp + in.ambient_temp);
-  const T tread2 = x.tread_temp * x.tread_temp;
-  const T carcass2 = x.carcass_temp * x.carcass_temp;
-  TyreHeatFlows<T> q;
-  q.q1 = t.q1;  // (000:9)
-  q.q2 = t.q2;  // (000:10)
-  q.q3 = t.convection_factor * AirConvectionFactor(film_temp) *
-         (x.tread_temp - in.ambient_temp);                                // (000:11, 15)
-  q.q4 = t.track_conductance * (x.tread_temp - in.track_temp);            // (000:17)
-  q.q5 = t.tread_to_carcass * (x.carcass_temp - x.tread_temp);            // (000:20)
-  q.q6 = t.tread_radiation * (tread2 * tread2 - t.ambient_temp4);         // (000:21)
-  q.q7 = t.sidewall_radiation * (carcass2 * carcass2 - t.ambient_temp4);  // (000:22)
-  return q;
-}
-
-// The gas-and-rim model's flows (docs/models.md): the paper's tread flows on a contact patch
-// shortened by the hot pressure, the carcass heated by the power the car spends on the tyre, and
-// the paths through the sidewalls, the gas and the rim.
-template <Scalar T>
-TyreHeatFlows<T> GasRimHeatFlows(const TyreThermalParams<T>& p, const TyreState<T>& x,
-                                 const TyreInputTerms<T>& t, const T& brake_to_rim) {
-  using std::abs;
-  const TyreInput<T>& in = t.input;
-  const TyreGas<T> gas = CalcTyreGas(p, x.carcass_temp, x.rim_temp, in.speed);
-  // The patch's length scales as (p / p_cold)^-n: a stiffer, hotter tyre has a shorter patch.
-  const T pressure_ratio = gas.pressure / p.cold_pressure;
-  const T patch_scale = PowPositive(T(ValueOf(pressure_ratio) > 0.1 ? pressure_ratio : T(0.1)),
-                                    T(-p.contact_length_pressure_exponent));
-  const T convection_area = t.tread_area - patch_scale * t.patch_area;  // A_conv (000:12)
-  const T adhesion_area = patch_scale * t.adhesion_area;                // A_cp (000:18)
-  const T film_temp = 0.5 * (x.tread_temp + in.ambient_temp);
-  const T tread2 = x.tread_temp * x.tread_temp;
-  const T carcass2 = x.carcass_temp * x.carcass_temp;
-  const T speed_factor = SpeedFactor(p, in.speed);
-  TyreHeatFlows<T> q;
-  q.q1 = t.q1;  // (000:9)
-  // Carcass hysteresis: a share of the sliding power the tread does not take, and all of the
-  // rolling resistance's power (what the car pays for it).
-  q.rolling_power = abs(in.speed) * gas.rolling_resistance * abs(in.fz);
-  q.q2 = p.carcass_slip_share * (1.0 - p.p1) * t.sliding_power + q.rolling_power;
-  q.q3 = 0.0239 / t.length * t.speed_length_pow * convection_area * AirConvectionFactor(film_temp) *
-         (x.tread_temp - in.ambient_temp);                                      // (000:11, 15)
-  q.q4 = p.track_conductance * adhesion_area * (x.tread_temp - in.track_temp);  // (000:17)
-  q.q5 = t.tread_to_carcass * (x.carcass_temp - x.tread_temp);                  // (000:20)
-  q.q6 = p.emissivity * kStefanBoltzmann * (t.tread_area - adhesion_area) *
-         (tread2 * tread2 - t.ambient_temp4);                             // (000:21)
-  q.q7 = t.sidewall_radiation * (carcass2 * carcass2 - t.ambient_temp4);  // (000:22)
-  q.sidewall_convection =
-      p.sidewall_air_conductance * speed_factor * (x.carcass_temp - in.ambient_temp);
-  q.carcass_to_gas = gas.carcass_to_gas;
-  q.rim_to_air = p.rim_air_conductance * speed_factor * (x.rim_temp - in.ambient_temp);
-  q.brake_to_rim = brake_to_rim;
-  return q;
-}
-
-}  // namespace
-
-template <Scalar T>
-TyreGas<T> CalcTyreGas(const TyreThermalParams<T>& p, const T& carcass_temp, const T& rim_temp,
-                       const T& speed) {
-  const T s = SpeedFactor(p, speed);
+TyreGas<T> GasAt(const TyreThermalParams<T>& p, const T& carcass_temp, const T& rim_temp,
+                 const T& s) {
   const T g_cg = p.carcass_gas_conductance * s;
   const T g_gr = p.gas_rim_conductance * s;
   const T g_gl = p.gas_liner_conductance * s;
@@ -319,6 +260,73 @@ TyreGas<T> CalcTyreGas(const TyreThermalParams<T>& p, const T& carcass_temp, con
   gas.carcass_to_gas = g_cg * (carcass_temp - gas.gas_temp);
   gas.rolling_resistance = CalcRollingResistance(p, carcass_temp, gas.pressure);
   return gas;
+}
+
+// The paper's seven flows (000:9-22).
+template <Scalar T>
+TyreHeatFlows<T> PaperHeatFlows(const TyreState<T>& x, const TyreInputTerms<T>& t) {
+  const TyreInput<T>& in = t.input;
+  const T film_temp = 0.5 * (x.tread_temp + in.ambient_temp);
+  const T tread2 = x.tread_temp * x.tread_temp;
+  const T carcass2 = x.carcass_temp * x.carcass_temp;
+  TyreHeatFlows<T> q;
+  q.q1 = t.q1;  // (000:9)
+  q.q2 = t.q2;  // (000:10)
+  q.q3 = t.convection_factor * AirConvectionFactor(film_temp) *
+         (x.tread_temp - in.ambient_temp);                                // (000:11, 15)
+  q.q4 = t.track_conductance * (x.tread_temp - in.track_temp);            // (000:17)
+  q.q5 = t.tread_to_carcass * (x.carcass_temp - x.tread_temp);            // (000:20)
+  q.q6 = t.tread_radiation * (tread2 * tread2 - t.ambient_temp4);         // (000:21)
+  q.q7 = t.sidewall_radiation * (carcass2 * carcass2 - t.ambient_temp4);  // (000:22)
+  return q;
+}
+
+// The gas-and-rim model's flows (docs/models.md): the paper's tread flows on a contact patch
+// shortened by the hot pressure, the carcass heated by the power the car spends on the tyre, and
+// the paths through the sidewalls, the gas and the rim.
+template <Scalar T>
+TyreHeatFlows<T> GasRimHeatFlows(const TyreThermalParams<T>& p, const TyreState<T>& x,
+                                 const TyreInputTerms<T>& t, const T& brake_to_rim) {
+  using std::abs;
+  const TyreInput<T>& in = t.input;
+  const TyreGas<T> gas = GasAt(p, x.carcass_temp, x.rim_temp, t.speed_factor);
+  // The patch's length scales as (p / p_cold)^-n: a stiffer, hotter tyre has a shorter patch.
+  const T pressure_ratio = gas.pressure / p.cold_pressure;
+  const T patch_scale = PowPositive(T(ValueOf(pressure_ratio) > 0.1 ? pressure_ratio : T(0.1)),
+                                    T(-p.contact_length_pressure_exponent));
+  const T convection_area = t.tread_area - patch_scale * t.patch_area;  // A_conv (000:12)
+  const T adhesion_area = patch_scale * t.adhesion_area;                // A_cp (000:18)
+  const T film_temp = 0.5 * (x.tread_temp + in.ambient_temp);
+  const T tread2 = x.tread_temp * x.tread_temp;
+  const T carcass2 = x.carcass_temp * x.carcass_temp;
+  const T& speed_factor = t.speed_factor;
+  TyreHeatFlows<T> q;
+  q.q1 = t.q1;  // (000:9)
+  // Carcass hysteresis: a share of the sliding power the tread does not take, and all of the
+  // rolling resistance's power (what the car pays for it).
+  q.rolling_power = abs(in.speed) * gas.rolling_resistance * abs(in.fz);
+  q.q2 = p.carcass_slip_share * (1.0 - p.p1) * t.sliding_power + q.rolling_power;
+  q.q3 = 0.0239 / t.length * t.speed_length_pow * convection_area * AirConvectionFactor(film_temp) *
+         (x.tread_temp - in.ambient_temp);                                      // (000:11, 15)
+  q.q4 = p.track_conductance * adhesion_area * (x.tread_temp - in.track_temp);  // (000:17)
+  q.q5 = t.tread_to_carcass * (x.carcass_temp - x.tread_temp);                  // (000:20)
+  q.q6 = p.emissivity * kStefanBoltzmann * (t.tread_area - adhesion_area) *
+         (tread2 * tread2 - t.ambient_temp4);                             // (000:21)
+  q.q7 = t.sidewall_radiation * (carcass2 * carcass2 - t.ambient_temp4);  // (000:22)
+  q.sidewall_convection =
+      p.sidewall_air_conductance * speed_factor * (x.carcass_temp - in.ambient_temp);
+  q.carcass_to_gas = gas.carcass_to_gas;
+  q.rim_to_air = p.rim_air_conductance * speed_factor * (x.rim_temp - in.ambient_temp);
+  q.brake_to_rim = brake_to_rim;
+  return q;
+}
+
+}  // namespace
+
+template <Scalar T>
+TyreGas<T> CalcTyreGas(const TyreThermalParams<T>& p, const T& carcass_temp, const T& rim_temp,
+                       const T& speed) {
+  return GasAt(p, carcass_temp, rim_temp, SpeedFactor(p, speed));
 }
 
 template <Scalar T>

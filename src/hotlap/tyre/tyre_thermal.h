@@ -236,13 +236,14 @@ struct TyreConstants {
 template <Scalar T>
 struct TyreInputTerms {
   TyreInput<T> input;
-  T tread_area{};         ///< A_tot = pi D W, m^2 (000:13)
-  T convection_area{};    ///< A_conv, m^2 (000:12)
-  T adhesion_area{};      ///< A_cp, m^2 (000:18)
-  T patch_area{};         ///< c_w c_l, m^2 (000:12)
-  T sliding_power{};      ///< u (|Fx kappa| + |Fy tan(alpha)|), W (000:9 without p1)
-  T q1{};                 ///< W (000:9)
-  T q2{};                 ///< W (000:10)
+  T tread_area{};       ///< A_tot = pi D W, m^2 (000:13)
+  T convection_area{};  ///< A_conv, m^2 (000:12)
+  T adhesion_area{};    ///< A_cp, m^2 (000:18)
+  T patch_area{};       ///< c_w c_l, m^2 (000:12)
+  T sliding_power{};    ///< u (|Fx kappa| + |Fy tan(alpha)|), W (000:9 without p1)
+  T speed_factor{};  ///< the gas-and-rim model's S(u) of its speed-dependent conductances (else 0)
+  T q1{};            ///< W (000:9)
+  T q2{};            ///< W (000:10)
   T wear_power_factor{};  ///< (Q1 / Q_ref)^wp2 (000:23)
   T load_pow{};           ///< |Fz|^p_cp2 of (000:14), N^p_cp2
   T speed_length_pow{};   ///< (|u| L)^0.805 of (000:15), (m^2/s)^0.805
