@@ -275,6 +275,190 @@ std::array<double, 4> VehicleRollingCoefficients(const vehicle::Car& car) {
 
 }  // namespace
 
+namespace {
+
+// The histories a corner's models fill, sized for n samples.
+void SizeHistory(CornerHistory& h, size_t n, const TyreParams& tp, const BrakeParams& bp,
+                 bool heat_flows) {
+  for (auto* v : {&h.tread_temp, &h.carcass_temp, &h.wear, &h.grip_factor, &h.disc_temp,
+                  &h.calliper_temp, &h.brake_power}) {
+    v->resize(n);
+  }
+  if (tp.HasGasAndRim()) {
+    for (auto* v : {&h.rim_temp, &h.gas_temp, &h.pressure, &h.rolling_resistance}) v->resize(n);
+    if (tp.gas_liner_conductance > 0.0) {
+      h.liner_gas_temp.resize(n);
+      h.liner_pressure.resize(n);
+    }
+  }
+  if (bp.HasBulk()) h.disc_bulk_temp.resize(n);
+  if (heat_flows) {
+    for (auto& q : h.heat_flows) q.resize(n);
+  }
+}
+
+// The states only some models have need a start of their own (CarStartState gives the car's).
+void CheckModelStarts(const TyreParams& tp, const BrakeParams& bp, const tyre::TyreState<double>& t,
+                      const brake::BrakeState<double>& b, Corner c) {
+  if (tp.HasGasAndRim() && !(t.rim_temp > 0.0)) {
+    throw InputError(
+        fmt::format("replay: the starting rim temperature of corner {} is {:g} K; "
+                    "its gas-and-rim tyre needs one (sim::CarStartState gives the car's)",
+                    CornerName(c), t.rim_temp));
+  }
+  if (bp.HasBulk() && !(b.bulk_temp > 0.0)) {
+    throw InputError(fmt::format(
+        "replay: the starting disc bulk temperature of corner {} is "
+        "{:g} K; its surface-and-bulk disc needs one (sim::CarStartState gives the car's)",
+        CornerName(c), b.bulk_temp));
+  }
+}
+
+// One corner's replay: its models over its samples, the histories and, at each audit boundary,
+// the accumulated energies and the heat the nodes hold.
+class CornerReplay {
+ public:
+  CornerReplay(const vehicle::Car& car, const ReplayInputs& in, Corner c,
+               const ReplayOptions& options, const std::vector<size_t>& boundaries,
+               double vehicle_rolling, CornerHistory& h)
+      : c_(c),
+        tp_(car.tyre(c).params),
+        bp_(car.brake(c).params),
+        compound_(*car.tyre(c).compound),
+        samples_(CornerSamplesOf(in, c)),
+        brake_samples_(BrakeSamplesOf(in, c)),
+        options_(options),
+        boundaries_(boundaries),
+        vehicle_rolling_(vehicle_rolling),
+        h_(h),
+        record_tyre_{tp_, compound_, samples_, options_, h_, c_},
+        tyre_constants_(tyre::CalcTyreConstants(tp_)),
+        brake_constants_(brake::CalcBrakeConstants(bp_)),
+        at_(boundaries.size()) {}
+
+  // Integrates from the corner's start; returns what each boundary holds.
+  std::vector<Boundary> Run(const tyre::TyreState<double>& tyre,
+                            const brake::BrakeState<double>& brake) {
+    CheckModelStarts(tp_, bp_, tyre, brake, c_);
+    SizeHistory(h_, samples_.time.size(), tp_, bp_, options_.record_heat_flows);
+    if (tp_.HasGasAndRim()) {
+      RunTogether(tyre, brake);
+    } else {
+      RunApart(tyre, brake);
+    }
+    return std::move(at_);
+  }
+
+ private:
+  tyre::TyreInputTerms<double> TyreTerms(size_t k, double f,
+                                         const tyre::TyreInputTerms<double>* near) const {
+    return tyre::CalcTyreInputTerms(tp_, tyre_constants_, compound_,
+                                    samples_.TyreInputAt<double>(k, f), near);
+  }
+  brake::BrakeInputTerms<double> BrakeTerms(size_t k, double f) const {
+    return brake::CalcBrakeInputTerms(bp_, brake_constants_,
+                                      brake_samples_.BrakeInputAt<double>(k, f));
+  }
+
+  // The gas-and-rim tyre and its brake together: the rim takes the brake's heat.
+  void RunTogether(const tyre::TyreState<double>& tyre, const brake::BrakeState<double>& brake) {
+    constexpr size_t kN = kTyreEnergyCount + kBrakeEnergyCount;
+    using State = WithEnergies<WheelState<double>, kN>;
+    using Terms = std::pair<tyre::TyreInputTerms<double>, brake::BrakeInputTerms<double>>;
+    IntegrateOverSamples(
+        samples_, State{{tyre, brake}, {}}, options_.max_step_s,
+        [&](size_t k, double f, const Terms* near) {
+          return Terms{TyreTerms(k, f, near ? &near->first : nullptr), BrakeTerms(k, f)};
+        },
+        [&](const State& s, const Terms& t) {
+          State d;
+          brake::BrakeHeatFlows<double> bq;
+          d.x.brake = brake::CalcBrakeDerivatives(bp_, s.x.brake, t.second, &bq, s.x.tyre.rim_temp);
+          tyre::TyreHeatFlows<double> tq;
+          d.x.tyre = tyre::CalcTyreDerivatives(tp_, compound_, s.x.tyre, t.first, &tq, bq.ToRim());
+          TyreRates(tp_, tq, t.first, vehicle_rolling_, d.e.data());
+          BrakeRates(bq, d.e.data() + kTyreEnergyCount);
+          return d;
+        },
+        [&](size_t k, const State& s) {
+          const double to_rim =
+              options_.record_heat_flows
+                  ? brake::CalcBrakeHeatFlows(bp_, s.x.brake, BrakeTerms(k, 0.0), s.x.tyre.rim_temp)
+                        .ToRim()
+                  : 0.0;
+          record_tyre_(k, s.x.tyre, to_rim);
+          RecordBrake(k, s.x.brake, bp_, brake_samples_, h_, c_);
+          if (const int b = BoundaryIndex(boundaries_, k); b >= 0) {
+            std::copy_n(s.e.begin(), kTyreEnergyCount, at_[b].tyre.begin());
+            std::copy_n(s.e.begin() + kTyreEnergyCount, kBrakeEnergyCount, at_[b].brake.begin());
+            at_[b].tyre_stored = TyreStored(tp_, s.x.tyre);
+            at_[b].rim_stored = RimStored(tp_, s.x.tyre);
+            at_[b].brake_stored = BrakeStored(bp_, s.x.brake);
+          }
+        },
+        &brake_samples_);
+  }
+
+  // The paper's tyre has no rim: tyre and brake run apart, as published.
+  void RunApart(const tyre::TyreState<double>& tyre, const brake::BrakeState<double>& brake) {
+    using TyreRun = WithEnergies<tyre::TyreState<double>, kTyreEnergyCount>;
+    IntegrateOverSamples(
+        samples_, TyreRun{tyre, {}}, options_.max_step_s,
+        [&](size_t k, double f, const tyre::TyreInputTerms<double>* near) {
+          return TyreTerms(k, f, near);
+        },
+        [&](const TyreRun& s, const tyre::TyreInputTerms<double>& t) {
+          TyreRun d;
+          tyre::TyreHeatFlows<double> q;
+          d.x = tyre::CalcTyreDerivatives(tp_, compound_, s.x, t, &q);
+          TyreRates(tp_, q, t, vehicle_rolling_, d.e.data());
+          return d;
+        },
+        [&](size_t k, const TyreRun& s) {
+          record_tyre_(k, s.x, 0.0);
+          if (const int b = BoundaryIndex(boundaries_, k); b >= 0) {
+            at_[b].tyre = s.e;
+            at_[b].tyre_stored = TyreStored(tp_, s.x);
+          }
+        });
+    using BrakeRun = WithEnergies<brake::BrakeState<double>, kBrakeEnergyCount>;
+    IntegrateOverSamples(
+        brake_samples_, BrakeRun{brake, {}}, options_.max_step_s,
+        [&](size_t k, double f, const brake::BrakeInputTerms<double>*) { return BrakeTerms(k, f); },
+        [&](const BrakeRun& s, const brake::BrakeInputTerms<double>& t) {
+          BrakeRun d;
+          brake::BrakeHeatFlows<double> q;
+          // Without a rim the bulk disc's hub and rim shares are zero (vehicle::LoadCar).
+          d.x = brake::CalcBrakeDerivatives(bp_, s.x, t, &q, t.input.cooling_air_temp);
+          BrakeRates(q, d.e.data());
+          return d;
+        },
+        [&](size_t k, const BrakeRun& s) {
+          RecordBrake(k, s.x, bp_, brake_samples_, h_, c_);
+          if (const int b = BoundaryIndex(boundaries_, k); b >= 0) {
+            at_[b].brake = s.e;
+            at_[b].brake_stored = BrakeStored(bp_, s.x);
+          }
+        });
+  }
+
+  Corner c_;
+  const TyreParams& tp_;
+  const BrakeParams& bp_;
+  const tyre::TyreCompound& compound_;
+  const CornerSamples samples_, brake_samples_;
+  const ReplayOptions& options_;
+  const std::vector<size_t>& boundaries_;
+  double vehicle_rolling_;
+  CornerHistory& h_;
+  const TyreRecorder record_tyre_;
+  const tyre::TyreConstants<double> tyre_constants_;
+  const brake::BrakeConstants<double> brake_constants_;
+  std::vector<Boundary> at_;
+};
+
+}  // namespace
+
 ReplayResult RunReplay(const vehicle::Car& car, const ReplayInputs& in,
                        const ReplayInitialState& initial, const ReplayOptions& options) {
   const size_t n = CheckTimesAndTemperatures(in);
@@ -290,142 +474,15 @@ ReplayResult RunReplay(const vehicle::Car& car, const ReplayInputs& in,
     const CornerChannels& ch = in.corners[ci];
     CheckCornerChannels(ch, n, c);
     if (!ch.brake_fx.empty()) CheckLength(ch.brake_fx, n, "brake_fx_" + std::string(CornerName(c)));
-
-    const CornerSamples samples = CornerSamplesOf(in, c);
-    const CornerSamples brake_samples = BrakeSamplesOf(in, c);
-    const tyre::TyreFile& tyre_file = car.tyre(c);
-    const brake::BrakeFile& brake_file = car.brake(c);
-    const TyreParams& tp = tyre_file.params;
-    const BrakeParams& bp = brake_file.params;
-    const tyre::TyreCompound& compound = *tyre_file.compound;
-    CornerHistory& h = result.corners[ci];
-    for (auto* v : {&h.tread_temp, &h.carcass_temp, &h.wear, &h.grip_factor, &h.disc_temp,
-                    &h.calliper_temp, &h.brake_power}) {
-      v->resize(n);
-    }
-    // The states only some models have need a start of their own (CarStartState gives the car's).
-    if (tp.HasGasAndRim() && !(initial.tyres[ci].rim_temp > 0.0)) {
-      throw InputError(
-          fmt::format("replay: the starting rim temperature of corner {} is {:g} K; "
-                      "its gas-and-rim tyre needs one (sim::CarStartState gives the car's)",
-                      CornerName(c), initial.tyres[ci].rim_temp));
-    }
-    if (bp.HasBulk() && !(initial.brakes[ci].bulk_temp > 0.0)) {
-      throw InputError(fmt::format(
-          "replay: the starting disc bulk temperature of corner {} is "
-          "{:g} K; its surface-and-bulk disc needs one (sim::CarStartState gives the car's)",
-          CornerName(c), initial.brakes[ci].bulk_temp));
-    }
-    if (tp.HasGasAndRim()) {
-      for (auto* v : {&h.rim_temp, &h.gas_temp, &h.pressure, &h.rolling_resistance}) v->resize(n);
-      if (tp.gas_liner_conductance > 0.0) {
-        h.liner_gas_temp.resize(n);
-        h.liner_pressure.resize(n);
-      }
-    }
-    if (bp.HasBulk()) h.disc_bulk_temp.resize(n);
-    if (options.record_heat_flows) {
-      for (auto& q : h.heat_flows) q.resize(n);
-    }
-    std::vector<Boundary> at(boundaries.size());
-    const TyreRecorder record_tyre{tp, compound, samples, options, h, c};
-    const tyre::TyreConstants<double> tyre_constants = tyre::CalcTyreConstants(tp);
-    const brake::BrakeConstants<double> brake_constants = brake::CalcBrakeConstants(bp);
-    const auto tyre_terms = [&](size_t k, double f, const tyre::TyreInputTerms<double>* near) {
-      return tyre::CalcTyreInputTerms(tp, tyre_constants, compound,
-                                      samples.TyreInputAt<double>(k, f), near);
-    };
-    const auto brake_terms = [&](size_t k, double f) {
-      return brake::CalcBrakeInputTerms(bp, brake_constants,
-                                        brake_samples.BrakeInputAt<double>(k, f));
-    };
-
-    if (tp.HasGasAndRim()) {
-      // The tyre and its brake together: the rim takes the brake's heat.
-      constexpr size_t kN = kTyreEnergyCount + kBrakeEnergyCount;
-      using State = WithEnergies<WheelState<double>, kN>;
-      using Terms = std::pair<tyre::TyreInputTerms<double>, brake::BrakeInputTerms<double>>;
-      const State start{{initial.tyres[ci], initial.brakes[ci]}, {}};
-      IntegrateOverSamples(
-          samples, start, options.max_step_s,
-          [&](size_t k, double f, const Terms* near) {
-            return Terms{tyre_terms(k, f, near ? &near->first : nullptr), brake_terms(k, f)};
-          },
-          [&](const State& s, const Terms& t) {
-            State d;
-            brake::BrakeHeatFlows<double> bq;
-            d.x.brake =
-                brake::CalcBrakeDerivatives(bp, s.x.brake, t.second, &bq, s.x.tyre.rim_temp);
-            tyre::TyreHeatFlows<double> tq;
-            d.x.tyre = tyre::CalcTyreDerivatives(tp, compound, s.x.tyre, t.first, &tq, bq.ToRim());
-            TyreRates(tp, tq, t.first, vehicle_rolling[ci], d.e.data());
-            BrakeRates(bq, d.e.data() + kTyreEnergyCount);
-            return d;
-          },
-          [&](size_t k, const State& s) {
-            const double to_rim = options.record_heat_flows
-                                      ? brake::CalcBrakeHeatFlows(
-                                            bp, s.x.brake, brake_terms(k, 0.0), s.x.tyre.rim_temp)
-                                            .ToRim()
-                                      : 0.0;
-            record_tyre(k, s.x.tyre, to_rim);
-            RecordBrake(k, s.x.brake, bp, brake_samples, h, c);
-            if (const int b = BoundaryIndex(boundaries, k); b >= 0) {
-              std::copy_n(s.e.begin(), kTyreEnergyCount, at[b].tyre.begin());
-              std::copy_n(s.e.begin() + kTyreEnergyCount, kBrakeEnergyCount, at[b].brake.begin());
-              at[b].tyre_stored = TyreStored(tp, s.x.tyre);
-              at[b].rim_stored = RimStored(tp, s.x.tyre);
-              at[b].brake_stored = BrakeStored(bp, s.x.brake);
-            }
-          },
-          &brake_samples);
-    } else {
-      // The paper's tyre has no rim: tyre and brake run apart, as published.
-      using TyreRun = WithEnergies<tyre::TyreState<double>, kTyreEnergyCount>;
-      IntegrateOverSamples(
-          samples, TyreRun{initial.tyres[ci], {}}, options.max_step_s, tyre_terms,
-          [&](const TyreRun& s, const tyre::TyreInputTerms<double>& t) {
-            TyreRun d;
-            tyre::TyreHeatFlows<double> q;
-            d.x = tyre::CalcTyreDerivatives(tp, compound, s.x, t, &q);
-            TyreRates(tp, q, t, vehicle_rolling[ci], d.e.data());
-            return d;
-          },
-          [&](size_t k, const TyreRun& s) {
-            record_tyre(k, s.x, 0.0);
-            if (const int b = BoundaryIndex(boundaries, k); b >= 0) {
-              at[b].tyre = s.e;
-              at[b].tyre_stored = TyreStored(tp, s.x);
-            }
-          });
-      using BrakeRun = WithEnergies<brake::BrakeState<double>, kBrakeEnergyCount>;
-      IntegrateOverSamples(
-          brake_samples, BrakeRun{initial.brakes[ci], {}}, options.max_step_s,
-          [&](size_t k, double f, const brake::BrakeInputTerms<double>*) {
-            return brake_terms(k, f);
-          },
-          [&](const BrakeRun& s, const brake::BrakeInputTerms<double>& t) {
-            BrakeRun d;
-            brake::BrakeHeatFlows<double> q;
-            // Without a rim the bulk disc's hub and rim shares are zero (vehicle::LoadCar).
-            d.x = brake::CalcBrakeDerivatives(bp, s.x, t, &q, t.input.cooling_air_temp);
-            BrakeRates(q, d.e.data());
-            return d;
-          },
-          [&](size_t k, const BrakeRun& s) {
-            RecordBrake(k, s.x, bp, brake_samples, h, c);
-            if (const int b = BoundaryIndex(boundaries, k); b >= 0) {
-              at[b].brake = s.e;
-              at[b].brake_stored = BrakeStored(bp, s.x);
-            }
-          });
-    }
+    const std::vector<Boundary> at =
+        CornerReplay(car, in, c, options, boundaries, vehicle_rolling[ci], result.corners[ci])
+            .Run(initial.tyres[ci], initial.brakes[ci]);
     for (size_t b = 0; b + 1 < boundaries.size(); ++b) {
       result.audits[b][ci] = AuditBetween(
           at[b].tyre, at[b + 1].tyre, at[b].brake, at[b + 1].brake,
           at[b + 1].tyre_stored - at[b].tyre_stored, at[b + 1].rim_stored - at[b].rim_stored,
           at[b + 1].brake_stored - at[b].brake_stored,
-          in.time[boundaries[b + 1]] - in.time[boundaries[b]], tp.HasGasAndRim());
+          in.time[boundaries[b + 1]] - in.time[boundaries[b]], car.tyre(c).params.HasGasAndRim());
     }
   }
   return result;
