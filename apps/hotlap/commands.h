@@ -86,6 +86,9 @@ CommandRunner RegisterSweepCommand(CLI::App& app);
 /// `hotlap stint`: a stint as one optimal-control problem against the greedy driver.
 CommandRunner RegisterStintCommand(CLI::App& app);
 
+/// `hotlap race`: the race plan from the car's own fall-off (cmd_race.cc, docs/race.md).
+CommandRunner RegisterRaceCommand(CLI::App& app);
+
 /// Option checks with plain messages ("must be positive, not -5"); CLI11's own PositiveNumber and
 /// NonNegativeNumber print their range's bound as a 300-digit number.
 inline const CLI::Validator kPositive(

@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
   add(&hotlap::app::RegisterLogCommand);
   add(&hotlap::app::RegisterSweepCommand);
   add(&hotlap::app::RegisterStintCommand);
+  add(&hotlap::app::RegisterRaceCommand);
 
   try {
     app.parse(argc, argv);

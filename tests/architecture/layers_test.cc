@@ -41,6 +41,7 @@ const std::map<std::string, Area>& Layers() {
       {"sim", {3, {}}},
       {"ident", {4, {}}},
       {"ocp", {4, {}}},
+      {"race", {4, {}}},
       {"observe", {4, {}}},
   };
   return layers;

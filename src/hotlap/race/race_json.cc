@@ -1,0 +1,97 @@
+#include "hotlap/race/race_json.h"
+
+#include <algorithm>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "hotlap/common/json_output.h"
+
+namespace hotlap::race {
+
+namespace {
+
+const char* ServiceName(Service s) {
+  return s == Service::kFuelOnly ? "fuel only" : "four tyres and fuel";
+}
+
+double BestFixed(const std::vector<RacePlan>& fixed) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const RacePlan& p : fixed) best = std::min(best, p.race_time_s);
+  return best;
+}
+
+}  // namespace
+
+nlohmann::json PlanJson(const RacePlan& plan) {
+  nlohmann::json stops = nlohmann::json::array();
+  for (const PitStop& s : plan.stops) {
+    stops.push_back({{"lap", s.lap},
+                     {"service", ServiceName(s.service)},
+                     {"time_lost_s", RoundSignificant(s.time_lost_s)}});
+  }
+  return {{"name", plan.name},
+          {"race_time_s", RoundSignificant(plan.race_time_s)},
+          {"tyre_sets_used", plan.tyre_sets_used},
+          {"stops", stops}};
+}
+
+nlohmann::json RaceJson(const RaceRules& r, const FallOff& f, const RacePlan& plan,
+                        const std::vector<RacePlan>& fixed) {
+  nlohmann::json fixed_json = nlohmann::json::array();
+  for (const RacePlan& p : fixed) fixed_json.push_back(PlanJson(p));
+  nlohmann::json lap_times = nlohmann::json::array();
+  for (double t : f.lap_time_s) lap_times.push_back(RoundSignificant(t));
+  const double best = BestFixed(fixed);
+  return {{"command", "race"},
+          {"rules",
+           {{"laps", r.laps},
+            {"stage_ends", r.stage_ends},
+            {"fuel_capacity_kg", r.fuel_capacity_kg},
+            {"fuel_per_lap_kg", r.fuel_per_lap_kg},
+            {"fuel_window_laps", r.FuelWindow()},
+            {"tyre_sets", r.tyre_sets},
+            {"pit_loss_s", r.pit_loss_s},
+            {"caution_pit_loss_s", r.caution_pit_loss_s},
+            {"tyre_service_s", r.tyre_service_s},
+            {"fuel_rate_kg_per_s", r.fuel_rate_kg_per_s}}},
+          {"fall_off",
+           {{"laps", f.lap_time_s.size()},
+            {"lap_time_s", lap_times},
+            {"spread_s", RoundSignificant(f.Spread())},
+            {"fuel_s_per_kg", RoundSignificant(f.fuel_s_per_kg)},
+            {"reference_fuel_kg", f.reference_fuel_kg}}},
+          {"plan", PlanJson(plan)},
+          {"fixed_plans", fixed_json},
+          {"gain_over_best_fixed_s",
+           fixed.empty() ? nlohmann::json(nullptr)
+                         : nlohmann::json(RoundSignificant(best - plan.race_time_s))}};
+}
+
+std::string RaceText(const RaceRules& r, const FallOff& f, const RacePlan& plan,
+                     const std::vector<RacePlan>& fixed) {
+  std::string out = fmt::format(
+      "fall-off: {} laps on a set, fastest {:.3f} s, last {:.3f} s ({:+.3f} s), fuel {:.4f} s/kg\n",
+      f.lap_time_s.size(), *std::min_element(f.lap_time_s.begin(), f.lap_time_s.end()),
+      f.lap_time_s.back(), f.Spread(), f.fuel_s_per_kg);
+  out += fmt::format("rules: {} laps, stages end at {}, {} tyre sets, a cell lasts {} laps\n",
+                     r.laps, fmt::join(r.stage_ends, ", "), r.tyre_sets, r.FuelWindow());
+  const auto plan_text = [&](const RacePlan& p) {
+    std::string stops;
+    for (const PitStop& s : p.stops) {
+      stops += fmt::format(" {}{}", s.lap, s.service == Service::kFuelOnly ? "f" : "");
+    }
+    return fmt::format("  {:<14} {:>10.3f} s  {:>2} stops, {:>2} sets; stops after laps{}\n",
+                       p.name, p.race_time_s, p.stops.size(), p.tyre_sets_used, stops);
+  };
+  out += "plans (stops after lap N; f: fuel only, else four tyres and fuel):\n";
+  out += plan_text(plan);
+  for (const RacePlan& p : fixed) out += plan_text(p);
+  if (!fixed.empty()) {
+    out += fmt::format("the optimal plan gains {:.3f} s over the best fixed plan\n",
+                       BestFixed(fixed) - plan.race_time_s);
+  }
+  return out;
+}
+
+}  // namespace hotlap::race

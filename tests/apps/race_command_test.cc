@@ -1,0 +1,61 @@
+// End-to-end tests of `hotlap race`: the documented JSON keys, a plan no worse than the fixed
+// plans it lists, and bad rules refused with nothing written.
+
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "apps/run_hotlap.h"
+#include "test_util.h"
+
+namespace hotlap {
+namespace {
+
+namespace fs = std::filesystem;
+
+class RaceCommandTest : public test::CommandTest {};
+
+// A short race on coarse QSS laps (the fall-off from 6 laps at 4 m) keeps the test quick.
+const std::string kShort = "race --laps 60 --stages 20,40 --fall-off-laps 6 --step-m 4";
+
+TEST_F(RaceCommandTest, WritesThePlanAndTheFixedPlansItBeats) {
+  const fs::path json = dir() / "race.json";
+  const test::RunResult r = Run(kShort + " --json " + json.string());
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_TRUE(test::Contains(r.out, "the optimal plan gains")) << r.out;
+  const nlohmann::json j = Json(json);
+  for (const char* key :
+       {"command", "rules", "fall_off", "plan", "fixed_plans", "gain_over_best_fixed_s"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["fall_off"]["lap_time_s"].size(), 6u);
+  EXPECT_GT(j["fall_off"]["fuel_s_per_kg"].get<double>(), 0.0);  // fuel is weight
+  const double best = j["plan"]["race_time_s"].get<double>();
+  ASSERT_FALSE(j["fixed_plans"].empty());
+  for (const auto& p : j["fixed_plans"]) {
+    EXPECT_LE(best, p["race_time_s"].get<double>() + 1e-6) << p["name"];
+  }
+  EXPECT_GE(j["gain_over_best_fixed_s"].get<double>(), 0.0);
+  // 60 laps on a cell of 56: one stop at least.
+  EXPECT_GE(j["plan"]["stops"].size(), 1u);
+}
+
+TEST_F(RaceCommandTest, BadRulesFailCleanlyWithoutOutput) {
+  const fs::path json = dir() / "bad.json";
+  for (const auto& [args, message] :
+       {std::pair{std::string("race --laps 0"), "laps 0 must be > 0"},
+        std::pair{std::string("race --fuel-capacity-kg 0.5"), "less than one lap's burn"},
+        std::pair{std::string("race --pit-loss-s -1"), "pit loss -1 s"},
+        std::pair{std::string("race --stages 400"), "--stages"},
+        std::pair{std::string("race --tyre-sets 0"), "tyre sets 0"}}) {
+    const test::RunResult r = Run(args + " --json " + json.string());
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+    EXPECT_TRUE(test::Contains(r.err, message)) << args << ": " << r.err;
+    EXPECT_FALSE(fs::exists(json)) << args;
+  }
+}
+
+}  // namespace
+}  // namespace hotlap
