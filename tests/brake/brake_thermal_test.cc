@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "brake/paper_brake_params.h"
 #include "hotlap/common/rk4.h"
 #include "hotlap/common/scalar.h"
 #include "test_util.h"
@@ -16,45 +17,6 @@ namespace hotlap::brake {
 namespace {
 
 constexpr double kSigma = 5.670374e-8;  // spec section 0
-
-// Front brake, 000 Table 5 and the assumed values of spec section 5, typed in here (not loaded).
-// The Cholesky factors are those of P_disc = [[6,3,2],[3,12,2],[2,2,10]] and
-// P_cal = [[1,.5,.2],[.5,4,.2],[.2,.2,2]], computed exactly.
-BrakeThermalParams<double> FrontParams() {
-  BrakeThermalParams<double> p;
-  p.heat_partition = 0.95;
-  p.mass_participation = 0.1;
-  p.disc_mass = 8.8;
-  p.disc_heat_capacity = 480;
-  p.calliper_mass = 5.0312;
-  p.calliper_heat_capacity = 921.1;
-  p.pad_conductivity = 0.5;
-  p.pad_area = 9472e-6;
-  p.pad_thickness = 0.025;
-  p.disc_emissivity = 0.48;
-  p.calliper_emissivity = 0.25;
-  p.disc_radiating_area = 0.6302;
-  p.calliper_radiating_area = 12.81e-4;
-  {
-    ConvectionPolynomial<double>& l = p.disc_convection;
-    l.l11 = std::sqrt(6.0);
-    l.l21 = 3.0 / l.l11;
-    l.l22 = std::sqrt(12.0 - l.l21 * l.l21);
-    l.l31 = 2.0 / l.l11;
-    l.l32 = (2.0 - l.l31 * l.l21) / l.l22;
-    l.l33 = std::sqrt(10.0 - l.l31 * l.l31 - l.l32 * l.l32);
-  }
-  {
-    ConvectionPolynomial<double>& l = p.calliper_convection;
-    l.l11 = 1.0;
-    l.l21 = 0.5;
-    l.l22 = std::sqrt(4.0 - 0.25);
-    l.l31 = 0.2;
-    l.l32 = (0.2 - 0.2 * 0.5) / l.l22;
-    l.l33 = std::sqrt(2.0 - 0.04 - l.l32 * l.l32);
-  }
-  return p;
-}
 
 // z' P z with z = [1, u/100, (T - 273.15)/1000], written out term by term.
 double Quadratic(const std::array<std::array<double, 3>, 3>& m, double u, double temp) {
@@ -75,7 +37,7 @@ BrakeState<double> WorkedState() { return {600.0, 400.0}; }
 // Every flow and both temperature rates against a hand computation of spec section 5, using P
 // itself (not its factor). Relative 1e-12: only rounding separates the two orders of arithmetic.
 TEST(BrakeThermalTest, HeatFlowsMatchHandComputation) {
-  const BrakeThermalParams<double> p = FrontParams();
+  const BrakeThermalParams<double> p = test::PaperFrontBrakeParams();
   const double t0_4 = 298.15 * 298.15 * 298.15 * 298.15;
   const double q1 = 70.0 * 3000.0;                                    // 210 kW
   const double q2 = 2.0 * 0.5 * (9472e-6) / 0.025 * (600.0 - 400.0);  // 75.776 W
@@ -154,7 +116,7 @@ struct Augmented {
 // xi m_d c_d dT_d + m_k c_k dT_k = integral of (q1 - q3 - q4 - q5 - q6): gamma splits q1 and q2
 // moves heat between the masses. Holds to rounding under RK4; the bound asked is 1e-6 relative.
 TEST(BrakeThermalTest, EnergyBalanceCloses) {
-  const BrakeThermalParams<double> p = FrontParams();
+  const BrakeThermalParams<double> p = test::PaperFrontBrakeParams();
   const auto input = [](double t) {
     // Braking pulses (Fx < 0 half the time) at varying speed and cooling-air temperature.
     return BrakeInput<double>{60.0 + 20.0 * std::sin(0.4 * t), 4000.0 * std::sin(1.1 * t),
@@ -183,7 +145,7 @@ TEST(BrakeThermalTest, EnergyBalanceCloses) {
 // Disc and calliper start equal, so the fast disc settles onto the slow calliper from the same
 // side. Steps of 1 s are well inside RK4's stable, non-oscillating range (disc rate < 0.2 /s).
 void ExpectBrakeRelaxesMonotonically(double start_temp, double speed, double fx) {
-  const BrakeThermalParams<double> p = FrontParams();
+  const BrakeThermalParams<double> p = test::PaperFrontBrakeParams();
   const double air = 298.15;
   const BrakeInput<double> in{speed, fx, air};
   const auto rhs = [&](double, const BrakeState<double>& x) {
@@ -243,7 +205,7 @@ std::array<double*, 14> FittedFields(BrakeThermalParams<double>& p) {
 }
 
 TEST(BrakeThermalTest, ParameterDerivativesMatchFiniteDifferences) {
-  const BrakeThermalParams<double> p = FrontParams();
+  const BrakeThermalParams<double> p = test::PaperFrontBrakeParams();
   BrakeThermalParams<Jet14> pj = p.Cast<Jet14>();
   pj.heat_partition.v[0] = 1.0;
   pj.mass_participation.v[1] = 1.0;
@@ -272,7 +234,7 @@ TEST(BrakeThermalTest, ParameterDerivativesMatchFiniteDifferences) {
 }
 
 TEST(BrakeThermalTest, StateDerivativesMatchFiniteDifferences) {
-  const BrakeThermalParams<double> p = FrontParams();
+  const BrakeThermalParams<double> p = test::PaperFrontBrakeParams();
   const BrakeState<Jet2> xj{Jet2(600.0, 0), Jet2(400.0, 1)};
   const BrakeInput<Jet2> inj{Jet2(70.0), Jet2(-3000.0), Jet2(298.15)};
   const BrakeState<Jet2> d = CalcBrakeDerivatives(p.Cast<Jet2>(), xj, inj);
@@ -297,7 +259,7 @@ TYPED_TEST_SUITE(BrakeScalarTest, ScalarTypes);
 // derivative seeded on the disc temperature that matches a central difference.
 TYPED_TEST(BrakeScalarTest, EveryFunctionInstantiatesAndAgreesWithDouble) {
   using T = TypeParam;
-  const BrakeThermalParams<double> p = FrontParams();
+  const BrakeThermalParams<double> p = test::PaperFrontBrakeParams();
   const BrakeThermalParams<T> pt = p.template Cast<T>();
   T disc(600.0);
   if constexpr (IsJet<T>::value) disc.v[0] = 1.0;

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "brake/paper_brake_params.h"
 #include "hotlap/brake/brake_thermal.h"
 #include "hotlap/common/rk4.h"
 #include "hotlap/common/units.h"
@@ -15,25 +16,9 @@ namespace {
 
 BrakeHeatFlows<double>* const kNoFlows = nullptr;
 
-// The front brake of 000 Table 5 with diagonal convection polynomials (hA_d = 6 + 12 z2^2 +
-// 10 z3^2 W/K, hA_k = 1 + 4 z2^2 + 2 z3^2) and a bulk.
+// The paper's front brake (000 Table 5) with a bulk.
 BrakeThermalParams<double> BulkParams() {
-  BrakeThermalParams<double> p;
-  p.heat_partition = 0.95;
-  p.mass_participation = 0.1;
-  p.disc_mass = 8.8;
-  p.disc_heat_capacity = 480;
-  p.calliper_mass = 5.0312;
-  p.calliper_heat_capacity = 921.1;
-  p.pad_conductivity = 0.5;
-  p.pad_area = 9472e-6;
-  p.pad_thickness = 0.025;
-  p.disc_emissivity = 0.48;
-  p.calliper_emissivity = 0.25;
-  p.disc_radiating_area = 0.6302;
-  p.calliper_radiating_area = 12.81e-4;
-  p.disc_convection = {std::sqrt(6.0), 0.0, std::sqrt(12.0), 0.0, 0.0, std::sqrt(10.0)};
-  p.calliper_convection = {1.0, 0.0, 2.0, 0.0, 0.0, std::sqrt(2.0)};
+  BrakeThermalParams<double> p = test::PaperFrontBrakeParams();
   p.disc_model = DiscModel::kSurfaceBulk;
   p.bulk_conductance = 250.0;
   p.bulk_convection = 12.0;

@@ -12,6 +12,7 @@
 #include "hotlap/common/scalar.h"
 #include "hotlap/tyre/tyre_thermal.h"
 #include "test_util.h"
+#include "tyre/paper_tyre_params.h"
 
 namespace hotlap::tyre {
 namespace {
@@ -19,32 +20,9 @@ namespace {
 constexpr double kAtm = 101325.0;
 TyreHeatFlows<double>* const kNoFlows = nullptr;
 
-// The paper's rear-right tyre (000 Tables 2-4) with the gas-and-rim model's parameters, typed in.
+// The paper's rear-right tyre (000 Tables 2-4) with the gas-and-rim model's parameters.
 TyreThermalParams<double> GasRimParams(bool liner) {
-  TyreThermalParams<double> p;
-  p.p1 = 0.328;
-  p.p2 = 0.0042;
-  p.p3 = 1.641e-05;
-  p.p4 = 1.797e-05;
-  p.p5 = 427.5;
-  p.wear_coeff = 5.506e-06;
-  p.wear_exponent = 1.785;
-  p.contact_length_coeff = 0.0001508;
-  p.contact_length_exponent = 0.795321;
-  p.tread_mass = 0.9;
-  p.carcass_mass = 11.0;
-  p.tread_heat_capacity = 900;
-  p.carcass_heat_capacity = 1600;
-  p.track_conductance = 1200;
-  p.contact_width = 0.2286;
-  p.reference_slip_angle = 8.0 * M_PI / 180.0;
-  p.non_sliding_fraction_low = 0.3;
-  p.non_sliding_fraction_high = 0.8;
-  p.unloaded_radius = 0.3613;
-  p.rim_radius = 0.229;
-  p.diameter = 0.4572;
-  p.width = 0.2921;
-  p.emissivity = 0.93;
+  TyreThermalParams<double> p = test::PaperRearRightParams();
   p.model = TyreThermalModel::kGasRim;
   p.carcass_slip_share = 0.3;
   p.rolling_resistance = 0.012;

@@ -11,42 +11,13 @@
 #include "hotlap/tyre/compound.h"
 #include "hotlap/tyre/temperature_cubic.h"
 #include "test_util.h"
+#include "tyre/paper_tyre_params.h"
 
 namespace hotlap::tyre {
 namespace {
 
 constexpr double kPiHere = 3.14159265358979323846;
 constexpr double kSigma = 5.670374e-8;  // spec section 0
-
-// Rear-right tyre: 000 Tables 2-4 as printed in spec section 2, typed in here (not loaded) so the
-// test does not depend on the loader.
-TyreThermalParams<double> RearRightParams() {
-  TyreThermalParams<double> p;
-  p.p1 = 0.328;
-  p.p2 = 0.0042;
-  p.p3 = 1.641e-05;
-  p.p4 = 1.797e-05;
-  p.p5 = 427.5;
-  p.wear_coeff = 5.506e-06;
-  p.wear_exponent = 1.785;
-  p.contact_length_coeff = 0.0001508;
-  p.contact_length_exponent = 0.795321;
-  p.tread_mass = 0.9;
-  p.carcass_mass = 11.0;
-  p.tread_heat_capacity = 900;
-  p.carcass_heat_capacity = 1600;
-  p.track_conductance = 1200;
-  p.contact_width = 0.2286;
-  p.reference_slip_angle = 8.0 * kPiHere / 180.0;
-  p.non_sliding_fraction_low = 0.3;
-  p.non_sliding_fraction_high = 0.8;
-  p.unloaded_radius = 0.3613;
-  p.rim_radius = 0.229;
-  p.diameter = 0.4572;
-  p.width = 0.2921;
-  p.emissivity = 0.93;
-  return p;
-}
 
 TemperatureCubicSpec Spec(CubicKind kind, double opt_c, double low_c, double low_v, double high_c,
                           double high_v) {
@@ -72,7 +43,7 @@ TyreState<double> WorkedState() { return {380.0, 350.0, 0.0}; }
 // computation of spec sections 1-3. The hand arithmetic is ordinary double arithmetic in a
 // different order from the library's, so the two agree to a few ulps: 1e-12 relative.
 TEST(TyreThermalTest, HeatFlowsMatchHandComputation) {
-  const TyreThermalParams<double> p = RearRightParams();
+  const TyreThermalParams<double> p = test::PaperRearRightParams();
   const TyreCompound compound = DefaultCompound();
   const TyreInput<double> in = WorkedInput();
   const TyreState<double> x = WorkedState();
@@ -143,7 +114,7 @@ TEST(TyreThermalTest, HeatFlowsMatchHandComputation) {
 
 // Edge cases the model handles specially: no speed, no load, no sliding.
 TEST(TyreThermalTest, ZeroSpeedLoadAndSlidingGiveZeroFlows) {
-  const TyreThermalParams<double> p = RearRightParams();
+  const TyreThermalParams<double> p = test::PaperRearRightParams();
   EXPECT_EQ(CalcContactLength(p, 0.0), 0.0);
   EXPECT_EQ(CalcForcedConvectionCoefficient(p, 0.0, 380.0, 298.15), 0.0);
   // |Fz| and |u| are used: the sign does not matter.
@@ -186,7 +157,7 @@ TyreInput<double> VaryingInput(double t) {
 // between the masses. RK4 is linear in the stage slopes, so the balance holds to rounding; the
 // acceptance bound is 1e-6 relative.
 TEST(TyreThermalTest, EnergyBalanceCloses) {
-  const TyreThermalParams<double> p = RearRightParams();
+  const TyreThermalParams<double> p = test::PaperRearRightParams();
   const TyreCompound compound = DefaultCompound();
   const auto rhs = [&](double t, const Augmented& s) {
     TyreHeatFlows<double> q;
@@ -212,7 +183,7 @@ TEST(TyreThermalTest, EnergyBalanceCloses) {
 // crossing it or turning back. Starting from equal temperatures the fast tread settles onto the
 // slow carcass from the same side, so each step must move each temperature toward ambient.
 void ExpectTyreRelaxesMonotonically(double start_temp) {
-  const TyreThermalParams<double> p = RearRightParams();
+  const TyreThermalParams<double> p = test::PaperRearRightParams();
   const TyreCompound compound = DefaultCompound();
   const double ambient = 298.15;
   const TyreInput<double> in{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, ambient, ambient};
@@ -252,7 +223,7 @@ Outputs Evaluate(const TyreThermalParams<double>& p, const TyreState<double>& x)
 constexpr std::array<double, 3> kOutputScale = {10.0, 1.0, 1e-3};
 
 TEST(TyreThermalTest, ParameterDerivativesMatchFiniteDifferences) {
-  const TyreThermalParams<double> p = RearRightParams();
+  const TyreThermalParams<double> p = test::PaperRearRightParams();
   TyreThermalParams<Jet7> pj = p.Cast<Jet7>();
   std::array<Jet7*, 7> seeds = {&pj.p1, &pj.p2,         &pj.p3,           &pj.p4,
                                 &pj.p5, &pj.wear_coeff, &pj.wear_exponent};
@@ -289,7 +260,7 @@ TEST(TyreThermalTest, ParameterDerivativesMatchFiniteDifferences) {
 // three powers) equal those computed from scratch, in value and in parameter derivatives, both
 // within the series' 2% reach and beyond it (where the direct power is used).
 TEST(TyreThermalTest, InputTermsFromNearbyInputMatchDirect) {
-  const TyreThermalParams<double> p = RearRightParams();
+  const TyreThermalParams<double> p = test::PaperRearRightParams();
   TyreThermalParams<Jet7> pj = p.Cast<Jet7>();
   pj.contact_length_exponent.v[0] = 1.0;
   pj.wear_exponent.v[1] = 1.0;
@@ -328,7 +299,7 @@ TEST(TyreThermalTest, InputTermsFromNearbyInputMatchDirect) {
 }
 
 TEST(TyreThermalTest, StateDerivativesMatchFiniteDifferences) {
-  const TyreThermalParams<double> p = RearRightParams();
+  const TyreThermalParams<double> p = test::PaperRearRightParams();
   const TyreState<double> x = WorkedState();
   const TyreInput<double> in = WorkedInput();
   const TyreState<Jet2> xj{Jet2(x.tread_temp, 0), Jet2(x.carcass_temp, 1), Jet2(0.0)};
@@ -359,7 +330,7 @@ TYPED_TEST_SUITE(TyreScalarTest, ScalarTypes);
 
 TYPED_TEST(TyreScalarTest, EveryFunctionInstantiatesAndAgreesWithDouble) {
   using T = TypeParam;
-  const TyreThermalParams<double> p = RearRightParams();
+  const TyreThermalParams<double> p = test::PaperRearRightParams();
   const TyreCompound compound = DefaultCompound();
   const TyreInput<double> in = WorkedInput();
   const TyreState<double> x = WorkedState();
