@@ -1,6 +1,5 @@
 // `hotlap race`: the race plan from the car's own fall-off (docs/race.md).
 
-#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -17,8 +16,7 @@
 #include "hotlap/ocp/min_curvature_line.h"
 #include "hotlap/race/race_json.h"
 #include "hotlap/race/race_plan.h"
-#include "hotlap/sim/lap_output.h"
-#include "hotlap/sim/replay.h"
+#include "hotlap/race/race_run.h"
 #include "hotlap/sim/road.h"
 #include "hotlap/track/track_io.h"
 
@@ -30,25 +28,15 @@ struct RaceArgs {
   std::string track = "darlington";
   std::string car = "gen7";
   std::vector<std::string> set;
-  race::RaceRules rules = race::SouthernFiveHundred();
+  race::RaceRunOptions run;
   std::string stages = "115,230";
-  int fall_off_laps = 60;
-  double reference_fuel_kg = 25.0;
   double step_m = 2.0;
   std::string json;
 };
 
 int RunRace(RaceArgs a) {
-  const auto started = std::chrono::steady_clock::now();
-  a.rules.stage_ends.clear();
-  race::CheckRaceRules(a.rules);  // the laps first: the stages are read against them
-  for (int l : sim::ParseLapList(a.stages, a.rules.laps, "--stages")) {
-    a.rules.stage_ends.push_back(l + 1);
-  }
-  race::CheckRaceRules(a.rules);
-  if (a.fall_off_laps < 2 || a.fall_off_laps > 400) {
-    throw InputError(fmt::format("--fall-off-laps {} must be in [2, 400]", a.fall_off_laps));
-  }
+  a.run.rules.stage_ends = race::ParseStageEnds(a.stages, a.run.rules.laps, "--stages");
+  race::CheckRaceRules(a.run.rules);
   if (!(a.step_m >= 0.5 && a.step_m <= 10.0)) {
     throw InputError(fmt::format("--step-m {:g} must be in [0.5, 10] m", a.step_m));
   }
@@ -61,25 +49,14 @@ int RunRace(RaceArgs a) {
       track, ocp::MinimumCurvatureLine(track, {.step_m = std::max(a.step_m, 2.0), .margin_m = 1.5}),
       a.step_m);
   fmt::print("hotlap race: car '{}' on {}: the fall-off from {} QSS laps on a new set...\n",
-             car.name, track.name(), a.fall_off_laps);
+             car.name, track.name(), a.run.fall_off_laps);
   std::fflush(stdout);
-  sim::QssOptions qss;
-  qss.track_length = track.length_m();
-  qss.ambient_temp = CelsiusToKelvin(25.0);
-  qss.track_temp = CelsiusToKelvin(40.0);
-  qss.initial = sim::CarStartState(car);
-  const race::FallOff fall_off =
-      race::FallOffFromQss(car, road, qss, a.fall_off_laps, a.reference_fuel_kg);
-  const double curves_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  const race::RacePlan plan = race::OptimalPlan(a.rules, fall_off);
-  const std::vector<race::RacePlan> fixed = race::FixedPlans(a.rules, fall_off);
-  const double total_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  fmt::print("{}", race::RaceText(a.rules, fall_off, plan, fixed));
-  fmt::print("the fall-off in {:.1f} s, the plans in {:.2f} s\n", curves_s, total_s - curves_s);
+  const race::RaceRun run = race::RunRace(car, track.length_m(), road, a.run);
+  fmt::print("{}", race::RaceText(run.rules, run.fall_off, run.plan, run.fixed));
+  fmt::print("the fall-off in {:.1f} s, the plans in {:.2f} s\n", run.fall_off_seconds,
+             run.plan_seconds);
   if (!a.json.empty()) {
-    WriteJsonFile(a.json, race::RaceJson(a.rules, fall_off, plan, fixed));
+    WriteJsonFile(a.json, race::RaceJson(run.rules, run.fall_off, run.plan, run.fixed));
     fmt::print("wrote {}\n", a.json);
   }
   return 0;
@@ -96,23 +73,25 @@ CommandRunner RegisterRaceCommand(CLI::App& app) {
   sub->add_option("--track", args->track, "Track name or file")->capture_default_str();
   sub->add_option("--car", args->car, "Car name or car.yaml")->capture_default_str();
   sub->add_option("--set", args->set, "Override a car parameter, KEY=VALUE (docs/overrides.md)");
-  sub->add_option("--laps", args->rules.laps, "Race length, laps")->capture_default_str();
+  sub->add_option("--laps", args->run.rules.laps, "Race length, laps")->capture_default_str();
   sub->add_option("--stages", args->stages, "Laps that end a stage, e.g. 115,230 (cheap stops)")
       ->capture_default_str();
-  sub->add_option("--fuel-capacity-kg", args->rules.fuel_capacity_kg, "The fuel cell, kg")
+  sub->add_option("--fuel-capacity-kg", args->run.rules.fuel_capacity_kg, "The fuel cell, kg")
       ->capture_default_str();
-  sub->add_option("--fuel-per-lap-kg", args->rules.fuel_per_lap_kg, "Fuel burnt per green lap, kg")
+  sub->add_option("--fuel-per-lap-kg", args->run.rules.fuel_per_lap_kg,
+                  "Fuel burnt per green lap, kg")
       ->capture_default_str();
-  sub->add_option("--tyre-sets", args->rules.tyre_sets, "Tyre sets, the starting set included")
+  sub->add_option("--tyre-sets", args->run.rules.tyre_sets, "Tyre sets, the starting set included")
       ->capture_default_str();
-  sub->add_option("--pit-loss-s", args->rules.pit_loss_s, "Time a green stop loses, service aside")
+  sub->add_option("--pit-loss-s", args->run.rules.pit_loss_s,
+                  "Time a green stop loses, service aside")
       ->capture_default_str();
-  sub->add_option("--caution-pit-loss-s", args->rules.caution_pit_loss_s,
+  sub->add_option("--caution-pit-loss-s", args->run.rules.caution_pit_loss_s,
                   "Time a stop at a stage end loses, service aside")
       ->capture_default_str();
-  sub->add_option("--fall-off-laps", args->fall_off_laps, "QSS laps on a set for the fall-off")
+  sub->add_option("--fall-off-laps", args->run.fall_off_laps, "QSS laps on a set for the fall-off")
       ->capture_default_str();
-  sub->add_option("--reference-fuel-kg", args->reference_fuel_kg,
+  sub->add_option("--reference-fuel-kg", args->run.reference_fuel_kg,
                   "Fuel the car's mass includes, kg")
       ->capture_default_str();
   sub->add_option("--step-m", args->step_m, "Road spacing of the QSS laps, m")

@@ -16,6 +16,7 @@ void BindOcp(py::module_& m);
 void BindIdent(py::module_& m);
 void BindReport(py::module_& m);
 void BindLog(py::module_& m);
+void BindRace(py::module_& m);
 }  // namespace hotlap::python
 
 PYBIND11_MODULE(_hotlap, m) {
@@ -41,4 +42,5 @@ PYBIND11_MODULE(_hotlap, m) {
   hotlap::python::BindIdent(m);
   hotlap::python::BindReport(m);
   hotlap::python::BindLog(m);
+  hotlap::python::BindRace(m);
 }

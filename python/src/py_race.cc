@@ -1,0 +1,72 @@
+// hotlap.race: the race plan from the car's own fall-off, as `hotlap race` makes it (docs/race.md).
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "hotlap/common/error.h"
+#include "hotlap/common/units.h"
+#include "hotlap/ocp/min_curvature_line.h"
+#include "hotlap/race/race_json.h"
+#include "hotlap/race/race_run.h"
+#include "hotlap/sim/road.h"
+#include "hotlap/track/track.h"
+#include "hotlap/vehicle/car.h"
+#include "py_convert.h"
+
+namespace py = pybind11;
+
+namespace hotlap::python {
+
+namespace {
+
+py::dict Race(const vehicle::Car& car, const track::Track& track, int laps,
+              const std::string& stages, double fuel_capacity_kg, double fuel_per_lap_kg,
+              int tyre_sets, double pit_loss_s, double caution_pit_loss_s, int fall_off_laps,
+              double reference_fuel_kg, double step_m) {
+  race::RaceRunOptions o;
+  o.rules.laps = laps;
+  o.rules.stage_ends = race::ParseStageEnds(stages, laps, "stages");
+  o.rules.fuel_capacity_kg = fuel_capacity_kg;
+  o.rules.fuel_per_lap_kg = fuel_per_lap_kg;
+  o.rules.tyre_sets = tyre_sets;
+  o.rules.pit_loss_s = pit_loss_s;
+  o.rules.caution_pit_loss_s = caution_pit_loss_s;
+  o.fall_off_laps = fall_off_laps;
+  o.reference_fuel_kg = reference_fuel_kg;
+  race::CheckRaceRules(o.rules);
+  if (!(step_m >= 0.5 && step_m <= 10.0)) {
+    throw InputError(fmt::format("step_m {:g} must be in [0.5, 10] m", step_m));
+  }
+  vehicle::RequireVehicle(car, "hotlap.race");
+  race::RaceRun run;
+  {
+    py::gil_scoped_release release;
+    const std::vector<sim::RoadPoint> road = sim::SampleRoadAlongLine(
+        track, ocp::MinimumCurvatureLine(track, {.step_m = std::max(step_m, 2.0), .margin_m = 1.5}),
+        step_m);
+    run = race::RunRace(car, track.length_m(), road, o);
+  }
+  return ToPython(race::RaceJson(run.rules, run.fall_off, run.plan, run.fixed));
+}
+
+}  // namespace
+
+void BindRace(py::module_& m) {
+  const race::RaceRules d = race::SouthernFiveHundred();
+  m.def("race", &Race, py::arg("car"), py::arg("track"), py::kw_only(), py::arg("laps") = d.laps,
+        py::arg("stages") = "115,230", py::arg("fuel_capacity_kg") = d.fuel_capacity_kg,
+        py::arg("fuel_per_lap_kg") = d.fuel_per_lap_kg, py::arg("tyre_sets") = d.tyre_sets,
+        py::arg("pit_loss_s") = d.pit_loss_s, py::arg("caution_pit_loss_s") = d.caution_pit_loss_s,
+        py::arg("fall_off_laps") = 60, py::arg("reference_fuel_kg") = 25.0, py::arg("step_m") = 2.0,
+        "The race plan from the car's own fall-off over a set (QSS laps from pit-out), by dynamic "
+        "programming, against the fixed plans: the summary `hotlap race --json` writes "
+        "(docs/race.md).");
+}
+
+}  // namespace hotlap::python
