@@ -97,6 +97,7 @@ int RunReplay(const ReplayArgs& a) {
                sim::TemperatureStatsText(s.disc), sim::TemperatureStatsText(s.calliper),
                s.final_wear_mm, s.min_grip_factor);
   }
+  fmt::print("{}", sim::ReplayHeatText(result, summaries));
   fmt::print("wrote {} ({} columns) in {:.3f} s\n", a.out, columns.names.size(), elapsed);
   if (!a.json.empty()) {
     nlohmann::json json = sim::ReplayJson(result, summaries, a.telemetry, car, a.out);

@@ -1,5 +1,8 @@
 #include "hotlap/sim/replay_report.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "hotlap/common/json_output.h"
@@ -22,6 +25,33 @@ nlohmann::json StatsJson(const HistoryStats& s, bool kelvin) {
 std::string TemperatureStatsText(const HistoryStats& s) {
   return fmt::format("{:.1f}/{:.1f}/{:.1f}", KelvinToCelsius(s.peak), KelvinToCelsius(s.mean),
                      KelvinToCelsius(s.final));
+}
+
+std::string ReplayHeatText(const ReplayResult& result,
+                           const std::array<CornerReplaySummary, 4>& summaries) {
+  if (summaries[0].gas.peak <= 0.0 && summaries[0].disc_bulk.peak <= 0.0) return "";
+  std::string out = fmt::format("{:<6} {:>23} {:>23} {:>23} {:>23} {:>8} {:>8} {:>9} {:>9}\n",
+                                "corner", "gas degC pk/mean/end", "rim degC", "hot kPa",
+                                "disc bulk degC", "work kW", "heat kW", "heat/work", "closure");
+  for (Corner c : kAllCorners) {
+    const int k = CornerIndex(c);
+    const CornerReplaySummary& s = summaries[k];
+    const auto temps = [](const HistoryStats& h) {
+      return h.peak > 0.0 ? TemperatureStatsText(h) : std::string("-");
+    };
+    const std::string kpa = s.pressure.peak > 0.0
+                                ? fmt::format("{:.0f}/{:.0f}/{:.0f}", 1e-3 * s.pressure.peak,
+                                              1e-3 * s.pressure.mean, 1e-3 * s.pressure.final)
+                                : std::string("-");
+    const CornerEnergyAudit& a = result.audits.front()[k];
+    const double kw = a.duration_s > 0.0 ? 1e-3 / a.duration_s : 0.0;
+    out += fmt::format("{:<6} {:>23} {:>23} {:>23} {:>23} {:>8.2f} {:>8.2f} {:>9.3f} {:>9.1e}\n",
+                       CornerName(c), temps(s.gas), temps(s.rim), kpa, temps(s.disc_bulk),
+                       kw * a.MechanicalWork(), kw * a.GeneratedHeat(), a.HeatOverWork(),
+                       std::max({std::abs(a.TyreClosure()), std::abs(a.RimClosure()),
+                                 std::abs(a.BrakeClosure())}));
+  }
+  return out;
 }
 
 nlohmann::json ReplayJson(const ReplayResult& result,

@@ -23,6 +23,12 @@ std::string TemperatureStatsText(const HistoryStats& stats);
 /// The summary: the inputs (the car by its name and overrides), samples and duration, and per
 /// corner each temperature's peak, mean and final value (degC), the wear, the lowest grip factor
 /// and the brake energy.
+/// The terminal table of the gas-and-rim tyres' gas, rim and hot pressure, the bulk discs' bulk,
+/// and each corner's energy audit over the run (work, heat, their ratio, the largest closure);
+/// empty when no corner has those models.
+std::string ReplayHeatText(const ReplayResult& result,
+                           const std::array<CornerReplaySummary, 4>& summaries);
+
 nlohmann::json ReplayJson(const ReplayResult& result,
                           const std::array<CornerReplaySummary, 4>& corners,
                           const std::string& telemetry, const vehicle::Car& car,
