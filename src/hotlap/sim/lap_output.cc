@@ -20,6 +20,8 @@ const char* SpeedLimitName(SpeedLimit limit) {
       return "power";
     case SpeedLimit::kBraking:
       return "braking";
+    case SpeedLimit::kPaceCar:
+      return "pace car";
   }
   return "?";
 }

@@ -61,7 +61,7 @@ LapFigures CalcLapFigures(const QssLap& lap);
 ColumnSet LapResultColumns(const QssResult& result, const track::Track& track, double ambient_temp,
                            double track_temp);
 
-/// "cornering", "traction", "power" or "braking".
+/// "cornering", "traction", "power", "braking" or "pace car".
 const char* SpeedLimitName(SpeedLimit limit);
 
 }  // namespace hotlap::sim

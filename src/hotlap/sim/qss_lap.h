@@ -60,6 +60,7 @@ enum class SpeedLimit {
   kTraction,   ///< accelerating out: rear tyres saturated
   kPower,      ///< accelerating: engine power
   kBraking,    ///< braking into the next corner
+  kPaceCar,    ///< behind the pace car (QssOptions::caution_laps)
 };
 
 struct QssOptions {

@@ -245,7 +245,12 @@ SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> 
     }
   }
   if (car.speed_cap > 0.0) {
-    for (double& v : out.cornering_limit) v = std::min(v, car.speed_cap);
+    for (size_t i = 0; i < n; ++i) {
+      if (out.cornering_limit[i] > car.speed_cap) {
+        out.cornering_limit[i] = car.speed_cap;
+        out.limit[i] = SpeedLimit::kPaceCar;
+      }
+    }
   }
   // Start both passes at the slowest corner, where the speed is its cornering limit.
   const size_t start =
