@@ -30,12 +30,14 @@ struct RaceArgs {
   std::vector<std::string> set;
   race::RaceRunOptions run;
   std::string stages = "115,230";
+  std::string cautions = "record";
   double step_m = 2.0;
   std::string json;
 };
 
 int RunRace(RaceArgs a) {
   a.run.rules.stage_ends = race::ParseStageEnds(a.stages, a.run.rules.laps, "--stages");
+  a.run.cautions = race::ParseCautions(a.cautions, "--cautions");
   race::CheckRaceRules(a.run.rules);
   if (!(a.step_m >= 0.5 && a.step_m <= 10.0)) {
     throw InputError(fmt::format("--step-m {:g} must be in [0.5, 10] m", a.step_m));
@@ -52,11 +54,11 @@ int RunRace(RaceArgs a) {
              car.name, track.name(), a.run.fall_off_laps);
   std::fflush(stdout);
   const race::RaceRun run = race::RunRace(car, track.length_m(), road, a.run);
-  fmt::print("{}", race::RaceText(run.rules, run.fall_off, run.plan, run.fixed));
+  fmt::print("{}", race::RaceText(run));
   fmt::print("the fall-off in {:.1f} s, the plans in {:.2f} s\n", run.fall_off_seconds,
              run.plan_seconds);
   if (!a.json.empty()) {
-    WriteJsonFile(a.json, race::RaceJson(run.rules, run.fall_off, run.plan, run.fixed));
+    WriteJsonFile(a.json, race::RaceJson(run, a.run.cautions));
     fmt::print("wrote {}\n", a.json);
   }
   return 0;
@@ -93,6 +95,12 @@ CommandRunner RegisterRaceCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--reference-fuel-kg", args->run.reference_fuel_kg,
                   "Fuel the car's mass includes, kg")
+      ->capture_default_str();
+  sub->add_option("--cautions", args->cautions,
+                  "Caution rate per green lap for the Monte Carlo races, 'record' (the Southern "
+                  "500's) or 'off'")
+      ->capture_default_str();
+  sub->add_option("--races", args->run.races, "Monte Carlo races of each plan (0: none)")
       ->capture_default_str();
   sub->add_option("--step-m", args->step_m, "Road spacing of the QSS laps, m")
       ->capture_default_str();

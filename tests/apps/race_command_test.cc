@@ -40,6 +40,19 @@ TEST_F(RaceCommandTest, WritesThePlanAndTheFixedPlansItBeats) {
   EXPECT_GE(j["gain_over_best_fixed_s"].get<double>(), 0.0);
   // 60 laps on a cell of 56: one stop at least.
   EXPECT_GE(j["plan"]["stops"].size(), 1u);
+  // Raced under the record's cautions (10,000 races by default): each plan's mean and error, and
+  // the paired gain, whose error is far below each plan's own (the same cautions for all).
+  const nlohmann::json& mc = j["monte_carlo"];
+  EXPECT_EQ(mc["races"].get<int>(), 10000);
+  EXPECT_EQ(mc["plans"].size(), 1 + j["fixed_plans"].size());
+  EXPECT_LT(mc["gain_over_best_fixed"]["standard_error_s"].get<double>(),
+            mc["plans"][0]["standard_error_s"].get<double>());
+  // With --cautions off there is nothing random: the means are the plans' times.
+  const fs::path off = dir() / "off.json";
+  ASSERT_EQ(Run(kShort + " --cautions off --races 3 --json " + off.string()).exit_code, 0);
+  const nlohmann::json o = Json(off);
+  EXPECT_EQ(o["monte_carlo"]["plans"][0]["mean_time_s"], o["plan"]["race_time_s"]);
+  EXPECT_EQ(o["monte_carlo"]["plans"][0]["standard_error_s"].get<double>(), 0.0);
 }
 
 TEST_F(RaceCommandTest, BadRulesFailCleanlyWithoutOutput) {
@@ -49,7 +62,10 @@ TEST_F(RaceCommandTest, BadRulesFailCleanlyWithoutOutput) {
         std::pair{std::string("race --fuel-capacity-kg 0.5"), "less than one lap's burn"},
         std::pair{std::string("race --pit-loss-s -1"), "pit loss -1 s"},
         std::pair{std::string("race --stages 400"), "--stages"},
-        std::pair{std::string("race --tyre-sets 0"), "tyre sets 0"}}) {
+        std::pair{std::string("race --tyre-sets 0"), "tyre sets 0"},
+        std::pair{std::string("race --cautions 1.5"), "must be in [0, 1]"},
+        std::pair{std::string("race --cautions often"), "'record' or 'off'"},
+        std::pair{std::string("race --races -1"), "Monte Carlo races -1"}}) {
     const test::RunResult r = Run(args + " --json " + json.string());
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
     EXPECT_TRUE(test::Contains(r.err, message)) << args << ": " << r.err;

@@ -36,13 +36,34 @@ nlohmann::json PlanJson(const RacePlan& plan) {
           {"stops", stops}};
 }
 
-nlohmann::json RaceJson(const RaceRules& r, const FallOff& f, const RacePlan& plan,
-                        const std::vector<RacePlan>& fixed) {
+nlohmann::json RaceJson(const RaceRun& run, const CautionModel& cautions) {
+  const RaceRules& r = run.rules;
+  const FallOff& f = run.fall_off;
+  const RacePlan& plan = run.plan;
+  const std::vector<RacePlan>& fixed = run.fixed;
+  const std::vector<MonteCarloResult>& monte_carlo = run.monte_carlo;
   nlohmann::json fixed_json = nlohmann::json::array();
   for (const RacePlan& p : fixed) fixed_json.push_back(PlanJson(p));
   nlohmann::json lap_times = nlohmann::json::array();
   for (double t : f.lap_time_s) lap_times.push_back(RoundSignificant(t));
   const double best = BestFixed(fixed);
+  nlohmann::json mc = nullptr;
+  if (!monte_carlo.empty()) {
+    nlohmann::json plans = nlohmann::json::array();
+    for (size_t i = 0; i < monte_carlo.size(); ++i) {
+      plans.push_back({{"name", i == 0 ? plan.name : fixed[i - 1].name},
+                       {"mean_time_s", RoundSignificant(monte_carlo[i].mean_time_s)},
+                       {"standard_error_s", RoundSignificant(monte_carlo[i].standard_error_s)}});
+    }
+    mc = {{"races", monte_carlo[0].races},
+          {"caution_rate_per_lap", RoundSignificant(cautions.rate_per_lap)},
+          {"caution_laps", cautions.length_laps},
+          {"mean_cautions", RoundSignificant(monte_carlo[0].mean_cautions)},
+          {"plans", plans},
+          {"gain_over_best_fixed",
+           {{"mean_s", RoundSignificant(run.gain_under_cautions.mean_time_s)},
+            {"standard_error_s", RoundSignificant(run.gain_under_cautions.standard_error_s)}}}};
+  }
   return {{"command", "race"},
           {"rules",
            {{"laps", r.laps},
@@ -65,11 +86,16 @@ nlohmann::json RaceJson(const RaceRules& r, const FallOff& f, const RacePlan& pl
           {"fixed_plans", fixed_json},
           {"gain_over_best_fixed_s",
            fixed.empty() ? nlohmann::json(nullptr)
-                         : nlohmann::json(RoundSignificant(best - plan.race_time_s))}};
+                         : nlohmann::json(RoundSignificant(best - plan.race_time_s))},
+          {"monte_carlo", mc}};
 }
 
-std::string RaceText(const RaceRules& r, const FallOff& f, const RacePlan& plan,
-                     const std::vector<RacePlan>& fixed) {
+std::string RaceText(const RaceRun& run) {
+  const RaceRules& r = run.rules;
+  const FallOff& f = run.fall_off;
+  const RacePlan& plan = run.plan;
+  const std::vector<RacePlan>& fixed = run.fixed;
+  const std::vector<MonteCarloResult>& monte_carlo = run.monte_carlo;
   std::string out = fmt::format(
       "fall-off: {} laps on a set, fastest {:.3f} s, last {:.3f} s ({:+.3f} s), fuel {:.4f} s/kg\n",
       f.lap_time_s.size(), *std::min_element(f.lap_time_s.begin(), f.lap_time_s.end()),
@@ -90,6 +116,21 @@ std::string RaceText(const RaceRules& r, const FallOff& f, const RacePlan& plan,
   if (!fixed.empty()) {
     out += fmt::format("the optimal plan gains {:.3f} s over the best fixed plan\n",
                        BestFixed(fixed) - plan.race_time_s);
+  }
+  if (!monte_carlo.empty()) {
+    out += fmt::format("under cautions ({} races, {:.1f} cautions a race on average):\n",
+                       monte_carlo[0].races, monte_carlo[0].mean_cautions);
+    for (size_t i = 0; i < monte_carlo.size(); ++i) {
+      out += fmt::format("  {:<14} {:>10.3f} s +- {:.3f} (standard error)\n",
+                         i == 0 ? plan.name : fixed[i - 1].name, monte_carlo[i].mean_time_s,
+                         monte_carlo[i].standard_error_s);
+    }
+    if (run.gain_under_cautions.races > 0) {
+      out += fmt::format(
+          "the optimal plan gains {:.3f} s +- {:.3f} over the best fixed plan under the same "
+          "cautions\n",
+          run.gain_under_cautions.mean_time_s, run.gain_under_cautions.standard_error_s);
+    }
   }
   return out;
 }

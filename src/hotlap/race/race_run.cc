@@ -9,6 +9,23 @@
 
 namespace hotlap::race {
 
+CautionModel ParseCautions(const std::string& text, std::string_view option) {
+  if (text == "record") return SouthernFiveHundredCautions();
+  if (text == "off") return CautionModel::Off();
+  CautionModel m = SouthernFiveHundredCautions();
+  try {
+    size_t used = 0;
+    m.rate_per_lap = std::stod(text, &used);
+    if (used != text.size()) throw std::invalid_argument("");
+  } catch (const std::exception&) {
+    throw InputError(fmt::format("{} '{}': a rate per lap, 'record' or 'off'", option, text));
+  }
+  if (!(m.rate_per_lap >= 0.0 && m.rate_per_lap <= 1.0)) {
+    throw InputError(fmt::format("{} {}: a caution rate must be in [0, 1] per lap", option, text));
+  }
+  return m;
+}
+
 std::vector<int> ParseStageEnds(const std::string& text, int laps, std::string_view option) {
   if (laps <= 0) throw InputError(fmt::format("race rules: laps {} must be > 0", laps));
   std::vector<int> ends;
@@ -19,6 +36,13 @@ std::vector<int> ParseStageEnds(const std::string& text, int laps, std::string_v
 RaceRun RunRace(const vehicle::Car& car, double track_length_m,
                 std::span<const sim::RoadPoint> road, const RaceRunOptions& o) {
   CheckRaceRules(o.rules);
+  if (o.races < 0 || o.races > 1000000) {
+    throw InputError(fmt::format("Monte Carlo races {} must be in [0, 1000000]", o.races));
+  }
+  if (!(o.cautions.rate_per_lap >= 0.0 && o.cautions.rate_per_lap <= 1.0)) {
+    throw InputError(
+        fmt::format("caution rate {:g} per lap must be in [0, 1]", o.cautions.rate_per_lap));
+  }
   if (o.fall_off_laps < 2 || o.fall_off_laps > 400) {
     throw InputError(fmt::format("fall-off laps {} must be in [2, 400]", o.fall_off_laps));
   }
@@ -35,6 +59,21 @@ RaceRun RunRace(const vehicle::Car& car, double track_length_m,
   const auto curves = std::chrono::steady_clock::now();
   run.plan = OptimalPlan(o.rules, run.fall_off);
   run.fixed = FixedPlans(o.rules, run.fall_off);
+  if (o.races > 0) {
+    run.monte_carlo.push_back(
+        SimulatePlan(o.rules, run.fall_off, run.plan.stops, o.cautions, o.races));
+    size_t best = 0;
+    for (const RacePlan& p : run.fixed) {
+      run.monte_carlo.push_back(SimulatePlan(o.rules, run.fall_off, p.stops, o.cautions, o.races));
+      if (run.monte_carlo.back().mean_time_s < run.monte_carlo[best].mean_time_s || best == 0) {
+        best = run.monte_carlo.size() - 1;
+      }
+    }
+    if (best > 0) {
+      run.gain_under_cautions = PairedGain(o.rules, run.fall_off, run.plan.stops,
+                                           run.fixed[best - 1].stops, o.cautions, o.races);
+    }
+  }
   run.fall_off_seconds = std::chrono::duration<double>(curves - started).count();
   run.plan_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - curves).count();

@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "hotlap/race/cautions.h"
 #include "hotlap/race/fall_off.h"
 #include "hotlap/race/race_plan.h"
 #include "hotlap/race/race_rules.h"
@@ -19,6 +20,9 @@ struct RaceRunOptions {
   double reference_fuel_kg = 25.0;  ///< the fuel the car's mass includes
   double ambient_temp = 298.15;     ///< K
   double track_temp = 313.15;       ///< K
+  /// Cautions for the Monte Carlo races (the record's by default; CautionModel::Off() none).
+  CautionModel cautions = SouthernFiveHundredCautions();
+  int races = 10000;  ///< Monte Carlo races of each plan (0: none)
 };
 
 struct RaceRun {
@@ -26,6 +30,11 @@ struct RaceRun {
   FallOff fall_off;
   RacePlan plan;
   std::vector<RacePlan> fixed;
+  /// Each plan raced under the cautions: the optimal first, then the fixed plans in order.
+  std::vector<MonteCarloResult> monte_carlo;
+  /// Under the same cautions, what the optimal plan gains over the fixed plan of least mean time
+  /// (mean_time_s is the gain); races 0 where there was no Monte Carlo.
+  MonteCarloResult gain_under_cautions;
   double fall_off_seconds = 0.0;  ///< wall time of the QSS laps
   double plan_seconds = 0.0;      ///< wall time of the plans
 };
@@ -33,6 +42,10 @@ struct RaceRun {
 /// The run. InputError for bad rules or options (before any lap is driven).
 RaceRun RunRace(const vehicle::Car& car, double track_length_m,
                 std::span<const sim::RoadPoint> road, const RaceRunOptions& options);
+
+/// A caution model from its text: "record" (SouthernFiveHundredCautions), "off", or a rate per
+/// green lap in [0, 1] with the record's length; InputError naming `option` otherwise.
+CautionModel ParseCautions(const std::string& text, std::string_view option);
 
 /// The stage ends of a list such as "115,230" (laps that end a stage, inside the race);
 /// InputError naming `option` otherwise.

@@ -1,0 +1,133 @@
+#include "hotlap/race/cautions.h"
+
+#include <cmath>
+#include <random>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "hotlap/common/error.h"
+
+namespace hotlap::race {
+
+CautionModel CautionModel::Off() {
+  CautionModel m;
+  m.rate_per_lap = 0.0;
+  m.stage_cautions = false;
+  return m;
+}
+
+CautionModel SouthernFiveHundredCautions() {
+  CautionModel m;
+  m.rate_per_lap = 6.0 / 316.0;
+  m.length_laps = 6;
+  return m;
+}
+
+double RaceUnderCautions(const RaceRules& r, const FallOff& f, const std::vector<PitStop>& stops,
+                         const CautionModel& m, uint64_t stream, std::vector<int>* caution_starts) {
+  std::mt19937_64 draw(m.seed * 0x9E3779B97F4A7C15ull + stream);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  double fuel = r.fuel_capacity_kg, time = 0.0;
+  int age = 0, caution_left = 0;
+  std::vector<int> starts;
+  bool first_caution_lap = false;
+  size_t next = 0;
+  int pending = -1;         // a stop put off from the lap pit road was closed
+  int last_green_stop = 0;  // the lap a green stop was made on
+  for (int lap = 1; lap <= r.laps; ++lap) {
+    // A caution comes out at random on a green lap.
+    if (caution_left == 0 && m.rate_per_lap > 0.0 && uniform(draw) < m.rate_per_lap) {
+      caution_left = m.length_laps;
+      first_caution_lap = true;
+      starts.push_back(lap);
+      // A green stop made on the lap before is caught a lap down by the field.
+      if (last_green_stop == lap - 1) time += f.LapTime(age, fuel);
+    }
+    const bool under_caution = caution_left > 0;
+    if (under_caution) {
+      time += m.lap_time_s;
+      fuel -= m.fuel_share * r.fuel_per_lap_kg;
+      --caution_left;
+    } else {
+      time += f.LapTime(age, fuel);
+      fuel -= r.fuel_per_lap_kg;
+      ++age;
+    }
+    const bool pit_closed = under_caution && first_caution_lap;
+    first_caution_lap = false;
+    const bool due = (next < stops.size() && stops[next].lap == lap) || pending >= 0;
+    if (due && lap < r.laps) {
+      if (pit_closed) {
+        if (pending < 0) pending = static_cast<int>(next++);
+      } else {
+        const PitStop& stop = pending >= 0 ? stops[static_cast<size_t>(pending)] : stops[next++];
+        pending = -1;
+        const double added = r.fuel_capacity_kg - fuel;
+        const double service_fuel = added / r.fuel_rate_kg_per_s;
+        const double service = stop.service == Service::kFourTyresAndFuel
+                                   ? std::max(r.tyre_service_s, service_fuel)
+                                   : service_fuel;
+        const bool cheap = under_caution || r.EndsStage(lap);
+        time += (cheap ? r.caution_pit_loss_s : r.pit_loss_s) + service;
+        if (!cheap) last_green_stop = lap;
+        fuel = r.fuel_capacity_kg;
+        if (stop.service == Service::kFourTyresAndFuel) age = 0;
+      }
+    }
+    // The stage ends: a scheduled caution from the next lap.
+    if (m.stage_cautions && r.EndsStage(lap) && caution_left == 0) {
+      caution_left = m.length_laps;
+      first_caution_lap = false;  // the field pits on the stage's last lap's caution
+      starts.push_back(lap + 1);
+    }
+  }
+  if (caution_starts != nullptr) *caution_starts = std::move(starts);
+  return time;
+}
+
+MonteCarloResult SimulatePlan(const RaceRules& r, const FallOff& f,
+                              const std::vector<PitStop>& stops, const CautionModel& m, int races) {
+  CheckRaceRules(r);
+  if (races < 1) throw InputError(fmt::format("Monte Carlo: {} races; at least 1", races));
+  if (!(m.rate_per_lap >= 0.0 && m.rate_per_lap <= 1.0)) {
+    throw InputError(fmt::format("caution rate {:g} per lap must be in [0, 1]", m.rate_per_lap));
+  }
+  MonteCarloResult out;
+  out.races = races;
+  // Welford's running mean and squares: identical races give their time and zero spread exactly.
+  double mean = 0.0, m2 = 0.0, caution_sum = 0.0;
+  std::vector<int> starts;
+  for (int i = 0; i < races; ++i) {
+    const double t = RaceUnderCautions(r, f, stops, m, static_cast<uint64_t>(i), &starts);
+    const double delta = t - mean;
+    mean += delta / (i + 1);
+    m2 += delta * (t - mean);
+    caution_sum += static_cast<double>(starts.size());
+  }
+  out.mean_time_s = mean;
+  out.standard_error_s = races > 1 ? std::sqrt(m2 / (races - 1) / races) : 0.0;
+  out.mean_cautions = caution_sum / races;
+  return out;
+}
+
+MonteCarloResult PairedGain(const RaceRules& r, const FallOff& f, const std::vector<PitStop>& a,
+                            const std::vector<PitStop>& b, const CautionModel& m, int races) {
+  CheckRaceRules(r);
+  if (races < 1) throw InputError(fmt::format("Monte Carlo: {} races; at least 1", races));
+  MonteCarloResult out;
+  out.races = races;
+  double mean = 0.0, m2 = 0.0;
+  for (int i = 0; i < races; ++i) {
+    const uint64_t stream = static_cast<uint64_t>(i);
+    const double d = RaceUnderCautions(r, f, b, m, stream) - RaceUnderCautions(r, f, a, m, stream);
+    const double delta = d - mean;
+    mean += delta / (i + 1);
+    m2 += delta * (d - mean);
+  }
+  out.mean_time_s = mean;
+  out.standard_error_s = races > 1 ? std::sqrt(m2 / (races - 1) / races) : 0.0;
+  return out;
+}
+
+}  // namespace hotlap::race
