@@ -16,6 +16,7 @@
 #include "hotlap/ocp/min_curvature_line.h"
 #include "hotlap/race/race_json.h"
 #include "hotlap/race/race_plan.h"
+#include "hotlap/race/race_report.h"
 #include "hotlap/race/race_run.h"
 #include "hotlap/sim/road.h"
 #include "hotlap/track/track_io.h"
@@ -33,6 +34,7 @@ struct RaceArgs {
   std::string cautions = "record";
   double step_m = 2.0;
   std::string json;
+  std::string report;
 };
 
 int RunRace(RaceArgs a) {
@@ -43,6 +45,7 @@ int RunRace(RaceArgs a) {
     throw InputError(fmt::format("--step-m {:g} must be in [0.5, 10] m", a.step_m));
   }
   if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
+  if (!a.report.empty()) CheckOutputFolder(a.report, "--report");
   const vehicle::Car car =
       vehicle::LoadCar(ResolveCarFile(a.car), vehicle::ParseCarOverrides(a.set));
   vehicle::RequireVehicle(car, "`hotlap race`");
@@ -60,6 +63,10 @@ int RunRace(RaceArgs a) {
   if (!a.json.empty()) {
     WriteJsonFile(a.json, race::RaceJson(run, a.run.cautions));
     fmt::print("wrote {}\n", a.json);
+  }
+  if (!a.report.empty()) {
+    race::WriteRaceReport(a.report, run, car.name, track.name());
+    fmt::print("wrote {}\n", a.report);
   }
   return 0;
 }
@@ -105,6 +112,8 @@ CommandRunner RegisterRaceCommand(CLI::App& app) {
   sub->add_option("--step-m", args->step_m, "Road spacing of the QSS laps, m")
       ->capture_default_str();
   sub->add_option("--json", args->json, "Write the summary as JSON (docs/json-output.md)");
+  sub->add_option("--report", args->report,
+                  "Write an HTML report: the plans, the fall-off, the race traces, the cautions");
   return [args] { return RunRace(*args); };
 }
 

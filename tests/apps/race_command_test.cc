@@ -21,10 +21,16 @@ class RaceCommandTest : public test::CommandTest {};
 const std::string kShort = "race --laps 60 --stages 20,40 --fall-off-laps 6 --step-m 4";
 
 TEST_F(RaceCommandTest, WritesThePlanAndTheFixedPlansItBeats) {
-  const fs::path json = dir() / "race.json";
-  const test::RunResult r = Run(kShort + " --json " + json.string());
+  const fs::path json = dir() / "race.json", html = dir() / "race.html";
+  const test::RunResult r = Run(kShort + " --json " + json.string() + " --report " + html.string());
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_TRUE(test::Contains(r.out, "the optimal plan gains")) << r.out;
+  // The report: the plans' table, the fall-off and race charts, the cautions' histogram.
+  const std::string page = test::ReadTextFile(html);
+  for (const char* part : {"The optimal plan and the fixed plans", "Lap time on a set",
+                           "Lap times over the race", "Cautions in the 10000 simulated races"}) {
+    EXPECT_TRUE(test::Contains(page, part)) << part;
+  }
   const nlohmann::json j = Json(json);
   for (const char* key :
        {"command", "rules", "fall_off", "plan", "fixed_plans", "gain_over_best_fixed_s"}) {

@@ -104,6 +104,9 @@ MonteCarloResult SimulatePlan(const RaceRules& r, const FallOff& f,
     mean += delta / (i + 1);
     m2 += delta * (t - mean);
     caution_sum += static_cast<double>(starts.size());
+    if (out.caution_histogram.size() <= starts.size())
+      out.caution_histogram.resize(starts.size() + 1);
+    ++out.caution_histogram[starts.size()];
   }
   out.mean_time_s = mean;
   out.standard_error_s = races > 1 ? std::sqrt(m2 / (races - 1) / races) : 0.0;

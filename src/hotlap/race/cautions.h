@@ -31,8 +31,9 @@ CautionModel SouthernFiveHundredCautions();
 struct MonteCarloResult {
   int races = 0;
   double mean_time_s = 0.0;
-  double standard_error_s = 0.0;  ///< of the mean
-  double mean_cautions = 0.0;     ///< per race, the stage ends' included
+  double standard_error_s = 0.0;       ///< of the mean
+  double mean_cautions = 0.0;          ///< per race, the stage ends' included
+  std::vector<int> caution_histogram;  ///< races with k cautions at index k
 };
 
 /// One race of `plan`'s stops (a fixed plan: its stops on their laps; one due on the lap a caution

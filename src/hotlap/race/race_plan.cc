@@ -159,14 +159,20 @@ std::vector<RacePlan> FixedPlans(const RaceRules& r, const FallOff& f) {
   for (int lap = window; lap < r.laps; lap += window)
     late.push_back({lap, Service::kFourTyresAndFuel, 0.0});
   add(late, "fuel windows");
-  // The same, but each stage end a stop and the windows counted from it.
+  // A stop at each stage end (its cheap caution), and between them, and after the last, the
+  // fewest stops the fuel allows, evenly spaced.
   std::vector<PitStop> stages;
-  int last = 0;
-  for (int lap = 1; lap < r.laps; ++lap) {
-    if (r.EndsStage(lap) || lap - last == window) {
-      stages.push_back({lap, Service::kFourTyresAndFuel, 0.0});
-      last = lap;
+  std::vector<int> bounds = {0};
+  for (int end : r.stage_ends) bounds.push_back(end);
+  bounds.push_back(r.laps);
+  for (size_t i = 0; i + 1 < bounds.size(); ++i) {
+    const int from = bounds[i], length = bounds[i + 1] - bounds[i];
+    const int runs = (length + window - 1) / window;  // runs of at most a window each
+    for (int k = 1; k < runs; ++k) {
+      stages.push_back({from + (k * length + runs - 1) / runs, Service::kFourTyresAndFuel, 0.0});
     }
+    if (i + 1 < bounds.size() - 1)
+      stages.push_back({bounds[i + 1], Service::kFourTyresAndFuel, 0.0});
   }
   add(stages, "stage ends");
   return plans;

@@ -1,0 +1,119 @@
+#include "hotlap/race/race_report.h"
+
+#include <algorithm>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "hotlap/report/html_report.h"
+
+namespace hotlap::race {
+
+namespace {
+
+// The lap number of each lap of a race, 1 to n.
+std::vector<double> Laps(size_t n) {
+  std::vector<double> laps(n);
+  for (size_t i = 0; i < n; ++i) laps[i] = static_cast<double>(i + 1);
+  return laps;
+}
+
+// The laps run on the current set at the end of each lap of a plan.
+std::vector<double> SetAges(const RacePlan& plan) {
+  std::vector<double> age;
+  int a = 0;
+  size_t next = 0;
+  for (size_t lap = 1; lap <= plan.lap_time_s.size(); ++lap) {
+    age.push_back(++a);
+    if (next < plan.stops.size() && plan.stops[next].lap == static_cast<int>(lap)) {
+      if (plan.stops[next].service == Service::kFourTyresAndFuel) a = 0;
+      ++next;
+    }
+  }
+  return age;
+}
+
+}  // namespace
+
+void WriteRaceReport(const std::filesystem::path& path, const RaceRun& run, const std::string& car,
+                     const std::string& track) {
+  report::HtmlReport page(fmt::format("hotlap race: {} on {}", car, track));
+  page.AddMetadata("laps", std::to_string(run.rules.laps));
+  page.AddMetadata("stages end", fmt::format("{}", fmt::join(run.rules.stage_ends, ", ")));
+  page.AddMetadata("tyre sets", std::to_string(run.rules.tyre_sets));
+  page.AddMetadata("fuel window", fmt::format("{} laps", run.rules.FuelWindow()));
+  page.AddMetadata("version", HOTLAP_VERSION);
+  page.AddHeading("Plans");
+  std::vector<std::vector<std::string>> rows;
+  const auto row = [&](const RacePlan& p, const MonteCarloResult* mc) {
+    std::string stops;
+    for (const PitStop& s : p.stops) {
+      stops += fmt::format("{}{} ", s.lap, s.service == Service::kFuelOnly ? "f" : "");
+    }
+    rows.push_back({p.name, fmt::format("{:.3f}", p.race_time_s), std::to_string(p.stops.size()),
+                    std::to_string(p.tyre_sets_used), stops,
+                    mc ? fmt::format("{:.2f} \u00b1 {:.2f}", mc->mean_time_s, mc->standard_error_s)
+                       : std::string("-")});
+  };
+  const auto mc_of = [&](size_t i) {
+    return i < run.monte_carlo.size() ? &run.monte_carlo[i] : nullptr;
+  };
+  row(run.plan, mc_of(0));
+  for (size_t i = 0; i < run.fixed.size(); ++i) row(run.fixed[i], mc_of(i + 1));
+  page.AddTable(
+      {.title = "The optimal plan and the fixed plans (stops after lap N; f: fuel only)",
+       .header = {"plan", "race time s", "stops", "sets", "stops after laps", "under cautions s"},
+       .rows = rows});
+  if (run.gain_under_cautions.races > 0) {
+    page.AddText(fmt::format(
+        "Under the same cautions the optimal plan gains {:.2f} \u00b1 {:.2f} s over the best fixed "
+        "plan ({} races).",
+        run.gain_under_cautions.mean_time_s, run.gain_under_cautions.standard_error_s,
+        run.gain_under_cautions.races));
+  }
+  page.AddHeading("Fall-off and the race");
+  std::vector<double> ages;
+  for (size_t a = 0; a < run.fall_off.lap_time_s.size(); ++a)
+    ages.push_back(static_cast<double>(a));
+  page.AddLineChart({.title = "Lap time on a set (the out lap first), from the QSS laps",
+                     .x_axis = {.label = "laps on the set", .integer_ticks = true},
+                     .y_axis = {.label = "lap time", .unit = "s"},
+                     .series = {{.label = "fall-off", .x = ages, .y = run.fall_off.lap_time_s}}});
+  report::LineChart trace{.title = "Lap times over the race (stops not included)",
+                          .x_axis = {.label = "lap", .integer_ticks = true},
+                          .y_axis = {.label = "lap time", .unit = "s"},
+                          .x_link = "lap",
+                          .width = report::ChartWidth::kFullRow};
+  report::LineChart runs{.title = "Laps on the set: the runs between four-tyre stops",
+                         .x_axis = {.label = "lap", .integer_ticks = true},
+                         .y_axis = {.label = "laps on the set", .integer_ticks = true},
+                         .x_link = "lap",
+                         .width = report::ChartWidth::kFullRow};
+  const std::vector<double> laps = Laps(run.plan.lap_time_s.size());
+  trace.series.push_back({.label = run.plan.name, .x = laps, .y = run.plan.lap_time_s});
+  runs.series.push_back({.label = run.plan.name, .x = laps, .y = SetAges(run.plan)});
+  for (const RacePlan& p : run.fixed) {
+    trace.series.push_back(
+        {.label = p.name, .x = laps, .y = p.lap_time_s, .style = report::LineStyle::kDashed});
+    runs.series.push_back(
+        {.label = p.name, .x = laps, .y = SetAges(p), .style = report::LineStyle::kDashed});
+  }
+  page.AddLineChart(trace);
+  page.AddLineChart(runs);
+  if (!run.monte_carlo.empty() && !run.monte_carlo[0].caution_histogram.empty()) {
+    const MonteCarloResult& mc = run.monte_carlo[0];
+    std::vector<double> count, share;
+    for (size_t k = 0; k < mc.caution_histogram.size(); ++k) {
+      count.push_back(static_cast<double>(k));
+      share.push_back(static_cast<double>(mc.caution_histogram[k]) / mc.races);
+    }
+    page.AddHeading("Cautions");
+    page.AddLineChart({.title = fmt::format("Cautions in the {} simulated races", mc.races),
+                       .x_axis = {.label = "cautions in a race", .integer_ticks = true},
+                       .y_axis = {.label = "share of the races"},
+                       .series = {{.label = "share", .x = count, .y = share}}});
+  }
+  page.Write(path);
+}
+
+}  // namespace hotlap::race
