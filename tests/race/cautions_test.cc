@@ -88,5 +88,23 @@ TEST(CautionsTest, AGreenStopCaughtByACautionCostsALap) {
   FAIL() << "no race with an early caution in 200 draws";
 }
 
+// The paired gain: race by race, so a plan against itself gains nothing with no error, and a plan
+// always a second ahead gains a second with no error, however much the races themselves spread.
+TEST(CautionsTest, ThePairedGainIsRaceByRace) {
+  const RaceRules r = SouthernFiveHundred();
+  const FallOff f = Linear(0.03);
+  std::vector<double> times;
+  SimulatePlan(r, f, OptimalPlan(r, f).stops, SouthernFiveHundredCautions(), 200, &times);
+  ASSERT_EQ(times.size(), 200u);
+  const MonteCarloResult none = GainOver(times, times);
+  EXPECT_EQ(none.mean_time_s, 0.0);
+  EXPECT_EQ(none.standard_error_s, 0.0);
+  std::vector<double> slower = times;
+  for (double& t : slower) t += 1.0;
+  EXPECT_NEAR(GainOver(times, slower).mean_time_s, 1.0, 1e-9);
+  EXPECT_LT(GainOver(times, slower).standard_error_s, 1e-9);
+  EXPECT_THROW(GainOver(times, {1.0}), InputError);
+}
+
 }  // namespace
 }  // namespace hotlap::race

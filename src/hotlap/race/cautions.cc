@@ -86,8 +86,26 @@ double RaceUnderCautions(const RaceRules& r, const FallOff& f, const std::vector
   return time;
 }
 
+namespace {
+
+// Welford's running mean and squares: identical values give their value and zero spread exactly.
+struct RunningMean {
+  int n = 0;
+  double mean = 0.0, m2 = 0.0;
+  void Add(double x) {
+    ++n;
+    const double delta = x - mean;
+    mean += delta / n;
+    m2 += delta * (x - mean);
+  }
+  double StandardError() const { return n > 1 ? std::sqrt(m2 / (n - 1) / n) : 0.0; }
+};
+
+}  // namespace
+
 MonteCarloResult SimulatePlan(const RaceRules& r, const FallOff& f,
-                              const std::vector<PitStop>& stops, const CautionModel& m, int races) {
+                              const std::vector<PitStop>& stops, const CautionModel& m, int races,
+                              std::vector<double>* times) {
   CheckRaceRules(r);
   if (races < 1) throw InputError(fmt::format("Monte Carlo: {} races; at least 1", races));
   if (!(m.rate_per_lap >= 0.0 && m.rate_per_lap <= 1.0)) {
@@ -95,41 +113,37 @@ MonteCarloResult SimulatePlan(const RaceRules& r, const FallOff& f,
   }
   MonteCarloResult out;
   out.races = races;
-  // Welford's running mean and squares: identical races give their time and zero spread exactly.
-  double mean = 0.0, m2 = 0.0, caution_sum = 0.0;
+  RunningMean time;
+  double caution_sum = 0.0;
   std::vector<int> starts;
+  if (times != nullptr) times->clear();
   for (int i = 0; i < races; ++i) {
     const double t = RaceUnderCautions(r, f, stops, m, static_cast<uint64_t>(i), &starts);
-    const double delta = t - mean;
-    mean += delta / (i + 1);
-    m2 += delta * (t - mean);
+    time.Add(t);
+    if (times != nullptr) times->push_back(t);
     caution_sum += static_cast<double>(starts.size());
-    if (out.caution_histogram.size() <= starts.size())
+    if (out.caution_histogram.size() <= starts.size()) {
       out.caution_histogram.resize(starts.size() + 1);
+    }
     ++out.caution_histogram[starts.size()];
   }
-  out.mean_time_s = mean;
-  out.standard_error_s = races > 1 ? std::sqrt(m2 / (races - 1) / races) : 0.0;
+  out.mean_time_s = time.mean;
+  out.standard_error_s = time.StandardError();
   out.mean_cautions = caution_sum / races;
   return out;
 }
 
-MonteCarloResult PairedGain(const RaceRules& r, const FallOff& f, const std::vector<PitStop>& a,
-                            const std::vector<PitStop>& b, const CautionModel& m, int races) {
-  CheckRaceRules(r);
-  if (races < 1) throw InputError(fmt::format("Monte Carlo: {} races; at least 1", races));
-  MonteCarloResult out;
-  out.races = races;
-  double mean = 0.0, m2 = 0.0;
-  for (int i = 0; i < races; ++i) {
-    const uint64_t stream = static_cast<uint64_t>(i);
-    const double d = RaceUnderCautions(r, f, b, m, stream) - RaceUnderCautions(r, f, a, m, stream);
-    const double delta = d - mean;
-    mean += delta / (i + 1);
-    m2 += delta * (d - mean);
+MonteCarloResult GainOver(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.size() != b.size() || a.empty()) {
+    throw InputError(
+        fmt::format("a paired gain needs the same races: {} and {}", a.size(), b.size()));
   }
-  out.mean_time_s = mean;
-  out.standard_error_s = races > 1 ? std::sqrt(m2 / (races - 1) / races) : 0.0;
+  RunningMean gain;
+  for (size_t i = 0; i < a.size(); ++i) gain.Add(b[i] - a[i]);
+  MonteCarloResult out;
+  out.races = static_cast<int>(a.size());
+  out.mean_time_s = gain.mean;
+  out.standard_error_s = gain.StandardError();
   return out;
 }
 

@@ -43,18 +43,16 @@ double RaceUnderCautions(const RaceRules& rules, const FallOff& fall_off,
                          const std::vector<PitStop>& stops, const CautionModel& model,
                          uint64_t stream, std::vector<int>* caution_starts = nullptr);
 
-/// `races` races of the plan, stream i for race i. With CautionModel::Off() every race is the
-/// plan's deterministic time (EvaluatePlan) exactly. InputError for races < 1 or a rate outside
-/// [0, 1].
+/// `races` races of the plan, stream i for race i (each race's time in `times` if given). With
+/// CautionModel::Off() every race is the plan's deterministic time (EvaluatePlan) exactly.
+/// InputError for races < 1 or a rate outside [0, 1].
 MonteCarloResult SimulatePlan(const RaceRules& rules, const FallOff& fall_off,
                               const std::vector<PitStop>& stops, const CautionModel& model,
-                              int races);
+                              int races, std::vector<double>* times = nullptr);
 
-/// The mean and standard error of (b's time - a's time) over `races` races with the same cautions
-/// (stream i for race i in both): what plan a gains over plan b, its error free of the races'
-/// common spread.
-MonteCarloResult PairedGain(const RaceRules& rules, const FallOff& fall_off,
-                            const std::vector<PitStop>& a, const std::vector<PitStop>& b,
-                            const CautionModel& model, int races);
+/// What plan a gains over plan b race by race, from their times in the same races (SimulatePlan's
+/// `times`, the same streams): the mean and standard error of b - a, free of the races' common
+/// spread. InputError unless both have the same, non-zero number of races.
+MonteCarloResult GainOver(const std::vector<double>& a_times, const std::vector<double>& b_times);
 
 }  // namespace hotlap::race
