@@ -27,6 +27,7 @@
 #include "hotlap/sim/lap_report.h"
 #include "hotlap/sim/lap_summary.h"
 #include "hotlap/sim/qss_lap.h"
+#include "hotlap/sim/replay_io.h"
 #include "hotlap/sim/road.h"
 #include "hotlap/track/racing_line.h"
 #include "hotlap/track/track_io.h"
@@ -181,17 +182,15 @@ int RunLap(const LapArgs& a) {
   options.track_temp = CelsiusToKelvin(a.track_C);
   options.caution_laps = sim::ParseLapList(a.caution_laps, a.laps, "--caution-laps");
   options.caution_speed = sim::CheckCautionSpeed(a.caution_speed_kph, "--caution-speed-kph");
-  const auto pick = [](const std::optional<double>& c, double kelvin) {
-    return c ? CelsiusToKelvin(*c) : kelvin;
+  const auto kelvin = [](const std::optional<double>& c) {
+    return c ? std::optional<double>(CelsiusToKelvin(*c)) : std::nullopt;
   };
-  for (int k = 0; k < 4; ++k) {
-    options.initial.tyres[k] = {pick(a.tread_C, car.initial.tread_temp),
-                                pick(a.carcass_C, car.initial.carcass_temp), 0.0,
-                                pick(a.rim_C, car.initial.rim_temp)};
-    options.initial.brakes[k] = {pick(a.disc_C, car.initial.disc_temp),
-                                 pick(a.calliper_C, car.initial.calliper_temp),
-                                 pick(a.disc_bulk_C, car.initial.disc_bulk_temp)};
-  }
+  options.initial = sim::CarStartState(car, {.tread_temp = kelvin(a.tread_C),
+                                             .carcass_temp = kelvin(a.carcass_C),
+                                             .disc_temp = kelvin(a.disc_C),
+                                             .calliper_temp = kelvin(a.calliper_C),
+                                             .rim_temp = kelvin(a.rim_C),
+                                             .disc_bulk_temp = kelvin(a.disc_bulk_C)});
   fmt::print(
       "hotlap lap: car '{}' on {} ({:.1f} m; {} line, {:.1f} m, {} points), {} lap{}, "
       "quasi-steady-state\n",

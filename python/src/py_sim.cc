@@ -103,17 +103,12 @@ py::dict QssLap(const vehicle::Car& car, const track::Track& track, int laps, do
   options.track_temp = CelsiusToKelvin(track_C);
   options.caution_laps = sim::ParseLapList(caution_laps, laps, "caution_laps");
   options.caution_speed = sim::CheckCautionSpeed(caution_speed_kph, "caution_speed_kph");
-  const auto pick = [](const std::optional<double>& c, double kelvin) {
-    return c ? CelsiusToKelvin(*c) : kelvin;
-  };
-  for (int k = 0; k < 4; ++k) {
-    options.initial.tyres[k] = {pick(tread_C, car.initial.tread_temp),
-                                pick(carcass_C, car.initial.carcass_temp), 0.0,
-                                pick(rim_C, car.initial.rim_temp)};
-    options.initial.brakes[k] = {pick(disc_C, car.initial.disc_temp),
-                                 pick(calliper_C, car.initial.calliper_temp),
-                                 pick(disc_bulk_C, car.initial.disc_bulk_temp)};
-  }
+  options.initial = sim::CarStartState(car, {.tread_temp = ToKelvin(tread_C),
+                                             .carcass_temp = ToKelvin(carcass_C),
+                                             .disc_temp = ToKelvin(disc_C),
+                                             .calliper_temp = ToKelvin(calliper_C),
+                                             .rim_temp = ToKelvin(rim_C),
+                                             .disc_bulk_temp = ToKelvin(disc_bulk_C)});
   sim::QssResult result;
   {
     py::gil_scoped_release release;

@@ -273,10 +273,6 @@ std::array<double, 4> VehicleRollingCoefficients(const vehicle::Car& car) {
   return c;
 }
 
-}  // namespace
-
-namespace {
-
 // The histories a corner's models fill, sized for n samples.
 void SizeHistory(CornerHistory& h, size_t n, const TyreParams& tp, const BrakeParams& bp,
                  bool heat_flows) {

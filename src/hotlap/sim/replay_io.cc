@@ -62,6 +62,21 @@ ReplayInputs ReplayInputsFromTelemetry(const Telemetry& log,
   return in;
 }
 
+ReplayInitialState CarStartState(const vehicle::Car& car, const InitialTemperatureOverrides& o) {
+  ReplayInitialState s = CarStartState(car);
+  for (int i = 0; i < 4; ++i) {
+    tyre::TyreState<double>& t = s.tyres[i];
+    brake::BrakeState<double>& b = s.brakes[i];
+    t.tread_temp = o.tread_temp.value_or(t.tread_temp);
+    t.carcass_temp = o.carcass_temp.value_or(t.carcass_temp);
+    t.rim_temp = o.rim_temp.value_or(t.rim_temp);
+    b.disc_temp = o.disc_temp.value_or(b.disc_temp);
+    b.calliper_temp = o.calliper_temp.value_or(b.calliper_temp);
+    b.bulk_temp = o.disc_bulk_temp.value_or(b.bulk_temp);
+  }
+  return s;
+}
+
 ReplayInitialState InitialStateFor(const Telemetry& log, const vehicle::Car& car,
                                    const InitialTemperatureOverrides& o) {
   ReplayInitialState s;
@@ -74,9 +89,9 @@ ReplayInitialState InitialStateFor(const Telemetry& log, const vehicle::Car& car
     s.brakes[i].disc_temp = StartValue(log, "disc_temp", c, o.disc_temp, car.initial.disc_temp);
     s.brakes[i].calliper_temp =
         StartValue(log, "calliper_temp", c, o.calliper_temp, car.initial.calliper_temp);
-    // No logger reads a rim or a disc's bulk: the car's starting values.
-    s.tyres[i].rim_temp = car.initial.rim_temp;
-    s.brakes[i].bulk_temp = car.initial.disc_bulk_temp;
+    // No logger reads a rim or a disc's bulk: the overrides, else the car's starting values.
+    s.tyres[i].rim_temp = o.rim_temp.value_or(car.initial.rim_temp);
+    s.brakes[i].bulk_temp = o.disc_bulk_temp.value_or(car.initial.disc_bulk_temp);
   }
   return s;
 }

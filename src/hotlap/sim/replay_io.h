@@ -17,6 +17,7 @@ namespace hotlap::sim {
 /// Temperatures given on the command line, K; each used when the log has no measured value.
 struct InitialTemperatureOverrides {
   std::optional<double> tread_temp, carcass_temp, disc_temp, calliper_temp;
+  std::optional<double> rim_temp, disc_bulk_temp;  ///< the gas-and-rim tyre's, the bulk disc's
   std::optional<double> ambient_temp, track_temp;  ///< used when the log has no such column
 };
 
@@ -28,8 +29,13 @@ struct InitialTemperatureOverrides {
 ReplayInputs ReplayInputsFromTelemetry(const Telemetry& log,
                                        const InitialTemperatureOverrides& overrides);
 
+/// The car's starting state (CarStartState) with each temperature the overrides give (K) in its
+/// place: the start of a lap simulation.
+ReplayInitialState CarStartState(const vehicle::Car& car, const InitialTemperatureOverrides& o);
+
 /// Starting state per corner: the first measured value of tread_temp_<c>, carcass_temp_<c>,
-/// disc_temp_<c>, calliper_temp_<c>; else the overrides; else the car file. Wear starts at 0.
+/// disc_temp_<c>, calliper_temp_<c>; else the overrides; else the car file (the rim and disc bulk,
+/// which no logger reads: the overrides, else the car file). Wear starts at 0.
 ReplayInitialState InitialStateFor(const Telemetry& log, const vehicle::Car& car,
                                    const InitialTemperatureOverrides& overrides);
 
