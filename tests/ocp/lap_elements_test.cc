@@ -156,5 +156,67 @@ TEST(LapElementsTest, ThermalAndTyreForceElements) {
                {1e-1, 1e-7, 1e-7, 1e-3, 1e-6, 1.0, 1.0}, "tyre forces");
 }
 
+// The gas-and-rim tyre with its rim and surface-and-bulk disc: one element, its derivatives
+// exact, its rates those of the tyre and brake models coupled through the rim as replay couples
+// them (the brake's heat into the rim is the tyre's brake_to_rim; the disc sees the rim).
+TEST(LapElementsTest, WheelAndRollingElements) {
+  const vehicle::Car& car = Gen7();
+  const int fl = CornerIndex(Corner::kFrontLeft);
+  ASSERT_TRUE(car.tyres[fl].params.HasGasAndRim());
+  ASSERT_TRUE(car.brakes[fl].params.HasBulk());
+  tyre::TyreThermalParams<double> tp = car.tyres[fl].params;
+  tp.smoothing = {10.0, 1e-3};
+  const internal::ParamsOn<tyre::TyreThermalParams, 15> tyre15(tp);
+  const internal::ParamsOn<brake::BrakeThermalParams, 15> brake15(car.brakes[fl].params);
+  const internal::WheelThermalFn fn{&tyre15, &brake15, car.tyres[fl].compound.get(),
+                                    0.3,     298.15,   313.15};
+  // w, T_t, T_c, wear, T_rim, vx, fx, fy, fz, alpha, kappa, T_d, T_k, T_bulk, B
+  const std::vector<double> x = {0.0134,  370.0, 390.0, 0.01,  345.0, 60.0,  -6000.0, 9000.0,
+                                 11000.0, -0.05, -0.04, 700.0, 420.0, 600.0, 20000.0};
+  CheckElement(
+      *MakeElement<15, 7>(fn), x,
+      {1e-7, 1e-3, 1e-3, 1e-6, 1e-3, 1e-3, 1e-2, 1e-2, 1e-2, 1e-6, 1e-6, 1e-3, 1e-3, 1e-3, 1e-1},
+      "wheel thermal");
+  // The same rates from the models called one by one.
+  double out[7];
+  fn(x.data(), out);
+  const brake::BrakeThermalParams<double>& bp = car.brakes[fl].params;
+  brake::BrakeHeatFlows<double> bq;
+  const brake::BrakeState<double> bd = brake::CalcBrakeDerivatives(
+      bp, brake::BrakeState<double>{700.0, 420.0, 600.0},
+      brake::CalcBrakeInputTerms(bp, brake::BrakeInput<double>{60.0, -0.3 * 20000.0, 298.15}), &bq,
+      345.0);
+  const tyre::TyreInput<double> in{60.0, -6000.0, 9000.0, 11000.0, -0.05, -0.04, 298.15, 313.15};
+  tyre::TyreHeatFlows<double>* none = nullptr;
+  const tyre::TyreState<double> td = tyre::CalcTyreDerivatives(
+      tp, *car.tyres[fl].compound, tyre::TyreState<double>{370.0, 390.0, 0.01, 345.0},
+      tyre::CalcTyreInputTerms(tp, *car.tyres[fl].compound, in), none, bq.ToRim());
+  ASSERT_GT(bq.ToRim(), 10.0);  // the front disc at 600-700 K heats its rim
+  const double expected[7] = {td.tread_temp, td.carcass_temp,  td.wear,     td.rim_temp,
+                              bd.disc_temp,  bd.calliper_temp, bd.bulk_temp};
+  for (int o = 0; o < 7; ++o) {
+    EXPECT_NEAR(out[o], 0.0134 * expected[o], 1e-12 * (1.0 + std::abs(out[o]))) << o;
+  }
+  // The rim's rate rises with the disc bulk (hub conduction).
+  std::vector<double> hotter = x;
+  hotter[13] += 50.0;
+  double out_hot[7];
+  fn(hotter.data(), out_hot);
+  EXPECT_GT(out_hot[3], out[3]);
+
+  // Rolling resistance: F_rr - c_rr(T_c, p) Fz, c_rr from the gas at carcass and rim.
+  const internal::ParamsOn<tyre::TyreThermalParams, 5> tyre5(tp);
+  const internal::RollingForceFn roll{&tyre5};
+  CheckElement(*MakeElement<5, 1>(roll), {390.0, 345.0, 60.0, 11000.0, 120.0},
+               {1e-3, 1e-3, 1e-3, 1e-2, 1e-3}, "rolling force");
+  const double r_in[5] = {390.0, 345.0, 60.0, 11000.0, 0.0};
+  double r_out;
+  roll(r_in, &r_out);
+  const tyre::TyreGas<double> gas = tyre::CalcTyreGas(tp, 390.0, 345.0, 60.0);
+  EXPECT_NEAR(-r_out, gas.rolling_resistance * 11000.0, 1e-9);
+  EXPECT_GT(gas.rolling_resistance, 0.003);
+  EXPECT_LT(gas.rolling_resistance, 0.03);
+}
+
 }  // namespace
 }  // namespace hotlap::ocp

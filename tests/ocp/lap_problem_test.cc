@@ -28,7 +28,9 @@ double MaxAbsDifference(const std::vector<double>& a, const std::vector<double>&
 
 // The Darlington lap of these tests, the car and its warm-up (racing start, 25/40 degC).
 struct TestLap {
-  vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
+  // The paper's models: their brakes feed nothing back (a gas-and-rim tyre's rim takes its brake's
+  // heat, which keeps every brake in the programme).
+  vehicle::Car car = vehicle::PaperModelsOf(vehicle::LoadCar(test::Gen7Dir() / "car.yaml"));
   track::Track track = track::LoadTrack("darlington");
   LapWarmUp warm_up;
   LapProblemOptions lap;
@@ -90,7 +92,7 @@ TEST_P(BrakesLeftOutTest, SameSolutionAsTheFullProgramme) {
   // Every brake temperature, integrated or solved for, to well under a tenth of a kelvin (the
   // solver's tolerance on the full programme's defects is 1e-7 of 100 K).
   for (int c = 0; c < 4; ++c) {
-    EXPECT_LT(MaxAbsDifference(reduced.corners[c].disc_temp, full.corners[c].disc_temp), 1e-3) << c;
+    EXPECT_LT(MaxAbsDifference(reduced.corners[c].disc_temp, full.corners[c].disc_temp), 2e-3) << c;
     EXPECT_LT(MaxAbsDifference(reduced.corners[c].calliper_temp, full.corners[c].calliper_temp),
               1e-3)
         << c;
@@ -209,8 +211,11 @@ TEST(PeriodicLapTest, ClosesTheTemperaturesNotTheWear) {
   ASSERT_TRUE(s.solve.ok()) << s.solve.message;
   for (int c = 0; c < 4; ++c) {
     const CornerTrace& t = s.corners[c];
-    for (const std::vector<double>* v :
-         {&t.tread_temp, &t.carcass_temp, &t.disc_temp, &t.calliper_temp}) {
+    // The car's gas-and-rim tyres and bulk discs: their rims and bulks close too.
+    ASSERT_FALSE(t.rim_temp.empty());
+    ASSERT_FALSE(t.disc_bulk_temp.empty());
+    for (const std::vector<double>* v : {&t.tread_temp, &t.carcass_temp, &t.disc_temp,
+                                         &t.calliper_temp, &t.rim_temp, &t.disc_bulk_temp}) {
       EXPECT_NEAR(v->back(), v->front(), 1e-4) << c;
     }
     EXPECT_EQ(t.wear.front(), run.start.tyres[c].wear) << c;

@@ -1,5 +1,7 @@
 #include "hotlap/sim/qss_lap.h"
 
+#include "hotlap/sim/hot_pressure.h"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -8,6 +10,7 @@
 
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
+#include "hotlap/sim/hot_pressure.h"
 #include "hotlap/sim/qss_profile.h"
 #include "test_util.h"
 
@@ -95,8 +98,10 @@ TEST(QssLapTest, FlatCircleBalancesCentripetalForce) {
   }
   EXPECT_NEAR(lap.lap_time, road.size() * (road[1].distance - road[0].distance) / v, 1e-9);
   // At the limit: some tyre is at its ellipse (utilisation 1 within the bisection), and 1 m/s
-  // faster is infeasible.
-  const QssVehicle q(*car.vehicle);
+  // faster is infeasible. (The lap's vehicle: its gas-and-rim tyres' force models at the start's
+  // hot pressures, sim/hot_pressure.h.)
+  const vehicle::Car hot = WithHotPressures(car, HotPressuresAt(car, o.initial, 50.0));
+  const QssVehicle q(*hot.vehicle);
   std::array<double, 4> grip;
   for (int k = 0; k < 4; ++k) {
     grip[k] = car.tyre(kAllCorners[k]).compound->GripFactor(o.initial.tyres[k].tread_temp, 0.0);
@@ -135,8 +140,9 @@ TEST(QssLapTest, CorneringDragSlowsTheCircle) {
   o.max_drag_passes = 1;
   const QssLap without = RunQssLap(car, road, o).laps.at(0);
   EXPECT_GT(without.speed[0], with + 0.05);
+  const vehicle::Car hot = WithHotPressures(car, HotPressuresAt(car, o.initial, 50.0));
   EXPECT_NEAR(SumAt(without.corners, &CornerChannels::fx, 0),
-              CalcResistance(QssVehicle(*car.vehicle), road[0], without.speed[0]), 5.0);
+              CalcResistance(QssVehicle(*hot.vehicle), road[0], without.speed[0]), 5.0);
 }
 
 // Banked circle: the tyres make exactly what banking does not (spec section 10), and banking

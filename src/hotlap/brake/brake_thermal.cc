@@ -162,7 +162,9 @@ BrakeState<T> CalcBrakeDerivatives(const BrakeThermalParams<T>& p, const BrakeSt
                                                  const BrakeState<T>&, const BrakeInputTerms<T>&, \
                                                  BrakeHeatFlows<T>*, const T&);
 HOTLAP_FOR_EACH_SCALAR(HOTLAP_INSTANTIATE_BRAKE_THERMAL)
-// The optimal-control lap's brake elements have 5 inputs.
+// The optimal-control lap's brake elements have 5 inputs, its wheel elements 15.
 HOTLAP_INSTANTIATE_BRAKE_THERMAL(::hotlap::SecondOrder<5>)
+HOTLAP_INSTANTIATE_BRAKE_THERMAL(::hotlap::SecondOrder<15>)
+HOTLAP_INSTANTIATE_BRAKE_THERMAL(::hotlap::Jet15)
 
 }  // namespace hotlap::brake

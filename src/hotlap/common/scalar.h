@@ -51,17 +51,23 @@ using Jet7 = ceres::Jet<double, 7>;
 using Jet14 = ceres::Jet<double, 14>;
 /// First derivatives of the optimal-control lap's 10-input elements.
 using Jet10 = ceres::Jet<double, 10>;
+/// First derivatives of the optimal-control lap's 15-input wheel elements (a tyre with its rim
+/// and its brake).
+using Jet15 = ceres::Jet<double, 15>;
 
 }  // namespace hotlap
 
 /// The scalars the optimal-control elements (ocp/element.h) evaluate models on, by the element's
-/// input count: tyre forces on (Fz, kappa, alpha): 3; a brake: 5; a tyre's thermal model: 10.
+/// input count: tyre forces on (Fz, kappa, alpha): 3; a brake or a tyre's rolling resistance: 5;
+/// a tyre's thermal model: 10; a tyre with its rim and its brake: 15.
 /// Only the models an element uses are instantiated for them (see each .cc).
 #define HOTLAP_FOR_EACH_OCP_SCALAR(MACRO) \
   MACRO(::hotlap::SecondOrder<3>)         \
   MACRO(::hotlap::SecondOrder<5>)         \
   MACRO(::hotlap::SecondOrder<10>)        \
-  MACRO(::hotlap::Jet10)
+  MACRO(::hotlap::SecondOrder<15>)        \
+  MACRO(::hotlap::Jet10)                  \
+  MACRO(::hotlap::Jet15)
 
 /// Calls MACRO(T) once for every scalar type the models are instantiated for.
 #define HOTLAP_FOR_EACH_SCALAR(MACRO) \

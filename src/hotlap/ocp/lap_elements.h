@@ -5,8 +5,10 @@
 
 #include <array>
 #include <cmath>
+#include <type_traits>
 
 #include "hotlap/brake/brake_thermal.h"
+#include "hotlap/common/scalar.h"
 #include "hotlap/tyre/compound.h"
 #include "hotlap/tyre/tyre_thermal.h"
 #include "hotlap/vehicle/vehicle_model.h"
@@ -219,6 +221,83 @@ struct BrakeFn {
     const brake::BrakeState<T> d = brake::CalcBrakeDerivatives(Params<T>(), x, input);
     out[0] = in[0] * d.disc_temp;
     out[1] = in[0] * d.calliper_temp;
+  }
+};
+
+/// A parameter set `P<double>` with its copies on the scalars of an element of N inputs (cast
+/// once, kept beside the elements that point to them).
+template <template <Scalar> class P, int N>
+struct ParamsOn {
+  P<double> d;
+  P<SecondOrder<N>> so;
+  P<ceres::Jet<double, N>> jet;
+
+  ParamsOn() = default;
+  explicit ParamsOn(const P<double>& p)
+      : d(p),
+        so(p.template Cast<SecondOrder<N>>()),
+        jet(p.template Cast<ceres::Jet<double, N>>()) {}
+  template <class T>
+  const P<T>& Get() const {
+    if constexpr (std::is_same_v<T, double>) {
+      return d;
+    } else if constexpr (std::is_same_v<T, SecondOrder<N>>) {
+      return so;
+    } else {
+      return jet;
+    }
+  }
+};
+
+/// A wheel's tyre, rim and brake together, for the gas-and-rim tyre and the surface-and-bulk disc
+/// (whose heat meets in the rim): in (w, T_t, T_c, wear, T_rim, vx, fx, fy, fz, alpha, kappa, T_d,
+/// T_k, T_bulk, B) -> w d(T_t, T_c, wear, T_rim, T_d, T_k, T_bulk)/dt, the brake's force share * B.
+/// The brake's heat into the rim (hub conduction and the disc's radiation) is the tyre's
+/// `brake_to_rim`, as in replay (sim/replay.cc); a paper tyre's rim and a lumped disc's bulk have
+/// no rate (0).
+struct WheelThermalFn {
+  static constexpr int kInputs = 15;
+  const ParamsOn<tyre::TyreThermalParams, kInputs>* tyre;
+  const ParamsOn<brake::BrakeThermalParams, kInputs>* brake;
+  const tyre::TyreCompound* compound;
+  double share;
+  double ambient_temp, track_temp;
+
+  template <class T>
+  void operator()(const T* in, T* out) const {
+    const tyre::TyreThermalParams<T>& tp = tyre->template Get<T>();
+    const brake::BrakeThermalParams<T>& bp = brake->template Get<T>();
+    const brake::BrakeState<T> bx{in[11], in[12], in[13]};
+    const brake::BrakeInput<T> b_in{in[5], -share * in[14], T(ambient_temp)};
+    brake::BrakeHeatFlows<T> bq;
+    const brake::BrakeState<T> bd =
+        brake::CalcBrakeDerivatives(bp, bx, brake::CalcBrakeInputTerms(bp, b_in), &bq, in[4]);
+    const tyre::TyreState<T> tx{in[1], in[2], in[3], in[4]};
+    const tyre::TyreInput<T> t_in{in[5], in[6],  in[7],           in[8],
+                                  in[9], in[10], T(ambient_temp), T(track_temp)};
+    tyre::TyreHeatFlows<T>* no_flows = nullptr;
+    const tyre::TyreState<T> td = tyre::CalcTyreDerivatives(
+        tp, *compound, tx, tyre::CalcTyreInputTerms(tp, *compound, t_in), no_flows, bq.ToRim());
+    out[0] = in[0] * td.tread_temp;
+    out[1] = in[0] * td.carcass_temp;
+    out[2] = in[0] * td.wear;
+    out[3] = in[0] * td.rim_temp;
+    out[4] = in[0] * bd.disc_temp;
+    out[5] = in[0] * bd.calliper_temp;
+    out[6] = in[0] * bd.bulk_temp;
+  }
+};
+
+/// A gas-and-rim tyre's rolling-resistance force: in (T_c, T_rim, vx, Fz, F_rr) ->
+/// F_rr - c_rr(T_c, p) Fz, c_rr at the carcass temperature and the hot pressure of the gas
+/// between carcass and rim (tyre::CalcTyreGas): the force the car pays for the hysteresis heat the
+/// thermal model books (its `rolling_power` = u F_rr). Fz >= 0 in the programme.
+struct RollingForceFn {
+  const ParamsOn<tyre::TyreThermalParams, 5>* tyre;
+  template <class T>
+  void operator()(const T* in, T* out) const {
+    const tyre::TyreGas<T> gas = tyre::CalcTyreGas(tyre->template Get<T>(), in[0], in[1], in[2]);
+    out[0] = in[4] - gas.rolling_resistance * in[3];
   }
 };
 

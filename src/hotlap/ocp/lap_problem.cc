@@ -35,16 +35,29 @@ struct NodeVars {
   std::array<int, 4> kappa, alpha, vx, fz, fx, fy;
   int kappa_axle;
   int sum_fx, sum_fy, yaw_moment, w;
+  // With a gas-and-rim tyre or a surface-and-bulk disc on the car (wheel_states): each wheel's rim
+  // and disc bulk temperatures (states; fixed where the corner's model has none) and its tyre's
+  // rolling-resistance force (an algebraic variable). -1 otherwise.
+  bool wheel_states = false;
+  std::array<int, 4> rim{-1, -1, -1, -1}, bulk{-1, -1, -1, -1}, roll{-1, -1, -1, -1};
 
-  // The states, in defect order.
+  // The states, in defect order: the chassis's, five a corner (the paper's), then the wheel
+  // states, two a corner (kWheelStatesBegin).
   std::vector<int> States() const {
     std::vector<int> s = {u, v, r, n, xi};
     for (int c = 0; c < 4; ++c) {
       s.insert(s.end(), {tread[c], carcass[c], wear[c], disc[c], calliper[c]});
     }
+    if (wheel_states) {
+      for (int c = 0; c < 4; ++c) s.insert(s.end(), {rim[c], bulk[c]});
+    }
     return s;
   }
 };
+
+// Where the wheel states begin in NodeVars::States(): corner c's rim at kWheelStatesBegin + 2 c,
+// its disc bulk one after.
+constexpr int kWheelStatesBegin = 25;
 
 // A node's value of a channel sampled on the QSS lap, by linear interpolation in distance.
 double Sample(const std::vector<double>& distance, const std::vector<double>& values, double s) {
@@ -88,6 +101,11 @@ struct Builder {
   std::array<brake::BrakeThermalParams<SecondOrder<5>>, 4> brake_so;
   std::array<brake::BrakeThermalParams<Jet5>, 4> brake_jet;
   std::array<double, 4> rolling{};
+  // The wheel elements' parameters (wheel_states only).
+  bool wheel_states = false;
+  std::array<internal::ParamsOn<tyre::TyreThermalParams, 15>, 4> wheel_tyre;
+  std::array<internal::ParamsOn<brake::BrakeThermalParams, 15>, 4> wheel_brake;
+  std::array<internal::ParamsOn<tyre::TyreThermalParams, 5>, 4> rolling_tyre;
   // Each lap's vehicle (a stint's: its chassis mass falls with the fuel burnt); one for a lap.
   std::deque<VehicleParams> lap_params;
 
@@ -116,18 +134,24 @@ struct Builder {
       }
     }
     for (int k = 0; k < 4; ++k) {
-      // The programme's states are the paper's two masses and lumped disc
-      // (docs/optimal-control.md): a gas-and-rim tyre or a bulk disc runs here as its paper part.
+      wheel_states =
+          wheel_states || car.tyres[k].params.HasGasAndRim() || car.brakes[k].params.HasBulk();
+    }
+    for (int k = 0; k < 4; ++k) {
       tyre_d[k] = car.tyres[k].params;
-      tyre_d[k].model = tyre::TyreThermalModel::kPaper;
       tyre_d[k].smoothing = options.thermal_smoothing;
       tyre_so[k] = tyre_d[k].Cast<SecondOrder<10>>();
       tyre_jet[k] = tyre_d[k].Cast<Jet10>();
       brake_d[k] = car.brakes[k].params;
-      brake_d[k].disc_model = brake::DiscModel::kLumped;
       brake_so[k] = brake_d[k].Cast<SecondOrder<5>>();
       brake_jet[k] = brake_d[k].Cast<Jet5>();
-      // Rolling resistance as the QSS takes it: -My / (R Fz) at a quarter of the weight.
+      if (wheel_states) {
+        wheel_tyre[k] = internal::ParamsOn<tyre::TyreThermalParams, 15>(tyre_d[k]);
+        wheel_brake[k] = internal::ParamsOn<brake::BrakeThermalParams, 15>(brake_d[k]);
+        rolling_tyre[k] = internal::ParamsOn<tyre::TyreThermalParams, 5>(tyre_d[k]);
+      }
+      // Rolling resistance as the QSS takes it: -My / (R Fz) at a quarter of the weight (a
+      // gas-and-rim tyre's own, RollingForceFn, replaces it).
       rolling[k] = vehicle::CalcFreeRollingCoefficient(p.corners[k], 0.25 * p.Weight());
     }
   }
@@ -139,8 +163,10 @@ struct Builder {
 
   void AddNodes() {
     for (int c = 0; c < 4; ++c) {
+      // A wheel's brake heats its rim (and a bulk disc has a state of its own): with wheel states
+      // every brake is in the programme.
       brake_in_programme[c] = options.all_brake_states || options.periodic_thermal ||
-                              (options.front_disc_limit && IsFront(kAllCorners[c]));
+                              (options.front_disc_limit && IsFront(kAllCorners[c])) || wheel_states;
     }
     hs = options.collocation == Collocation::kHermiteSimpson;
     intervals = LapNodeCount(track, options.step_m, options.collocation) - 1;
@@ -256,7 +282,47 @@ struct Builder {
       nv.sum_fy = nlp.AddVariable(fy_total, -kInf, kInf, 1e4);
       nv.yaw_moment = nlp.AddVariable(0.0, -kInf, kInf, 1e4);
       nv.w = nlp.AddVariable(1.0 / speed, 1.0 / 150.0, 1.0 / 3.0, 0.015);
+      if (wheel_states) AddWheelVariables(k, nv, at);
       nodes.push_back(nv);
+    }
+  }
+
+  // Node k's wheel states (rim, disc bulk: fixed at the start's value where the corner's model
+  // has none) and rolling-resistance forces; `at` samples a guess channel at the node.
+  template <class At>
+  void AddWheelVariables(int k, NodeVars& nv, const At& at) {
+    nv.wheel_states = true;
+    const bool fix = k == 0 && !options.periodic_thermal;
+    for (int c = 0; c < 4; ++c) {
+      const sim::CornerHistory& h = guess.thermal.corners[c];
+      const auto state = [&](const std::vector<double>& hist, double start, bool has) {
+        const double value = k == 0 || hist.empty() || !has ? start : at(hist);
+        if (!has || fix) return nlp.AddVariable(value, value, value, 100.0);
+        return nlp.AddVariable(value, 200.0, 2000.0, 100.0);
+      };
+      nv.rim[c] =
+          state(h.rim_temp, options.initial.tyres[c].rim_temp, car.tyres[c].params.HasGasAndRim());
+      nv.bulk[c] = state(h.disc_bulk_temp, options.initial.brakes[c].bulk_temp,
+                         car.brakes[c].params.HasBulk());
+      const double roll0 = (h.rolling_resistance.empty() ? rolling[c] : at(h.rolling_resistance)) *
+                           at(guess.corners[c].fz);
+      nv.roll[c] = nlp.AddVariable(roll0, -kInf, kInf, 100.0);
+    }
+  }
+
+  // Node k's rolling-resistance forces: a gas-and-rim tyre's from its carcass and rim
+  // (RollingForceFn), a paper tyre's the vehicle model's coefficient times its load.
+  void AddRollingEquations(int k) {
+    const NodeVars& nv = nodes[k];
+    for (int c = 0; c < 4; ++c) {
+      const int row = nlp.AddConstraint(0, 0, 100.0);
+      if (car.tyres[c].params.HasGasAndRim()) {
+        nlp.AddElement(MakeElement<5, 1>(internal::RollingForceFn{&rolling_tyre[c]}),
+                       {nv.carcass[c], nv.rim[c], nv.vx[c], nv.fz[c], nv.roll[c]}, {{{row, 1.0}}});
+      } else {
+        nlp.AddLinear(row, nv.roll[c], 1.0);
+        nlp.AddLinear(row, nv.fz[c], -rolling[c]);
+      }
     }
   }
 
@@ -334,6 +400,7 @@ struct Builder {
       nlp.AddElement(MakeElement<5, 1>(internal::TimeFn{road.kappa_g()}),
                      {nv.w, nv.u, nv.v, nv.n, nv.xi}, {{{rt, 1.0}}});
     }
+    if (wheel_states) AddRollingEquations(k);
   }
 
   // Rows of the state derivatives f_j(node k) feed. Trapezoid: the defects of intervals k-1 and
@@ -373,6 +440,10 @@ struct Builder {
     for (int c = 0; c < 4; ++c) {
       state_in_programme[5 + 5 * c + 3] = state_in_programme[5 + 5 * c + 4] = brake_in_programme[c];
       state_in_programme[5 + 5 * c + 2] = options.wear_in_programme;
+      if (wheel_states) {
+        state_in_programme[kWheelStatesBegin + 2 * c] = car.tyres[c].params.HasGasAndRim();
+        state_in_programme[kWheelStatesBegin + 2 * c + 1] = car.brakes[c].params.HasBulk();
+      }
     }
     defect_rows.assign(intervals, std::vector<int>(n_states, -1));
     for (int k = 0; k < intervals; ++k) {
@@ -414,10 +485,18 @@ struct Builder {
     for (int k = 0; k <= intervals; ++k) {
       const NodeVars& nv = nodes[k];
       const NodeRoad& road = roads[k];
-      nlp.AddElement(
-          MakeElement<10, 1>(internal::LongitudinalFn{&P(k), road, rolling}),
-          {nv.w, nv.sum_fx, nv.u, nv.v, nv.r, nv.xi, nv.fz[0], nv.fz[1], nv.fz[2], nv.fz[3]},
-          {DefectTargets(k, 0)});
+      if (wheel_states) {
+        // The rolling-resistance forces themselves (coefficient 1).
+        nlp.AddElement(MakeElement<10, 1>(internal::LongitudinalFn{&P(k), road, {1, 1, 1, 1}}),
+                       {nv.w, nv.sum_fx, nv.u, nv.v, nv.r, nv.xi, nv.roll[0], nv.roll[1],
+                        nv.roll[2], nv.roll[3]},
+                       {DefectTargets(k, 0)});
+      } else {
+        nlp.AddElement(
+            MakeElement<10, 1>(internal::LongitudinalFn{&P(k), road, rolling}),
+            {nv.w, nv.sum_fx, nv.u, nv.v, nv.r, nv.xi, nv.fz[0], nv.fz[1], nv.fz[2], nv.fz[3]},
+            {DefectTargets(k, 0)});
+      }
       nlp.AddElement(MakeElement<5, 1>(internal::LateralFn{&P(k), road}),
                      {nv.w, nv.sum_fy, nv.u, nv.r, nv.xi}, {DefectTargets(k, 1)});
       nlp.AddElement(MakeElement<2, 1>(internal::ScaledProductFn{inv_iz}), {nv.w, nv.yaw_moment},
@@ -428,6 +507,15 @@ struct Builder {
                      {DefectTargets(k, 4)});
       for (int c = 0; c < 4; ++c) {
         const int base = 5 + 5 * c;
+        if (wheel_states) {
+          const int wheel = kWheelStatesBegin + 2 * c;
+          nlp.AddElement(
+              wheel_elements[c], WheelInputs(nv, c),
+              {DefectTargets(k, base), DefectTargets(k, base + 1), DefectTargets(k, base + 2),
+               DefectTargets(k, wheel), DefectTargets(k, base + 3), DefectTargets(k, base + 4),
+               DefectTargets(k, wheel + 1)});
+          continue;
+        }
         nlp.AddElement(
             thermal_elements[c],
             {nv.w, nv.tread[c], nv.carcass[c], nv.wear[c], nv.vx[c], nv.fx[c], nv.fy[c], nv.fz[c],
@@ -438,6 +526,13 @@ struct Builder {
                        {DefectTargets(k, base + 3), DefectTargets(k, base + 4)});
       }
     }
+  }
+
+  // The variables of corner c's wheel element (internal::WheelThermalFn) at node nv.
+  static std::vector<int> WheelInputs(const NodeVars& nv, int c) {
+    return {nv.w,        nv.tread[c], nv.carcass[c],  nv.wear[c], nv.rim[c],
+            nv.vx[c],    nv.fx[c],    nv.fy[c],       nv.fz[c],   nv.alpha[c],
+            nv.kappa[c], nv.disc[c],  nv.calliper[c], nv.bulk[c], nv.brake};
   }
 
   // |c_{k+1} - c_k| <= rate ds (w_k + w_{k+1}) / 2 for the control `c` (no limit if rate <= 0).
@@ -463,7 +558,8 @@ struct Builder {
     std::vector<int> periodic = {0, 1, 2, 3, 4};
     if (options.periodic_thermal) {
       for (int j = 5; j < static_cast<int>(nodes[0].States().size()); ++j) {
-        if ((j - 5) % 5 != 2) periodic.push_back(j);
+        const bool wear = j < kWheelStatesBegin && (j - 5) % 5 == 2;
+        if (!wear && state_in_programme[j]) periodic.push_back(j);
       }
     }
     const std::vector<int> a = nodes.front().States(), b = nodes.back().States();
@@ -524,6 +620,11 @@ struct Builder {
       brake_fns[c] = std::make_shared<internal::BrakeFn>(
           internal::BrakeFn{&brake_d[c], &brake_so[c], &brake_jet[c], share, options.ambient_temp});
       brake_elements[c] = MakeElement<5, 2>(*brake_fns[c]);
+      if (wheel_states) {
+        wheel_elements[c] = MakeElement<15, 7>(
+            internal::WheelThermalFn{&wheel_tyre[c], &wheel_brake[c], car.tyres[c].compound.get(),
+                                     share, options.ambient_temp, options.track_temp});
+      }
     }
     layout.nodes = intervals + 1;
     layout.collocation = options.collocation;
@@ -546,7 +647,8 @@ struct Builder {
     nlp.Finalize();
   }
 
-  std::array<std::shared_ptr<const Element>, 4> tyre_elements, thermal_elements, brake_elements;
+  std::array<std::shared_ptr<const Element>, 4> tyre_elements, thermal_elements, brake_elements,
+      wheel_elements;
   std::array<std::shared_ptr<const internal::BrakeFn>, 4> brake_fns;
   std::vector<std::vector<int>> defect_rows;
   std::array<bool, 4> brake_in_programme{};
@@ -588,6 +690,14 @@ struct Builder {
     for (int c = 0; c < 4; ++c) {
       for (int k = 0; k <= intervals; ++k) {
         const NodeVars& nv = nodes[k];
+        if (wheel_states) {
+          std::vector<double> in;
+          for (int i : WheelInputs(nv, c)) in.push_back(x[i]);
+          double out[7];
+          wheel_elements[c]->Values(in.data(), out);
+          rate[k] = out[2];  // d wear / ds
+          continue;
+        }
         const double in[10] = {x[nv.w],        x[nv.tread[c]], x[nv.carcass[c]], x[nv.wear[c]],
                                x[nv.vx[c]],    x[nv.fx[c]],    x[nv.fy[c]],      x[nv.fz[c]],
                                x[nv.alpha[c]], x[nv.kappa[c]]};
@@ -972,6 +1082,16 @@ LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& tra
       const double share =
           IsFront(kAllCorners[c]) ? 0.5 * p.brakes.front_share : 0.5 * (1.0 - p.brakes.front_share);
       t.brake_power.push_back(x[nv.vx[c]] * share * x[nv.brake]);
+      if (!nv.wheel_states) continue;
+      t.rim_temp.push_back(x[nv.rim[c]]);
+      t.disc_bulk_temp.push_back(x[nv.bulk[c]]);
+      const tyre::TyreThermalParams<double>& tp = car.tyres[c].params;
+      if (!tp.HasGasAndRim()) continue;
+      const tyre::TyreGas<double> gas =
+          tyre::CalcTyreGas(tp, x[nv.carcass[c]], x[nv.rim[c]], x[nv.vx[c]]);
+      t.gas_temp.push_back(gas.gas_temp);
+      t.pressure.push_back(gas.pressure);
+      t.rolling_resistance.push_back(gas.rolling_resistance);
     }
   }
   out.lap_time = time;

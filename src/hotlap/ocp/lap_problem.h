@@ -14,7 +14,9 @@
 /// forward-mode AD (ocp/element.h). Ipopt solves it with exact first and second derivatives.
 ///
 /// Node variables: states u, v, r (body speeds, yaw rate), n (lateral offset, left +), xi
-/// (heading error), and per corner T_tread, T_carcass, wear, T_disc, T_calliper; controls steer
+/// (heading error), and per corner T_tread, T_carcass, wear, T_disc, T_calliper (and, on a car
+/// with a gas-and-rim tyre or a surface-and-bulk disc, T_rim and T_bulk, each tyre's rolling
+/// resistance its own function of carcass and gas: docs/optimal-control.md); controls steer
 /// and the signed pedal p (drive when positive, brake when negative, never both), which sets the
 /// drive power P (at the rear contact patches, 0..P_wheel) and the brake force B (>= 0, split by
 /// the brake balance: front wheels beta B / 2 each, the rear axle (1 - beta) B); algebraic slip
@@ -131,6 +133,11 @@ struct LapProblemOptions {
 struct CornerTrace {
   std::vector<double> fz, fx, fy, slip_angle, slip_ratio, speed;
   std::vector<double> tread_temp, carcass_temp, wear, disc_temp, calliper_temp, brake_power;
+  /// With a gas-and-rim tyre or a surface-and-bulk disc on the car (empty otherwise): the rim and
+  /// disc bulk temperatures (K; held at the start's where the corner's model has none), and a
+  /// gas-and-rim tyre's gas temperature (K), hot gauge pressure (Pa) and rolling-resistance
+  /// coefficient (1) (the paper tyre's: empty).
+  std::vector<double> rim_temp, disc_bulk_temp, gas_temp, pressure, rolling_resistance;
 };
 
 /// Where a lap problem's variables and rows lie. Variables: node by node, `vars_per_node` each.

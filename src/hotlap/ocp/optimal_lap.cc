@@ -7,6 +7,7 @@
 
 #include "hotlap/common/error.h"
 #include "hotlap/ocp/min_curvature_line.h"
+#include "hotlap/sim/hot_pressure.h"
 #include "hotlap/sim/qss_lap.h"
 #include "hotlap/sim/road.h"
 #include "hotlap/track/racing_line.h"
@@ -15,6 +16,11 @@
 namespace hotlap::ocp {
 
 namespace {
+
+// The car the programme runs: its own models, or the paper's (OptimalLapOptions::paper_models).
+vehicle::Car ProgrammeCar(const vehicle::Car& car, const OptimalLapOptions& options) {
+  return options.paper_models ? vehicle::PaperModelsOf(car) : car;
+}
 
 // The QSS options of the warm-up's first two laps (and of the QSS lap on the optimal line).
 sim::QssOptions WarmUpQss(const vehicle::Car& car, const track::Track& track,
@@ -40,8 +46,8 @@ ThermalStart ParseThermalStart(const std::string& name) {
 
 LapWarmUp RunLapWarmUp(const vehicle::Car& any_car, const track::Track& track,
                        const OptimalLapOptions& options) {
-  // The programme runs the paper's models (lap_problem.cc): so do its warm-up laps.
-  const vehicle::Car car = vehicle::PaperModelsOf(any_car);
+  // The warm-up laps run the programme's models.
+  const vehicle::Car car = ProgrammeCar(any_car, options);
   vehicle::RequireVehicle(car, "the optimal lap");
   // On the minimum-curvature line from the car's starting state: one out-lap (the warm start),
   // or laps until the carcasses rise slowly (the racing start); the flying lap after it seeds the
@@ -51,12 +57,12 @@ LapWarmUp RunLapWarmUp(const vehicle::Car& any_car, const track::Track& track,
   const std::vector<sim::RoadPoint> road = sim::SampleRoadAlongLine(track, line, 1.0);
   const sim::QssOptions qss = WarmUpQss(car, track, options);
   sim::QssResult warm = sim::RunQssLap(car, road, qss);
-  const auto end_of = [](const sim::QssLap& lap) {
-    sim::ReplayInitialState e;
+  const auto end_of = [&car](const sim::QssLap& lap) {
+    sim::ReplayInitialState e = sim::EndState(lap.thermal);
     for (int k = 0; k < 4; ++k) {
-      const sim::CornerHistory& h = lap.thermal.corners[k];
-      e.tyres[k] = {h.tread_temp.back(), h.carcass_temp.back(), 0.0};
-      e.brakes[k] = {h.disc_temp.back(), h.calliper_temp.back()};
+      e.tyres[k].wear = 0.0;
+      // A paper tyre keeps no rim temperature: the car's start value.
+      if (!car.tyres[k].params.HasGasAndRim()) e.tyres[k].rim_temp = car.initial.rim_temp;
     }
     return e;
   };
@@ -94,12 +100,15 @@ LapWarmUp RunLapWarmUp(const vehicle::Car& any_car, const track::Track& track,
 
 OptimalLapRun RunOptimalLap(const vehicle::Car& any_car, const track::Track& track,
                             const OptimalLapOptions& options, const LapWarmUp* warm_up) {
-  // The programme runs the paper's models (lap_problem.cc): so do its guess and its replay.
-  const vehicle::Car car = vehicle::PaperModelsOf(any_car);
+  // The programme's models: so run its guess and its replay.
+  const vehicle::Car car = ProgrammeCar(any_car, options);
   vehicle::RequireVehicle(car, "the optimal lap");
   const LapWarmUp own_warm_up = warm_up ? LapWarmUp{} : RunLapWarmUp(car, track, options);
   const LapWarmUp& w = warm_up ? *warm_up : own_warm_up;
   const sim::QssOptions qss = WarmUpQss(car, track, options);
+  // The tyres' forces at the hot pressures of the guess lap (sim/hot_pressure.h).
+  const vehicle::Car hot_car =
+      sim::WithHotPressures(car, sim::MeanHotPressures(car, w.guess.thermal));
   OptimalLapRun run;
   run.start = w.start;
   run.start_laps = w.start_laps;
@@ -150,7 +159,7 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& any_car, const track::Track& tra
       coarse_ipopt.extra.insert(coarse_ipopt.extra.begin(), {"mumps_pivot_order", "3"});
     }
     const LapSolution c =
-        SolveMinimumTimeLap(car, track, coarse, w.guess, coarse_ipopt,
+        SolveMinimumTimeLap(hot_car, track, coarse, w.guess, coarse_ipopt,
                             options.presolved ? &options.presolved->coarse : nullptr);
     if (options.on_coarse_solve) options.on_coarse_solve(c);
     run.coarse = c.solve;
@@ -175,7 +184,7 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& any_car, const track::Track& tra
     // option given wins.
     fine_ipopt.extra.insert(fine_ipopt.extra.begin(), {"mumps_pivot_order", "3"});
   }
-  run.solution = SolveMinimumTimeLap(car, track, lap, w.guess, fine_ipopt,
+  run.solution = SolveMinimumTimeLap(hot_car, track, lap, w.guess, fine_ipopt,
                                      options.presolved ? &options.presolved->fine : nullptr);
 
   // The QSS lap on the optimal line, one lap from the optimal lap's own thermal start.
@@ -214,12 +223,25 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& any_car, const track::Track& tra
     sim::ReplayInitialState from = run.start;
     if (lap.periodic_thermal) {
       for (int c = 0; c < 4; ++c) {
-        from.tyres[c] = {s.corners[c].tread_temp[0], s.corners[c].carcass_temp[0],
-                         s.corners[c].wear[0]};
-        from.brakes[c] = {s.corners[c].disc_temp[0], s.corners[c].calliper_temp[0]};
+        const CornerTrace& t = s.corners[c];
+        from.tyres[c] = {t.tread_temp[0], t.carcass_temp[0], t.wear[0],
+                         t.rim_temp.empty() ? from.tyres[c].rim_temp : t.rim_temp[0]};
+        from.brakes[c] = {
+            t.disc_temp[0], t.calliper_temp[0],
+            t.disc_bulk_temp.empty() ? from.brakes[c].bulk_temp : t.disc_bulk_temp[0]};
       }
     }
-    run.exact = sim::RunReplay(car, in, from, {});
+    // The audit a lap at a time (a stint's track repeats the lap): a stretch from each lap's
+    // first node.
+    sim::ReplayOptions replay;
+    for (int lap = 1; lap < track.laps(); ++lap) {
+      const double s0 = lap * track.length_m() / track.laps();
+      const size_t k = static_cast<size_t>(
+          std::lower_bound(s.distance.begin(), s.distance.end(), s0 - 1e-9) - s.distance.begin());
+      const size_t last = replay.audit_starts.empty() ? 0 : replay.audit_starts.back();
+      if (k > last && k + 1 < s.time.size()) replay.audit_starts.push_back(k);
+    }
+    run.exact = sim::RunReplay(car, in, from, replay);
     for (int c = 0; c < 4; ++c) {
       for (size_t k = 0; k < s.time.size(); ++k) {
         run.max_tread_difference_K =

@@ -47,15 +47,19 @@ struct PresolvedLap {
 };
 
 struct OptimalLapOptions {
-  double step_m = 3.0;                     ///< mesh spacing along the centre line
+  double step_m = 3.0;  ///< mesh spacing along the centre line
+  /// Run the programme (and its warm-up, guess and replay) on the paper's models
+  /// (vehicle::PaperModelsOf: the two-mass tyre, the lumped disc) instead of the car's own
+  /// gas-and-rim tyres and surface-and-bulk discs.
+  bool paper_models = false;
   std::optional<double> front_disc_limit;  ///< K
   ThermalStart thermal_start = ThermalStart::kRacing;
-  double racing_carcass_rise_K = 15.0;  ///< kRacing: the largest carcass rise over a lap, K
-  int racing_max_laps = 40;             ///< kRacing: QSS laps at most
-  double ambient_temp = 0.0;            ///< K
-  double track_temp = 0.0;              ///< K
-  double line_margin_m = 1.5;           ///< the QSS guess's racing line keeps this from the edges
-  double car_half_width_m = 1.0;        ///< the optimal line keeps the car's centre this far in
+  double racing_carcass_rise_K = 5.0;  ///< kRacing: the largest carcass rise over a lap, K
+  int racing_max_laps = 40;            ///< kRacing: QSS laps at most
+  double ambient_temp = 0.0;           ///< K
+  double track_temp = 0.0;             ///< K
+  double line_margin_m = 1.5;          ///< the QSS guess's racing line keeps this from the edges
+  double car_half_width_m = 1.0;       ///< the optimal line keeps the car's centre this far in
   /// Coarse-to-fine: if above step_m, the lap is solved first on a mesh this coarse (from the QSS
   /// guess) and the fine solve starts from that solution, interpolated (ResampleLapPoint); 0: off.
   /// Ignored when start_point is given; a coarse solve that fails leaves the fine one to the guess.

@@ -56,6 +56,16 @@ sim::ColumnSet OptimalLapColumns(const OptimalLapRun& run, const track::Track& t
     add(fmt::format("disc_temp_{}_C", n), Celsius(t.disc_temp));
     add(fmt::format("calliper_temp_{}_C", n), Celsius(t.calliper_temp));
     add(fmt::format("brake_power_{}_W", n), t.brake_power);
+    // The wheel states (a car with a gas-and-rim tyre or a surface-and-bulk disc).
+    if (!t.rim_temp.empty()) add(fmt::format("rim_temp_{}_C", n), Celsius(t.rim_temp));
+    if (!t.disc_bulk_temp.empty()) {
+      add(fmt::format("disc_bulk_temp_{}_C", n), Celsius(t.disc_bulk_temp));
+    }
+    if (!t.gas_temp.empty()) {
+      add(fmt::format("gas_temp_{}_C", n), Celsius(t.gas_temp));
+      add(fmt::format("pressure_{}_kPa", n), Scaled(t.pressure, 1e-3));
+      add(fmt::format("rolling_resistance_{}", n), t.rolling_resistance);
+    }
     if (!run.exact.time.empty()) {
       add(fmt::format("tread_temp_{}_exact_C", n), Celsius(run.exact.corners[i].tread_temp));
       add(fmt::format("disc_temp_{}_exact_C", n), Celsius(run.exact.corners[i].disc_temp));

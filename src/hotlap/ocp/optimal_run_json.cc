@@ -1,5 +1,7 @@
 #include "hotlap/ocp/optimal_run_json.h"
 
+#include <algorithm>
+
 #include "hotlap/common/json_output.h"
 #include "hotlap/common/units.h"
 
@@ -11,10 +13,19 @@ nlohmann::json SolvedLapJson(const SolvedLap& s, const std::string& thermal_star
   nlohmann::json corners;
   for (Corner c : kAllCorners) {
     const int i = CornerIndex(c);
-    corners[std::string(CornerName(c))] = {
-        {"peak_disc_temp_C", RoundSignificant(f.peak_disc_temp_C[i])},
-        {"peak_tread_temp_C", RoundSignificant(f.peak_tread_temp_C[i])},
-        {"wear_mm", RoundSignificant(f.wear_mm[i])}};
+    nlohmann::json& j = corners[std::string(CornerName(c))];
+    j = {{"peak_disc_temp_C", RoundSignificant(f.peak_disc_temp_C[i])},
+         {"peak_tread_temp_C", RoundSignificant(f.peak_tread_temp_C[i])},
+         {"wear_mm", RoundSignificant(f.wear_mm[i])}};
+    const CornerTrace& t = s.run.solution.corners[i];
+    if (!t.gas_temp.empty()) {
+      j["peak_gas_temp_C"] = RoundSignificant(
+          KelvinToCelsius(*std::max_element(t.gas_temp.begin(), t.gas_temp.end())));
+      j["peak_pressure_kPa"] =
+          RoundSignificant(1e-3 * *std::max_element(t.pressure.begin(), t.pressure.end()));
+    }
+    // The exact models' audit over the lap (sim::RunReplay over the solution's channels).
+    if (!s.run.exact.audits.empty()) j["energy_audit"] = sim::AuditJson(s.run.exact.audits[0][i]);
   }
   nlohmann::json start = {{"mode", thermal_start}, {"qss_laps", s.run.start_laps}};
   if (thermal_start == "racing") {

@@ -1,5 +1,7 @@
 #include "hotlap/ocp/optimal_run_text.h"
 
+#include <algorithm>
+#include <cmath>
 #include <iterator>
 
 #include <fmt/format.h>
@@ -53,6 +55,21 @@ std::string SolvedLapText(const SolvedLap& s, const std::string& thermal_start) 
       "  smooth-model effect on the temperatures (exact replay): tread {:.2f} K, disc {:.2f} "
       "K\n",
       s.run.max_tread_difference_K, s.run.max_disc_difference_K);
+  if (!s.run.exact.audits.empty()) {
+    // Each tyre's heat over the car's work on it, and the worst balance of the lap.
+    std::string ratios;
+    double worst = 0.0;
+    for (const sim::CornerEnergyAudit& a : s.run.exact.audits[0]) {
+      ratios += fmt::format("{}{:.2f}", ratios.empty() ? "" : "/", a.HeatOverWork());
+      for (double closure : {a.TyreClosure(), a.RimClosure(), a.BrakeClosure()}) {
+        worst = std::max(worst, std::abs(closure));
+      }
+    }
+    fmt::format_to(out,
+                   "  energy audit (exact replay): tyre heat / work fl/fr/rl/rr {}, balances close "
+                   "within {:.1e}\n",
+                   ratios, worst);
+  }
   if (s.run.solution.frozen_wear_grip_difference > 0.0) {
     fmt::format_to(out, "  frozen wear's effect on the grip factor h(wear): {:.1e}\n",
                    s.run.solution.frozen_wear_grip_difference);

@@ -26,8 +26,10 @@ sim::ReplayInitialState EndState(const LapSolution& s) {
   sim::ReplayInitialState e;
   for (int c = 0; c < 4; ++c) {
     const CornerTrace& t = s.corners[c];
-    e.tyres[c] = {t.tread_temp.back(), t.carcass_temp.back(), t.wear.back()};
-    e.brakes[c] = {t.disc_temp.back(), t.calliper_temp.back()};
+    e.tyres[c] = {t.tread_temp.back(), t.carcass_temp.back(), t.wear.back(),
+                  t.rim_temp.empty() ? 0.0 : t.rim_temp.back()};
+    e.brakes[c] = {t.disc_temp.back(), t.calliper_temp.back(),
+                   t.disc_bulk_temp.empty() ? 0.0 : t.disc_bulk_temp.back()};
   }
   return e;
 }
@@ -89,6 +91,20 @@ std::vector<StintLap> StintLaps(const LapSolution& solution, const track::Track&
         burnt += 0.5 * (solution.drive_power[k] + solution.drive_power[k + 1]) * dt /
                  driveline_efficiency * bsfc_kg_per_J;
       }
+    }
+    for (int c = 0; c < 4; ++c) {
+      const CornerTrace& t = solution.corners[c];
+      if (t.gas_temp.empty()) continue;
+      lap.end_pressure_Pa[c] = At(d, t.pressure, s1);
+      // The time-weighted mean over the lap's intervals.
+      double sum = 0.0, time = 0.0;
+      for (size_t k = 0; k + 1 < d.size(); ++k) {
+        if (d[k] < s0 - 1e-9 || d[k + 1] > s1 + 1e-9) continue;
+        const double dt = solution.time[k + 1] - solution.time[k];
+        sum += 0.5 * (t.gas_temp[k] + t.gas_temp[k + 1]) * dt;
+        time += dt;
+      }
+      lap.mean_gas_temp_K[c] = time > 0.0 ? sum / time : t.gas_temp.front();
     }
     lap.fuel_burnt_kg = fuel_start_kg > 0.0 ? burnt : 0.0;
     fuel -= lap.fuel_burnt_kg;
@@ -246,6 +262,10 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
     }
     StintLap lap = StintLaps(run.solution, track, 1, fuel, {mass}, o.bsfc_kg_per_J, eta)[0];
     lap.lap = i + 1;
+    if (!run.exact.audits.empty()) {
+      lap.audit = run.exact.audits[0];
+      lap.has_audit = true;
+    }
     if (options.fuel_kg > 0.0 && lap.fuel_end_kg < 0.0) {
       throw InputError(fmt::format("fuel: {} kg runs out on lap {} of {}", options.fuel_kg, i + 1,
                                    options.laps));
@@ -331,6 +351,13 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
   }
   result.laps = StintLaps(result.run.solution, track, options.laps, options.fuel_kg, masses,
                           o.bsfc_kg_per_J, eta);
+  // The exact replay's audit has a stretch a lap (RunOptimalLap on a repeated track).
+  if (result.run.exact.audits.size() == result.laps.size()) {
+    for (size_t i = 0; i < result.laps.size(); ++i) {
+      result.laps[i].audit = result.run.exact.audits[i];
+      result.laps[i].has_audit = true;
+    }
+  }
   for (size_t i = 0; i < result.laps.size(); ++i) {
     result.total_time_s += result.laps[i].time_s;
     result.fuel_plan_error_kg =

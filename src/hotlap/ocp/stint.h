@@ -77,6 +77,13 @@ struct StintLap {
   /// that cools on the straights below its grip window, a disc that never cools to its pads').
   std::array<double, 4> min_tread_temp_K{}, min_carcass_temp_K{}, min_disc_temp_K{};
   std::array<double, 4> wear_end_mm{};  ///< tread depth lost since the stint's start
+  /// Gas-and-rim tyres (0 otherwise): the lap's mean gas temperature (K) and the hot gauge
+  /// pressure at the lap's end (Pa), what a crew chief reads at a stop.
+  std::array<double, 4> mean_gas_temp_K{}, end_pressure_Pa{};
+  /// Each corner's energy audit over the lap, from the exact models' replay of the solution
+  /// (OptimalLapRun::exact); has_audit false where there is none.
+  std::array<sim::CornerEnergyAudit, 4> audit{};
+  bool has_audit = false;
 };
 
 struct StintResult {

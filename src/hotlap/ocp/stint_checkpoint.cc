@@ -147,8 +147,8 @@ std::uint64_t StintFingerprint(const StintOptions& o, const track::Track& track,
   for (const auto& [name, value] : o.lap.ipopt.extra) h = Fnv1a64(name + "=" + value + ";", h);
   for (int c = 0; c < 4; ++c) {
     const sim::CornerHistory& t = warm_up.guess.thermal.corners[c];
-    for (const std::vector<double>* v :
-         {&t.tread_temp, &t.carcass_temp, &t.wear, &t.disc_temp, &t.calliper_temp}) {
+    for (const std::vector<double>* v : {&t.tread_temp, &t.carcass_temp, &t.wear, &t.disc_temp,
+                                         &t.calliper_temp, &t.rim_temp, &t.disc_bulk_temp}) {
       h = Fnv1a64(Bytes(*v), h);
     }
   }

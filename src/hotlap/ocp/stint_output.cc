@@ -28,6 +28,12 @@ nlohmann::json LapJson(const StintLap& l) {
         {"min_carcass_temp_C", RoundSignificant(KelvinToCelsius(l.min_carcass_temp_K[i]))},
         {"min_disc_temp_C", RoundSignificant(KelvinToCelsius(l.min_disc_temp_K[i]))},
         {"wear_mm", RoundSignificant(l.wear_end_mm[i])}};
+    nlohmann::json& j = corners[std::string(CornerName(c))];
+    if (l.end_pressure_Pa[i] != 0.0) {
+      j["mean_gas_temp_C"] = RoundSignificant(KelvinToCelsius(l.mean_gas_temp_K[i]));
+      j["end_pressure_kPa"] = RoundSignificant(1e-3 * l.end_pressure_Pa[i]);
+    }
+    if (l.has_audit) j["energy_audit"] = sim::AuditJson(l.audit[i]);
   }
   return {{"lap", l.lap},
           {"lap_time_s", RoundSignificant(l.time_s)},
@@ -60,6 +66,34 @@ sim::ColumnSet StintColumns(const StintResult& result, const track::Track& track
   return columns;
 }
 
+namespace {
+
+// Gas-and-rim tyres: each lap's hot pressures and gas temperatures, and each tyre's heat over the
+// car's work on it with the worst balance of the lap's audit (empty for the paper's tyres).
+std::string StintHeatText(const StintResult& r) {
+  if (r.laps.empty() || r.laps.front().end_pressure_Pa[0] == 0.0) return "";
+  std::string t =
+      fmt::format("{:>4} {:>27} {:>23} {:>23} {:>9}\n", "lap", "hot pressure psi fl..rr",
+                  "mean gas degC", "tyre heat / work", "balance");
+  for (const StintLap& l : r.laps) {
+    std::string psi, gas, ratio;
+    double worst = 0.0;
+    for (int c = 0; c < 4; ++c) {
+      psi += fmt::format(" {:6.1f}", l.end_pressure_Pa[c] / kPsi);
+      gas += fmt::format(" {:5.0f}", KelvinToCelsius(l.mean_gas_temp_K[c]));
+      ratio += fmt::format(" {:5.2f}", l.has_audit ? l.audit[c].HeatOverWork() : std::nan(""));
+      for (double closure :
+           {l.audit[c].TyreClosure(), l.audit[c].RimClosure(), l.audit[c].BrakeClosure()}) {
+        worst = std::max(worst, std::abs(closure));
+      }
+    }
+    t += fmt::format("{:>4} {:>27} {:>23} {:>23} {:>9.1e}\n", l.lap, psi, gas, ratio, worst);
+  }
+  return t;
+}
+
+}  // namespace
+
 std::string StintText(const StintResult& r) {
   std::string t = fmt::format("{:>4} {:>9} {:>9} {:>7} {:>23} {:>23} {:>23} {:>31} {:>6}\n", "lap",
                               "time s", "greedy s", "top m/s", "tread peak degC fl..rr",
@@ -84,6 +118,7 @@ std::string StintText(const StintResult& r) {
       "total {:.3f} s as one problem, {:.3f} s greedy (lap by lap): managing the stint gains "
       "{:.3f} s\n",
       r.total_time_s, r.greedy_total_time_s, r.greedy_total_time_s - r.total_time_s);
+  t += StintHeatText(r);
   return t;
 }
 

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
+#include "hotlap/sim/hot_pressure.h"
 #include "hotlap/sim/qss_profile.h"
 #include "hotlap/vehicle/slip_inversion.h"
 
@@ -289,6 +290,9 @@ QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
   if (options.laps < 1) throw InputError("QSS lap: laps must be >= 1");
   const size_t n = road.size();
   Prepared prep(car, params);
+  // Gas-and-rim tyres: each lap's force models at the hot pressures the last lap had, the first's
+  // at its start's (sim/hot_pressure.h); `hot_car` holds the set-up `prep` points into.
+  vehicle::Car hot_car;
   // The centre line's length closes centre_distance; a centre-line road is its own.
   const double track_length =
       options.track_length > 0.0 ? options.track_length : n * (road[1].distance - road[0].distance);
@@ -373,6 +377,12 @@ QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
 
   QssResult result;
   for (int lap_index = 0; lap_index < options.laps; ++lap_index) {
+    if (own_rolling) {
+      hot_car =
+          WithHotPressures(car, lap_index == 0 ? HotPressuresAt(car, state, 50.0)
+                                               : MeanHotPressures(car, result.laps.back().thermal));
+      prep = Prepared(hot_car, *hot_car.vehicle);
+    }
     prep.qss.speed_cap = options.SpeedCapOfLap(lap_index);
     if (lap_index == 0 && options.couple_first_lap) {
       // Thermal coupling of the first lap: a first pass on a road of about 4 m spacing (the

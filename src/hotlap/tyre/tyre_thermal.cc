@@ -427,8 +427,12 @@ TyreState<T> CalcTyreDerivatives(const TyreThermalParams<T>& p, const TyreCompou
                                                const TyreState<T>&, const TyreInputTerms<T>&,      \
                                                TyreHeatFlows<T>*, const T&);
 HOTLAP_FOR_EACH_SCALAR(HOTLAP_INSTANTIATE_TYRE_THERMAL)
-// The optimal-control lap's thermal elements have 10 inputs.
+// The optimal-control lap's elements: a tyre's rolling resistance (5 inputs), its thermal model
+// (10), a tyre with its rim and its brake (15).
+HOTLAP_INSTANTIATE_TYRE_THERMAL(::hotlap::SecondOrder<5>)
 HOTLAP_INSTANTIATE_TYRE_THERMAL(::hotlap::SecondOrder<10>)
 HOTLAP_INSTANTIATE_TYRE_THERMAL(::hotlap::Jet10)
+HOTLAP_INSTANTIATE_TYRE_THERMAL(::hotlap::SecondOrder<15>)
+HOTLAP_INSTANTIATE_TYRE_THERMAL(::hotlap::Jet15)
 
 }  // namespace hotlap::tyre
