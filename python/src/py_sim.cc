@@ -1,10 +1,8 @@
 // hotlap.load_car, load_track, replay and qss_lap: the models over a log or round a track, with
 // the same channels and summary keys as `hotlap replay` and `hotlap lap --method qss`.
 
-#include <algorithm>
 #include <optional>
 #include <string>
-#include <vector>
 
 #include <fmt/format.h>
 #include <pybind11/numpy.h>
@@ -12,15 +10,12 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include "hotlap/common/csv.h"
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/telemetry.h"
-#include "hotlap/common/units.h"
 #include "hotlap/runs/lap_run.h"
+#include "hotlap/runs/replay_run.h"
 #include "hotlap/sim/lap_json.h"
-#include "hotlap/sim/replay.h"
-#include "hotlap/sim/replay_io.h"
 #include "hotlap/sim/replay_report.h"
 #include "hotlap/track/track_io.h"
 #include "hotlap/vehicle/car.h"
@@ -30,40 +25,29 @@ namespace hotlap::python {
 
 namespace {
 
-std::optional<double> ToKelvin(const std::optional<double>& celsius) {
-  if (!celsius) return std::nullopt;
-  return CelsiusToKelvin(*celsius);
-}
-
 py::dict Replay(const vehicle::Car& car, const py::handle& telemetry, bool heat_flows,
                 double max_step_s, std::optional<double> tread_C, std::optional<double> carcass_C,
                 std::optional<double> disc_C, std::optional<double> calliper_C,
                 std::optional<double> ambient_C, std::optional<double> track_C,
                 const py::object& channel_map, std::optional<int> lap) {
-  if (!(max_step_s > 0.0)) throw InputError(fmt::format("max_step_s {} must be > 0", max_step_s));
   const Telemetry log = LogFrom(telemetry, ReadOptionsFrom(channel_map, lap));
-  sim::InitialTemperatureOverrides overrides;
-  overrides.tread_temp = ToKelvin(tread_C);
-  overrides.carcass_temp = ToKelvin(carcass_C);
-  overrides.disc_temp = ToKelvin(disc_C);
-  overrides.calliper_temp = ToKelvin(calliper_C);
-  overrides.ambient_temp = ToKelvin(ambient_C);
-  overrides.track_temp = ToKelvin(track_C);
-  const sim::ReplayInputs inputs = sim::ReplayInputsFromTelemetry(log, overrides);
-  const sim::ReplayInitialState initial = sim::InitialStateFor(log, car, overrides);
-  sim::ReplayOptions options;
-  options.max_step_s = max_step_s;
-  options.record_heat_flows = heat_flows;
-  sim::ReplayResult result;
+  const runs::ReplayRunOptions options{.heat_flows = heat_flows,
+                                       .max_step_s = max_step_s,
+                                       .tread_C = tread_C,
+                                       .carcass_C = carcass_C,
+                                       .disc_C = disc_C,
+                                       .calliper_C = calliper_C,
+                                       .ambient_C = ambient_C,
+                                       .track_C = track_C};
+  runs::ReplayRun run;
   {
     py::gil_scoped_release release;
-    result = sim::RunReplay(car, inputs, initial, options);
+    run = runs::RunReplay(car, log, options, runs::NameStyle::kPython);
   }
-  const sim::ColumnSet columns = sim::ReplayResultColumns(result, heat_flows);
   py::dict out;
-  out["channels"] = ColumnsToDict(columns.names, columns.values);
+  out["channels"] = ColumnsToDict(run.columns.names, run.columns.values);
   out["summary"] =
-      ToPython(sim::ReplayJson(result, sim::SummarizeReplay(result), log.path().string(), car, ""));
+      ToPython(sim::ReplayJson(run.result, run.summaries, log.path().string(), car, ""));
   return out;
 }
 
