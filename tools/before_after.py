@@ -5,9 +5,9 @@
     tools/before_after.py compare BEFORE_DIR AFTER_DIR [--rtol X]
 
 `run` runs the example commands below (readers, replay, the QSS lap, synth, fits, observe, ABS,
-a race, a coarse optimal lap with --threads 1, and the same runs from Python) with BUILD_DIR's
-`hotlap` and Python module, each in a folder of its own under OUT_DIR: what it writes, its
-standard output and error and its exit status. `compare` compares two such folders file by file:
+a race, a coarse optimal lap and a coarse stint with --threads 1, and the same runs from Python)
+with BUILD_DIR's `hotlap` and Python module, each in a folder of its own under OUT_DIR: what it
+writes, its standard output and error and its exit status. `compare` compares two such folders file by file:
 byte for byte for every command but the optimal laps, once timings ("in 0.52 s", "done in",
 wall-clock keys of the JSON summaries) and the repository's path are masked; the optimal laps'
 numbers within a relative tolerance (--rtol, default 1e-4: the solver's), their text exactly.
@@ -120,6 +120,16 @@ COMMANDS = [
     ("optimise_coarse", "optimal",
      ["hotlap", "optimise", "--step-m", "12", "--coarse-step-m", "0", "--threads", "1", "--out",
       "opt", "--json", "o.json"]),
+    # The F1 car of the peer benchmark on a banked track (its planar warning), and refused.
+    ("optimise_f1", "optimal",
+     ["hotlap", "optimise", "--car", "f1-2014", "--track", "darlington", "--mesh-points", "100",
+      "--out", "f1", "--json", "f1.json"]),
+    ("optimise_f1_refused", "exact",
+     ["hotlap", "optimise", "--car", "f1-2014", "--disc-limit-C", "500", "--out", "f1"]),
+    # A coarse stint of two optimal laps.
+    ("stint_coarse", "optimal",
+     ["hotlap", "stint", "--laps", "2", "--step-m", "12", "--coarse-step-m", "0", "--threads",
+      "1", "--out", "st", "--json", "s.json"]),
     # Python.
     ("py_qss_lap", "exact", ["py", """
 car = hotlap.load_car("gen7", {"chassis.mass_kg": 1600})
@@ -161,6 +171,11 @@ r = hotlap.race(hotlap.load_car(), hotlap.load_track(), laps=120, stages="40,80"
                 fall_off_laps=12, races=200, step_m=4.0)
 dump(r)
 """]),
+    ("py_stint", "optimal", ["py", """
+r = hotlap.stint(hotlap.load_car(), hotlap.load_track(), laps=2, step_m=12.0, coarse_step_m=0.0,
+                 threads=1)
+dump(r)
+"""]),
     ("py_optimal_lap", "optimal", ["py", """
 r = hotlap.optimal_lap(hotlap.load_car(), hotlap.load_track(), step_m=12.0, coarse_step_m=0.0,
                        threads=1)
@@ -199,6 +214,11 @@ def run(build: Path, out: Path, only):
     env = dict(os.environ, HOTLAP=str(hotlap),
                PYTHONPATH=str((build / "python").resolve()), OMP_NUM_THREADS="1")
     out.mkdir(parents=True, exist_ok=True)
+    # The build's source tree, whose data/ the program finds its built-in cars and tracks in
+    # (their paths are printed): masked by `compare` as the repository's root is.
+    for line in (build / "CMakeCache.txt").read_text().splitlines():
+        if line.startswith("CMAKE_HOME_DIRECTORY:"):
+            (out / "source_root.txt").write_text(line.split("=", 1)[1] + "\n")
     for name, _, argv in COMMANDS:
         if only and name not in only:
             continue
@@ -227,9 +247,10 @@ TIME_PATTERNS = [
     (re.compile(r"\bin [0-9.]+(e[-+]?\d+)? ?(s|ms|min)\b"), "in <t> s"),
     (re.compile(r"done in .*"), "done in <t>"),
     (re.compile(r"\([0-9.]+ times real time\)"), "(<n> times real time)"),
-    (re.compile(r'"(wall_time_s|elapsed_s|wall_s|seconds|solve_time_s|cpu_time_s|wall_clock_s|'
-                r'time_taken_s|fit_time_s|solve_wall_s)"(\s*:\s*)("?)[-0-9.e+]+("?)'),
+    (re.compile(r'"([a-z_]*(?:wall|solve|elapsed|cpu|seconds)[a-z_]*)"(\s*:\s*)("?)[-0-9.e+]+("?)'),
      r'"\1"\2<t>'),
+    (re.compile(r"iterations, [0-9.]+ s \(greedy laps [0-9.]+ s\)"),
+     "iterations, <t> s (greedy laps <t> s)"),
     (re.compile(r"(Total (CPU|seconds|wall)[^=]*=)\s*[0-9.]+"), r"\1 <t>"),
     (re.compile(r"\b[0-9.]+ s (wall|cpu)\b"), "<t> s \\1"),
     (re.compile(r"(\d+ / )[0-9.]+ s<"), r"\1<t> s<"),  # the optimal lap page's iterations / time
@@ -264,6 +285,11 @@ def numbers_close(a: bytes, b: bytes, rtol: float) -> str:
     return f"numbers differ by up to {worst:.2e} (relative)" if worst else ""
 
 
+def source_root(d: Path):
+    f = d / "source_root.txt"
+    return [f.read_text().strip()] if f.exists() else []
+
+
 def files_of(d: Path):
     return sorted(str(p.relative_to(d)) for p in d.rglob("*") if p.is_file())
 
@@ -273,8 +299,8 @@ def compare(before: Path, after: Path, rtol: float) -> int:
     for name, kind, _ in COMMANDS:
         a, b = before / name, after / name
         # The repository's root and each run's own folder (the fitted car names its log).
-        roots_a = [str(REPO), str(before.resolve())]
-        roots_b = [str(REPO), str(after.resolve())]
+        roots_a = [str(REPO), str(before.resolve())] + source_root(before)
+        roots_b = [str(REPO), str(after.resolve())] + source_root(after)
         if not a.is_dir() or not b.is_dir():
             print(f"{name:<26} MISSING in {'before' if not a.is_dir() else 'after'}")
             bad += 1
