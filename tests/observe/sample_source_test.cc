@@ -4,7 +4,6 @@
 
 #include "hotlap/observe/sample_source.h"
 
-#include <functional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -14,15 +13,6 @@
 
 namespace hotlap::observe {
 namespace {
-
-std::string InputErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
 
 int CountSamples(SampleSource& source) {
   int n = 0;
@@ -51,9 +41,9 @@ TEST(SampleSource, AMotecExportIsReadWhole) {
 
 TEST(SampleSource, StandardInputTakesNoLapAndAMissingFileIsNamed) {
   EXPECT_EQ(SampleSource("-", {}, {}).name(), "stdin");
-  EXPECT_TRUE(test::Contains(InputErrorOf([] { SampleSource("-", {.lap = 1}, {}); }),
+  EXPECT_TRUE(test::Contains(test::InputErrorOf([] { SampleSource("-", {.lap = 1}, {}); }),
                              "--lap and --channel-map need a log file"));
-  EXPECT_EQ(InputErrorOf([] { SampleSource("/nonexistent/log.csv", {}, {}); }),
+  EXPECT_EQ(test::InputErrorOf([] { SampleSource("/nonexistent/log.csv", {}, {}); }),
             "cannot read '/nonexistent/log.csv'");
 }
 

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <functional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -40,32 +39,23 @@ class LapRunTest : public ::testing::Test {
 vehicle::Car* LapRunTest::car_ = nullptr;
 track::Track* LapRunTest::track_ = nullptr;
 
-std::string InputErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
-
 TEST_F(LapRunTest, BadOptionsAreNamedInTheCallersSpelling) {
   LapRunOptions o;
   o.laps = 0;
-  EXPECT_EQ(InputErrorOf([&] { PlanLap(*car_, *track_, o, NameStyle::kCommandLine); }),
+  EXPECT_EQ(test::InputErrorOf([&] { PlanLap(*car_, *track_, o, NameStyle::kCommandLine); }),
             "--laps 0 must be in [1, 1000]");
-  EXPECT_EQ(InputErrorOf([&] { PlanLap(*car_, *track_, o, NameStyle::kPython); }),
+  EXPECT_EQ(test::InputErrorOf([&] { PlanLap(*car_, *track_, o, NameStyle::kPython); }),
             "laps 0 must be in [1, 1000]");
   o = {};
   o.step_m = 0.0;
-  EXPECT_EQ(InputErrorOf([&] { PlanLap(*car_, *track_, o, NameStyle::kPython); }),
+  EXPECT_EQ(test::InputErrorOf([&] { PlanLap(*car_, *track_, o, NameStyle::kPython); }),
             "step_m 0 must be > 0");
   o = {};
   o.line = "centre";
   o.caution_laps = "3";
-  EXPECT_TRUE(
-      test::Contains(InputErrorOf([&] { PlanLap(*car_, *track_, o, NameStyle::kCommandLine); }),
-                     "--caution-laps"));
+  EXPECT_TRUE(test::Contains(
+      test::InputErrorOf([&] { PlanLap(*car_, *track_, o, NameStyle::kCommandLine); }),
+      "--caution-laps"));
 }
 
 TEST_F(LapRunTest, StartingTemperaturesInCelsiusReplaceTheCarsOnlyWhereGiven) {

@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,15 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string InputErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
-
 TEST(ResolveSensorLag, TheOptionThenTheLogsLineThenTheNoiseFile) {
   observe::ObserverConfig config;
   config.path = "noise.yaml";
@@ -44,7 +34,7 @@ TEST(ResolveSensorLag, TheOptionThenTheLogsLineThenTheNoiseFile) {
   EXPECT_EQ(c.sensor_lag.calliper_temp, 0.4);
   EXPECT_EQ(ResolveSensorLag(0.7, line, "log.csv", c), "--sensor-lag-s");
   EXPECT_EQ(c.sensor_lag.tread_temp, 0.7);
-  EXPECT_EQ(InputErrorOf([&] {
+  EXPECT_EQ(test::InputErrorOf([&] {
               ResolveSensorLag(std::nullopt, {{"sensor_lag_s", "61"}}, "L", c);
             }),
             "L: '# sensor_lag_s: 61' is not a time constant in [0, 60] s");
@@ -95,12 +85,12 @@ TEST(RunObserve, ALogWithoutDataLeavesNoFileBehind) {
   ObserveRunOptions o;
   o.telemetry = test::WriteTextFile(dir.path() / "empty.csv", "time_s,speed_mps\n").string();
   o.out = (dir.path() / "est.csv").string();
-  EXPECT_TRUE(test::Contains(InputErrorOf([&] { RunObserve(car, o, {}); }),
+  EXPECT_TRUE(test::Contains(test::InputErrorOf([&] { RunObserve(car, o, {}); }),
                              "no data lines after the header"));
   EXPECT_FALSE(fs::exists(o.out));
   o.telemetry = "-";
   o.lap = 2;
-  EXPECT_TRUE(test::Contains(InputErrorOf([&] { RunObserve(car, o, {}); }),
+  EXPECT_TRUE(test::Contains(test::InputErrorOf([&] { RunObserve(car, o, {}); }),
                              "--lap and --channel-map need a log file"));
   EXPECT_FALSE(fs::exists(o.out));
 }

@@ -5,7 +5,6 @@
 
 #include "hotlap/runs/replay_run.h"
 
-#include <functional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -16,15 +15,6 @@
 namespace hotlap::runs {
 namespace {
 
-std::string InputErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
-
 class ReplayRunTest : public ::testing::Test {
  protected:
   const Telemetry log_ = Telemetry::Read(test::SourcePath("data/telemetry/darlington_example.csv"));
@@ -32,11 +22,12 @@ class ReplayRunTest : public ::testing::Test {
 };
 
 TEST_F(ReplayRunTest, AStepThatIsNotPositiveIsNamedInTheCallersSpelling) {
-  EXPECT_EQ(InputErrorOf([&] { RunReplay(car_, log_, {.max_step_s = 0.0}, NameStyle::kPython); }),
-            "max_step_s 0 must be > 0");
   EXPECT_EQ(
-      InputErrorOf([&] { RunReplay(car_, log_, {.max_step_s = -1.0}, NameStyle::kCommandLine); }),
-      "--max-step-s -1 must be > 0");
+      test::InputErrorOf([&] { RunReplay(car_, log_, {.max_step_s = 0.0}, NameStyle::kPython); }),
+      "max_step_s 0 must be > 0");
+  EXPECT_EQ(test::InputErrorOf(
+                [&] { RunReplay(car_, log_, {.max_step_s = -1.0}, NameStyle::kCommandLine); }),
+            "--max-step-s -1 must be > 0");
 }
 
 TEST_F(ReplayRunTest, HeatFlowsAddColumnsAndTheChannelsCarryTheRunsMetadata) {

@@ -4,7 +4,6 @@
 
 #include "hotlap/runs/stint_run.h"
 
-#include <functional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -17,25 +16,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string InputErrorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no InputError)";
-}
-
 TEST(StintRun, OutOfRangeOptionsAreNamedInTheCallersSpelling) {
-  EXPECT_EQ(InputErrorOf([] { CheckThreads(300, NameStyle::kPython); }),
+  EXPECT_EQ(test::InputErrorOf([] { CheckThreads(300, NameStyle::kPython); }),
             "threads: 300 is not 0 to 256 (0: one per core)");
-  EXPECT_EQ(InputErrorOf([] { CheckThreads(-1, NameStyle::kCommandLine); }),
+  EXPECT_EQ(test::InputErrorOf([] { CheckThreads(-1, NameStyle::kCommandLine); }),
             "--threads: -1 is not 0 to 256 (0: one per core)");
   StintRunOptions o;
   o.disc_limit_C = 1600.0;
-  EXPECT_EQ(InputErrorOf([&] { MakeStintOptions(o, NameStyle::kCommandLine); }),
+  EXPECT_EQ(test::InputErrorOf([&] { MakeStintOptions(o, NameStyle::kCommandLine); }),
             "--disc-limit-C: 1600 degC is not in (0, 1500)");
-  EXPECT_EQ(InputErrorOf([&] { MakeStintOptions(o, NameStyle::kPython); }),
+  EXPECT_EQ(test::InputErrorOf([&] { MakeStintOptions(o, NameStyle::kPython); }),
             "disc_limit_C: 1600 degC is not in (0, 1500)");
 }
 
