@@ -8,20 +8,12 @@
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
 #include "hotlap/ocp/min_curvature_line.h"
+#include "hotlap/runs/celsius_option.h"
 #include "hotlap/sim/lap_output.h"
 #include "hotlap/sim/lap_report.h"
 #include "hotlap/track/racing_line.h"
 
 namespace hotlap::runs {
-
-namespace {
-
-std::optional<double> Kelvin(const std::optional<double>& celsius) {
-  if (!celsius) return std::nullopt;
-  return CelsiusToKelvin(*celsius);
-}
-
-}  // namespace
 
 std::vector<sim::RoadPoint> SampleLapRoad(const track::Track& track, const std::string& line,
                                           double step_m, double line_margin_m) {
@@ -54,12 +46,12 @@ LapPlan PlanLap(const vehicle::Car& car, const track::Track& track, const LapRun
   q.caution_laps = sim::ParseLapList(o.caution_laps, o.laps, OptionName(style, "caution_laps"));
   q.caution_speed =
       sim::CheckCautionSpeed(o.caution_speed_kph, OptionName(style, "caution_speed_kph"));
-  q.initial = sim::CarStartState(car, {.tread_temp = Kelvin(o.tread_C),
-                                       .carcass_temp = Kelvin(o.carcass_C),
-                                       .disc_temp = Kelvin(o.disc_C),
-                                       .calliper_temp = Kelvin(o.calliper_C),
-                                       .rim_temp = Kelvin(o.rim_C),
-                                       .disc_bulk_temp = Kelvin(o.disc_bulk_C),
+  q.initial = sim::CarStartState(car, {.tread_temp = KelvinOf(o.tread_C),
+                                       .carcass_temp = KelvinOf(o.carcass_C),
+                                       .disc_temp = KelvinOf(o.disc_C),
+                                       .calliper_temp = KelvinOf(o.calliper_C),
+                                       .rim_temp = KelvinOf(o.rim_C),
+                                       .disc_bulk_temp = KelvinOf(o.disc_bulk_C),
                                        .ambient_temp = std::nullopt,
                                        .track_temp = std::nullopt});
   return plan;

@@ -10,15 +10,11 @@
 #include "hotlap/common/yaml_reader.h"
 #include "hotlap/observe/sample_source.h"
 #include "hotlap/observe/stream_io.h"
+#include "hotlap/runs/celsius_option.h"
 
 namespace hotlap::runs {
 
 namespace {
-
-std::optional<double> Kelvin(const std::optional<double>& celsius) {
-  if (!celsius) return std::nullopt;
-  return CelsiusToKelvin(*celsius);
-}
 
 // Steps the observer through every sample from `first` on, writing each estimate row.
 void ObserveAll(observe::CarObserver& observer, observe::SampleSource& source,
@@ -76,10 +72,10 @@ ObserveRun RunObserve(const vehicle::Car& car, const ObserveRunOptions& o,
                       const ObserveHooks& hooks) {
   const auto started = std::chrono::steady_clock::now();
   observe::ObserverConfig config = LoadObserveConfig(o);
-  const observe::ObserverStart start{.tread_temp = Kelvin(o.tread_C),
-                                     .carcass_temp = Kelvin(o.carcass_C),
-                                     .disc_temp = Kelvin(o.disc_C),
-                                     .calliper_temp = Kelvin(o.calliper_C)};
+  const observe::ObserverStart start{.tread_temp = KelvinOf(o.tread_C),
+                                     .carcass_temp = KelvinOf(o.carcass_C),
+                                     .disc_temp = KelvinOf(o.disc_C),
+                                     .calliper_temp = KelvinOf(o.calliper_C)};
   observe::SampleSource source(o.telemetry, TelemetryReadOptions{o.channel_map, o.lap},
                                {CelsiusToKelvin(o.ambient_C), CelsiusToKelvin(o.track_C)});
   // The first sample is read before the output is opened, so a log refused at its header or

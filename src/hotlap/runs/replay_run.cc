@@ -7,17 +7,9 @@
 #include "hotlap/common/csv.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
+#include "hotlap/runs/celsius_option.h"
 
 namespace hotlap::runs {
-
-namespace {
-
-std::optional<double> Kelvin(const std::optional<double>& celsius) {
-  if (!celsius) return std::nullopt;
-  return CelsiusToKelvin(*celsius);
-}
-
-}  // namespace
 
 ReplayRun RunReplay(const vehicle::Car& car, const Telemetry& log, const ReplayRunOptions& o,
                     NameStyle style) {
@@ -26,12 +18,12 @@ ReplayRun RunReplay(const vehicle::Car& car, const Telemetry& log, const ReplayR
         fmt::format("{} {} must be > 0", OptionName(style, "max_step_s"), o.max_step_s));
   }
   sim::InitialTemperatureOverrides overrides;
-  overrides.tread_temp = Kelvin(o.tread_C);
-  overrides.carcass_temp = Kelvin(o.carcass_C);
-  overrides.disc_temp = Kelvin(o.disc_C);
-  overrides.calliper_temp = Kelvin(o.calliper_C);
-  overrides.ambient_temp = Kelvin(o.ambient_C);
-  overrides.track_temp = Kelvin(o.track_C);
+  overrides.tread_temp = KelvinOf(o.tread_C);
+  overrides.carcass_temp = KelvinOf(o.carcass_C);
+  overrides.disc_temp = KelvinOf(o.disc_C);
+  overrides.calliper_temp = KelvinOf(o.calliper_C);
+  overrides.ambient_temp = KelvinOf(o.ambient_C);
+  overrides.track_temp = KelvinOf(o.track_C);
   const sim::ReplayInputs inputs = sim::ReplayInputsFromTelemetry(log, overrides);
   const sim::ReplayInitialState initial = sim::InitialStateFor(log, car, overrides);
   sim::ReplayOptions options;
