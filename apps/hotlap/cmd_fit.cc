@@ -39,33 +39,6 @@ struct FitArgs {
   runs::FitRunOptions run;
 };
 
-// The paper-style table, the uncertainties and the warnings (warnings to stderr).
-void PrintFitRun(const ident::FitRun& run) {
-  using ident::ShortNumber;
-  fmt::print("hotlap {}: {} ({} samples, {:.2f} s of log) with car '{}'\n", run.command,
-             run.telemetry, run.time.size(),
-             run.time.empty() ? 0.0 : run.time.back() - run.time.front(), run.car_name);
-  for (const ident::CornerFitOutcome& c : run.result.corners) {
-    fmt::print("{}:", CornerName(c.corner));
-    for (const auto& [key, value] : c.rms) fmt::print("  {} {:.4g}", key, value);
-    fmt::print("\n");
-    for (const auto& [p, e] : ident::ModelParameters(c)) {
-      fmt::print(
-          "  {:<12} {:>11} {:<10} std error {:>9}  95% {:<24} joint {:<24} well determined: {}\n",
-          p->label, ShortNumber(e->value + p->display_offset), p->unit, ShortNumber(e->std_error),
-          ident::IntervalText(*p, *e), ident::JointIntervalText(*p, *e), ident::VerdictText(*e));
-    }
-    for (const ident::ReportedFit& r : c.fits) {
-      for (const auto& [k, v] : r.held) fmt::print("  {:<12} {:>11} (held)\n", k, ShortNumber(v));
-    }
-    for (const std::string& w : ident::CornerWarnings(c)) {
-      std::fprintf(stderr, "hotlap: warning: %s: %s\n", std::string(CornerName(c.corner)).c_str(),
-                   w.c_str());
-    }
-  }
-  fmt::print("fitted in {:.2f} s\n", run.elapsed_s);
-}
-
 // InputError before any work if an output cannot be written where it was asked for.
 void CheckOutputs(const FitArgs& a) {
   CheckOutputFolder(a.run.out, "--out");
@@ -96,7 +69,11 @@ int RunFit(FitArgs& a, CarFitKind kind) {
                                          {fmt::format("hotlap {}", HOTLAP_VERSION),
                                           fs::absolute(a.telemetry).lexically_normal().string()},
                                          runs::NameStyle::kCommandLine);
-  PrintFitRun(run);
+  // The paper-style table and the uncertainties; the warnings to standard error.
+  fmt::print("{}", ident::FitRunText(run));
+  for (const std::string& w : ident::FitRunWarnings(run)) {
+    std::fprintf(stderr, "hotlap: warning: %s\n", w.c_str());
+  }
   fmt::print("wrote {} (and the folder {})\n", a.run.out,
              (fs::path(a.run.out).parent_path() / fs::path(a.run.out).stem()).string());
   if (!a.json.empty()) {
