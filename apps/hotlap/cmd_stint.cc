@@ -2,7 +2,6 @@
 // from lap to lap, against the greedy driver's N single optimal laps (docs/optimal-control.md,
 // "Stints").
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -15,15 +14,12 @@
 
 #include "commands.h"
 #include "hotlap/common/data_path.h"
-#include "hotlap/common/error.h"
-#include "hotlap/common/fnv1a.h"
 #include "hotlap/common/json_output.h"
 #include "hotlap/common/output_folder.h"
-#include "hotlap/common/read_file.h"
-#include "hotlap/common/units.h"
 #include "hotlap/ocp/optimal_run.h"
 #include "hotlap/ocp/solver_memory.h"
 #include "hotlap/ocp/stint_output.h"
+#include "hotlap/runs/stint_run.h"
 #include "hotlap/track/track_io.h"
 #include "hotlap/vehicle/car.h"
 
@@ -36,40 +32,15 @@ struct StintArgs {
   std::string track = "darlington";
   std::string car = "gen7";
   std::vector<std::string> set;
-  int laps = 3;
-  double wear_scale = 1.0;
-  double fuel_kg = 40.0;
-  double bsfc_g_per_kWh = 300.0;
-  std::optional<double> disc_limit_C;
-  ocp::OptimalRunOptions run = [] {
-    ocp::OptimalRunOptions o;
-    o.step_m = ocp::StintOptions::kStintStepM;
-    o.threads = 0;  // --threads: one per core
+  runs::StintRunOptions stint = [] {
+    runs::StintRunOptions o;
+    o.bsfc_g_per_kWh = 300.0;
+    o.run.threads = 0;  // --threads: one per core
     return o;
   }();
   std::string out, json;
   std::string checkpoint;
-  int checkpoint_every = 10;
 };
-
-// What the checkpoints' fingerprint needs beyond the stint's options: the bytes of every file of
-// the car (its folder: tyres, brakes, .tir) and of the track, and the --set overrides.
-std::string CheckpointKey(const StintArgs& a) {
-  std::string key;
-  const auto add_file = [&](const fs::path& p) {
-    key += p.filename().string() + ":" + std::to_string(Fnv1a64(ReadWholeFile(p))) + ";";
-  };
-  const fs::path car_file = ResolveCarFile(a.car);
-  std::vector<fs::path> files;
-  for (const auto& e : fs::recursive_directory_iterator(car_file.parent_path())) {
-    if (e.is_regular_file()) files.push_back(e.path());
-  }
-  std::sort(files.begin(), files.end());
-  for (const fs::path& p : files) add_file(p);
-  add_file(ResolveTrackFile(a.track));
-  for (const std::string& s : a.set) key += "set " + s + ";";
-  return key;
-}
 
 int RunStint(const StintArgs& a) {
   const auto started = std::chrono::steady_clock::now();
@@ -79,24 +50,13 @@ int RunStint(const StintArgs& a) {
       vehicle::LoadCar(ResolveCarFile(a.car), vehicle::ParseCarOverrides(a.set));
   vehicle::RequireVehicle(car, "a stint");
   const track::Track track = track::LoadTrack(a.track);
-  ocp::StintOptions o;
-  o.laps = a.laps;
-  o.wear_scale = a.wear_scale;
-  o.fuel_kg = a.fuel_kg;
-  o.bsfc_kg_per_J = a.bsfc_g_per_kWh * 1e-3 / 3.6e6;
-  o.lap = ocp::MakeOptimalLapOptions(a.run);
+  runs::StintRunOptions stint = a.stint;
   if (!a.checkpoint.empty()) {
-    o.checkpoint_dir = a.checkpoint;
-    o.checkpoint_every = a.checkpoint_every;
-    o.checkpoint_key = CheckpointKey(a);
+    stint.checkpoint_dir = a.checkpoint;
+    stint.checkpoint_key =
+        runs::StintCheckpointKey(ResolveCarFile(a.car), ResolveTrackFile(a.track), a.set);
   }
-  if (a.disc_limit_C) {
-    if (!(*a.disc_limit_C > 0.0 && *a.disc_limit_C < 1500.0)) {
-      throw InputError(
-          fmt::format("--disc-limit-C: {:g} degC is not in (0, 1500)", *a.disc_limit_C));
-    }
-    o.lap.front_disc_limit = CelsiusToKelvin(*a.disc_limit_C);
-  }
+  ocp::StintOptions o = runs::MakeStintOptions(stint, runs::NameStyle::kCommandLine);
   // Progress of every solve (the greedy laps' and the stint's), every tenth iteration.
   o.lap.ipopt.on_iteration = [](int it, double objective, double infeasibility, double optimality) {
     if (it % 10 == 0) {
@@ -108,7 +68,7 @@ int RunStint(const StintArgs& a) {
   };
   ocp::KeepSolverMemory();
   fmt::print("hotlap stint: {} laps of {} ({:.1f} m) with car '{}', wear x {:g}, {:g} kg of fuel\n",
-             a.laps, track.name(), track.length_m(), car.name, a.wear_scale, a.fuel_kg);
+             o.laps, track.name(), track.length_m(), car.name, o.wear_scale, o.fuel_kg);
   std::fflush(stdout);
   const ocp::StintResult r = ocp::SolveStint(car, track, o, [](const std::string& line) {
     fmt::print("  {}\n", line);
@@ -142,51 +102,53 @@ CommandRunner RegisterStintCommand(CLI::App& app) {
   sub->add_option("--car", a->car, "Built-in car name or path to a car.yaml")
       ->capture_default_str();
   AddSetOption(sub, a->set);
-  sub->add_option("--laps", a->laps, "Laps in the stint")
+  sub->add_option("--laps", a->stint.laps, "Laps in the stint")
       ->capture_default_str()
       ->check(CLI::Range(1, 100));
-  sub->add_option("--wear-scale", a->wear_scale,
+  sub->add_option("--wear-scale", a->stint.wear_scale,
                   "Wear rate times this: N laps stand for about N times this many laps of wear "
                   "(0: no wear)")
       ->capture_default_str()
       ->check(kNonNegative);
-  sub->add_option("--fuel-kg", a->fuel_kg,
+  sub->add_option("--fuel-kg", a->stint.fuel_kg,
                   "Fuel aboard at the start (in the car's mass), burnt with the engine's work; 0: "
                   "mass constant")
       ->capture_default_str()
       ->check(kNonNegative);
-  sub->add_option("--bsfc-g-per-kWh", a->bsfc_g_per_kWh,
+  sub->add_option("--bsfc-g-per-kWh", *a->stint.bsfc_g_per_kWh,
                   "Brake-specific fuel consumption (assumed 300 g/kWh)")
       ->capture_default_str()
       ->check(kPositive);
-  sub->add_option("--disc-limit-C", a->disc_limit_C,
+  sub->add_option("--disc-limit-C", a->stint.disc_limit_C,
                   "Front disc temperatures at most this on every lap, degC");
-  sub->add_option("--step-m", a->run.step_m, "Mesh spacing along the centre line, m")
+  sub->add_option("--step-m", a->stint.run.step_m, "Mesh spacing along the centre line, m")
       ->capture_default_str()
       ->check(CLI::Range(0.5, 50.0));
-  sub->add_option("--coarse-step-m", a->run.coarse_step_m,
+  sub->add_option("--coarse-step-m", a->stint.run.coarse_step_m,
                   "The greedy laps coarse to fine from this spacing, m (0: off)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 100.0));
-  sub->add_option("--thermal-start", a->run.thermal_start,
+  sub->add_option("--thermal-start", a->stint.run.thermal_start,
                   "Thermal states at the start: racing, warm or car (docs/optimal-control.md)")
       ->capture_default_str()
       ->check(CLI::IsMember({"racing", "warm", "car"}));
-  sub->add_option("--ambient-temp-C", a->run.ambient_C, "Air temperature")->capture_default_str();
-  sub->add_option("--track-temp-C", a->run.track_C, "Track surface temperature")
+  sub->add_option("--ambient-temp-C", a->stint.run.ambient_C, "Air temperature")
       ->capture_default_str();
-  sub->add_option("--threads", a->run.threads,
+  sub->add_option("--track-temp-C", a->stint.run.track_C, "Track surface temperature")
+      ->capture_default_str();
+  sub->add_option("--threads", a->stint.run.threads,
                   "Threads evaluating the derivatives (0: one per core, at most 8)")
       ->capture_default_str()
       ->check(CLI::Range(0, 256));
-  sub->add_option("--max-iterations", a->run.max_iterations, "Ipopt's iteration limit per solve")
+  sub->add_option("--max-iterations", a->stint.run.max_iterations,
+                  "Ipopt's iteration limit per solve")
       ->capture_default_str()
       ->check(kPositive);
   sub->add_option("--checkpoint", a->checkpoint,
                   "Checkpoint folder: each greedy lap's solves and the stint's iterate saved as "
                   "the run goes; run the same command again to resume from them "
                   "(docs/reliability.md)");
-  sub->add_option("--checkpoint-every", a->checkpoint_every,
+  sub->add_option("--checkpoint-every", a->stint.checkpoint_every,
                   "Save the stint solve's iterate every this many Ipopt iterations")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));

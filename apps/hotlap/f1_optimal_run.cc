@@ -1,9 +1,7 @@
 // `hotlap optimise` for the limebeer-2014-f1 car (docs/f1-peer.md): the checks, the library's
 // solve (ocp/f1_lap_problem.h), the summary and the outputs (ocp/f1_lap_output.h).
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 
 #include <fmt/format.h>
@@ -11,10 +9,10 @@
 #include "hotlap/common/error.h"
 #include "hotlap/common/json_output.h"
 #include "hotlap/common/output_folder.h"
-#include "hotlap/common/units.h"
 #include "hotlap/ocp/f1_lap_output.h"
 #include "hotlap/ocp/f1_lap_problem.h"
 #include "hotlap/ocp/solver_memory.h"
+#include "hotlap/runs/f1_run.h"
 #include "hotlap/track/track_io.h"
 #include "optimal_runs.h"
 
@@ -23,40 +21,20 @@ namespace hotlap::app {
 namespace fs = std::filesystem;
 
 int RunF1Optimal(const OptimalArgs& a, const fs::path& car_file) {
-  if (!a.set.empty()) {
-    throw InputError(
-        fmt::format("--set does not apply to the car '{}' (the limebeer-2014-f1 model "
-                    "has no dotted keys to override; docs/f1-peer.md)",
-                    a.car));
-  }
   const auto started = std::chrono::steady_clock::now();
+  const ocp::OptimalRunOptions run = RunOptions(a);
+  runs::CheckF1Run(a.car, !a.set.empty(), run);
   const vehicle::F1CarParams car = vehicle::LoadF1Car(car_file);
   const track::Track track = track::LoadTrack(a.track);
   if (fs::exists(a.out) && !fs::is_directory(a.out)) {
     throw InputError(fmt::format("--out {}: exists and is not a folder", a.out));
   }
   if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
-  if (a.run.disc_limit_C || a.run.compare_disc_limit_C) {
-    throw InputError("the limebeer-2014-f1 car has no brake temperatures: no disc limit");
-  }
-  double max_bank = 0.0, max_grade = 0.0;
-  for (double d = 0.0; d < track.length_m(); d += 5.0) {
-    max_bank = std::max(max_bank, std::abs(track.At(d).bank_rad));
-    max_grade = std::max(max_grade, std::abs(track.At(d).grade_rad));
-  }
-  if (max_bank > 1e-3 || max_grade > 1e-3) {
-    fmt::print(stderr,
-               "warning: the limebeer-2014-f1 model is planar: this track's banking (up to {:.1f} "
-               "deg) and grade (up to {:.1f} deg) are ignored\n",
-               RadToDeg(max_bank), RadToDeg(max_grade));
-  }
+  fmt::print(stderr, "{}", runs::PlanarTrackWarning(track));
   ocp::F1LapOptions o;
   if (a.mesh_points > 0) o.mesh_points = a.mesh_points;
   ocp::KeepSolverMemory();
-  ocp::IpoptOptions ipopt = ocp::F1IpoptOptions();
-  ipopt.max_iterations = a.run.max_iterations;
-  for (const auto& kv : RunOptions(a).ipopt_options) ipopt.extra.push_back(kv);
-  ipopt.print_level = a.run.ipopt_output ? 5 : 0;
+  ocp::IpoptOptions ipopt = runs::F1RunIpoptOptions(run);
   ipopt.on_iteration = [](int it, double obj, double pr, double du) {
     if (it % 10 == 0) {
       fmt::print("  iteration {:4d}: objective {:.4f}, infeasibility {:.1e}, optimality {:.1e}\n",

@@ -16,11 +16,11 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "hotlap/common/error.h"
-#include "hotlap/common/units.h"
 #include "hotlap/ocp/optimal_output.h"
 #include "hotlap/ocp/optimal_run.h"
 #include "hotlap/ocp/optimal_run_json.h"
 #include "hotlap/ocp/stint_output.h"
+#include "hotlap/runs/stint_run.h"
 #include "hotlap/track/track.h"
 #include "hotlap/vehicle/car.h"
 #include "py_convert.h"
@@ -36,9 +36,7 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
                     int max_iterations,
                     const std::vector<std::pair<std::string, std::string>>& ipopt_options,
                     int threads, bool wear_in_programme, const py::object& progress) {
-  if (threads < 0 || threads > 256) {
-    throw InputError(fmt::format("threads: {} is not 0 to 256 (0: one per core)", threads));
-  }
+  runs::CheckThreads(threads, runs::NameStyle::kPython);
   ocp::OptimalRunOptions o;
   o.threads = threads;
   o.step_m = step_m;
@@ -111,10 +109,12 @@ py::dict Stint(const vehicle::Car& car, const track::Track& track, int laps, dou
                double coarse_step_m, const std::string& thermal_start, double ambient_C,
                double track_C, int max_iterations, int threads,
                std::optional<std::filesystem::path> checkpoint_dir, int checkpoint_every) {
-  if (threads < 0 || threads > 256) {
-    throw InputError(fmt::format("threads: {} is not 0 to 256 (0: one per core)", threads));
-  }
-  ocp::OptimalRunOptions run;
+  runs::StintRunOptions stint;
+  stint.laps = laps;
+  stint.wear_scale = wear_scale;
+  stint.fuel_kg = fuel_kg;
+  stint.disc_limit_C = disc_limit_C;
+  ocp::OptimalRunOptions& run = stint.run;
   run.threads = threads;
   run.step_m = step_m;
   run.coarse_step_m = coarse_step_m;
@@ -123,16 +123,11 @@ py::dict Stint(const vehicle::Car& car, const track::Track& track, int laps, dou
   run.track_C = track_C;
   run.max_iterations = max_iterations;
   run.second_process = false;
-  ocp::StintOptions o;
-  o.laps = laps;
-  o.wear_scale = wear_scale;
-  o.fuel_kg = fuel_kg;
-  o.lap = ocp::MakeOptimalLapOptions(run);
-  if (disc_limit_C) o.lap.front_disc_limit = CelsiusToKelvin(*disc_limit_C);
   // Checkpoints: the car's parameters count in their fingerprint through the warm-up (the car
   // here may have been changed in Python, so there is no file to add).
-  if (checkpoint_dir) o.checkpoint_dir = *checkpoint_dir;
-  o.checkpoint_every = checkpoint_every;
+  if (checkpoint_dir) stint.checkpoint_dir = *checkpoint_dir;
+  stint.checkpoint_every = checkpoint_every;
+  const ocp::StintOptions o = runs::MakeStintOptions(stint, runs::NameStyle::kPython);
   const auto started = std::chrono::steady_clock::now();
   ocp::StintResult r;
   {

@@ -1,10 +1,8 @@
 // hotlap.load_car, load_track, replay and qss_lap: the models over a log or round a track, with
 // the same channels and summary keys as `hotlap replay` and `hotlap lap --method qss`.
 
-#include <algorithm>
 #include <optional>
 #include <string>
-#include <vector>
 
 #include <fmt/format.h>
 #include <pybind11/numpy.h>
@@ -12,21 +10,13 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include "hotlap/common/csv.h"
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/telemetry.h"
-#include "hotlap/common/units.h"
-#include "hotlap/ocp/min_curvature_line.h"
+#include "hotlap/runs/lap_run.h"
+#include "hotlap/runs/replay_run.h"
 #include "hotlap/sim/lap_json.h"
-#include "hotlap/sim/lap_output.h"
-#include "hotlap/sim/lap_summary.h"
-#include "hotlap/sim/qss_lap.h"
-#include "hotlap/sim/replay.h"
-#include "hotlap/sim/replay_io.h"
 #include "hotlap/sim/replay_report.h"
-#include "hotlap/sim/road.h"
-#include "hotlap/track/racing_line.h"
 #include "hotlap/track/track_io.h"
 #include "hotlap/vehicle/car.h"
 #include "py_convert.h"
@@ -35,90 +25,62 @@ namespace hotlap::python {
 
 namespace {
 
-std::optional<double> ToKelvin(const std::optional<double>& celsius) {
-  if (!celsius) return std::nullopt;
-  return CelsiusToKelvin(*celsius);
-}
-
 py::dict Replay(const vehicle::Car& car, const py::handle& telemetry, bool heat_flows,
                 double max_step_s, std::optional<double> tread_C, std::optional<double> carcass_C,
                 std::optional<double> disc_C, std::optional<double> calliper_C,
                 std::optional<double> ambient_C, std::optional<double> track_C,
                 const py::object& channel_map, std::optional<int> lap) {
-  if (!(max_step_s > 0.0)) throw InputError(fmt::format("max_step_s {} must be > 0", max_step_s));
   const Telemetry log = LogFrom(telemetry, ReadOptionsFrom(channel_map, lap));
-  sim::InitialTemperatureOverrides overrides;
-  overrides.tread_temp = ToKelvin(tread_C);
-  overrides.carcass_temp = ToKelvin(carcass_C);
-  overrides.disc_temp = ToKelvin(disc_C);
-  overrides.calliper_temp = ToKelvin(calliper_C);
-  overrides.ambient_temp = ToKelvin(ambient_C);
-  overrides.track_temp = ToKelvin(track_C);
-  const sim::ReplayInputs inputs = sim::ReplayInputsFromTelemetry(log, overrides);
-  const sim::ReplayInitialState initial = sim::InitialStateFor(log, car, overrides);
-  sim::ReplayOptions options;
-  options.max_step_s = max_step_s;
-  options.record_heat_flows = heat_flows;
-  sim::ReplayResult result;
+  const runs::ReplayRunOptions options{.heat_flows = heat_flows,
+                                       .max_step_s = max_step_s,
+                                       .tread_C = tread_C,
+                                       .carcass_C = carcass_C,
+                                       .disc_C = disc_C,
+                                       .calliper_C = calliper_C,
+                                       .ambient_C = ambient_C,
+                                       .track_C = track_C};
+  runs::ReplayRun run;
   {
     py::gil_scoped_release release;
-    result = sim::RunReplay(car, inputs, initial, options);
+    run = runs::RunReplay(car, log, options, runs::NameStyle::kPython);
   }
-  const sim::ColumnSet columns = sim::ReplayResultColumns(result, heat_flows);
   py::dict out;
-  out["channels"] = ColumnsToDict(columns.names, columns.values);
+  out["channels"] = ColumnsToDict(run.columns.names, run.columns.values);
   out["summary"] =
-      ToPython(sim::ReplayJson(result, sim::SummarizeReplay(result), log.path().string(), car, ""));
+      ToPython(sim::ReplayJson(run.result, run.summaries, log.path().string(), car, ""));
   return out;
 }
 
 py::dict QssLap(const vehicle::Car& car, const track::Track& track, int laps, double step_m,
-                const std::filesystem::path& line_path, double line_margin_m, double ambient_C,
+                const std::filesystem::path& line, double line_margin_m, double ambient_C,
                 double track_C, std::optional<double> tread_C, std::optional<double> carcass_C,
                 std::optional<double> disc_C, std::optional<double> calliper_C,
                 std::optional<double> rim_C, std::optional<double> disc_bulk_C,
                 const std::string& caution_laps, double caution_speed_kph) {
-  const std::string line = line_path.string();  // a name or a file (str or os.PathLike)
   vehicle::RequireVehicle(car, "hotlap.qss_lap");
-  if (laps < 1 || laps > 1000) throw InputError(fmt::format("laps {} must be in [1, 1000]", laps));
-  if (!(step_m > 0.0)) throw InputError(fmt::format("step_m {} must be > 0", step_m));
-  // The line as `hotlap lap --line` takes it: centre, min-curvature, or a file with one.
-  std::vector<sim::RoadPoint> road;
-  if (line == "centre") {
-    road = sim::SampleRoad(track, step_m);
-  } else if (line == "min-curvature") {
-    road = sim::SampleRoadAlongLine(
-        track,
-        ocp::MinimumCurvatureLine(track,
-                                  {.step_m = std::max(step_m, 2.0), .margin_m = line_margin_m}),
-        step_m);
-  } else {
-    road = sim::SampleRoadAlongLine(
-        track, track::ReadRacingLine(line, track, std::max(step_m, 2.0)), step_m);
-  }
-  sim::QssOptions options;
-  options.laps = laps;
-  options.track_length = track.length_m();
-  options.ambient_temp = CelsiusToKelvin(ambient_C);
-  options.track_temp = CelsiusToKelvin(track_C);
-  options.caution_laps = sim::ParseLapList(caution_laps, laps, "caution_laps");
-  options.caution_speed = sim::CheckCautionSpeed(caution_speed_kph, "caution_speed_kph");
-  options.initial = sim::CarStartState(car, {.tread_temp = ToKelvin(tread_C),
-                                             .carcass_temp = ToKelvin(carcass_C),
-                                             .disc_temp = ToKelvin(disc_C),
-                                             .calliper_temp = ToKelvin(calliper_C),
-                                             .rim_temp = ToKelvin(rim_C),
-                                             .disc_bulk_temp = ToKelvin(disc_bulk_C)});
-  sim::QssResult result;
+  runs::LapRunOptions options{.line = line.string(),  // a name or a file (str or os.PathLike)
+                              .line_margin_m = line_margin_m,
+                              .step_m = step_m,
+                              .laps = laps,
+                              .ambient_C = ambient_C,
+                              .track_C = track_C,
+                              .tread_C = tread_C,
+                              .carcass_C = carcass_C,
+                              .disc_C = disc_C,
+                              .calliper_C = calliper_C,
+                              .rim_C = rim_C,
+                              .disc_bulk_C = disc_bulk_C,
+                              .caution_laps = caution_laps,
+                              .caution_speed_kph = caution_speed_kph};
+  const runs::LapPlan plan = runs::PlanLap(car, track, options, runs::NameStyle::kPython);
+  runs::LapRun run;
   {
     py::gil_scoped_release release;
-    result = sim::RunQssLap(car, road, options);
+    run = runs::RunLap(car, track, plan);
   }
-  const sim::ColumnSet columns =
-      sim::LapResultColumns(result, track, options.ambient_temp, options.track_temp);
   py::dict out;
-  out["channels"] = ColumnsToDict(columns.names, columns.values);
-  out["summary"] = ToPython(sim::StintJson(sim::SummarizeStint(result), track, car, "", ""));
+  out["channels"] = ColumnsToDict(run.columns.names, run.columns.values);
+  out["summary"] = ToPython(sim::StintJson(run.stint, track, car, "", ""));
   return out;
 }
 

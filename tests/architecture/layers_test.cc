@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <regex>
@@ -43,6 +44,7 @@ const std::map<std::string, Area>& Layers() {
       {"ocp", {4, {}}},
       {"race", {4, {}}},
       {"observe", {4, {}}},
+      {"runs", {5, {}}},
   };
   return layers;
 }
@@ -92,6 +94,60 @@ std::vector<std::string> LayerViolations(const fs::path& src_root) {
   return out;
 }
 
+// The headers CMakeLists.txt keeps to the library (HOTLAP_INTERNAL_HEADERS, not installed), as
+// "area/file.h".
+std::set<std::string> InternalHeaders(const fs::path& cmake_lists) {
+  std::ifstream in(cmake_lists);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::set<std::string> out;
+  const size_t start = text.find("set(HOTLAP_INTERNAL_HEADERS");
+  if (start == std::string::npos) return out;
+  const std::string list = text.substr(start, text.find(')', start) - start);
+  static const std::regex kHeader(R"(([A-Za-z0-9_]+/[A-Za-z0-9_]+\.h))");
+  for (std::sregex_iterator it(list.begin(), list.end(), kHeader), end; it != end; ++it) {
+    out.insert((*it)[1].str());
+  }
+  return out;
+}
+
+// Every include of a binding file (python/src) that is neither an area's public header
+// ("hotlap/<area>/<file>.h" that exists and is not internal) nor one of the bindings' own files,
+// as "FILE:LINE: includes HEADER (why)". The bindings reach the library only through the runs
+// layer and the areas' public headers, as any other user of the installed package would.
+std::vector<std::string> BindingViolations(const fs::path& binding_root, const fs::path& src_root,
+                                           const std::set<std::string>& internal) {
+  static const std::regex kAnyInclude(R"(^\s*#\s*include\s*([<"])([^>"]+)[>"])");
+  static const std::regex kHotlap(R"(hotlap/([A-Za-z0-9_]+)/([^/]+))");
+  std::vector<std::string> out;
+  for (const fs::directory_entry& f : fs::recursive_directory_iterator(binding_root)) {
+    const std::string ext = f.path().extension().string();
+    if (!f.is_regular_file() || (ext != ".h" && ext != ".cc")) continue;
+    std::ifstream in(f.path());
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+      std::smatch m;
+      if (!std::regex_search(line, m, kAnyInclude)) continue;
+      const std::string header = m[2].str();
+      const std::string where =
+          f.path().string() + ":" + std::to_string(n) + ": includes " + header;
+      std::smatch h;
+      if (std::regex_match(header, h, kHotlap)) {
+        const std::string area = h[1].str(), relative = area + "/" + h[2].str();
+        if (!Layers().count(area)) {
+          out.push_back(where + " (no area '" + area + "')");
+        } else if (internal.count(relative)) {
+          out.push_back(where + " (internal to the library: HOTLAP_INTERNAL_HEADERS)");
+        } else if (!fs::exists(src_root / relative)) {
+          out.push_back(where + " (no such header in src/hotlap)");
+        }
+      } else if (m[1].str() == "\"" && !fs::exists(f.path().parent_path() / header)) {
+        out.push_back(where + " (neither an area's header nor one of the bindings' own)");
+      }
+    }
+  }
+  return out;
+}
+
 TEST(Layers, SourceTreeKeepsTheLayerRule) {
   const std::vector<std::string> violations = LayerViolations(test::SourcePath("src/hotlap"));
   std::string all;
@@ -121,6 +177,39 @@ TEST(Layers, UpwardAndSidewaysIncludesAreFound) {
   EXPECT_TRUE(test::Contains(all, "mesh.cc:2: includes hotlap/brake/x.h (fe"));
   EXPECT_TRUE(test::Contains(all, "run.cc:1: includes hotlap/ident/fit_log.h (sim, level 3"));
   EXPECT_TRUE(test::Contains(all, "area 'gui' has no layer"));
+}
+
+TEST(Layers, PythonBindingsIncludeOnlyTheRunsAndTheAreasPublicHeaders) {
+  const std::set<std::string> internal = InternalHeaders(test::SourcePath("CMakeLists.txt"));
+  ASSERT_TRUE(internal.count("ident/channel_fit_internal.h"));  // the list was found
+  const std::vector<std::string> violations =
+      BindingViolations(test::SourcePath("python/src"), test::SourcePath("src/hotlap"), internal);
+  std::string all;
+  for (const std::string& v : violations) all += v + "\n";
+  EXPECT_TRUE(violations.empty()) << all;
+}
+
+TEST(Layers, BindingIncludesOfInternalOrUnknownHeadersAreFound) {
+  test::TempDir dir;
+  const fs::path src = dir.path() / "src/hotlap", py = dir.path() / "python/src";
+  test::WriteTextFile(src / "runs/lap_run.h", "\n");
+  test::WriteTextFile(src / "ident/fit_internal.h", "\n");
+  test::WriteTextFile(py / "own.h", "\n");
+  test::WriteTextFile(py / "py_ok.cc",
+                      "#include <pybind11/pybind11.h>\n#include \"hotlap/runs/lap_run.h\"\n"
+                      "#include \"own.h\"\n");
+  test::WriteTextFile(
+      py / "py_bad.cc",
+      "#include \"hotlap/ident/fit_internal.h\"\n#include \"hotlap/gui/w.h\"\n"
+      "#include \"hotlap/runs/missing.h\"\n#include \"../../apps/hotlap/commands.h\"\n");
+  const std::vector<std::string> v = BindingViolations(py, src, {"ident/fit_internal.h"});
+  std::string all;
+  for (const std::string& s : v) all += s + "\n";
+  ASSERT_EQ(v.size(), 4u) << all;
+  EXPECT_TRUE(test::Contains(all, "py_bad.cc:1: includes hotlap/ident/fit_internal.h (internal"));
+  EXPECT_TRUE(test::Contains(all, "py_bad.cc:2: includes hotlap/gui/w.h (no area 'gui')"));
+  EXPECT_TRUE(test::Contains(all, "py_bad.cc:3: includes hotlap/runs/missing.h (no such header"));
+  EXPECT_TRUE(test::Contains(all, "py_bad.cc:4: includes ../../apps/hotlap/commands.h (neither"));
 }
 
 }  // namespace

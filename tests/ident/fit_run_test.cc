@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -39,6 +41,27 @@ TEST(FitRunText, VerdictPutsUndeterminedBeforeAtBound) {
   EXPECT_EQ(VerdictText(e), "at bound");
   e.undetermined = true;
   EXPECT_EQ(VerdictText(e), "undetermined");
+}
+
+TEST(FitRunText, TheTableNamesTheLogTheCornersAndTheTimeAndTheWarningsTheirCorner) {
+  FitRun run;
+  run.command = "fit brake";
+  run.telemetry = "log.csv";
+  run.car_name = "gen7";
+  run.time = {1.0, 2.0, 3.5};
+  run.elapsed_s = 0.25;
+  CornerFitOutcome rr;
+  rr.corner = Corner::kRearRight;
+  rr.rms = {{"rms_disc_C", 1.23456}};
+  rr.warnings = {"no calliper channel"};
+  run.result.corners.push_back(rr);
+  EXPECT_EQ(FitRunText(run),
+            "hotlap fit brake: log.csv (3 samples, 2.50 s of log) with car 'gen7'\n"
+            "rr:  rms_disc_C 1.235\n"
+            "fitted in 0.25 s\n");
+  const std::vector<std::string> warnings = FitRunWarnings(run);
+  ASSERT_FALSE(warnings.empty());
+  EXPECT_EQ(warnings.front().rfind("rr: ", 0), 0u) << warnings.front();
 }
 
 }  // namespace

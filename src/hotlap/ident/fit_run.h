@@ -41,4 +41,11 @@ std::string JointIntervalText(const FitParameter& p, const ParameterEstimate& e)
 /// "undetermined", "at bound", "yes" (well determined) or "no".
 std::string VerdictText(const ParameterEstimate& e);
 
+/// The paper-style table `hotlap fit` prints: the log, then per corner the RMS errors, each
+/// parameter with its standard error, intervals and verdict, and the values held; the time taken.
+std::string FitRunText(const FitRun& run);
+
+/// Every corner's warnings, each "CORNER: warning", in the corners' order.
+std::vector<std::string> FitRunWarnings(const FitRun& run);
+
 }  // namespace hotlap::ident

@@ -11,22 +11,19 @@
 
 namespace hotlap::ident {
 
-std::vector<std::filesystem::path> WriteFitReport(const FitRun& run,
-                                                  const std::filesystem::path& dir) {
-  std::error_code ec;
-  std::filesystem::create_directory(dir, ec);
-  if (!std::filesystem::is_directory(dir)) {
-    throw InputError(fmt::format("report folder '{}': cannot create it", dir.string()));
-  }
-  report::HtmlReport page("hotlap " + run.command + ": " +
-                          std::filesystem::path(run.telemetry).filename().string());
+namespace {
+
+// The run's settings and the log's metadata lines.
+void AddRunMetadata(report::HtmlReport& page, const FitRun& run) {
   page.AddMetadata("telemetry", run.telemetry);
   page.AddMetadata("car", run.car_name + " (" + run.car_path + ")");
   page.AddMetadata("fitted car", run.out);
   page.AddMetadata("samples", std::to_string(run.time.size()));
   page.AddMetadata("options", run.options.dump());
   for (const auto& [key, value] : run.log_metadata) page.AddMetadata("log " + key, value);
+}
 
+void AddFittedParameters(report::HtmlReport& page, const FitRun& run) {
   // The paper's tables: per corner the values and the RMS errors.
   page.AddHeading("Fitted parameters");
   report::Table summary{.title = "Per corner: fitted values and RMS errors (as 000 Tables 4, 6)"};
@@ -46,7 +43,64 @@ std::vector<std::filesystem::path> WriteFitReport(const FitRun& run,
     summary.rows.push_back(row);
   }
   if (!summary.header.empty()) page.AddTable(summary);
+}
 
+// One fit's parameters: value, standard error, intervals, verdict, start (and the truth where
+// it is known), then the held values.
+report::Table ParameterTable(const CornerFitOutcome& c, const ReportedFit& r) {
+  report::Table t{.title = fmt::format("{}: {}", CornerName(c.corner), r.title),
+                  .header = {"parameter", "unit", "value", "std error", "95% interval",
+                             "joint 95% interval", "well determined", "start"}};
+  if (!c.truth.empty()) {
+    t.header.insert(t.header.end(), {"truth", "truth in 95%", "truth in joint"});
+  }
+  for (size_t i = 0; i < r.fit.parameters.size(); ++i) {
+    const FitParameter& p = r.fit.parameters[i];
+    const ParameterEstimate& e = r.fit.estimates[i];
+    std::vector<std::string> row = {p.label,
+                                    p.unit,
+                                    ShortNumber(e.value + p.display_offset),
+                                    ShortNumber(e.std_error),
+                                    IntervalText(p, e),
+                                    JointIntervalText(p, e),
+                                    VerdictText(e),
+                                    ShortNumber(e.start + p.display_offset)};
+    if (!c.truth.empty()) {
+      const auto it = c.truth.find(p.key);
+      const bool known = it != c.truth.end();
+      const double t0 = known ? it->second - p.display_offset : 0.0;
+      row.push_back(known ? ShortNumber(it->second) : "");
+      row.push_back(known ? (t0 >= e.ci_low && t0 <= e.ci_high ? "yes" : "NO") : "");
+      row.push_back(known ? (t0 >= e.joint_low && t0 <= e.joint_high ? "yes" : "NO") : "");
+    }
+    t.rows.push_back(row);
+  }
+  for (const auto& [k, v] : r.held) {
+    std::vector<std::string> row = {k, "", ShortNumber(v), "held", "", "", "", ""};
+    if (!c.truth.empty()) row.insert(row.end(), {"", "", ""});
+    t.rows.push_back(row);
+  }
+  return t;
+}
+
+// The correlation matrix of one fit's estimates.
+report::Table CorrelationTable(const CornerFitOutcome& c, const ReportedFit& r) {
+  report::Table corr{
+      .title = fmt::format("{}: {}: correlation of the estimates", CornerName(c.corner), r.title),
+      .header = {""}};
+  for (const FitParameter& p : r.fit.parameters) corr.header.push_back(p.label);
+  for (Eigen::Index i = 0; i < r.fit.correlation.rows(); ++i) {
+    std::vector<std::string> row = {r.fit.parameters[i].label};
+    for (Eigen::Index k = 0; k < r.fit.correlation.cols(); ++k) {
+      const double v = r.fit.correlation(i, k);
+      row.push_back(std::isfinite(v) ? fmt::format("{:.2f}", v) : "\u2013");
+    }
+    corr.rows.push_back(row);
+  }
+  return corr;
+}
+
+void AddUncertainty(report::HtmlReport& page, const FitRun& run) {
   page.AddHeading("Uncertainty");
   page.AddText(
       "95% intervals are value \u00b1 1.96 standard errors (clipped to the bounds); a parameter is "
@@ -59,55 +113,13 @@ std::vector<std::filesystem::path> WriteFitReport(const FitRun& run,
       "(docs/fitting.md).");
   for (const CornerFitOutcome& c : run.result.corners) {
     for (const ReportedFit& r : c.fits) {
-      report::Table t{.title = fmt::format("{}: {}", CornerName(c.corner), r.title),
-                      .header = {"parameter", "unit", "value", "std error", "95% interval",
-                                 "joint 95% interval", "well determined", "start"}};
-      if (!c.truth.empty()) {
-        t.header.insert(t.header.end(), {"truth", "truth in 95%", "truth in joint"});
-      }
-      for (size_t i = 0; i < r.fit.parameters.size(); ++i) {
-        const FitParameter& p = r.fit.parameters[i];
-        const ParameterEstimate& e = r.fit.estimates[i];
-        std::vector<std::string> row = {p.label,
-                                        p.unit,
-                                        ShortNumber(e.value + p.display_offset),
-                                        ShortNumber(e.std_error),
-                                        IntervalText(p, e),
-                                        JointIntervalText(p, e),
-                                        VerdictText(e),
-                                        ShortNumber(e.start + p.display_offset)};
-        if (!c.truth.empty()) {
-          const auto it = c.truth.find(p.key);
-          const bool known = it != c.truth.end();
-          const double t0 = known ? it->second - p.display_offset : 0.0;
-          row.push_back(known ? ShortNumber(it->second) : "");
-          row.push_back(known ? (t0 >= e.ci_low && t0 <= e.ci_high ? "yes" : "NO") : "");
-          row.push_back(known ? (t0 >= e.joint_low && t0 <= e.joint_high ? "yes" : "NO") : "");
-        }
-        t.rows.push_back(row);
-      }
-      for (const auto& [k, v] : r.held) {
-        std::vector<std::string> row = {k, "", ShortNumber(v), "held", "", "", "", ""};
-        if (!c.truth.empty()) row.insert(row.end(), {"", "", ""});
-        t.rows.push_back(row);
-      }
-      page.AddTable(t);
-      report::Table corr{.title = fmt::format("{}: {}: correlation of the estimates",
-                                              CornerName(c.corner), r.title),
-                         .header = {""}};
-      for (const FitParameter& p : r.fit.parameters) corr.header.push_back(p.label);
-      for (Eigen::Index i = 0; i < r.fit.correlation.rows(); ++i) {
-        std::vector<std::string> row = {r.fit.parameters[i].label};
-        for (Eigen::Index k = 0; k < r.fit.correlation.cols(); ++k) {
-          const double v = r.fit.correlation(i, k);
-          row.push_back(std::isfinite(v) ? fmt::format("{:.2f}", v) : "\u2013");
-        }
-        corr.rows.push_back(row);
-      }
-      page.AddTable(corr);
+      page.AddTable(ParameterTable(c, r));
+      page.AddTable(CorrelationTable(c, r));
     }
   }
+}
 
+void AddWarnings(report::HtmlReport& page, const FitRun& run) {
   page.AddHeading("Warnings");
   bool any = false;
   for (const CornerFitOutcome& c : run.result.corners) {
@@ -117,10 +129,12 @@ std::vector<std::filesystem::path> WriteFitReport(const FitRun& run,
     }
   }
   if (!any) page.AddText("None.");
+}
 
-  // Measured against modelled, one chart per channel and corner on a shared time axis.
-  std::vector<std::string> names = {"time_s"};
-  std::vector<std::vector<double>> columns = {run.time};
+// Measured against modelled, one chart per channel and corner on a shared time axis; the same
+// as CSV columns (model, measured, residual) into `names` and `columns`.
+void AddChannels(report::HtmlReport& page, const FitRun& run, std::vector<std::string>& names,
+                 std::vector<std::vector<double>>& columns) {
   if (!run.result.corners.empty()) {
     page.AddHeading("Measured and modelled");
     for (size_t q = 0; q < run.result.corners.front().channels.size(); ++q) {
@@ -148,6 +162,26 @@ std::vector<std::filesystem::path> WriteFitReport(const FitRun& run,
       }
     }
   }
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> WriteFitReport(const FitRun& run,
+                                                  const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directory(dir, ec);
+  if (!std::filesystem::is_directory(dir)) {
+    throw InputError(fmt::format("report folder '{}': cannot create it", dir.string()));
+  }
+  report::HtmlReport page("hotlap " + run.command + ": " +
+                          std::filesystem::path(run.telemetry).filename().string());
+  AddRunMetadata(page, run);
+  AddFittedParameters(page, run);
+  AddUncertainty(page, run);
+  AddWarnings(page, run);
+  std::vector<std::string> names = {"time_s"};
+  std::vector<std::vector<double>> columns = {run.time};
+  AddChannels(page, run, names, columns);
   const std::filesystem::path html = dir / "index.html", csv = dir / "channels.csv";
   page.Write(html);
   auto metadata = run.log_metadata;

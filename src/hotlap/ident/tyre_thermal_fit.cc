@@ -271,6 +271,128 @@ const std::vector<std::string>& TyreParameterKeys() {
   return keys;
 }
 
+namespace {
+
+// The thermal stage: p1..p5 (and the starting temperatures when fitted) to the tread and carcass
+// temperatures, from the car's values, the equation-error guess and seeded random starts. The
+// fitted values go into `all`.
+void FitThermalStage(const tyre::TyreFile& tyre, const TyreCornerData& d,
+                     const LogFitOptions& options, const TyreLogModel& model,
+                     const std::vector<int>& free_thermal, std::vector<double>& all,
+                     TyreFitResult& r) {
+  const tyre::TyreThermalParams<double>& car = tyre.params;
+  const std::span<const double> time = d.samples.time;
+  std::vector<FitParameter> params;
+  for (int i : free_thermal) params.push_back(TyreParameter(i, car));
+  const std::vector<MeasuredChannel> channels = {TemperatureChannel(d.tread, d.weights),
+                                                 TemperatureChannel(d.carcass, d.weights)};
+  std::vector<std::vector<double>> starts;
+  const auto with_states = [&](std::array<double, 5> p) {
+    std::vector<double> s(p.begin(), p.end());
+    for (size_t i = 5; i < free_thermal.size(); ++i) s.push_back(all[free_thermal[i]]);
+    return s;
+  };
+  starts.push_back(with_states({car.p1, car.p2, car.p3, car.p4, car.p5}));
+  if (auto guess = EquationErrorGuess(tyre, d)) starts.push_back(with_states(*guess));
+  std::mt19937_64 rng(options.seed);
+  for (int i = 0; i < options.random_starts; ++i) {
+    const double p1 = 0.05 + 0.75 * static_cast<double>(rng() >> 11) * 0x1.0p-53;
+    starts.push_back(with_states({p1, LogUniform(rng, 1e-6, 1e-2), LogUniform(rng, 1e-6, 1e-2),
+                                  LogUniform(rng, 1e-6, 1e-2), LogUniform(rng, 20.0, 2000.0)}));
+  }
+  const JetPredictor<TyreLogModel> predictor(model, all, free_thermal, {kTread, kCarcass});
+  r.thermal = FitChannels(predictor, params, channels, starts, time, options.solver);
+  for (size_t i = 0; i < free_thermal.size(); ++i) {
+    all[free_thermal[i]] = r.thermal->estimates[i].value;
+  }
+  AddLagWarnings(*r.thermal, options.sensor_lag_s, &r.warnings);
+  AddMisfitWarnings(*r.thermal, &r.warnings);
+}
+
+// The wear measured over the log: the total, else the channel's last finite value less its
+// first.
+double MeasuredWear(const MeasuredChannel& ch, bool total) {
+  double first = kNaN, last = kNaN;
+  for (double v : ch.values) {
+    if (!std::isfinite(v)) continue;
+    if (!std::isfinite(first)) first = v;
+    last = v;
+  }
+  return total ? last : last - first;
+}
+
+// Starts of the wear fit: for several wp2, the wp1 that matches the measured wear over the log
+// (the wear is proportional to wp1); with a channel, wp2 and the initial wear too.
+std::vector<std::vector<double>> WearStarts(const WearQuadratureModel& wear_model,
+                                            const tyre::TyreThermalParams<double>& car,
+                                            const std::vector<double>& all, size_t samples,
+                                            double measured, bool total) {
+  std::vector<std::vector<double>> starts;
+  std::vector<double> exponents = {car.wear_exponent};
+  if (!total) exponents.insert(exponents.end(), {0.5, 1.0, 1.5, 2.0, 3.0});
+  for (double wp2 : exponents) {
+    std::vector<double> unit_all = all;
+    unit_all[kWp1] = 1.0;
+    unit_all[kWp2] = wp2;
+    unit_all[kWear0] = 0.0;
+    double predicted = 0.0;
+    wear_model.Run<double>(unit_all, [&](int c, size_t k, double v) {
+      if (c == kWear && k + 1 == samples) predicted = v;
+    });
+    double wp1 = car.wear_coeff;
+    if (predicted > 0.0 && std::isfinite(predicted) && measured > 0.0) wp1 = measured / predicted;
+    std::vector<double> s = {wp1};
+    if (!total) s.insert(s.end(), {wp2, all[kWear0]});
+    starts.push_back(s);
+  }
+  return starts;
+}
+
+// The wear stage, at the fitted thermal parameters: wp1 to a measured total (wp2 held), or wp1,
+// wp2 and the initial wear to a wear channel. The fitted values go into `all`.
+void FitWearStage(const tyre::TyreFile& tyre, const TyreCornerData& d, const LogFitOptions& options,
+                  const TyreLogModel& model, const std::vector<int>& free_thermal,
+                  std::vector<double>& all, TyreFitResult& r) {
+  const tyre::TyreThermalParams<double>& car = tyre.params;
+  const std::span<const double> time = d.samples.time;
+  const bool total = d.wear_total_mm.has_value();
+  std::vector<int> free_wear = {kWp1};
+  MeasuredChannel ch{
+      .name = "wear", .unit = "mm", .values = std::vector<double>(time.size(), kNaN)};
+  if (total) {
+    ch.values.back() = *d.wear_total_mm;
+    ch.prior_sigma = d.wear_total_sd_mm;
+    ch.fixed_sigma = true;
+    r.warnings.push_back(fmt::format(
+        "wear measured as one total: only wp1 is fitted; wp2 held at {:.4g} from the car file "
+        "(a log with a wear channel determines both)",
+        car.wear_exponent));
+  } else {
+    free_wear = {kWp1, kWp2, kWear0};
+    ch.values = d.wear.values;
+    ch.weights = d.weights;
+    ch.prior_sigma = 1e-3;
+    ch.min_sigma = 1e-9;
+    all[kWear0] = RobustFirstValue(time, d.wear.values);
+  }
+  const double measured = MeasuredWear(ch, total);
+  const WearQuadratureModel wear_model(tyre, d.samples, all, options.max_step_s);
+  const std::vector<std::vector<double>> starts =
+      WearStarts(wear_model, car, all, time.size(), measured, total);
+  std::vector<FitParameter> params;
+  for (int i : free_wear) params.push_back(TyreParameter(i, car));
+  const JetPredictor<WearQuadratureModel> predictor(wear_model, all, free_wear, {kWear});
+  const std::vector<MeasuredChannel> channels = {ch};
+  r.wear = FitChannels(predictor, params, channels, starts, {}, options.solver);
+  for (size_t i = 0; i < free_wear.size(); ++i) all[free_wear[i]] = r.wear->estimates[i].value;
+  if (r.thermal) {
+    AddThermalUncertainty(model, all, free_thermal, *r.thermal, free_wear, ch, options.solver,
+                          &*r.wear);
+  }
+}
+
+}  // namespace
+
 TyreFitResult FitTyreCorner(const tyre::TyreFile& any_tyre, const TyreCornerData& d,
                             const LogFitOptions& options) {
   // The fit identifies the paper's two masses (docs/fitting.md): a gas-and-rim tyre is fitted as
@@ -300,31 +422,7 @@ TyreFitResult FitTyreCorner(const tyre::TyreFile& any_tyre, const TyreCornerData
     free_thermal.push_back(kCarcass0);
   }
   if (d.tread.usable || d.carcass.usable) {
-    std::vector<FitParameter> params;
-    for (int i : free_thermal) params.push_back(TyreParameter(i, car));
-    const std::vector<MeasuredChannel> channels = {TemperatureChannel(d.tread, d.weights),
-                                                   TemperatureChannel(d.carcass, d.weights)};
-    std::vector<std::vector<double>> starts;
-    const auto with_states = [&](std::array<double, 5> p) {
-      std::vector<double> s(p.begin(), p.end());
-      for (size_t i = 5; i < free_thermal.size(); ++i) s.push_back(all[free_thermal[i]]);
-      return s;
-    };
-    starts.push_back(with_states({car.p1, car.p2, car.p3, car.p4, car.p5}));
-    if (auto guess = EquationErrorGuess(tyre, d)) starts.push_back(with_states(*guess));
-    std::mt19937_64 rng(options.seed);
-    for (int i = 0; i < options.random_starts; ++i) {
-      const double p1 = 0.05 + 0.75 * static_cast<double>(rng() >> 11) * 0x1.0p-53;
-      starts.push_back(with_states({p1, LogUniform(rng, 1e-6, 1e-2), LogUniform(rng, 1e-6, 1e-2),
-                                    LogUniform(rng, 1e-6, 1e-2), LogUniform(rng, 20.0, 2000.0)}));
-    }
-    const JetPredictor<TyreLogModel> predictor(model, all, free_thermal, {kTread, kCarcass});
-    r.thermal = FitChannels(predictor, params, channels, starts, time, options.solver);
-    for (size_t i = 0; i < free_thermal.size(); ++i) {
-      all[free_thermal[i]] = r.thermal->estimates[i].value;
-    }
-    AddLagWarnings(*r.thermal, options.sensor_lag_s, &r.warnings);
-    AddMisfitWarnings(*r.thermal, &r.warnings);
+    FitThermalStage(tyre, d, options, model, free_thermal, all, r);
   } else {
     r.warnings.push_back("no usable tread or carcass temperature: p1..p5 kept from the car file");
   }
@@ -334,68 +432,8 @@ TyreFitResult FitTyreCorner(const tyre::TyreFile& any_tyre, const TyreCornerData
       !s.empty() && !d.wear_total_mm && !d.wear.column.empty()) {
     r.warnings.push_back(s);
   }
-  const bool total = d.wear_total_mm.has_value();
-  if (total || d.wear.usable) {
-    std::vector<int> free_wear = {kWp1};
-    MeasuredChannel ch{
-        .name = "wear", .unit = "mm", .values = std::vector<double>(time.size(), kNaN)};
-    if (total) {
-      ch.values.back() = *d.wear_total_mm;
-      ch.prior_sigma = d.wear_total_sd_mm;
-      ch.fixed_sigma = true;
-      r.warnings.push_back(fmt::format(
-          "wear measured as one total: only wp1 is fitted; wp2 held at {:.4g} from the car file "
-          "(a log with a wear channel determines both)",
-          car.wear_exponent));
-    } else {
-      free_wear = {kWp1, kWp2, kWear0};
-      ch.values = d.wear.values;
-      ch.weights = d.weights;
-      ch.prior_sigma = 1e-3;
-      ch.min_sigma = 1e-9;
-      all[kWear0] = RobustFirstValue(time, d.wear.values);
-    }
-    // Starts: for several wp2, the wp1 that matches the measured wear over the log (the wear is
-    // proportional to wp1).
-    double measured = 0.0;
-    {
-      double first = kNaN, last = kNaN;
-      for (double v : ch.values) {
-        if (!std::isfinite(v)) continue;
-        if (!std::isfinite(first)) first = v;
-        last = v;
-      }
-      measured = total ? last : last - first;
-    }
-    std::vector<std::vector<double>> starts;
-    std::vector<double> exponents = {car.wear_exponent};
-    if (!total) exponents.insert(exponents.end(), {0.5, 1.0, 1.5, 2.0, 3.0});
-    const WearQuadratureModel wear_model(tyre, d.samples, all, options.max_step_s);
-    for (double wp2 : exponents) {
-      std::vector<double> unit_all = all;
-      unit_all[kWp1] = 1.0;
-      unit_all[kWp2] = wp2;
-      unit_all[kWear0] = 0.0;
-      double predicted = 0.0;
-      wear_model.Run<double>(unit_all, [&](int c, size_t k, double v) {
-        if (c == kWear && k + 1 == time.size()) predicted = v;
-      });
-      double wp1 = car.wear_coeff;
-      if (predicted > 0.0 && std::isfinite(predicted) && measured > 0.0) wp1 = measured / predicted;
-      std::vector<double> s = {wp1};
-      if (!total) s.insert(s.end(), {wp2, all[kWear0]});
-      starts.push_back(s);
-    }
-    std::vector<FitParameter> params;
-    for (int i : free_wear) params.push_back(TyreParameter(i, car));
-    const JetPredictor<WearQuadratureModel> predictor(wear_model, all, free_wear, {kWear});
-    const std::vector<MeasuredChannel> channels = {ch};
-    r.wear = FitChannels(predictor, params, channels, starts, {}, options.solver);
-    for (size_t i = 0; i < free_wear.size(); ++i) all[free_wear[i]] = r.wear->estimates[i].value;
-    if (r.thermal) {
-      AddThermalUncertainty(model, all, free_thermal, *r.thermal, free_wear, ch, options.solver,
-                            &*r.wear);
-    }
+  if (d.wear_total_mm.has_value() || d.wear.usable) {
+    FitWearStage(tyre, d, options, model, free_thermal, all, r);
   } else if (d.wear.column.empty()) {
     r.warnings.push_back(
         "no wear measurement (no wear column and no --wear-per-lap-mm): wp1 and wp2 kept from "

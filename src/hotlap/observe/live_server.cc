@@ -186,8 +186,10 @@ void LiveServer::Handle(int fd) {
   }
 }
 
-std::string LiveServer::Page() {
-  return R"html(<!DOCTYPE html>
+namespace {
+
+// The live page: the charts' frame, then the script that polls /data and draws them.
+constexpr const char* kPageHtml = R"html(<!DOCTYPE html>
 <html lang="en">
 <head>
 <meta charset="utf-8">
@@ -211,7 +213,9 @@ style="color:#2ca02c">rl</span><span style="color:#9467bd">rr</span></p>
 <p id="hotlap-status" data-expected="3" data-rendered="0" data-errors="0" data-rows="0"
 data-done="0">waiting for estimates</p>
 <script>
-'use strict';
+)html";
+
+constexpr const char* kPageScript = R"js('use strict';
 const QUANTITIES = [['tread_temp', 'tread temperature, degC'],
                     ['carcass_temp', 'carcass temperature, degC'],
                     ['disc_temp', 'disc temperature, degC']];
@@ -324,7 +328,10 @@ poll();
 </script>
 </body>
 </html>
-)html";
-}
+)js";
+
+}  // namespace
+
+std::string LiveServer::Page() { return std::string(kPageHtml) + kPageScript; }
 
 }  // namespace hotlap::observe
