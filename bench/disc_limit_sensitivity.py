@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The disc-limit comparison's sensitivity (docs/optimal-control.md, "Sensitivity").
+"""The disc-limit comparison's sensitivity (docs/validation/optimal-control.md, "Sensitivity").
 
 Runs `hotlap lap --method ocp --compare-disc-limit-C LIMIT` on the Gen-7-like car at the limit and
 at tighter ones (--extra-limits-C), and on copies of it with one brake value changed at a time: the left-front duct factor (the front-left disc's and

@@ -1,5 +1,5 @@
 // The explicit solver against an independent implicit solution (CalculiX 2.20, Debian's
-// calculix-ccx; docs/fe-tyre.md, "Implicit check"). A 40 x 40 x 20 mm block of the paper's tread
+// calculix-ccx; docs/validation/fe-tyre.md, "Implicit check"). A 40 x 40 x 20 mm block of the paper's tread
 // rubber (002 Table 1, K = 20 mu0), 8 x 8 x 4 elements from hotlap's block generator, bonded to a
 // rigid platen on top that is pushed down 3 mm (15%) in six 0.5 mm increments, stands on the road
 // with its bottom either sliding freely (friction off) or stuck. The same mesh is written as a
@@ -283,7 +283,7 @@ std::vector<BlockPoint> RunHotlapBlock(const BlockMesh& b, Bottom bottom, Suppor
   return points;
 }
 
-// How far hotlap may lie from CalculiX on the same mesh, relative (docs/fe-tyre.md has the
+// How far hotlap may lie from CalculiX on the same mesh, relative (docs/validation/fe-tyre.md has the
 // measurements behind these). Against C3D8I the elements differ: on this 8 x 8 x 4 mesh C3D8I is
 // itself stiffer than its converged solution (its 16 x 16 x 8 force is 1.7-1.9% lower with the
 // frictionless bottom and 4.5-5.1% lower with the stuck one, whose bonded edges are singular),

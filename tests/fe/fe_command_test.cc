@@ -42,7 +42,7 @@ class FeCommandTest : public ::testing::Test {
   int Run(const std::string& args) {
     const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
     // Passive OpenMP waiting: under ctest -j the cores are shared, and spinning threads would
-    // wait for each other's time slices (docs/fe-tyre.md, Speed).
+    // wait for each other's time slices (docs/validation/fe-tyre.md, Speed).
     const int status = std::system(("OMP_WAIT_POLICY=passive " + std::string(HOTLAP_BINARY) +
                                     " fe " + args + " >" + out.string() + " 2>" + err.string())
                                        .c_str());

@@ -3,7 +3,7 @@
 // by the fit), gives back every tyre, wear and brake parameter inside its reported joint 95%
 // interval (the intervals that hold every parameter of a report at once with 95% probability),
 // within 5% wherever the fit says it is well determined, with RMS residuals near the noise level.
-// One lap of a small oval at 50 Hz keeps it cheap (docs/fitting.md, "Recovery").
+// One lap of a small oval at 50 Hz keeps it cheap (docs/validation/fitting.md, "Recovery").
 
 #include <algorithm>
 #include <cmath>

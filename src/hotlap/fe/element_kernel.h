@@ -3,7 +3,7 @@
 /// The element loop of the explicit solver (its cost): each element's rubber, cord, bulk
 /// viscosity and hourglass forces added to the nodes, compiled twice, for the x86-64 baseline and
 /// for AVX2 with fused multiply-adds; which one runs is an option (StepOptions::kernel,
-/// docs/fe-tyre.md "Speed"). The binary carries both and picks at run time, so it runs on every
+/// docs/validation/fe-tyre.md "Speed"). The binary carries both and picks at run time, so it runs on every
 /// x86-64 machine.
 
 #include <array>

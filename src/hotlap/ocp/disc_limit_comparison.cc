@@ -92,7 +92,7 @@ DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track
   // from 846 to 500 degC) the free lap is a poor start: 241 iterations (206 s) on the 3 m mesh
   // from it against 66 after 91 on the 15 m mesh (46 s in all), the same lap. The limited coarse
   // solve starts from the free one's (52 iterations against 324 from the QSS guess, the same
-  // lap; docs/optimal-control.md, "Speed"), and from there the two laps are independent: the
+  // lap; docs/validation/optimal-control.md, "Speed"), and from there the two laps are independent: the
   // limited one runs in a child process beside the free one's fine solve.
   const bool coarse_to_fine = options.coarse_step_m > options.step_m;
   if (coarse_to_fine) {

@@ -9,7 +9,7 @@
 /// variable of the programme with an equation of its own, so that every equation is a function of
 /// a handful of variables. A full node of the lap problem has about 60 variables; a dense nested
 /// forward-mode Hessian of it would cost (60 + 1)^2 times the function per operation, while its
-/// elements have 2 to 12 inputs each (docs/optimal-control.md has the benchmark that chose this).
+/// elements have 2 to 12 inputs each (docs/validation/optimal-control.md has the benchmark that chose this).
 ///
 /// How to use: write a functor with a templated call operator on arrays,
 ///

@@ -272,7 +272,7 @@ class Adaptor : public Ipopt::TNLP {
 };
 
 // SCOTCH (MUMPS' ordering 3) the same for the same problem, so that a solve ordered by it is
-// the same bit for bit whatever ran before it and on every run (docs/optimal-control.md, "Speed"):
+// the same bit for bit whatever ran before it and on every run (docs/validation/optimal-control.md, "Speed"):
 // - On one thread: it orders a large graph on several by default, and its threaded ordering
 //   differs from run to run (two runs of the same 3 m lap differed from the 12th digit on). Set
 //   before the first solve, unless the user set it; a solve orders once, so the thread costs

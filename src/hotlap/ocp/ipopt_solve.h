@@ -39,7 +39,7 @@ struct IpoptOptions {
   /// and there is no warm start, Ipopt's barrier begins at this mu and the point is pushed off its
   /// bounds by 1e-6 instead of Ipopt's 1e-2 (`bound_push`, `bound_frac`), so the first steps do
   /// not undo the start. 0 (or < 0): Ipopt's defaults. On the lap problem it can help or hurt:
-  /// docs/optimal-control.md, "Speed".
+  /// docs/validation/optimal-control.md, "Speed".
   double primal_start_mu = 0.0;
   /// Called at every iteration with (iteration, objective, primal infeasibility, dual
   /// infeasibility); return false to stop.

@@ -145,7 +145,7 @@ struct LateralFn {
 /// (c = 1 / I_z) and the heading error's dxi/ds + kappa_g = w r (c = 1; the road's -kappa_g is a
 /// constant of the defect row), in both lap problems. Evaluated as (w x) c, the order the stock
 /// car's own yaw element had: its 15 m solves from the QSS guess are sensitive to rounding (c (w x)
-/// took the limited lap's from 92 iterations to 199; docs/optimal-control.md, "Speed").
+/// took the limited lap's from 92 iterations to 199; docs/validation/optimal-control.md, "Speed").
 struct ScaledProductFn {
   double c;
   template <class T>

@@ -37,7 +37,7 @@
 
 namespace hotlap::ocp {
 
-/// How the state equations are imposed between nodes (docs/optimal-control.md, "Transcription").
+/// How the state equations are imposed between nodes (docs/optimal-control-model.md, "Transcription").
 enum class Collocation {
   /// x_{k+1} - x_k = ds/2 (f_k + f_{k+1}) on every interval of the mesh: second order.
   kTrapezoid,
@@ -84,7 +84,7 @@ struct LapProblemOptions {
   /// far the frozen values' h is from the solution's. Four states fewer per node: a fine solve
   /// from a coarse one about 15% faster an iteration, in fewer iterations. RunOptimalLap leaves
   /// it out of solves that start from a solution only (from the QSS guess it made the solve less
-  /// robust); a stint keeps it (its wear grows lap after lap). docs/optimal-control.md, "Speed".
+  /// robust); a stint keeps it (its wear grows lap after lap). docs/validation/optimal-control.md, "Speed".
   bool wear_in_programme = true;
   /// Each element's Hessian with its negative curvature clipped (ElementNlp::
   /// SetConvexElementHessians) instead of the exact Lagrangian Hessian.

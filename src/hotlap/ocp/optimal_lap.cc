@@ -132,7 +132,7 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& any_car, const track::Track& tra
   lap.all_brake_states = options.all_brake_states;
   // From the QSS guess the wear stays in the programme either way: left out, 3 of 6 meshes
   // (10, 12, 25 m) went astray from the guess on the Gen-7-like car's lap, none with it
-  // (docs/optimal-control.md, "Speed"). A solve from a solution leaves it out unless asked.
+  // (docs/validation/optimal-control.md, "Speed"). A solve from a solution leaves it out unless asked.
   lap.wear_in_programme = true;  // (the problem's default)
   lap.independent_drive_and_brake = options.independent_drive_and_brake;
   if (options.steer_smoothing_weight >= 0.0) {
@@ -173,14 +173,14 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& any_car, const track::Track& tra
   // kept where it is). Without them, Ipopt's own first barrier: a small one with the point alone
   // (1e-4 with the start kept 1e-6 off its bounds, IpoptOptions::primal_start_mu) helped the
   // uncalibrated car's free lap (36 iterations against 167) but stalled the calibrated car's
-  // limited lap (900 and more against 66; docs/optimal-control.md, "Speed").
+  // limited lap (900 and more against 66; docs/validation/optimal-control.md, "Speed").
   if (!lap.start_point.empty()) {
     lap.wear_in_programme = options.wear_in_programme;
     // From a solution (the coarse one, or another lap's): MUMPS with SCOTCH's ordering, 0.42-0.44
     // s an iteration on the 3 m lap against 0.47 with PORD's and 0.57 with its automatic choice,
     // to the same laps, and bit for bit the same from run to run on one SCOTCH thread
     // (ipopt_solve.cc). Not from the QSS guess, where SCOTCH sent the limited lap's 15 m solve the
-    // long way (266 iterations against 92; docs/optimal-control.md, "Speed"). First, so that an
+    // long way (266 iterations against 92; docs/validation/optimal-control.md, "Speed"). First, so that an
     // option given wins.
     fine_ipopt.extra.insert(fine_ipopt.extra.begin(), {"mumps_pivot_order", "3"});
   }

@@ -64,13 +64,13 @@ struct OptimalLapOptions {
   /// guess) and the fine solve starts from that solution, interpolated (ResampleLapPoint); 0: off.
   /// Ignored when start_point is given; a coarse solve that fails leaves the fine one to the guess.
   /// 15 m took the Gen-7 lap at 3 m from 274 iterations (140 s) to 196 + 31 (35 s in all;
-  /// docs/optimal-control.md, "Speed").
+  /// docs/validation/optimal-control.md, "Speed").
   double coarse_step_m = 15.0;
   /// Coarse to fine: the coarse solve starts from this solution of the same car and track on the
   /// coarse mesh (its point and multipliers, StartFromSolution; with or without the disc limit,
   /// the layout is the same) instead of the QSS guess. CompareDiscLimit starts the limited lap's
   /// coarse solve from the free lap's: 52 iterations against 324 from the guess on the Gen-7-like
-  /// car's lap, to the same lap (docs/optimal-control.md, "Speed").
+  /// car's lap, to the same lap (docs/validation/optimal-control.md, "Speed").
   struct CoarseStart {
     LapLayout layout;
     SolveResult solve;
@@ -83,7 +83,7 @@ struct OptimalLapOptions {
   Collocation collocation = Collocation::kTrapezoid;
   Collocation coarse_collocation = Collocation::kTrapezoid;
   /// Coarse to fine with the coarse solve's multipliers too (ResampleLapMultipliers): the fine
-  /// solve is then an Ipopt warm start from mu = ipopt.warm_mu (docs/optimal-control.md, "Speed").
+  /// solve is then an Ipopt warm start from mu = ipopt.warm_mu (docs/validation/optimal-control.md, "Speed").
   bool coarse_multipliers = true;
   /// CompareDiscLimit with coarse to fine: solve the limited lap in a child process beside the
   /// free one (two cores; Ipopt with MUMPS is not thread-safe, so not a thread). Off, or if the
@@ -123,7 +123,7 @@ struct OptimalLapOptions {
   /// car's.
   std::vector<double> lap_mass_kg;
   /// Ipopt's settings; the multipliers' step "min-dual-infeas" takes about a quarter fewer
-  /// iterations on the lap than Ipopt's default (docs/optimal-control.md, "Speed").
+  /// iterations on the lap than Ipopt's default (docs/validation/optimal-control.md, "Speed").
   IpoptOptions ipopt = LapIpoptOptions();
 };
 

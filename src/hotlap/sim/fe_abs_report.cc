@@ -64,7 +64,7 @@ void WriteFeAbsReport(const std::filesystem::path& path, const std::vector<fe::H
   page.AddText(
       "The charts follow the FE/ABS paper's Figures 8 to 11 (the paper's Figure 11 draws the "
       "force and the slip together; here they are the two charts above it and beside it). "
-      "docs/fe-tyre.md says what was compared.");
+      "docs/validation/fe-tyre.md says what was compared.");
 
   // The lumped run on the FE histories' clock (its t = 0 is the braking step's start).
   std::vector<double> lt, ltorque, lvx, lomega_r, lslip, lfx;
