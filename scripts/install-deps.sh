@@ -43,6 +43,9 @@ if [ "$with_tests" -eq 1 ]; then
     calculix-ccx         # CalculiX: implicit reference for the FE solver's pressed-block test
     python3-pytest       # the Python package's tests (python/tests)
     python3-matplotlib   # examples/python's tyre-curve plot, run by the tests
+    mkdocs mkdocs-material  # the docs site, built with --strict so a broken link fails (scripts/docs.sh)
+    doxygen              # the C++ API reference from the headers (Doxyfile)
+    python3-nbclient python3-nbformat python3-ipykernel  # runs the notebook tutorials (tools/run_notebooks.py)
   )
 fi
 if [ "$with_fuzz" -eq 1 ]; then

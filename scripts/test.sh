@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The README's second command (and CI's): install dependencies, build, run the whole test suite,
-# then its sanitizer part (scripts/sanitize.sh --fast: the reader areas' unit tests under ASan +
+# the documentation's checks and site (scripts/docs.sh), then its sanitizer part (scripts/sanitize.sh --fast: the reader areas' unit tests under ASan +
 # UBSan and a smoke of 10 CPU seconds of every fuzz target; docs/reliability.md).
 #
 #   bash scripts/test.sh                 # the above
@@ -27,6 +27,8 @@ bash scripts/build.sh
 # install-deps --test put CalculiX in place: its absence is then a failure, not a skip.
 export HOTLAP_REQUIRE_CALCULIX=1
 (cd build && ctest --output-on-failure --parallel "$(nproc)" --timeout 900)
+# The docs: generated references current, the guides' commands' output, the site (scripts/docs.sh).
+bash scripts/docs.sh
 if [ "$mode" = "--sanitize-fast" ]; then
   bash scripts/sanitize.sh --fast
 fi
