@@ -3,8 +3,9 @@
 # the build: the program for the checked commands and the --help reference, the Python package for
 # its API page).
 #
-#   bash scripts/docs.sh          # every check, then the site in build/site (MkDocs, --strict)
-#                                 # with the Doxygen C++ reference in build/site/cpp-api
+#   bash scripts/docs.sh          # every check, the notebook tutorials (nbclient), then the site
+#                                 # in build/site (MkDocs, --strict) with the Doxygen C++
+#                                 # reference in build/site/cpp-api
 #
 # Each generated reference page is checked against what the program, the package or the data
 # files give now; a stale one fails with the command that regenerates it.
@@ -18,6 +19,7 @@ $py tools/gen_cli_reference.py --check       # every flag of every --help is in 
 $py tools/gen_python_api.py --check          # the Python API page matches the built module
 $py tools/gen_parameter_sources.py --check   # the parameter-source pages match data/
 $py tools/check_doc_commands.py              # the guides' commands print what their pages show
+$py tools/run_notebooks.py                   # the notebook tutorials run, each with its figures
 PYTHONWARNINGS=ignore::DeprecationWarning mkdocs build --strict --quiet                # a broken link or a missing page fails
 doxygen Doxyfile                             # the C++ API reference from the headers
 rm -rf build/site/cpp-api
