@@ -21,6 +21,7 @@ $py tools/gen_parameter_sources.py --check   # the parameter-source pages match 
 $py tools/check_doc_commands.py              # the guides' commands print what their pages show
 $py tools/run_notebooks.py                   # the notebook tutorials run, each with its figures
 PYTHONWARNINGS=ignore::DeprecationWarning mkdocs build --strict --quiet                # a broken link or a missing page fails
+$py tools/check_docs_pages.py --site build/site   # and every link to a section lands on one
 doxygen Doxyfile                             # the C++ API reference from the headers
 rm -rf build/site/cpp-api
 cp -r build/doxygen/html build/site/cpp-api

@@ -15,8 +15,9 @@ A checked example in a page is a ```console block right after the line `<!-- che
 Lines starting with `$ ` are commands (a trailing backslash continues one), run by bash from the
 repository root with build/ first on PATH (so `hotlap` is the program just built) and
 PYTHONPATH=build/python; the lines after a command, up to the next, are what it must print
-(stdout and stderr together). A line `...` stands for any number of lines. Before comparing, the
-repository's absolute path is removed and run times (`in 0.44 s`, `done in 3 ms`) are blanked, so
+(its standard output, then its standard error: warnings come last on the page, whatever their
+order on a terminal). A line `...` stands for any number of lines. Before comparing, the
+repository's absolute path is removed and run times (`in 0.44 s`, `done in 3 ms`, `(180 times real time)`) are blanked, so
 a page shows the real output of a real run. Every command must exit 0. --update rewrites the
 pages' expected output with what the commands print now (then read the diff). Run from the
 repository root; the default pages are docs/**/*.md.
@@ -30,6 +31,7 @@ import sys
 
 MARK = "<!-- check-output -->"
 TIME = re.compile(r"\b(done )?in \d+(\.\d+)? ?(s|ms|min|h)\b")
+SPEED = re.compile(r"\(\d+(\.\d+)? times real time\)")
 
 
 def blocks(text):
@@ -67,6 +69,7 @@ def parse(body):
 
 def normalise(line, root):
     line = line.replace(root + "/", "").replace(root, ".")
+    line = SPEED.sub("(<speed> times real time)", line)
     return TIME.sub(lambda m: (m.group(1) or "") + "in <time>", line).rstrip()
 
 
@@ -85,8 +88,9 @@ def run(cmd, root):
     env["PYTHONPATH"] = os.path.join(root, "build", "python")
     env["COLUMNS"] = "100"
     r = subprocess.run(["bash", "-c", "set -o pipefail; " + cmd], cwd=root, env=env,
-                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    return r.returncode, r.stdout.rstrip("\n").split("\n") if r.stdout.strip() else []
+                       capture_output=True, text=True)
+    text = (r.stdout + r.stderr).rstrip("\n")  # stdout, then stderr: the same order on every run
+    return r.returncode, text.split("\n") if text.strip() else []
 
 
 def main():

@@ -5,10 +5,12 @@
 
 Every command and subcommand the program lists is visited; its help text is the page's entry, and
 the options are tabulated from it. --check writes nothing: it fails (exit 1) when the committed
-page differs from what the program prints now, or when a flag of any --help is missing from it,
-so the reference cannot fall behind the program. Run from the repository root.
+pages differ from what the program prints now, when a flag of any --help is missing from them, or
+when no written page (a guide or reference page of docs/, or the README) mentions it, so the
+reference cannot fall behind the program and a new option cannot go unexplained. Run from the repository root.
 """
 import argparse
+import glob
 import os
 import re
 import subprocess
@@ -119,6 +121,16 @@ def main():
                 print(f"gen_cli_reference: hotlap {' '.join(words)} --help has {flag}, which the reference does not",
                       file=sys.stderr)
                 bad = 1
+    # The generated pages hold every flag by construction; the written guides and reference pages
+    # (and the README) must too, so that a new option is explained, not only listed.
+    written = "".join(open(p).read() for p in glob.glob("docs/**/*.md", recursive=True)
+                      if p != PAGE and not p.startswith(DIR + "/")) + open("README.md").read()
+    for words, text in entries:
+        for flag in flags(text):
+            if not re.search(re.escape(flag) + r"(?![\w-])", written):
+                print(f"gen_cli_reference: hotlap {' '.join(words)} --help has {flag}, which no written page "
+                      "(docs/ outside the generated reference, or README.md) explains", file=sys.stderr)
+                bad = 1
     if committed != pages:
         stale = sorted(set(committed) ^ set(pages) | {p for p in pages if committed.get(p) != pages[p]})
         print(f"gen_cli_reference: not what the program prints now: {', '.join(stale)}; regenerate with "
@@ -126,7 +138,8 @@ def main():
         bad = 1
     if not bad:
         n = sum(len(flags(t)) for _, t in entries)
-        print(f"gen_cli_reference: the reference is current; {n} flags of {len(entries) - 1} commands all in it")
+        print(f"gen_cli_reference: the reference is current; {n} flags of {len(entries) - 1} commands all in it "
+              "and in the written pages")
     return bad
 
 
