@@ -1,6 +1,6 @@
 // The live observer (docs/observer.md): its speed on a 100 Hz stream, four corners on one core,
 // and its accuracy and consistency on 30-lap synthetic stints with known truth (the acceptance
-// measurement of issue 26; docs/observer.md, "Accuracy and consistency").
+// measurement of issue 26; docs/validation/observer.md, "Accuracy and consistency").
 //
 // Run: ./build/observe_bench --benchmark_min_time=2
 //      ./build/observe_bench --benchmark_filter=Acceptance   (about a minute: two 30-lap stints)

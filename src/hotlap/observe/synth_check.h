@@ -1,8 +1,8 @@
 #pragma once
 /// @file
 /// The observer run over a synthetic log (sim/synth.h) whose truth is known, scored against that
-/// truth: the acceptance measurement of docs/observer.md ("Accuracy and consistency"), shared by
-/// the tests and bench/observe_bench.cc.
+/// truth: the acceptance measurement of docs/validation/observer.md ("Accuracy and consistency"),
+/// shared by the tests and bench/observe_bench.cc.
 ///
 /// The readings are the log's tread temperatures (its noise, no lag expected) and its disc
 /// temperatures with seeded dropouts (a two-state Markov chain: `disc_dropout_fraction` of the
