@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The README's second command (and CI's): install dependencies, build, run the whole test suite,
-# the documentation's checks and site (scripts/docs.sh), then its sanitizer part (scripts/sanitize.sh --fast: the reader areas' unit tests under ASan +
-# UBSan and a smoke of 10 CPU seconds of every fuzz target; docs/reliability.md).
+# the documentation's checks and site (scripts/docs.sh), then its sanitizer part
+# (scripts/sanitize.sh --fast: the reader areas' unit tests under ASan + UBSan and a smoke of 10
+# CPU seconds of every fuzz target; docs/reliability.md).
 #
 #   bash scripts/test.sh                 # the above
 #   bash scripts/test.sh --no-sanitize   # without the sanitizer part (no Clang needed)
