@@ -88,6 +88,8 @@ class ExplicitSolver {
   /// this machine does not support it.
   void set_element_kernel(ElementKernel kernel);
   ElementKernel element_kernel() const { return step_options_.kernel; }
+  /// StepOptions::rim_sum_rotation: the rim's sums over its nodes begin at this node (round-off).
+  void set_rim_sum_rotation(int rotation) { step_options_.rim_sum_rotation = rotation; }
   /// Number of element colours (no two elements of a colour share a node).
   int colours() const { return model_.colours(); }
   /// The elements of colour c, ascending.

@@ -45,6 +45,14 @@ Eigen::Vector3d SpinVelocity(double omega, const Eigen::Vector3d& r) {
   return {omega * r.z(), 0.0, -omega * r.x()};
 }
 
+// What a step's loops need: the counts, the thread count and how the elements are assembled.
+struct StepPlan {
+  long nn = 0, ne = 0, nf = 0, node_blocks = 0, elem_blocks = 0;
+  int nt = 1;
+  bool coloured = false, direct = false;
+  int buffers = 0;
+};
+
 // One step (or, without `advance`, the forces at the current state) of a model's state.
 class Stepper {
  public:
@@ -55,6 +63,17 @@ class Stepper {
   void Run(bool advance);
 
  private:
+  // Counts, threads and assembly of this step; sizes the workspace.
+  StepPlan MakePlan();
+  // The loops of the step's parallel region (each a worksharing part of it).
+  void FaceForces(const StepPlan& plan);
+  void ElementForces(const StepPlan& plan, long& bad);
+  void NodeLoop(const StepPlan& plan, bool advance);
+  [[noreturn]] void ThrowInverted(long bad);
+  // The energies stored, summed over the blocks in order; the node sums' total.
+  NodeSums SumBlocks();
+  // The work, kinetic and stored energies of the step (explicit_state.h), and the clock.
+  void BookEnergies(const NodeSums& total, const Eigen::Vector3d& rim_v_old, double rim_w_old);
   // Node a's external, damping and contact forces (and the sum of the thread buffers if
   // `buffers` > 0, which zeroes their entries for the next step); with `advance`, its new
   // velocity and position and its energy terms.
@@ -104,7 +123,12 @@ void Stepper::AdvanceRim() {
   RimState& rim = s_.rim;
   Eigen::Vector3d force(s_.rim_loads.force_x_N, 0.0, s_.rim_loads.force_z_N);
   double torque = s_.rim_loads.torque_Nm;
-  for (int a : m_.mesh.rim_nodes) {
+  const std::vector<int>& nodes = m_.mesh.rim_nodes;
+  const size_t n_rim = nodes.size();
+  const size_t first =
+      n_rim > 0 ? static_cast<size_t>(std::max(0, o_.rim_sum_rotation)) % n_rim : 0;
+  for (size_t k = 0; k < n_rim; ++k) {
+    const int a = nodes[(first + k) % n_rim];
     const Eigen::Vector3d f = s_.f_stored[a] + s_.f_dissip_bv[a] + s_.f_dissip_hg[a] +
                               s_.f_damp[a] + s_.f_contact[a] + s_.f_friction[a] + s_.f_external[a];
     const Eigen::Vector3d r = s_.x[a] - rim.centre;
@@ -262,121 +286,127 @@ void Stepper::NodeUpdate(long a, int buffers, const Eigen::Vector3d& road_veloci
   sum[kKineticSum] += 0.5 * mass * w_.v_old[a].dot(s_.v[a]);
 }
 
-void Stepper::Run(bool advance) {
-  CheckElementKernelSupported(o_.kernel);
-  const long nn = static_cast<long>(s_.x.size()), ne = static_cast<long>(m_.mesh.elements.size());
-  const long nf = static_cast<long>(m_.mesh.pressure_faces.size());
-  const int nt = ResolveThreads(o_, m_);
-  const bool coloured = o_.assembly == Assembly::kColoured;
+StepPlan Stepper::MakePlan() {
+  StepPlan plan;
+  plan.nn = static_cast<long>(s_.x.size());
+  plan.ne = static_cast<long>(m_.mesh.elements.size());
+  plan.nf = static_cast<long>(m_.mesh.pressure_faces.size());
+  plan.nt = ResolveThreads(o_, m_);
+  plan.coloured = o_.assembly == Assembly::kColoured;
   // Per-thread buffers on one thread: the elements add straight to the nodes, in element order
   // (the same bits as one buffer).
-  const bool direct = !coloured && nt == 1;
-  const int buffers = coloured || direct ? 0 : std::min(nt, kMaxBuffers);
-  if (buffers > 0 && buffers != w_.buffer_count) PrepareThreadBuffers(buffers);
-  const long node_blocks = Blocks(nn), elem_blocks = Blocks(ne);
-  w_.node_sums.resize(node_blocks);
-  w_.elem_sums.resize(elem_blocks);
-  w_.face_force.resize(nf);
-  w_.elem_energy.resize(ne);
-  w_.v_old.resize(nn);
-  const double p = s_.pressure_Pa;
-  const Eigen::Vector3d road_velocity(s_.road.road_speed_x_mps, 0.0, 0.0);
-  long bad = ne;  // the lowest inverted element, if any
+  plan.direct = !plan.coloured && plan.nt == 1;
+  plan.buffers = plan.coloured || plan.direct ? 0 : std::min(plan.nt, kMaxBuffers);
+  if (plan.buffers > 0 && plan.buffers != w_.buffer_count) PrepareThreadBuffers(plan.buffers);
+  plan.node_blocks = Blocks(plan.nn);
+  plan.elem_blocks = Blocks(plan.ne);
+  w_.node_sums.resize(plan.node_blocks);
+  w_.elem_sums.resize(plan.elem_blocks);
+  w_.face_force.resize(plan.nf);
+  w_.elem_energy.resize(plan.ne);
+  w_.v_old.resize(plan.nn);
+  return plan;
+}
 
-  // One parallel region per step. Its synchronisation points: the end of the element loop
-  // (every colour's loop with the coloured assembly) and the end of the node loop; few, because
-  // on a loaded machine each one can cost a scheduler time slice.
-#pragma omp parallel num_threads(nt)
-  {
-    // Inflation pressure: a follower load on each face, a quarter of p times the area vector on
-    // each of its nodes, pushing into the solid (gathered per node below).
-    if (p != 0.0) {
+void Stepper::FaceForces(const StepPlan& plan) {
+  // Inflation pressure: a follower load on each face, a quarter of p times the area vector on
+  // each of its nodes, pushing into the solid (gathered per node in the node loop).
+  const double p = s_.pressure_Pa;
 #pragma omp for schedule(static) nowait
-      for (long k = 0; k < nf; ++k) {
-        const auto& face = m_.mesh.pressure_faces[k];
-        const std::vector<Eigen::Vector3d>& x = s_.x;
-        w_.face_force[k] = -0.125 * p * (x[face[2]] - x[face[0]]).cross(x[face[3]] - x[face[1]]);
-      }
-    }
+  for (long k = 0; k < plan.nf; ++k) {
+    const auto& face = m_.mesh.pressure_faces[k];
+    const std::vector<Eigen::Vector3d>& x = s_.x;
+    w_.face_force[k] = -0.125 * p * (x[face[2]] - x[face[0]]).cross(x[face[3]] - x[face[1]]);
+  }
+}
+
+void Stepper::ElementForces(const StepPlan& plan, long& bad) {
 #ifdef _OPENMP
-    const int team = omp_get_num_threads(), rank = omp_get_thread_num();
+  const int team = omp_get_num_threads(), rank = omp_get_thread_num();
 #else
-    const int team = 1, rank = 0;
+  const int team = 1, rank = 0;
 #endif
-    if (coloured || direct) {
+  const long ne = plan.ne;
+  if (plan.coloured || plan.direct) {
 #pragma omp for schedule(static)
-      for (long a = 0; a < nn; ++a) {
-        s_.f_stored[a].setZero();
-        s_.f_dissip_bv[a].setZero();
-        s_.f_dissip_hg[a].setZero();
-      }
-      // Elements of one colour share no node: they add to the nodes without a race. Each thread
-      // takes a contiguous share of each colour (as schedule(static)); the barrier after each
-      // colour separates the colours.
-      const int n_loops = direct ? 1 : m_.colours();
-      for (int c = 0; c < n_loops; ++c) {
-        const long k0 = direct ? 0 : m_.colour_start[c], k1 = direct ? ne : m_.colour_start[c + 1];
-        const long n = k1 - k0;
-        // The lowest inverted element of this share (a colour lists its elements ascending).
-        const long e =
-            AddElementRange(direct ? nullptr : m_.colour_elements.data(), k0 + n * rank / team,
-                            k0 + n * (rank + 1) / team, s_.f_stored.data(), s_.f_dissip_bv.data(),
-                            s_.f_dissip_hg.data());
-        if (e >= 0) {
+    for (long a = 0; a < plan.nn; ++a) {
+      s_.f_stored[a].setZero();
+      s_.f_dissip_bv[a].setZero();
+      s_.f_dissip_hg[a].setZero();
+    }
+    // Elements of one colour share no node: they add to the nodes without a race. Each thread
+    // takes a contiguous share of each colour (as schedule(static)); the barrier after each
+    // colour separates the colours.
+    const bool direct = plan.direct;
+    const int n_loops = direct ? 1 : m_.colours();
+    for (int c = 0; c < n_loops; ++c) {
+      const long k0 = direct ? 0 : m_.colour_start[c], k1 = direct ? ne : m_.colour_start[c + 1];
+      const long n = k1 - k0;
+      // The lowest inverted element of this share (a colour lists its elements ascending).
+      const long e =
+          AddElementRange(direct ? nullptr : m_.colour_elements.data(), k0 + n * rank / team,
+                          k0 + n * (rank + 1) / team, s_.f_stored.data(), s_.f_dissip_bv.data(),
+                          s_.f_dissip_hg.data());
+      if (e >= 0) {
 #pragma omp critical(hotlap_fe_inverted)
-          bad = std::min(bad, e);
-        }
-#pragma omp barrier
-      }
-    } else {
-      // The buffers are zero here (the node loop zeroes what it sums). Buffer t takes a fixed
-      // range of elements, so node_thread_mask holds; a smaller team than asked for takes
-      // several buffers per thread.
-      for (int t = rank; t < buffers; t += team) {
-        Eigen::Vector3d* fs = w_.thread_forces[3 * t].data();
-        Eigen::Vector3d* fb = w_.thread_forces[3 * t + 1].data();
-        Eigen::Vector3d* fh = w_.thread_forces[3 * t + 2].data();
-        const auto [e0, e1] = BufferElements(t, buffers);
-        const long e = AddElementRange(nullptr, e0, e1, fs, fb, fh);
-        if (e >= 0) {
-#pragma omp critical(hotlap_fe_inverted)
-          bad = std::min(bad, e);
-        }
+        bad = std::min(bad, e);
       }
 #pragma omp barrier
     }
-    // Past the barrier: every element and face force is known, and so is `bad`.
-    if (bad == ne) {
+  } else {
+    // The buffers are zero here (the node loop zeroes what it sums). Buffer t takes a fixed
+    // range of elements, so node_thread_mask holds; a smaller team than asked for takes
+    // several buffers per thread.
+    for (int t = rank; t < plan.buffers; t += team) {
+      Eigen::Vector3d* fs = w_.thread_forces[3 * t].data();
+      Eigen::Vector3d* fb = w_.thread_forces[3 * t + 1].data();
+      Eigen::Vector3d* fh = w_.thread_forces[3 * t + 2].data();
+      const auto [e0, e1] = BufferElements(t, plan.buffers);
+      const long e = AddElementRange(nullptr, e0, e1, fs, fb, fh);
+      if (e >= 0) {
+#pragma omp critical(hotlap_fe_inverted)
+        bad = std::min(bad, e);
+      }
+    }
+#pragma omp barrier
+  }
+}
+
+void Stepper::NodeLoop(const StepPlan& plan, bool advance) {
+  const Eigen::Vector3d road_velocity(s_.road.road_speed_x_mps, 0.0, 0.0);
+  const long ne = plan.ne, nn = plan.nn;
 #pragma omp for schedule(static) nowait
-      for (long b = 0; b < elem_blocks; ++b) {
-        std::array<double, 2> sum{0.0, 0.0};
-        for (long e = b * kSumBlock; e < std::min(ne, (b + 1) * kSumBlock); ++e) {
-          sum[0] += w_.elem_energy[e][0];
-          sum[1] += w_.elem_energy[e][1];
-        }
-        w_.elem_sums[b] = sum;
-      }
+  for (long b = 0; b < plan.elem_blocks; ++b) {
+    std::array<double, 2> sum{0.0, 0.0};
+    for (long e = b * kSumBlock; e < std::min(ne, (b + 1) * kSumBlock); ++e) {
+      sum[0] += w_.elem_energy[e][0];
+      sum[1] += w_.elem_energy[e][1];
+    }
+    w_.elem_sums[b] = sum;
+  }
 #pragma omp for schedule(static)
-      for (long b = 0; b < node_blocks; ++b) {
-        NodeSums sum{};
-        for (long a = b * kSumBlock; a < std::min(nn, (b + 1) * kSumBlock); ++a) {
-          NodeUpdate(a, buffers, road_velocity, advance, sum);
-        }
-        w_.node_sums[b] = sum;
-      }
+  for (long b = 0; b < plan.node_blocks; ++b) {
+    NodeSums sum{};
+    for (long a = b * kSumBlock; a < std::min(nn, (b + 1) * kSumBlock); ++a) {
+      NodeUpdate(a, plan.buffers, road_velocity, advance, sum);
     }
+    w_.node_sums[b] = sum;
   }
-  if (bad < ne) {
-    // The node loop did not run: zero the buffers for a later step.
-    for (auto& buffer : w_.thread_forces) std::fill(buffer.begin(), buffer.end(), Vec3Zero());
-    Eigen::Matrix3d F = Eigen::Matrix3d::Zero();
-    for (int a = 0; a < 8; ++a) {
-      F.noalias() += s_.x[m_.mesh.elements[bad][a]] * m_.refs[bad].grad.row(a);
-    }
-    throw NumericalError("fe: element " + std::to_string(bad) +
-                         " inverted (J = " + std::to_string(F.determinant()) +
-                         ") at t = " + std::to_string(s_.time_s) + " s");
+}
+
+void Stepper::ThrowInverted(long bad) {
+  // The node loop did not run: zero the buffers for a later step.
+  for (auto& buffer : w_.thread_forces) std::fill(buffer.begin(), buffer.end(), Vec3Zero());
+  Eigen::Matrix3d F = Eigen::Matrix3d::Zero();
+  for (int a = 0; a < 8; ++a) {
+    F.noalias() += s_.x[m_.mesh.elements[bad][a]] * m_.refs[bad].grad.row(a);
   }
+  throw NumericalError("fe: element " + std::to_string(bad) +
+                       " inverted (J = " + std::to_string(F.determinant()) +
+                       ") at t = " + std::to_string(s_.time_s) + " s");
+}
+
+NodeSums Stepper::SumBlocks() {
   // Sums in block order: the same for every thread count.
   s_.stored_internal = s_.stored_hourglass = s_.stored_contact = 0.0;
   for (const auto& b : w_.elem_sums) {
@@ -388,6 +418,26 @@ void Stepper::Run(bool advance) {
     for (size_t k = 0; k < total.size(); ++k) total[k] += b[k];
   }
   s_.stored_contact = total[kContactSum];
+  return total;
+}
+
+void Stepper::Run(bool advance) {
+  CheckElementKernelSupported(o_.kernel);
+  const StepPlan plan = MakePlan();
+  long bad = plan.ne;  // the lowest inverted element, if any
+
+  // One parallel region per step. Its synchronisation points: the end of the element loop
+  // (every colour's loop with the coloured assembly) and the end of the node loop; few, because
+  // on a loaded machine each one can cost a scheduler time slice.
+#pragma omp parallel num_threads(plan.nt)
+  {
+    if (s_.pressure_Pa != 0.0) FaceForces(plan);
+    ElementForces(plan, bad);
+    // Past the barrier: every element and face force is known, and so is `bad`.
+    if (bad == plan.ne) NodeLoop(plan, advance);
+  }
+  if (bad < plan.ne) ThrowInverted(bad);
+  NodeSums total = SumBlocks();
   if (!advance) return;
 
   // The rim: its applied loads and constraint reactions do work at its mean velocity.
@@ -399,7 +449,12 @@ void Stepper::Run(bool advance) {
     // The rim nodes' force terms, now that their new velocities are known.
     for (int a : m_.mesh.rim_nodes) AddWorkTerms(a, total);
   }
+  BookEnergies(total, rim_v_old, rim_w_old);
+}
 
+void Stepper::BookEnergies(const NodeSums& total, const Eigen::Vector3d& rim_v_old,
+                           double rim_w_old) {
+  const RimState& rim = s_.rim;
   // Energy accounting. The work of f(n) is f(n) . (x(n+1) - x(n-1)) / 2 (trapezoidal in the
   // forces), of which the second half lies beyond t(n) and is held back from the energies
   // reported at t(n); the kinetic energy at t(n) is m v(n-1/2) . v(n+1/2) / 2. For a linear

@@ -57,6 +57,10 @@ struct StepOptions {
   /// The element loop's instruction set; the two give the same results to round-off, not bit
   /// for bit (fused multiply-adds round once).
   ElementKernel kernel = BestElementKernel();
+  /// The rim's force and torque are summed over its nodes starting at this index of
+  /// mesh.rim_nodes (modulo their count) and wrapping round: another summation order, the same
+  /// sum to round-off (an ensemble's perturbation, sim/fe_perturbation.h; 0 is the plain order).
+  int rim_sum_rotation = 0;
 
   static constexpr int kElementsPerThread = 1000;
 };
