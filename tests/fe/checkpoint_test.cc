@@ -205,11 +205,12 @@ TEST_F(FeCheckpointFile, AnotherMeshConfigurationOrVersionIsRefused) {
   other.config_hash ^= 1;
   EXPECT_NE(Refusal(p, other).find("another configuration"), std::string::npos);
   // Files of versions 1 (before the stick anchors), 2 (before the cord strain and the
-  // directional cord step), 3 (before the state saved whole) and 4 (before the ABS wheel-speed
-  // sensor's sums) and of a future version (the checksum made right again): refused by version.
-  ASSERT_EQ(kCheckpointVersion, 5u);
+  // directional cord step), 3 (before the state saved whole), 4 (before the ABS wheel-speed
+  // sensor's sums) and 5 (before the wheel-speed filter's state) and of a future version (the
+  // checksum made right again): refused by version.
+  ASSERT_EQ(kCheckpointVersion, 6u);
   const std::string good = ReadBytes(p);
-  for (const char version : {1, 2, 3, 4, 6}) {
+  for (const char version : {1, 2, 3, 4, 5, 7}) {
     std::string s = good;
     s[8] = version;
     s.resize(s.size() - 8);
@@ -217,7 +218,7 @@ TEST_F(FeCheckpointFile, AnotherMeshConfigurationOrVersionIsRefused) {
     s.append(reinterpret_cast<const char*>(&h), 8);
     WriteBytes(p, s);
     EXPECT_NE(Refusal(p, key_).find("has format version " + std::to_string(version) +
-                                    "; this build reads version 5"),
+                                    "; this build reads version 6"),
               std::string::npos)
         << Refusal(p, key_);
   }

@@ -42,7 +42,8 @@ namespace hotlap::fe {
 /// bound, so a version-2 file's time step would not match anyway). 4: the solver's state and the
 /// TyreRun's whole, each field behind its name (field_io.h), the rim's settings with them.
 /// 5: the ABS wheel-speed sensor's sums over the controller period (sim/fe_abs_torque.h).
-inline constexpr std::uint32_t kCheckpointVersion = 5;
+/// 6: the ABS wheel-speed filter's state (brake/wheel_speed_filter.h).
+inline constexpr std::uint32_t kCheckpointVersion = 6;
 
 using ::hotlap::Fnv1a64;  // common/fnv1a.h
 

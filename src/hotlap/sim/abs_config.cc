@@ -120,6 +120,10 @@ AbsConfig LoadAbsConfig(const fs::path& path) {
     c.controller = brake::ReadAbsControllerParams(k);
     c.controller.wheel_radius_m = c.plant.wheel.radius;  // the wheel's R_l, read once
   }
+  if (y.Has("wheel_speed_filter")) {
+    YamlReader f = y.Map("wheel_speed_filter");
+    c.wheel_speed_filter = brake::ReadWheelSpeedFilterParams(f, c.controller.period_s);
+  }
   // The delay is applied per controller tick, so it must be a whole number of periods.
   const double ticks = c.plant.hydraulics.delay / c.controller.period_s;
   if (std::abs(ticks - std::round(ticks)) > 1e-6) {

@@ -12,6 +12,7 @@
 
 #include "hotlap/brake/abs_controller.h"
 #include "hotlap/brake/brake_params_io.h"
+#include "hotlap/brake/wheel_speed_filter.h"
 #include "hotlap/sim/abs_plant.h"
 #include "hotlap/sim/abs_surface.h"
 
@@ -68,6 +69,8 @@ struct AbsConfig {
   std::filesystem::path path;
   AbsPlantModel<double> plant;  ///< wheel, tyre (from `wheel.tyre_file`), hydraulics
   brake::AbsControllerParams controller;
+  /// The wheel-speed filter before the controller (`wheel_speed_filter`; absent: none).
+  brake::WheelSpeedFilterParams wheel_speed_filter;
   brake::BrakeFile brake;  ///< the disc/calliper thermal model (from `brake_file`)
   AbsDriver driver;
   AbsEvent event;

@@ -236,6 +236,8 @@ AbsRunResult RunAbs(const AbsConfig& config, const AbsEvent& event) {
   AbsRunResult r;
   r.ambient_temp_K = event.ambient_temp_K;
   brake::AbsController controller(config.controller);
+  // The wheel speed the controller sees (brake/wheel_speed_filter.h; kNone: as measured).
+  brake::WheelSpeedFilter speed_filter(config.wheel_speed_filter, config.controller.period_s);
   brake::PressureDelayLine delay(config.DelayTicks(), 0.0);
   AbsIntegrator integrator(model, surface, event, r);
   // Each tick takes steps_per_period steps plus a few at events; far more means no progress.
@@ -258,7 +260,8 @@ AbsRunResult RunAbs(const AbsConfig& config, const AbsEvent& event) {
     driver = config.driver.PressureAt(t_tick);
     double target = driver;
     if (use_abs) {
-      const brake::AbsCommand cmd = controller.Step({x.speed, x.wheel_speed, driver});
+      const brake::AbsCommand cmd =
+          controller.Step({x.speed, speed_filter.Step(x.wheel_speed), driver});
       target = cmd.pressure_target;
       state_code = static_cast<int>(cmd.state);
       if (controller.state().cycles > cycles_seen) r.cycle_starts_s.push_back(t_tick);

@@ -13,7 +13,7 @@ double FeAbsTorque::operator()(double t, double vx, double spin) {
   window_ += dt;
   while (t >= next_tick_ - 1e-12) {
     const int cycles = state_.cycles;
-    const double spin_read = window_ > 0.0 ? spin_sum_ / window_ : spin;
+    const double spin_read = filter_.Step(window_ > 0.0 ? spin_sum_ / window_ : spin);
     const double vx_read = window_ > 0.0 ? vx_sum_ / window_ : vx;
     spin_sum_ = vx_sum_ = window_ = 0.0;
     const brake::AbsCommand cmd = brake::StepAbsController(
@@ -53,6 +53,9 @@ void FeAbsTorque::Save(fe::BinaryWriter& w) const {
   w.PutDoubles(std::vector<double>(pushed_.begin(), pushed_.end()));
   w.PutDoubles(cycle_starts_);
   w.PutDoubles(abs_exit_ ? std::vector<double>{*abs_exit_} : std::vector<double>{});
+  w.PutU64(filter_.started() ? 1 : 0);
+  w.PutDouble(filter_.z1());
+  w.PutDouble(filter_.z2());
 }
 
 void FeAbsTorque::Load(fe::BinaryReader& r) {
@@ -97,6 +100,9 @@ void FeAbsTorque::Load(fe::BinaryReader& r) {
   if (exits > 1) r.Damaged("more than one ABS exit time");
   std::optional<double> abs_exit;
   if (exits == 1) abs_exit = r.GetFinite();
+  const std::uint64_t filter_started = r.GetU64();
+  if (filter_started > 1) r.Damaged("a wheel-speed filter state out of range");
+  const double filter_z1 = r.GetFinite(), filter_z2 = r.GetFinite();
   // Everything read: restore. The delay line is rebuilt by pushing the pending commands again.
   state_ = s;
   next_tick_ = next_tick;
@@ -111,6 +117,7 @@ void FeAbsTorque::Load(fe::BinaryReader& r) {
   for (double d : pushed) Push(d);
   cycle_starts_ = std::move(cycle_starts);
   abs_exit_ = abs_exit;
+  filter_.SetState(filter_started == 1, filter_z1, filter_z2);
 }
 
 }  // namespace hotlap::sim

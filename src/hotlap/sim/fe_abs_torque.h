@@ -15,6 +15,7 @@
 
 #include "hotlap/brake/abs_controller.h"
 #include "hotlap/brake/brake_hydraulics.h"
+#include "hotlap/brake/wheel_speed_filter.h"
 #include "hotlap/fe/checkpoint.h"
 #include "hotlap/sim/abs_config.h"
 
@@ -26,7 +27,10 @@ class FeAbsTorque {
   /// Keeps a reference to `config`. `params` is config.controller with the wheel radius the
   /// slip uses (the FE tyre's free-rolling radius, (002:2)).
   FeAbsTorque(const AbsConfig& config, const brake::AbsControllerParams& params)
-      : config_(config), params_(params), delay_(config.DelayTicks(), 0.0) {}
+      : config_(config),
+        params_(params),
+        delay_(config.DelayTicks(), 0.0),
+        filter_(config.wheel_speed_filter, params.period_s) {}
 
   /// Brake torque capacity at brake-step time t (s from the braking step's start), given the
   /// rim's forward speed vx (m/s) and spin (rad/s), N m. Calls must not go back in time.
@@ -37,6 +41,7 @@ class FeAbsTorque {
   /// sample of the instantaneous spin would see wherever the contact's high-frequency ripple
   /// (facets passing, 300-400 Hz at 11 m/s on a 5 deg mesh) happens to be at that FE step,
   /// which the time step moves. The first tick, with no period behind it, reads the values.
+  /// The spin read then passes the ABS file's wheel-speed filter (brake/wheel_speed_filter.h).
   double operator()(double t, double vx, double spin);
 
   const brake::AbsControllerState& state() const { return state_; }
@@ -47,7 +52,7 @@ class FeAbsTorque {
   std::optional<double> abs_exit() const { return abs_exit_; }
 
   /// Writes the controller's state, the pending commands, the pressure, the next tick, the cycle
-  /// starts and the exit (section "ABS_").
+  /// starts, the exit and the wheel-speed filter's state (section "ABS_").
   void Save(fe::BinaryWriter& w) const;
   /// Reads what Save wrote; InputError (via the reader) if it is damaged or does not fit the
   /// configuration's delay line. Nothing changes unless everything was read.
@@ -60,6 +65,7 @@ class FeAbsTorque {
   brake::AbsControllerParams params_;
   brake::AbsControllerState state_;
   brake::PressureDelayLine delay_;
+  brake::WheelSpeedFilter filter_;
   std::deque<double> pushed_;  // the last delay_ticks commands pushed, oldest first
   std::vector<double> cycle_starts_;
   std::optional<double> abs_exit_;
