@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include "fe/coarse_fe_config.h"
 #include "hotlap/common/error.h"
 #include "hotlap/fe/fe_config.h"
 #include "test_util.h"
@@ -24,31 +25,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string Replace(std::string text, const std::string& from, const std::string& to) {
-  const size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
-
 class FeAbsStopTest : public ::testing::Test {
  protected:
-  // The shipped file with a coarse mesh, mass scaling and short steps (as FeCommandTest).
+  // The shipped file with a coarse mesh, mass scaling and short steps (fe/coarse_fe_config.h).
   fs::path CoarseConfig(const std::string& name, const std::string& pressure = "220") {
-    std::string y = test::ReadTextFile(test::SourcePath("data/fe/paper_235_75r15.yaml"));
-    y = Replace(y, "meridional_elements_half: 10", "meridional_elements_half: 5");
-    y = Replace(y, "circumferential_elements_contact: 24", "circumferential_elements_contact: 8");
-    y = Replace(y, "circumferential_elements_rest: 60", "circumferential_elements_rest: 16");
-    y = Replace(y, "mass_scaling_min_step_s: 0", "mass_scaling_min_step_s: 1.2e-5");
-    y = Replace(y, "config_file: ../abs/paper.yaml",
-                "config_file: " + test::SourcePath("data/abs/paper.yaml").string());
-    y = Replace(y, "damping_per_s: 250", "damping_per_s: 150");
-    y = Replace(y, "duration_s: 0.1 ", "duration_s: 0.01 ");
-    y = Replace(y, "history_interval_s: 1.0e-4", "history_interval_s: 1.0e-3");
-    y = Replace(y, "pressure_kPa: 220 ", "pressure_kPa: " + pressure + " ");
-    const fs::path p = dir_ / name;
-    std::ofstream(p) << y;
-    return p;
+    return test::WriteCoarseFeConfig(dir_ / name, pressure);
   }
   static fe::StepHooks Hooks(const fe::FeConfig& c) {
     fe::StepHooks hooks;

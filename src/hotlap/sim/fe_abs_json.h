@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hotlap/sim/abs_metrics.h"
+#include "hotlap/sim/fe_abs_ensemble.h"
 #include "hotlap/sim/fe_abs_stop.h"
 
 namespace hotlap::sim {
@@ -14,5 +16,13 @@ namespace hotlap::sim {
 /// end.
 nlohmann::json FeAbsStopJson(const FeAbsStopResult& r, double duration_s,
                              const fe::Energies& energies);
+
+/// The lumped `hotlap abs` run of the same event beside it ("lumped"): its cycles, the slip
+/// after the first, its final speed and distance.
+nlohmann::json LumpedAbsJson(const AbsMetrics& m);
+
+/// An ensemble of stops ("abs_ensemble"): its size and perturbation, each figure's statistic
+/// over the members (n, mean, standard_error, sd, min, max, unit) and each member's figures.
+nlohmann::json FeAbsEnsembleJson(const FeAbsEnsembleResult& e, double duration_s);
 
 }  // namespace hotlap::sim
