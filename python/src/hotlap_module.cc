@@ -17,6 +17,7 @@ void BindIdent(py::module_& m);
 void BindReport(py::module_& m);
 void BindLog(py::module_& m);
 void BindRace(py::module_& m);
+void BindFe(py::module_& m);
 }  // namespace hotlap::python
 
 PYBIND11_MODULE(_hotlap, m) {
@@ -43,4 +44,5 @@ PYBIND11_MODULE(_hotlap, m) {
   hotlap::python::BindReport(m);
   hotlap::python::BindLog(m);
   hotlap::python::BindRace(m);
+  hotlap::python::BindFe(m);
 }

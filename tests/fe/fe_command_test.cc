@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "child_lines.h"
+#include "fe/coarse_fe_config.h"
 #include "hotlap/fe/explicit_solver.h"
 #include "report/chromium.h"
 #include "test_util.h"
@@ -50,23 +51,8 @@ class FeCommandTest : public ::testing::Test {
     err_ = ReadTextFile(err);
     return WEXITSTATUS(status);
   }
-  // The shipped file with a coarse mesh, mass scaling and short steps.
-  fs::path CoarseConfig() {
-    std::string y = ReadTextFile(hotlap::test::SourcePath("data/fe/paper_235_75r15.yaml"));
-    y = Replace(y, "meridional_elements_half: 10", "meridional_elements_half: 5");
-    y = Replace(y, "circumferential_elements_contact: 24", "circumferential_elements_contact: 8");
-    y = Replace(y, "circumferential_elements_rest: 60", "circumferential_elements_rest: 16");
-    // Its unscaled step is 9.7 us: scaling to 12 us adds about half the tyre's mass (reported).
-    y = Replace(y, "mass_scaling_min_step_s: 0", "mass_scaling_min_step_s: 1.2e-5");
-    y = Replace(y, "config_file: ../abs/paper.yaml",
-                "config_file: " + hotlap::test::SourcePath("data/abs/paper.yaml").string());
-    y = Replace(y, "damping_per_s: 250", "damping_per_s: 150");  // mass scaled: heavier
-    y = Replace(y, "duration_s: 0.1 ", "duration_s: 0.01 ");
-    y = Replace(y, "history_interval_s: 1.0e-4", "history_interval_s: 1.0e-3");
-    const fs::path p = dir_ / "coarse.yaml";
-    std::ofstream(p) << y;
-    return p;
-  }
+  // The shipped file with a coarse mesh, mass scaling and short steps (coarse_fe_config.h).
+  fs::path CoarseConfig() { return hotlap::test::WriteCoarseFeConfig(dir_ / "coarse.yaml"); }
 
   const hotlap::test::TempDir tmp_;
   const fs::path dir_ = tmp_.path();
@@ -126,6 +112,47 @@ TEST_F(FeCommandTest, AbsStepRunsEveryStepAndWritesTheOutputs) {
   fs::create_directories(dir_ / "chromium");
   const auto status = hotlap::test::RenderInChromium(out / "abs_report.html", dir_ / "chromium");
   EXPECT_TRUE(hotlap::test::RenderedCleanly(status, 6));
+}
+
+// `hotlap fe abs --ensemble`: the steps before the braking once, then the members' short stops,
+// each figure's statistic in the JSON (one member's figures per member, in order), one CSV row per
+// member, the report with the band; an ensemble with a checkpoint option is refused before
+// anything is written.
+TEST_F(FeCommandTest, EnsembleWritesEachFiguresStatisticAndRefusesCheckpoints) {
+  const fs::path cfg = CoarseConfig(), out = dir_ / "ens", json = dir_ / "ens.json";
+  ASSERT_EQ(Run("abs --config " + cfg.string() + " --out " + out.string() + " --json " +
+                json.string() + " --duration-s 0.02 --ensemble 3 --perturb sum-order --threads 2"),
+            0)
+      << err_;
+  EXPECT_TRUE(Contains(out_, "abs ensemble: 3 members, perturbation sum-order")) << out_;
+  const nlohmann::json j = nlohmann::json::parse(ReadTextFile(json));
+  ASSERT_TRUE(j.contains("abs_ensemble")) << j.dump();
+  EXPECT_FALSE(j.contains("abs"));
+  const nlohmann::json& e = j["abs_ensemble"];
+  EXPECT_EQ(e["members"].get<int>(), 3);
+  EXPECT_EQ(e["perturbation"].get<std::string>(), "sum-order");
+  EXPECT_EQ(e["member_figures"].size(), 3u);
+  for (const char* k : {"fraction_below_0_135", "slip_p99", "slip_mean", "slip_max", "cycles_per_s",
+                        "first_release_s", "distance_m", "mean_deceleration_mps2"}) {
+    ASSERT_TRUE(e["figures"].contains(k)) << k;
+    for (const char* s : {"n", "mean", "standard_error", "sd", "min", "max", "unit"}) {
+      EXPECT_TRUE(e["figures"][k].contains(s)) << k << " " << s;
+    }
+  }
+  // 20 ms: no cycle, so no window after the first; the distance is every member's.
+  EXPECT_EQ(e["figures"]["fraction_below_0_135"]["n"].get<int>(), 0);
+  EXPECT_EQ(e["figures"]["distance_m"]["n"].get<int>(), 3);
+  EXPECT_GT(e["figures"]["distance_m"]["mean"].get<double>(), 0.2);
+  EXPECT_TRUE(e.contains("lumped"));
+  EXPECT_TRUE(Contains(ReadTextFile(out / "abs_ensemble.csv"), "member,control_cycles,"));
+  EXPECT_TRUE(Contains(ReadTextFile(out / "abs_report.html"), "Ensemble figures"));
+
+  const fs::path refused = dir_ / "refused";
+  EXPECT_EQ(Run("abs --config " + cfg.string() + " --out " + refused.string() +
+                " --ensemble 2 --checkpoint-every-s 0.01"),
+            2);
+  EXPECT_TRUE(Contains(err_, "--ensemble")) << err_;
+  EXPECT_FALSE(fs::exists(refused));
 }
 
 // A braking step run straight through and one stopped at a checkpoint and continued from it (all

@@ -1,0 +1,50 @@
+#pragma once
+/// @file
+/// `hotlap fe inflate|footprint|roll|abs` as one library call (docs/fe-tyre.md): the step chain
+/// (each step runs the ones before it), the outputs of each step (history CSVs, the footprint
+/// map, deformed shapes as .vtu, abs_report.html), the lumped `hotlap abs` run of the same event
+/// beside the FE one, the checkpoints and the restart of the abs step, the ensemble of abs stops
+/// (fe_abs_ensemble.h), and the JSON summary. The command line parses its options, calls RunFe
+/// and writes the summary.
+///
+///   sim::FeRunOptions o;  o.step = "abs";  o.config = "data/fe/paper_235_75r15.yaml";
+///   o.out = "out/fe";  o.ensemble = 16;
+///   const sim::FeRunResult r = sim::RunFe(o);   // r.summary: the --json document
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "hotlap/fe/element_kernel.h"
+#include "hotlap/sim/fe_perturbation.h"
+
+namespace hotlap::sim {
+
+struct FeRunOptions {
+  std::string step = "abs";  ///< inflate | footprint | roll | abs
+  std::filesystem::path config;
+  std::filesystem::path out;  ///< checked first, created once the input is accepted
+  double duration_s = 0.0;    ///< of the last step (roll or abs); 0: the file's
+  int threads = 0;            ///< solver threads (0: OpenMP's default); ensemble: members at once
+  fe::ElementKernel kernel = fe::BestElementKernel();
+  double checkpoint_every_s = 0.0;  ///< abs: 0 for no checkpoints
+  std::filesystem::path restart;    ///< abs: a checkpoint to continue from (empty: none)
+  double step_scale = 1.0;          ///< the time step as a fraction of the stable one's, (0, 1]
+  int ensemble = 0;                 ///< abs: members of an ensemble (0: one plain stop)
+  FePerturbation perturbation = FePerturbation::kSpin;  ///< of the ensemble's members
+  /// Lines for the user as the run goes: `note` progress and warnings (the command's stderr),
+  /// `say` each step's summary (its stdout). Either may be empty.
+  std::function<void(const std::string&)> note, say;
+};
+
+struct FeRunResult {
+  nlohmann::json summary;  ///< docs/fe-tyre.md, "JSON keys"
+};
+
+/// Runs the steps up to options.step. Throws InputError on bad input (before anything is
+/// written), NumericalError if a step fails.
+FeRunResult RunFe(const FeRunOptions& options);
+
+}  // namespace hotlap::sim
