@@ -276,14 +276,14 @@ void FeRunner::RunAbsEnsemble() {
   eo.duration_s = config_.abs_duration_s;
   eo.history_interval_s = config_.history_interval_s;
   const Clock::time_point wall0 = Clock::now();
-  int done = 0;
   eo.member_done = [&](int member, const FeAbsFigures& f) {
-    ++done;
-    Note(
-        fmt::format("fe abs ensemble: member {} of {} done ({} cycles, {:.1f}% below {:.3f} after "
-                    "the first), {:.0f} s",
-                    member + 1, eo.members, f.cycles, 100.0 * f.fraction_below_0_135.value_or(0.0),
-                    kPaperSlipLimit, Seconds(wall0)));
+    // Each member's figures as it ends (a study cut short keeps what it has).
+    std::string figures;
+    for (const FeAbsFigureValue& v : ListFeAbsFigures(f)) {
+      figures += fmt::format(" {}={}", v.key, v.value ? fmt::format("{:.5g}", *v.value) : "-");
+    }
+    Note(fmt::format("fe abs ensemble: member {} of {} done after {:.0f} s: cycles={}{}",
+                     member + 1, eo.members, Seconds(wall0), f.cycles, figures));
   };
   const FeAbsEnsembleResult e = RunFeAbsEnsemble(*run_, *abs_config_, eo);
   RunLumped(e.vx_mps.mean.empty() ? config_.roll_speed_mps : e.vx_mps.mean.front());
