@@ -1,7 +1,7 @@
 #pragma once
 // The shipped FE tyre file (data/fe/paper_235_75r15.yaml) made cheap for tests: a very coarse
-// mesh (720 elements), mass scaling to a 12 us step, a 10 ms roll and a 1 ms history, the ABS
-// file named by its absolute path; everything else as shipped. Used by the FE command, stop and
+// mesh (720 elements), mass scaling to a 12 us step, a 10 ms roll and a 1 ms history, the lumped
+// ABS tuning (data/abs/paper.yaml) named by its absolute path; everything else as shipped. Used by the FE command, stop and
 // ensemble tests.
 
 #include <filesystem>
@@ -20,7 +20,8 @@ inline std::filesystem::path WriteCoarseFeConfig(const std::filesystem::path& pa
   y = ReplaceOnce(y, "circumferential_elements_rest: 60", "circumferential_elements_rest: 16");
   // Its unscaled step is 9.7 us: scaling to 12 us adds about half the tyre's mass (reported).
   y = ReplaceOnce(y, "mass_scaling_min_step_s: 0", "mass_scaling_min_step_s: 1.2e-5");
-  y = ReplaceOnce(y, "config_file: ../abs/paper.yaml",
+  // The lumped tuning (no wheel-speed filter): the coarse tyre's bounds were set with it.
+  y = ReplaceOnce(y, "config_file: ../abs/fe_tyre.yaml",
                   "config_file: " + SourcePath("data/abs/paper.yaml").string());
   y = ReplaceOnce(y, "damping_per_s: 250", "damping_per_s: 150");  // mass scaled: heavier
   y = ReplaceOnce(y, "duration_s: 0.1 ", "duration_s: 0.01 ");
