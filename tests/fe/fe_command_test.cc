@@ -146,6 +146,10 @@ TEST_F(FeCommandTest, EnsembleWritesEachFiguresStatisticAndRefusesCheckpoints) {
   EXPECT_TRUE(e.contains("lumped"));
   EXPECT_TRUE(Contains(ReadTextFile(out / "abs_ensemble.csv"), "member,control_cycles,"));
   EXPECT_TRUE(Contains(ReadTextFile(out / "abs_report.html"), "Ensemble figures"));
+  // The page draws its three charts (torque, speeds, slip: each a band) without a script error.
+  fs::create_directories(dir_ / "chromium");
+  const auto status = hotlap::test::RenderInChromium(out / "abs_report.html", dir_ / "chromium");
+  EXPECT_TRUE(hotlap::test::RenderedCleanly(status, 3));
 
   const fs::path refused = dir_ / "refused";
   EXPECT_EQ(Run("abs --config " + cfg.string() + " --out " + refused.string() +
