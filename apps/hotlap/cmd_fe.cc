@@ -3,7 +3,7 @@
 // per step, the footprint pressure map (CSV and SVG), deformed shapes as .vtu, a JSON summary.
 // The abs step (sim::FeAbsStop) can write checkpoints (--checkpoint-every-s) and continue from
 // one (--restart), or run as an ensemble (--ensemble N --perturb KIND). This file parses, calls
-// the library (sim::RunFe) and writes the JSON.
+// the library (runs::RunFe) and writes the JSON.
 
 #include <cstdio>
 #include <cstdlib>
@@ -13,7 +13,7 @@
 #include "hotlap/common/json_output.h"
 #include "hotlap/common/output_folder.h"
 #include "hotlap/fe/element_kernel.h"
-#include "hotlap/sim/fe_run.h"
+#include "hotlap/runs/fe_run.h"
 
 namespace hotlap::app {
 
@@ -44,7 +44,7 @@ fe::ElementKernel ChooseKernel(const std::string& option) {
 
 int RunFeCommand(const FeArgs& a) {
   if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
-  sim::FeRunOptions o;
+  runs::FeRunOptions o;
   o.step = a.step;
   o.config = a.config;
   o.out = a.out;
@@ -61,7 +61,7 @@ int RunFeCommand(const FeArgs& a) {
     std::printf("%s\n", line.c_str());
     std::fflush(stdout);
   };
-  const sim::FeRunResult r = sim::RunFe(o);
+  const runs::FeRunResult r = runs::RunFe(o);
   if (!a.json.empty()) WriteJsonFile(a.json, r.summary);
   return 0;
 }

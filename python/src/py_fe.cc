@@ -1,5 +1,5 @@
 // hotlap.fe: the finite-element tyre's steps, as `hotlap fe` runs them (docs/fe-tyre.md): the
-// same library call (sim::RunFe) and the same summary as `--json`.
+// same library call (runs::RunFe) and the same summary as `--json`.
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -7,7 +7,7 @@
 #include <string>
 
 #include "hotlap/fe/element_kernel.h"
-#include "hotlap/sim/fe_run.h"
+#include "hotlap/runs/fe_run.h"
 #include "py_convert.h"
 
 namespace py = pybind11;
@@ -19,7 +19,7 @@ namespace {
 py::object Fe(const std::string& step, const std::string& config, const std::string& out,
               double duration_s, int threads, const std::string& kernel, double step_scale,
               int ensemble, const std::string& perturb) {
-  sim::FeRunOptions o;
+  runs::FeRunOptions o;
   o.step = step;
   o.config = config;
   o.out = out;
@@ -29,10 +29,10 @@ py::object Fe(const std::string& step, const std::string& config, const std::str
   o.step_scale = step_scale;
   o.ensemble = ensemble;
   o.perturbation = sim::ParseFePerturbation(perturb, "perturb");
-  sim::FeRunResult r;
+  runs::FeRunResult r;
   {
     py::gil_scoped_release release;
-    r = sim::RunFe(o);
+    r = runs::RunFe(o);
   }
   return ToPython(r.summary);
 }

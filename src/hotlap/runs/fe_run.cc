@@ -1,4 +1,4 @@
-#include "hotlap/sim/fe_run.h"
+#include "hotlap/runs/fe_run.h"
 
 #include <algorithm>
 #include <chrono>
@@ -24,7 +24,7 @@
 #include "hotlap/sim/fe_abs_report.h"
 #include "hotlap/sim/fe_abs_stop.h"
 
-namespace hotlap::sim {
+namespace hotlap::runs {
 
 namespace {
 
@@ -76,15 +76,15 @@ class FeRunner {
   const FeRunOptions& o_;
   fe::FeConfig config_;
   int last_ = 0;  // 0 inflate, 1 footprint, 2 roll, 3 abs
-  std::optional<AbsConfig> abs_config_;
+  std::optional<sim::AbsConfig> abs_config_;
   std::optional<fe::TyreRun> run_;
-  std::optional<FeAbsStop> stop_;
+  std::optional<sim::FeAbsStop> stop_;
   nlohmann::json j_;
   double step_t0_ = 0.0;
   Clock::time_point step_wall0_;
   // The lumped run, once RunLumped ran.
-  std::optional<AbsRunResult> lumped_run_;
-  AbsMetrics lumped_metrics_;
+  std::optional<sim::AbsRunResult> lumped_run_;
+  sim::AbsMetrics lumped_metrics_;
 };
 
 void FeRunner::Prepare() {
@@ -108,7 +108,7 @@ void FeRunner::Prepare() {
     if (last_ == 3) config_.abs_duration_s = o_.duration_s;
   }
   config_.solver.time_step_scale = o_.step_scale;
-  if (last_ == 3) abs_config_ = LoadAbsConfig(config_.abs_config);
+  if (last_ == 3) abs_config_ = sim::LoadAbsConfig(config_.abs_config);
   run_.emplace(config_);
   // An ensemble's steps before the braking run on one thread, so that its members (copies of
   // the rolled run) are the same bits whatever --threads (the members at once) is.
@@ -155,7 +155,7 @@ fe::StepHooks FeRunner::Hooks() {
 
 nlohmann::json FeRunner::Restart(const fe::CheckpointKey& key) {
   const std::string file = o_.restart.string();
-  const FeAbsCheckpointInfo info = stop_->Restore(file, key);
+  const sim::FeAbsCheckpointInfo info = stop_->Restore(file, key);
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(info.summary);
@@ -228,15 +228,15 @@ void FeRunner::RunEarlierSteps(const fe::StepHooks& hooks) {
 }
 
 void FeRunner::RunLumped(double initial_speed_mps) {
-  AbsEvent event = abs_config_->event;
+  sim::AbsEvent event = abs_config_->event;
   event.initial_speed_mps = initial_speed_mps;
   event.duration_s = config_.abs_duration_s;
-  lumped_run_ = RunAbs(*abs_config_, event);
-  lumped_metrics_ = CalcAbsMetrics(*abs_config_, *lumped_run_);
+  lumped_run_ = sim::RunAbs(*abs_config_, event);
+  lumped_metrics_ = sim::CalcAbsMetrics(*abs_config_, *lumped_run_);
 }
 
 void FeRunner::RunAbsStop(const fe::StepHooks& hooks, const fe::CheckpointKey& key) {
-  FeAbsStopOptions options;
+  sim::FeAbsStopOptions options;
   options.duration_s = config_.abs_duration_s;
   options.hooks = hooks;
   options.checkpoint_every_s = o_.checkpoint_every_s;
@@ -246,20 +246,21 @@ void FeRunner::RunAbsStop(const fe::StepHooks& hooks, const fe::CheckpointKey& k
   if (o_.checkpoint_every_s > 0.0) options.summary = j_.dump();
   step_t0_ = o_.restart.empty() ? run_->solver().time() : run_->brake_start_s();
   step_wall0_ = Clock::now();
-  const FeAbsStopResult r = stop_->Run(options);
+  const sim::FeAbsStopResult r = stop_->Run(options);
   const fe::BrakeResult& br = r.brake;
   fe::WriteFeHistoryCsv(o_.out / "abs_history.csv", "abs", config_, br.history,
                         run_->slip_radius_m());
   RunLumped(br.initial_speed_mps);
-  const FeAbsLumpedRun lumped{&lumped_run_->history, lumped_metrics_,
-                              abs_config_->plant.wheel.radius};
-  WriteFeAbsReport(o_.out / "abs_report.html", br.history, r.cycles, run_->slip_radius_m(),
-                   {{"configuration", config_.file.string()},
-                    {"mesh", fmt::format("{} elements, {} nodes", run_->tyre().mesh.elements.size(),
-                                         run_->tyre().mesh.nodes.size())}},
-                   &lumped);
-  j_["abs"] = FeAbsStopJson(r, config_.abs_duration_s, run_->solver().energies());
-  j_["abs"]["lumped"] = LumpedAbsJson(lumped_metrics_);
+  const sim::FeAbsLumpedRun lumped{&lumped_run_->history, lumped_metrics_,
+                                   abs_config_->plant.wheel.radius};
+  sim::WriteFeAbsReport(
+      o_.out / "abs_report.html", br.history, r.cycles, run_->slip_radius_m(),
+      {{"configuration", config_.file.string()},
+       {"mesh", fmt::format("{} elements, {} nodes", run_->tyre().mesh.elements.size(),
+                            run_->tyre().mesh.nodes.size())}},
+      &lumped);
+  j_["abs"] = sim::FeAbsStopJson(r, config_.abs_duration_s, run_->solver().energies());
+  j_["abs"]["lumped"] = sim::LumpedAbsJson(lumped_metrics_);
   WarnCordStrain("abs", br.max_cord_strain);
   Say(
       fmt::format("abs: {:.3f} s, speed {:.3f} -> {:.3f} m/s over {:.3f} m, max slip {:.3f}, {} "
@@ -269,35 +270,35 @@ void FeRunner::RunAbsStop(const fe::StepHooks& hooks, const fe::CheckpointKey& k
 }
 
 void FeRunner::RunAbsEnsemble() {
-  FeAbsEnsembleOptions eo;
+  sim::FeAbsEnsembleOptions eo;
   eo.members = o_.ensemble;
   eo.perturbation = o_.perturbation;
   eo.threads = o_.threads > 0 ? o_.threads : fe::DefaultThreadCount();
   eo.duration_s = config_.abs_duration_s;
   eo.history_interval_s = config_.history_interval_s;
   const Clock::time_point wall0 = Clock::now();
-  eo.member_done = [&](int member, const FeAbsFigures& f) {
+  eo.member_done = [&](int member, const sim::FeAbsFigures& f) {
     // Each member's figures as it ends (a study cut short keeps what it has).
     std::string figures;
-    for (const FeAbsFigureValue& v : ListFeAbsFigures(f)) {
+    for (const sim::FeAbsFigureValue& v : sim::ListFeAbsFigures(f)) {
       figures += fmt::format(" {}={}", v.key, v.value ? fmt::format("{:.5g}", *v.value) : "-");
     }
     Note(fmt::format("fe abs ensemble: member {} of {} done after {:.0f} s: cycles={}{}",
                      member + 1, eo.members, Seconds(wall0), f.cycles, figures));
   };
-  const FeAbsEnsembleResult e = RunFeAbsEnsemble(*run_, *abs_config_, eo);
+  const sim::FeAbsEnsembleResult e = sim::RunFeAbsEnsemble(*run_, *abs_config_, eo);
   RunLumped(e.vx_mps.mean.empty() ? config_.roll_speed_mps : e.vx_mps.mean.front());
-  WriteFeAbsEnsembleCsv(o_.out / "abs_ensemble.csv", e);
-  WriteFeAbsEnsembleReport(
+  sim::WriteFeAbsEnsembleCsv(o_.out / "abs_ensemble.csv", e);
+  sim::WriteFeAbsEnsembleReport(
       o_.out / "abs_report.html", e, lumped_metrics_,
       {{"configuration", config_.file.string()},
        {"mesh", fmt::format("{} elements, {} nodes", run_->tyre().mesh.elements.size(),
                             run_->tyre().mesh.nodes.size())},
        {"ensemble", fmt::format("{} members, perturbation {}", eo.members,
-                                FePerturbationName(eo.perturbation))}});
-  j_["abs_ensemble"] = FeAbsEnsembleJson(e, config_.abs_duration_s);
-  j_["abs_ensemble"]["lumped"] = LumpedAbsJson(lumped_metrics_);
-  for (const std::string& line : FeAbsEnsembleText(e)) Say(line);
+                                sim::FePerturbationName(eo.perturbation))}});
+  j_["abs_ensemble"] = sim::FeAbsEnsembleJson(e, config_.abs_duration_s);
+  j_["abs_ensemble"]["lumped"] = sim::LumpedAbsJson(lumped_metrics_);
+  for (const std::string& line : sim::FeAbsEnsembleText(e)) Say(line);
 }
 
 void FeRunner::Performance(Clock::time_point wall0, long steps_at_start, bool restarted) {
@@ -324,7 +325,7 @@ FeRunResult FeRunner::Run() {
   Describe();
   fe::CheckpointKey key;
   if (stop_ && (o_.checkpoint_every_s > 0.0 || !o_.restart.empty())) {
-    key = MakeFeCheckpointKey(*run_);
+    key = sim::MakeFeCheckpointKey(*run_);
   }
   const bool restarted = !o_.restart.empty();
   if (restarted) j_ = Restart(key);
@@ -346,4 +347,4 @@ FeRunResult FeRunner::Run() {
 
 FeRunResult RunFe(const FeRunOptions& options) { return FeRunner(options).Run(); }
 
-}  // namespace hotlap::sim
+}  // namespace hotlap::runs

@@ -7,9 +7,9 @@
 /// (fe_abs_ensemble.h), and the JSON summary. The command line parses its options, calls RunFe
 /// and writes the summary.
 ///
-///   sim::FeRunOptions o;  o.step = "abs";  o.config = "data/fe/paper_235_75r15.yaml";
+///   runs::FeRunOptions o;  o.step = "abs";  o.config = "data/fe/paper_235_75r15.yaml";
 ///   o.out = "out/fe";  o.ensemble = 16;
-///   const sim::FeRunResult r = sim::RunFe(o);   // r.summary: the --json document
+///   const runs::FeRunResult r = runs::RunFe(o);   // r.summary: the --json document
 
 #include <filesystem>
 #include <functional>
@@ -20,7 +20,7 @@
 #include "hotlap/fe/element_kernel.h"
 #include "hotlap/sim/fe_perturbation.h"
 
-namespace hotlap::sim {
+namespace hotlap::runs {
 
 struct FeRunOptions {
   std::string step = "abs";  ///< inflate | footprint | roll | abs
@@ -33,7 +33,7 @@ struct FeRunOptions {
   std::filesystem::path restart;    ///< abs: a checkpoint to continue from (empty: none)
   double step_scale = 1.0;          ///< the time step as a fraction of the stable one's, (0, 1]
   int ensemble = 0;                 ///< abs: members of an ensemble (0: one plain stop)
-  FePerturbation perturbation = FePerturbation::kSpin;  ///< of the ensemble's members
+  sim::FePerturbation perturbation = sim::FePerturbation::kSpin;  ///< of the ensemble's members
   /// Lines for the user as the run goes: `note` progress and warnings (the command's stderr),
   /// `say` each step's summary (its stdout). Either may be empty.
   std::function<void(const std::string&)> note, say;
@@ -47,4 +47,4 @@ struct FeRunResult {
 /// written), NumericalError if a step fails.
 FeRunResult RunFe(const FeRunOptions& options);
 
-}  // namespace hotlap::sim
+}  // namespace hotlap::runs
