@@ -108,9 +108,7 @@ int RunLap(const LapArgs& a) {
   vehicle::RequireVehicle(car, "`hotlap lap`");
   const track::Track track = track::LoadTrack(a.track);
   const runs::LapPlan plan = runs::PlanLap(car, track, a.run, runs::NameStyle::kCommandLine);
-  if (fs::exists(a.out) && !fs::is_directory(a.out)) {
-    throw InputError(fmt::format("--out {}: exists and is not a folder", a.out));
-  }
+  CheckOutputDirectory(a.out, "--out");
   if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
   fmt::print("{}", runs::LapRunHeader(car, track, a.run, plan));
   std::fflush(stdout);

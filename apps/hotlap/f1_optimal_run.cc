@@ -26,9 +26,7 @@ int RunF1Optimal(const OptimalArgs& a, const fs::path& car_file) {
   runs::CheckF1Run(a.car, !a.set.empty(), run);
   const vehicle::F1CarParams car = vehicle::LoadF1Car(car_file);
   const track::Track track = track::LoadTrack(a.track);
-  if (fs::exists(a.out) && !fs::is_directory(a.out)) {
-    throw InputError(fmt::format("--out {}: exists and is not a folder", a.out));
-  }
+  CheckOutputDirectory(a.out, "--out");
   if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
   fmt::print(stderr, "{}", runs::PlanarTrackWarning(track));
   ocp::F1LapOptions o;

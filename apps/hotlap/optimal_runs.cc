@@ -84,9 +84,7 @@ int RunOptimal(const OptimalArgs& a) {
   const vehicle::Car car = vehicle::LoadCar(car_file, vehicle::ParseCarOverrides(a.set));
   vehicle::RequireVehicle(car, "the optimal lap");
   const track::Track track = track::LoadTrack(a.track);
-  if (fs::exists(a.out) && !fs::is_directory(a.out)) {
-    throw InputError(fmt::format("--out {}: exists and is not a folder", a.out));
-  }
+  CheckOutputDirectory(a.out, "--out");
   if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
   if (!a.save_solution.empty()) CheckOutputFolder(a.save_solution, "--save-solution");
   if (o.compare_disc_limit_C && !(a.warm_start.empty() && a.save_solution.empty())) {
