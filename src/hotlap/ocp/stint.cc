@@ -96,15 +96,13 @@ std::vector<StintLap> StintLaps(const LapSolution& solution, const track::Track&
       const CornerTrace& t = solution.corners[c];
       if (t.gas_temp.empty()) continue;
       lap.end_pressure_Pa[c] = At(d, t.pressure, s1);
-      // The time-weighted mean over the lap's intervals.
-      double sum = 0.0, time = 0.0;
-      for (size_t k = 0; k + 1 < d.size(); ++k) {
-        if (d[k] < s0 - 1e-9 || d[k + 1] > s1 + 1e-9) continue;
-        const double dt = solution.time[k + 1] - solution.time[k];
-        sum += 0.5 * (t.gas_temp[k] + t.gas_temp[k + 1]) * dt;
-        time += dt;
-      }
-      lap.mean_gas_temp_K[c] = time > 0.0 ? sum / time : t.gas_temp.front();
+      // The time-weighted mean over the lap's nodes (s0 <= d <= s1).
+      const auto first = std::lower_bound(d.begin(), d.end(), s0 - 1e-9) - d.begin();
+      const auto end = std::upper_bound(d.begin(), d.end(), s1 + 1e-9) - d.begin();
+      lap.mean_gas_temp_K[c] =
+          sim::CalcHistoryStats({solution.time.begin() + first, solution.time.begin() + end},
+                                {t.gas_temp.begin() + first, t.gas_temp.begin() + end})
+              .mean;
     }
     lap.fuel_burnt_kg = fuel_start_kg > 0.0 ? burnt : 0.0;
     fuel -= lap.fuel_burnt_kg;

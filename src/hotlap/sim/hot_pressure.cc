@@ -21,9 +21,7 @@ std::array<double, 4> MeanHotPressures(const vehicle::Car& car, const ReplayResu
   for (int c = 0; c < 4; ++c) {
     const std::vector<double>& p = replay.corners[c].pressure;
     if (!car.tyres[c].params.HasGasAndRim() || p.size() != t.size() || t.size() < 2) continue;
-    double sum = 0.0;
-    for (size_t k = 0; k + 1 < t.size(); ++k) sum += 0.5 * (p[k] + p[k + 1]) * (t[k + 1] - t[k]);
-    out[c] = t.back() > t.front() ? sum / (t.back() - t.front()) : p.front();
+    out[c] = CalcHistoryStats(t, p).mean;
   }
   return out;
 }
