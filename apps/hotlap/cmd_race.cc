@@ -78,7 +78,8 @@ CommandRunner RegisterRaceCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "race",
       "Plan a race's pit stops (four tyres and fuel, or fuel only) from the car's own "
-      "fall-off: the least race time under the rules, against fixed plans");
+      "fall-off: the least race time under the rules, against fixed plans, and the policy under "
+      "cautions");
   sub->add_option("--track", args->track, "Track name or file")->capture_default_str();
   sub->add_option("--car", args->car, "Car name or car.yaml")->capture_default_str();
   sub->add_option("--set", args->set, "Override a car parameter, KEY=VALUE (docs/overrides.md)");
@@ -108,6 +109,14 @@ CommandRunner RegisterRaceCommand(CLI::App& app) {
                   "500's) or 'off'")
       ->capture_default_str();
   sub->add_option("--races", args->run.races, "Monte Carlo races of each plan (0: none)")
+      ->capture_default_str();
+  sub->add_flag("--policy,!--no-policy", args->run.policy,
+                "Also solve the policy: pit or stay out at every lap of every caution (a "
+                "stochastic programme), raced in the same Monte Carlo races")
+      ->capture_default_str();
+  sub->add_option("--fuel-units-per-lap", args->run.policy_options.fuel_units_per_lap,
+                  "The policy's fuel count: units of a green lap's burn, 1 to 10 (a caution lap's "
+                  "burn rounded up)")
       ->capture_default_str();
   sub->add_option("--step-m", args->step_m, "Road spacing of the QSS laps, m")
       ->capture_default_str();

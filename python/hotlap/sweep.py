@@ -1,7 +1,7 @@
 """Set-up sweeps: many cases of hotlap's laps, on dask.distributed or as shards of a Slurm array.
 
 A case is one row of a case table: the car and track, the method (``qss``, ``ocp``, ``compare``;
-``stint``), the method's options, and any car parameter overridden by its dotted
+``stint``; ``race``), the method's options, and any car parameter overridden by its dotted
 key (``brake_system.front_share``, ``brakes.fl.duct_factor``, ``tyre_forces.rr.pressure_kPa``:
 docs/overrides.md). Each case runs in a worker process of its own (Ipopt with MUMPS is not
 thread-safe: one solve per process at a time) and writes its folder ``OUT/cases/<case>/``
@@ -30,12 +30,21 @@ import time
 
 import hotlap
 
-METHODS = ("qss", "ocp", "compare", "stint")
+METHODS = ("qss", "ocp", "compare", "stint", "race")
 
 # Case-table columns besides the car parameter overrides: name -> (type, methods it applies to).
 OPTIONS = {
-    "laps": (int, ("qss", "stint")),
-    "step_m": (float, ("qss", "ocp", "compare", "stint")),
+    "laps": (int, ("qss", "stint", "race")),
+    "step_m": (float, ("qss", "ocp", "compare", "stint", "race")),
+    "stages": (str, ("race",)),
+    "fuel_capacity_kg": (float, ("race",)),
+    "fuel_per_lap_kg": (float, ("race",)),
+    "tyre_sets": (int, ("race",)),
+    "pit_loss_s": (float, ("race",)),
+    "caution_pit_loss_s": (float, ("race",)),
+    "fall_off_laps": (int, ("race",)),
+    "cautions": (str, ("race",)),
+    "races": (int, ("race",)),
     "line": (str, ("qss",)),
     "coarse_step_m": (float, ("ocp", "compare", "stint")),
     "collocation": (str, ("ocp", "compare")),
@@ -221,6 +230,13 @@ def run_case(case, out):
         elif case["method"] == "stint":
             r = hotlap.stint(car, track, **options)
             channels = {"stint.csv": r["channels"]}
+        elif case["method"] == "race":
+            summary = hotlap.race(car, track, **options)
+            fall_off = summary["fall_off"]
+            ages = list(range(len(fall_off["lap_time_s"])))
+            channels = {"fall_off.csv": {"age_laps": ages, "lap_time_s": fall_off["lap_time_s"],
+                                         "heat_only_lap_time_s": fall_off["heat_only_lap_time_s"]}}
+            r = {"summary": summary}
         else:
             r = hotlap.optimal_lap(car, track, **options)
             channels = {"%s.csv" % label.replace(" ", "_").replace("<=", "le").replace("/", "_"): c

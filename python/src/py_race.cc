@@ -28,7 +28,8 @@ namespace {
 py::dict Race(const vehicle::Car& car, const track::Track& track, int laps,
               const std::string& stages, double fuel_capacity_kg, double fuel_per_lap_kg,
               int tyre_sets, double pit_loss_s, double caution_pit_loss_s, int fall_off_laps,
-              double reference_fuel_kg, double step_m, const std::string& cautions, int races) {
+              double reference_fuel_kg, double step_m, const std::string& cautions, int races,
+              bool policy, int fuel_units_per_lap) {
   race::RaceRunOptions o;
   o.rules.laps = laps;
   o.rules.stage_ends = race::ParseStageEnds(stages, laps, "stages");
@@ -41,6 +42,8 @@ py::dict Race(const vehicle::Car& car, const track::Track& track, int laps,
   o.reference_fuel_kg = reference_fuel_kg;
   o.cautions = race::ParseCautions(cautions, "cautions");
   o.races = races;
+  o.policy = policy;
+  o.policy_options.fuel_units_per_lap = fuel_units_per_lap;
   race::CheckRaceRules(o.rules);
   if (!(step_m >= 0.5 && step_m <= 10.0)) {
     throw InputError(fmt::format("step_m {:g} must be in [0.5, 10] m", step_m));
@@ -66,9 +69,11 @@ void BindRace(py::module_& m) {
         py::arg("fuel_per_lap_kg") = d.fuel_per_lap_kg, py::arg("tyre_sets") = d.tyre_sets,
         py::arg("pit_loss_s") = d.pit_loss_s, py::arg("caution_pit_loss_s") = d.caution_pit_loss_s,
         py::arg("fall_off_laps") = 60, py::arg("reference_fuel_kg") = 25.0, py::arg("step_m") = 2.0,
-        py::arg("cautions") = "record", py::arg("races") = 10000,
+        py::arg("cautions") = "record", py::arg("races") = 10000, py::arg("policy") = true,
+        py::arg("fuel_units_per_lap") = 2,
         "The race plan from the car's own fall-off over a set (QSS laps from pit-out), by dynamic "
-        "programming, against the fixed plans: the summary `hotlap race --json` writes "
+        "programming, against the fixed plans, and the policy under cautions (a stochastic "
+        "programme): the summary `hotlap race --json` writes "
         "(docs/race.md).");
 }
 

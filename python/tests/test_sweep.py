@@ -172,3 +172,23 @@ def test_a_stint_case_runs_and_reports_its_totals(tmp_path):
         header = f.readline().strip().split(",")
     assert "total_time_s" in header and "managing_gain_s" in header
     assert (tmp_path / "cases" / "s" / "stint.csv").stat().st_size > 10000
+
+
+def test_race_cases_run_and_more_pit_loss_never_adds_a_stop(tmp_path):
+    base = {"method": "race", "laps": 60, "stages": "20,40", "fall_off_laps": 6, "step_m": 4.0,
+            "races": 200}
+    cases = [dict(base, case="cheap", pit_loss_s=20.0), dict(base, case="dear", pit_loss_s=60.0)]
+    summary = sweep.sweep(cases, tmp_path, shard=(1, 1), progress=None)
+    assert summary["by_status"] == {"ok": 2}
+    stops = {}
+    for name in ("cheap", "dear"):
+        with open(tmp_path / "cases" / name / "result.json") as f:
+            result = json.load(f)
+        assert result["summary"]["policy.monte_carlo.races"] == 200
+        stops[name] = result["summary"]["policy.monte_carlo.mean_stops"]
+        with open(tmp_path / "cases" / name / "fall_off.csv") as f:
+            assert f.readline().strip() == "age_laps,lap_time_s,heat_only_lap_time_s"
+            assert len(f.readlines()) == 6
+    assert stops["dear"] <= stops["cheap"]
+    with open(tmp_path / "results.csv") as f:
+        assert "plan.race_time_s" in f.readline().strip().split(",")

@@ -27,8 +27,9 @@ TEST_F(RaceCommandTest, WritesThePlanAndTheFixedPlansItBeats) {
   EXPECT_TRUE(test::Contains(r.out, "the optimal plan gains")) << r.out;
   // The report: the plans' table, the fall-off and race charts, the cautions' histogram.
   const std::string page = test::ReadTextFile(html);
-  for (const char* part : {"The optimal plan and the fixed plans", "Lap time on a set",
-                           "Lap times over the race", "Cautions in the 10000 simulated races"}) {
+  for (const char* part :
+       {"The optimal plan and the fixed plans", "Lap time on a set", "Lap times over the race",
+        "Cautions in the 10000 simulated races", "The policy under cautions"}) {
     EXPECT_TRUE(test::Contains(page, part)) << part;
   }
   const nlohmann::json j = Json(json);
@@ -53,12 +54,27 @@ TEST_F(RaceCommandTest, WritesThePlanAndTheFixedPlansItBeats) {
   EXPECT_EQ(mc["plans"].size(), 1 + j["fixed_plans"].size());
   EXPECT_LT(mc["gain_over_best_fixed"]["standard_error_s"].get<double>(),
             mc["plans"][0]["standard_error_s"].get<double>());
-  // With --cautions off there is nothing random: the means are the plans' times.
+  // The policy: raced in the same races, never slower on average than the best plan there.
+  const nlohmann::json& policy = j["policy"];
+  EXPECT_EQ(policy["monte_carlo"]["races"].get<int>(), 10000);
+  EXPECT_GE(policy["gain_over_best_plan"]["mean_s"].get<double>(),
+            -3.0 * policy["gain_over_best_plan"]["standard_error_s"].get<double>());
+  EXPECT_NEAR(policy["monte_carlo"]["mean_time_s"].get<double>(),
+              policy["expected_time_s"].get<double>(),
+              4.0 * policy["monte_carlo"]["standard_error_s"].get<double>());
+  EXPECT_FALSE(policy["caution_chart"].empty());
+  // With --cautions off there is nothing random: the means are the plans' times, and the policy
+  // is the optimal plan.
   const fs::path off = dir() / "off.json";
   ASSERT_EQ(Run(kShort + " --cautions off --races 3 --json " + off.string()).exit_code, 0);
   const nlohmann::json o = Json(off);
   EXPECT_EQ(o["monte_carlo"]["plans"][0]["mean_time_s"], o["plan"]["race_time_s"]);
   EXPECT_EQ(o["monte_carlo"]["plans"][0]["standard_error_s"].get<double>(), 0.0);
+  EXPECT_NEAR(o["policy"]["expected_time_s"].get<double>(), o["plan"]["race_time_s"].get<double>(),
+              1e-4);
+  const fs::path none = dir() / "none.json";
+  ASSERT_EQ(Run(kShort + " --no-policy --races 0 --json " + none.string()).exit_code, 0);
+  EXPECT_TRUE(Json(none)["policy"].is_null());
 }
 
 TEST_F(RaceCommandTest, BadRulesFailCleanlyWithoutOutput) {
@@ -71,7 +87,8 @@ TEST_F(RaceCommandTest, BadRulesFailCleanlyWithoutOutput) {
         std::pair{std::string("race --tyre-sets 0"), "tyre sets 0"},
         std::pair{std::string("race --cautions 1.5"), "must be in [0, 1]"},
         std::pair{std::string("race --cautions often"), "'record' or 'off'"},
-        std::pair{std::string("race --races -1"), "Monte Carlo races -1"}}) {
+        std::pair{std::string("race --races -1"), "Monte Carlo races -1"},
+        std::pair{std::string("race --fuel-units-per-lap 0"), "fuel units a lap"}}) {
     const test::RunResult r = Run(args + " --json " + json.string());
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
     EXPECT_TRUE(test::Contains(r.err, message)) << args << ": " << r.err;

@@ -206,12 +206,14 @@ TEST(CoarseToFineTest, ReachesTheSameLapAsTheGuessStartInFewerIterations) {
   RecordProperty("fine_iterations_small_mu", pushed.solution.solve.iterations);
   o.ipopt.primal_start_mu = 0.0;
 
-  // A given start point wins over coarse to fine.
+  // A given start point wins over coarse to fine. Its problem differs by the wear frozen for the
+  // forces (the start point's, where the staged fine solve froze the coarse solve's): with the
+  // tuned wear (0.08 mm a lap at the right rear) about a millisecond (1.05 ms, 2026-11-29).
   o.start_point = staged.solution.solve.x;
   const OptimalLapRun again = RunOptimalLap(car, track, o, &warm_up);
   EXPECT_EQ(again.coarse.iterations, 0);
   ASSERT_TRUE(again.solution.solve.ok());
-  EXPECT_NEAR(again.solution.lap_time, staged.solution.lap_time, 1e-4);
+  EXPECT_NEAR(again.solution.lap_time, staged.solution.lap_time, 2e-3);
 }
 
 }  // namespace

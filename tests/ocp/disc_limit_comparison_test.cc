@@ -132,8 +132,12 @@ TEST(DiscLimitComparisonTest, SecondProcessGivesTheSameLaps) {
   const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
   const track::Track track = track::LoadTrack("darlington");
   OptimalLapOptions o = Coarse();
-  o.step_m = 30.0;
-  o.coarse_step_m = 60.0;
+  // 20 m from 40 m. On 30 m from 60 m with the tuned wear (2026-11-29) the limited lap from the
+  // free lap's coarse solve settled 0.64 s slower than from the QSS guess (30.52 against 29.88 s
+  // with the wear in the programme; from the guess with it frozen, a 43.3 s lap): local optima
+  // of so coarse a mesh, which the main job's 3 m from 15 m solves do not meet.
+  o.step_m = 20.0;
+  o.coarse_step_m = 40.0;
   std::vector<std::string> lines;
   const auto log = [&](const std::string& line) { lines.push_back(line); };
   const DiscLimitComparison two = CompareDiscLimit(car, track, o, CelsiusToKelvin(480.0), {}, log);
@@ -148,7 +152,7 @@ TEST(DiscLimitComparisonTest, SecondProcessGivesTheSameLaps) {
   lines.clear();
   const DiscLimitComparison one = CompareDiscLimit(car, track, o, CelsiusToKelvin(480.0), {}, log);
   EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [](const std::string& l) {
-    return test::Contains(l, "discs <= 480 degC: solving (30.0 m mesh") &&
+    return test::Contains(l, "discs <= 480 degC: solving (20.0 m mesh") &&
            test::Contains(l, "the coarse solve from the other lap's");
   }));
   EXPECT_FALSE(one.limited_in_second_process);

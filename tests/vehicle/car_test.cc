@@ -136,7 +136,7 @@ TEST_F(BadCarFileTest, ErrorInABrakeFileNamesThatFile) {
 
 TEST_F(BadCarFileTest, ErrorInTheCompoundNamesThatFile) {
   const std::string m =
-      LoadError("tyres/compound.yaml", "{wear_mm: 1, factor: 0.98}", "{wear_mm: 0, factor: 0.98}");
+      LoadError("tyres/compound.yaml", "{wear_mm: 1, factor: 0.88}", "{wear_mm: 0, factor: 0.88}");
   EXPECT_TRUE(Contains(m, edited_.string()));
   EXPECT_TRUE(Contains(m, "field 'grip_vs_wear'"));
 }

@@ -80,8 +80,9 @@ struct LapProblemOptions {
   /// on it), is frozen for the tyre forces at the start point's values (start_point's, else the
   /// QSS guess's replay), left out of the programme (fixed variables, no defects) and integrated
   /// after the solve by the same collocation over the solved channels: a lap's wear changes h by
-  /// about 2e-4 on the Gen-7-like car, and LapSolution::frozen_wear_grip_difference reports how
-  /// far the frozen values' h is from the solution's. Four states fewer per node: a fine solve
+  /// about 0.01 at the right rear of the Gen-7-like car (its tuned wear, docs/race.md); frozen at
+  /// the coarse solve's, h is within 1e-3 of the solution's in the main job
+  /// (LapSolution::frozen_wear_grip_difference reports it). Four states fewer per node: a fine solve
   /// from a coarse one about 15% faster an iteration, in fewer iterations. RunOptimalLap leaves
   /// it out of solves that start from a solution only (from the QSS guess it made the solve less
   /// robust); a stint keeps it (its wear grows lap after lap). docs/validation/optimal-control.md, "Speed".

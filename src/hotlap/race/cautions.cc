@@ -32,9 +32,10 @@ double RaceUnderCautions(const RaceRules& r, const FallOff& f, const std::vector
   int age = 0, caution_left = 0;
   std::vector<int> starts;
   bool first_caution_lap = false;
+  bool restart = false;  // the last lap was a caution's
   size_t next = 0;
-  int pending = -1;         // a stop put off from the lap pit road was closed
-  int last_green_stop = 0;  // the lap a green stop was made on
+  int pending = -1;          // a stop put off from the lap pit road was closed
+  int last_green_stop = -1;  // the lap a green stop was made on (none yet)
   for (int lap = 1; lap <= r.laps; ++lap) {
     // A caution comes out at random on a green lap.
     if (caution_left == 0 && m.rate_per_lap > 0.0 && uniform(draw) < m.rate_per_lap) {
@@ -50,10 +51,12 @@ double RaceUnderCautions(const RaceRules& r, const FallOff& f, const std::vector
       fuel -= m.fuel_share * r.fuel_per_lap_kg;
       --caution_left;
     } else {
-      time += f.LapTime(age, fuel);
+      // The tyres and brakes a caution cooled: the laps after it, booked on the first.
+      time += f.LapTime(age, fuel) + (restart ? f.restart_penalty_s : 0.0);
       fuel -= r.fuel_per_lap_kg;
       ++age;
     }
+    restart = under_caution;
     const bool pit_closed = under_caution && first_caution_lap;
     first_caution_lap = false;
     const bool due = (next < stops.size() && stops[next].lap == lap) || pending >= 0;

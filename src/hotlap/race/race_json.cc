@@ -21,6 +21,27 @@ double BestFixed(const std::vector<RacePlan>& fixed) {
   return best;
 }
 
+std::string PolicyText(const PolicyRun& pr) {
+  std::string out = fmt::format(
+      "policy (a stochastic programme with the caution in its state): expected {:.3f} s\n",
+      pr.policy.expected_time_s);
+  if (pr.monte_carlo.races > 0) {
+    out += fmt::format(
+        "  in the same races: {:.3f} s +- {:.3f}, {:.1f} stops a race; it gains {:.3f} s +- {:.3f} "
+        "over the best plan ({})\n",
+        pr.monte_carlo.mean_time_s, pr.monte_carlo.standard_error_s, pr.mean_stops,
+        pr.gain_over_best_plan.mean_time_s, pr.gain_over_best_plan.standard_error_s, pr.best_plan);
+  }
+  out += "  a caution out on lap N: four new tyres from a set of this age (fuel filled with it):\n";
+  std::string laps = "    lap ", ages = "    age ";
+  for (size_t i = 0; i < pr.caution_laps.size(); ++i) {
+    laps += fmt::format("{:>5}", pr.caution_laps[i]);
+    ages += pr.four_tyres_from_age[i] < 0 ? fmt::format("{:>5}", "-")
+                                          : fmt::format("{:>5}", pr.four_tyres_from_age[i]);
+  }
+  return out + laps + "\n" + ages + "\n";
+}
+
 }  // namespace
 
 nlohmann::json PlanJson(const RacePlan& plan) {
@@ -46,6 +67,8 @@ nlohmann::json RaceJson(const RaceRun& run, const CautionModel& cautions) {
   for (const RacePlan& p : fixed) fixed_json.push_back(PlanJson(p));
   nlohmann::json lap_times = nlohmann::json::array();
   for (double t : f.lap_time_s) lap_times.push_back(RoundSignificant(t));
+  nlohmann::json heat_only = nlohmann::json::array();
+  for (double t : f.heat_only_lap_time_s) heat_only.push_back(RoundSignificant(t));
   const double best = BestFixed(fixed);
   nlohmann::json mc = nullptr;
   if (!monte_carlo.empty()) {
@@ -64,6 +87,33 @@ nlohmann::json RaceJson(const RaceRun& run, const CautionModel& cautions) {
            {{"mean_s", RoundSignificant(run.gain_under_cautions.mean_time_s)},
             {"standard_error_s", RoundSignificant(run.gain_under_cautions.standard_error_s)}}}};
   }
+  nlohmann::json policy = nullptr;
+  if (run.policy) {
+    const PolicyRun& pr = *run.policy;
+    nlohmann::json chart = nlohmann::json::array();
+    for (size_t i = 0; i < pr.caution_laps.size(); ++i) {
+      chart.push_back(
+          {{"caution_lap", pr.caution_laps[i]},
+           {"four_tyres_from_age_laps", pr.four_tyres_from_age[i] < 0
+                                            ? nlohmann::json(nullptr)
+                                            : nlohmann::json(pr.four_tyres_from_age[i])}});
+    }
+    policy = {{"expected_time_s", RoundSignificant(pr.policy.expected_time_s)},
+              {"fuel_units_per_lap", pr.policy.green_burn},
+              {"max_tyre_age_laps", pr.policy.max_age},
+              {"caution_chart", chart}};
+    if (pr.monte_carlo.races > 0) {
+      policy["monte_carlo"] = {
+          {"races", pr.monte_carlo.races},
+          {"mean_time_s", RoundSignificant(pr.monte_carlo.mean_time_s)},
+          {"standard_error_s", RoundSignificant(pr.monte_carlo.standard_error_s)},
+          {"mean_stops", RoundSignificant(pr.mean_stops)}};
+      policy["gain_over_best_plan"] = {
+          {"plan", pr.best_plan},
+          {"mean_s", RoundSignificant(pr.gain_over_best_plan.mean_time_s)},
+          {"standard_error_s", RoundSignificant(pr.gain_over_best_plan.standard_error_s)}};
+    }
+  }
   return {{"command", "race"},
           {"rules",
            {{"laps", r.laps},
@@ -80,6 +130,9 @@ nlohmann::json RaceJson(const RaceRun& run, const CautionModel& cautions) {
            {{"laps", f.lap_time_s.size()},
             {"lap_time_s", lap_times},
             {"spread_s", RoundSignificant(f.Spread())},
+            {"heat_only_lap_time_s", heat_only},
+            {"heat_only_spread_s", RoundSignificant(f.HeatOnlySpread())},
+            {"restart_penalty_s", RoundSignificant(f.restart_penalty_s)},
             {"fuel_s_per_kg", RoundSignificant(f.fuel_s_per_kg)},
             {"reference_fuel_kg", f.reference_fuel_kg}}},
           {"plan", PlanJson(plan)},
@@ -87,7 +140,8 @@ nlohmann::json RaceJson(const RaceRun& run, const CautionModel& cautions) {
           {"gain_over_best_fixed_s",
            fixed.empty() ? nlohmann::json(nullptr)
                          : nlohmann::json(RoundSignificant(best - plan.race_time_s))},
-          {"monte_carlo", mc}};
+          {"monte_carlo", mc},
+          {"policy", policy}};
 }
 
 std::string RaceText(const RaceRun& run) {
@@ -100,6 +154,16 @@ std::string RaceText(const RaceRun& run) {
       "fall-off: {} laps on a set, fastest {:.3f} s, last {:.3f} s ({:+.3f} s), fuel {:.4f} s/kg\n",
       f.lap_time_s.size(), *std::min_element(f.lap_time_s.begin(), f.lap_time_s.end()),
       f.lap_time_s.back(), f.Spread(), f.fuel_s_per_kg);
+  if (!f.heat_only_lap_time_s.empty()) {
+    out += fmt::format(
+        "  of it the heat alone (grip not falling with wear): {:+.3f} s; the wear: {:+.3f} s\n",
+        f.HeatOnlySpread(), f.Spread() - f.HeatOnlySpread());
+  }
+  if (f.restart_penalty_s != 0.0) {
+    out +=
+        fmt::format("  a caution's cooled tyres and brakes cost the {} laps after it {:+.3f} s\n",
+                    FallOff::kRestartLaps, f.restart_penalty_s);
+  }
   out += fmt::format("rules: {} laps, stages end at {}, {} tyre sets, a cell lasts {} laps\n",
                      r.laps, fmt::join(r.stage_ends, ", "), r.tyre_sets, r.FuelWindow());
   const auto plan_text = [&](const RacePlan& p) {
@@ -132,6 +196,7 @@ std::string RaceText(const RaceRun& run) {
           run.gain_under_cautions.mean_time_s, run.gain_under_cautions.standard_error_s);
     }
   }
+  if (run.policy) out += PolicyText(*run.policy);
   return out;
 }
 

@@ -71,14 +71,50 @@ void WriteRaceReport(const std::filesystem::path& path, const RaceRun& run, cons
         run.gain_under_cautions.mean_time_s, run.gain_under_cautions.standard_error_s,
         run.gain_under_cautions.races));
   }
+  if (run.policy) {
+    const PolicyRun& pr = *run.policy;
+    page.AddHeading("The policy under cautions");
+    std::string text = fmt::format(
+        "A stochastic dynamic programme over the laps, with the set's age, the fuel, the sets "
+        "used and the caution in its state, says at the end of every lap whether to pit: expected "
+        "race time {:.2f} s.",
+        pr.policy.expected_time_s);
+    if (pr.monte_carlo.races > 0) {
+      text += fmt::format(
+          " In the plans' {} races it averages {:.2f} ± {:.2f} s with {:.1f} stops and gains "
+          "{:.2f} ± {:.2f} s over the best plan ({}).",
+          pr.monte_carlo.races, pr.monte_carlo.mean_time_s, pr.monte_carlo.standard_error_s,
+          pr.mean_stops, pr.gain_over_best_plan.mean_time_s,
+          pr.gain_over_best_plan.standard_error_s, pr.best_plan);
+    }
+    page.AddText(text);
+    std::vector<std::vector<std::string>> chart;
+    for (size_t i = 0; i < pr.caution_laps.size(); ++i) {
+      chart.push_back({std::to_string(pr.caution_laps[i]),
+                       pr.four_tyres_from_age[i] < 0
+                           ? std::string("stay out")
+                           : fmt::format("{} laps or older", pr.four_tyres_from_age[i])});
+    }
+    page.AddTable({.title = "A caution out on lap N: four new tyres (and fuel) from a set of this "
+                            "age, the fuel filled with the set",
+                   .header = {"caution on lap", "pit for four tyres"},
+                   .rows = chart});
+  }
   page.AddHeading("Fall-off and the race");
   std::vector<double> ages;
   for (size_t a = 0; a < run.fall_off.lap_time_s.size(); ++a)
     ages.push_back(static_cast<double>(a));
-  page.AddLineChart({.title = "Lap time on a set (the out lap first), from the QSS laps",
-                     .x_axis = {.label = "laps on the set", .integer_ticks = true},
-                     .y_axis = {.label = "lap time", .unit = "s"},
-                     .series = {{.label = "fall-off", .x = ages, .y = run.fall_off.lap_time_s}}});
+  report::LineChart fall_off{
+      .title = "Lap time on a set (the out lap first), from the QSS laps",
+      .x_axis = {.label = "laps on the set", .integer_ticks = true},
+      .y_axis = {.label = "lap time", .unit = "s"},
+      .series = {{.label = "fall-off", .x = ages, .y = run.fall_off.lap_time_s}}};
+  if (run.fall_off.heat_only_lap_time_s.size() == ages.size()) {
+    fall_off.series.push_back({.label = "the heat alone (no grip lost to wear)",
+                               .x = ages,
+                               .y = run.fall_off.heat_only_lap_time_s});
+  }
+  page.AddLineChart(fall_off);
   report::LineChart trace{.title = "Lap times over the race (stops not included)",
                           .x_axis = {.label = "lap", .integer_ticks = true},
                           .y_axis = {.label = "lap time", .unit = "s"},

@@ -33,6 +33,53 @@ std::vector<int> ParseStageEnds(const std::string& text, int laps, std::string_v
   return ends;
 }
 
+namespace {
+
+// The sets the plan has used by the end of lap `lap`, the starting set included.
+int SetsUsedBy(const RacePlan& plan, int lap) {
+  int sets = 1;
+  for (const PitStop& s : plan.stops) {
+    if (s.lap < lap && s.service == Service::kFourTyresAndFuel) ++sets;
+  }
+  return sets;
+}
+
+// The policy, its races on the plans' streams and its gain over the best of them (`plan_times`:
+// the optimal plan's races, then the fixed plans'; empty without a Monte Carlo).
+PolicyRun RunPolicy(const RaceRun& run, const RaceRunOptions& o,
+                    const std::vector<std::vector<double>>& plan_times) {
+  const auto started = std::chrono::steady_clock::now();
+  PolicyRun out;
+  out.policy = SolvePolicy(o.rules, run.fall_off, o.cautions, o.policy_options);
+  if (!plan_times.empty()) {
+    std::vector<double> times;
+    out.monte_carlo = SimulatePolicy(out.policy, run.fall_off, o.races, &times, &out.mean_stops);
+    size_t best = 0;
+    for (size_t i = 1; i < run.monte_carlo.size(); ++i) {
+      if (run.monte_carlo[i].mean_time_s < run.monte_carlo[best].mean_time_s) best = i;
+    }
+    out.best_plan = best == 0 ? run.plan.name : run.fixed[best - 1].name;
+    out.gain_over_best_plan = GainOver(times, plan_times[best]);
+  }
+  const int window = o.rules.FuelWindow();
+  for (int lap = 25; lap < o.rules.laps; lap += 25) {
+    int from = -1;
+    for (int age = 1; age <= std::min(window, out.policy.max_age) && age < lap; ++age) {
+      if (CautionDecision(out.policy, lap, age, age, SetsUsedBy(run.plan, lap)) ==
+          Decision::kFourTyresAndFuel) {
+        from = age;
+        break;
+      }
+    }
+    out.caution_laps.push_back(lap);
+    out.four_tyres_from_age.push_back(from);
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return out;
+}
+
+}  // namespace
+
 RaceRun RunRace(const vehicle::Car& car, double track_length_m,
                 std::span<const sim::RoadPoint> road, const RaceRunOptions& o) {
   CheckRaceRules(o.rules);
@@ -46,6 +93,7 @@ RaceRun RunRace(const vehicle::Car& car, double track_length_m,
   if (o.fall_off_laps < 2 || o.fall_off_laps > 400) {
     throw InputError(fmt::format("fall-off laps {} must be in [2, 400]", o.fall_off_laps));
   }
+  if (o.policy) CheckPolicyOptions(o.policy_options);
   vehicle::RequireVehicle(car, "a race plan");
   const auto started = std::chrono::steady_clock::now();
   sim::QssOptions qss;
@@ -55,7 +103,19 @@ RaceRun RunRace(const vehicle::Car& car, double track_length_m,
   qss.initial = sim::CarStartState(car);  // a new set from the pit-out state
   RaceRun run;
   run.rules = o.rules;
-  run.fall_off = FallOffFromQss(car, road, qss, o.fall_off_laps, o.reference_fuel_kg);
+  // A caution as the Monte Carlo drives it, after a third of the laps (at most 20) on the set.
+  CautionLaps caution;
+  if (o.cautions.rate_per_lap > 0.0 || o.cautions.stage_cautions) {
+    caution.laps = o.cautions.length_laps;
+    caution.after_green_laps = std::min(20, o.fall_off_laps / 3);
+    caution.speed = track_length_m / o.cautions.lap_time_s;
+    if (caution.after_green_laps < 1 ||
+        caution.after_green_laps + caution.laps + FallOff::kRestartLaps > o.fall_off_laps) {
+      caution.speed = 0.0;  // too few laps for it: no restart penalty
+    }
+  }
+  run.fall_off =
+      FallOffFromQss(car, road, qss, o.fall_off_laps, o.reference_fuel_kg, 10.0, caution);
   const auto curves = std::chrono::steady_clock::now();
   run.plan = OptimalPlan(o.rules, run.fall_off);
   run.fixed = FixedPlans(o.rules, run.fall_off);
@@ -73,6 +133,9 @@ RaceRun RunRace(const vehicle::Car& car, double track_length_m,
       }
     }
     if (best > 0) run.gain_under_cautions = GainOver(times[0], times[best]);
+    if (o.policy) run.policy = RunPolicy(run, o, times);
+  } else if (o.policy) {
+    run.policy = RunPolicy(run, o, {});
   }
   run.fall_off_seconds = std::chrono::duration<double>(curves - started).count();
   run.plan_seconds =

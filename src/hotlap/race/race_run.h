@@ -3,12 +3,15 @@
 /// The race run as `hotlap race` and Python's `hotlap.race` make it (docs/race.md): the fall-off
 /// from the car's QSS laps on the given road, the optimal plan and the fixed plans.
 
+#include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "hotlap/race/cautions.h"
 #include "hotlap/race/fall_off.h"
 #include "hotlap/race/race_plan.h"
+#include "hotlap/race/race_policy.h"
 #include "hotlap/race/race_rules.h"
 #include "hotlap/sim/qss_lap.h"
 
@@ -23,6 +26,26 @@ struct RaceRunOptions {
   /// Cautions for the Monte Carlo races (the record's by default; CautionModel::Off() none).
   CautionModel cautions = SouthernFiveHundredCautions();
   int races = 10000;  ///< Monte Carlo races of each plan (0: none)
+  /// The stochastic programme's policy under the cautions (race_policy.h) beside the plans.
+  bool policy = true;
+  PolicyOptions policy_options;
+};
+
+/// The policy's part of a race run.
+struct PolicyRun {
+  RacePolicy policy;
+  MonteCarloResult monte_carlo;  ///< its races, the same cautions as the plans'
+  double mean_stops = 0.0;
+  /// Under the same cautions, what the policy gains over the fixed or optimal plan of least mean
+  /// time (mean_time_s is the gain); races 0 where there was no Monte Carlo.
+  MonteCarloResult gain_over_best_plan;
+  std::string best_plan;  ///< its name
+  /// For a caution out on each of these laps, the youngest set (filled with fuel at the same
+  /// stop, with the sets the optimal plan has used by then) the policy changes for four new
+  /// tyres; -1 where it would not.
+  std::vector<int> caution_laps;
+  std::vector<int> four_tyres_from_age;
+  double seconds = 0.0;  ///< wall time of the programme and its races
 };
 
 struct RaceRun {
@@ -35,8 +58,9 @@ struct RaceRun {
   /// Under the same cautions, what the optimal plan gains over the fixed plan of least mean time
   /// (mean_time_s is the gain); races 0 where there was no Monte Carlo.
   MonteCarloResult gain_under_cautions;
-  double fall_off_seconds = 0.0;  ///< wall time of the QSS laps
-  double plan_seconds = 0.0;      ///< wall time of the plans
+  std::optional<PolicyRun> policy;  ///< where RaceRunOptions::policy asked for it
+  double fall_off_seconds = 0.0;    ///< wall time of the QSS laps
+  double plan_seconds = 0.0;        ///< wall time of the plans
 };
 
 /// The run. InputError for bad rules or options (before any lap is driven).

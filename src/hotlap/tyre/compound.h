@@ -18,9 +18,14 @@ struct GripWearTable {
   std::vector<double> wear_mm;  ///< strictly increasing, from 0
   std::vector<double> factor;   ///< in (0, 1], non-increasing
 
-  /// h(wear), dimensionless; `wear` in mm.
+  /// h(wear), dimensionless; `wear` in mm. Below the first row the first segment carries on: a
+  /// new tyre (wear 0) sits on no kink, so a solver's iterates either side of it see one slope.
   template <Scalar T>
   T Evaluate(const T& wear) const {
+    if (ValueOf(wear) < wear_mm.front() && wear_mm.size() > 1) {
+      const double slope = (factor[1] - factor[0]) / (wear_mm[1] - wear_mm[0]);
+      return factor[0] + slope * (wear - wear_mm[0]);
+    }
     return InterpolateClamped<T>(std::span<const double>(wear_mm), std::span<const double>(factor),
                                  wear);
   }
