@@ -52,7 +52,7 @@ double CalcCorneringDragCoefficient(const std::array<double, 4>& fy,
     drag -= fy[k] * std::sin(slip_angle[k]);
     lateral += fy[k];
   }
-  return std::abs(lateral) < 100.0 ? 0.0 : drag / (lateral * lateral);
+  return std::abs(lateral) < 100.0 ? 0.0 : drag / std::abs(lateral);
 }
 
 ForceDemand CalcForceDemand(const QssVehicle& car, const RoadPoint& point, double speed,
@@ -132,7 +132,7 @@ double CalcResistance(const QssVehicle& car, const RoadPoint& point, double spee
   }
   const double lateral = cornering_drag == 0.0 ? 0.0 : CalcLateralForce(car, point, speed);
   return aero.drag + crr * normal + p.chassis.mass * kGravity * std::sin(point.grade) +
-         cornering_drag * lateral * lateral;
+         cornering_drag * std::abs(lateral);
 }
 
 namespace {
@@ -166,11 +166,41 @@ double LargestFeasible(double lo, double f_lo, double hi, double f_hi, double to
   return lo;
 }
 
+// LargestFeasible over [lo, hi] searched from `guess`: the bracket grown from there in steps
+// that double from `step`, so that a guess near the answer costs a few evaluations. Returns hi
+// where hi is feasible, and lo - 1 where even lo is not.
+template <class Excess>
+double LargestFeasibleFrom(double guess, double step, double lo, double hi, double tolerance,
+                           Excess excess) {
+  double a = std::clamp(guess, lo, hi), b = a;
+  double f_a = excess(a), f_b = f_a;
+  if (f_a <= 0.0) {
+    while (f_b <= 0.0) {
+      if (b >= hi) return hi;
+      a = b;
+      f_a = f_b;
+      b = std::min(b + step, hi);
+      f_b = excess(b);
+      step *= 2.0;
+    }
+  } else {
+    while (f_a > 0.0) {
+      if (a <= lo) return lo - 1.0;
+      b = a;
+      f_b = f_a;
+      a = std::max(a - step, lo);
+      f_a = excess(a);
+      step *= 2.0;
+    }
+  }
+  return LargestFeasible(a, f_a, b, f_b, tolerance, excess);
+}
+
 }  // namespace
 
 double CalcCorneringLimit(const QssVehicle& car, const RoadPoint& point,
                           const std::array<double, 4>& grip, double cornering_drag,
-                          double rolling_coefficient) {
+                          double rolling_coefficient, double near) {
   const double power = car.params->powertrain.WheelPower();
   // Excess over the limits: tyre utilisation beyond 1, or power beyond the wheel power.
   const auto excess = [&](double v) {
@@ -179,6 +209,7 @@ double CalcCorneringLimit(const QssVehicle& car, const RoadPoint& point,
     return std::max(u - 1.0, (fx * v - power) / power);
   };
   const double lo = 0.5, hi = 150.0;
+  if (near > 0.0) return std::max(LargestFeasibleFrom(near, 0.05, lo, hi, 1e-3, excess), 0.0);
   const double f_lo = excess(lo), f_hi = excess(hi);
   if (!(f_lo <= 0.0)) return 0.0;
   if (f_hi <= 0.0) return hi;
@@ -186,7 +217,7 @@ double CalcCorneringLimit(const QssVehicle& car, const RoadPoint& point,
 }
 
 double CalcMaxDriveForce(const QssVehicle& car, const RoadPoint& point, double speed,
-                         const std::array<double, 4>& grip, SpeedLimit* limit) {
+                         const std::array<double, 4>& grip, SpeedLimit* limit, double near) {
   const double power_force = car.params->powertrain.WheelPower() / std::max(speed, 1.0);
   const auto excess = [&](double fx) {
     return CalcForceDemand(car, point, speed, fx, grip).max_utilization - 1.0;
@@ -195,19 +226,22 @@ double CalcMaxDriveForce(const QssVehicle& car, const RoadPoint& point, double s
   const double f_hi = excess(power_force);
   if (f_hi <= 0.0) return power_force;
   *limit = SpeedLimit::kTraction;
+  if (near >= 0.0)
+    return std::max(LargestFeasibleFrom(near, 20.0, 0.0, power_force, 0.5, excess), 0.0);
   const double f_lo = excess(0.0);
   if (!(f_lo <= 0.0)) return 0.0;
   return LargestFeasible(0.0, f_lo, power_force, f_hi, 0.5, excess);
 }
 
 double CalcMaxBrakeForce(const QssVehicle& car, const RoadPoint& point, double speed,
-                         const std::array<double, 4>& grip) {
+                         const std::array<double, 4>& grip, double near) {
   const auto excess = [&](double brake) {
     return CalcForceDemand(car, point, speed, -brake, grip).max_utilization - 1.0;
   };
+  const double hi = 4.0 * car.params->Weight();
+  if (near >= 0.0) return std::max(LargestFeasibleFrom(near, 20.0, 0.0, hi, 0.5, excess), 0.0);
   const double f_lo = excess(0.0);
   if (!(f_lo <= 0.0)) return 0.0;
-  const double hi = 4.0 * car.params->Weight();
   const double f_hi = excess(hi);
   if (f_hi <= 0.0) return hi;
   return LargestFeasible(0.0, f_lo, hi, f_hi, 0.5, excess);
@@ -216,13 +250,16 @@ double CalcMaxBrakeForce(const QssVehicle& car, const RoadPoint& point, double s
 SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> road,
                               const std::array<std::vector<double>, 4>& grip,
                               std::span<const double> cornering_drag,
-                              std::span<const double> rolling) {
+                              std::span<const double> rolling, const SpeedProfile* near) {
   const size_t n = road.size();
   if (!cornering_drag.empty() && cornering_drag.size() != n) {
     throw std::invalid_argument("CalcSpeedProfile: one cornering-drag coefficient per point");
   }
   if (!rolling.empty() && rolling.size() != n) {
     throw std::invalid_argument("CalcSpeedProfile: one rolling-resistance coefficient per point");
+  }
+  if (near != nullptr && near->searches.cornering_limit.size() != n) {
+    throw std::invalid_argument("CalcSpeedProfile: the profile to start from is of another road");
   }
   const auto drag_at = [&](size_t i) { return cornering_drag.empty() ? 0.0 : cornering_drag[i]; };
   const auto rolling_at = [&](size_t i) { return rolling.empty() ? -1.0 : rolling[i]; };
@@ -232,18 +269,33 @@ SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> 
     return std::array<double, 4>{grip[0][i], grip[1][i], grip[2][i], grip[3][i]};
   };
   SpeedProfile out;
-  out.cornering_limit.resize(n);
+  ProfileSearches& searches = out.searches;
+  searches.cornering_drag.resize(n);
+  searches.cornering_limit.resize(n);
+  searches.drive_speed.assign(n, -1.0);
+  searches.drive_force.assign(n, 0.0);
+  searches.drive_limit.assign(n, SpeedLimit::kPower);
+  searches.brake_speed.assign(n, -1.0);
+  searches.brake_force.assign(n, 0.0);
   out.limit.assign(n, SpeedLimit::kCornering);
   for (size_t i = 0; i < n; ++i) {
-    out.cornering_limit[i] =
-        CalcCorneringLimit(car, road[i], grip_at(i), drag_at(i), rolling_at(i));
-    if (!(out.cornering_limit[i] > 0.0)) {
+    double v_max = 0.0;
+    if (near != nullptr && near->searches.cornering_drag[i] == drag_at(i)) {
+      v_max = near->searches.cornering_limit[i];  // the same search
+    } else {
+      v_max = CalcCorneringLimit(car, road[i], grip_at(i), drag_at(i), rolling_at(i),
+                                 near != nullptr ? near->searches.cornering_limit[i] : 0.0);
+    }
+    if (!(v_max > 0.0)) {
       throw NumericalError(fmt::format(
           "QSS lap: no speed is feasible at {:.1f} m (curvature {:.5f} 1/m, bank {:.1f} deg): "
           "the tyres cannot hold the car there",
           road[i].distance, road[i].curvature, RadToDeg(road[i].bank)));
     }
+    searches.cornering_drag[i] = drag_at(i);
+    searches.cornering_limit[i] = v_max;
   }
+  out.cornering_limit = searches.cornering_limit;
   if (car.speed_cap > 0.0) {
     for (size_t i = 0; i < n; ++i) {
       if (out.cornering_limit[i] > car.speed_cap) {
@@ -260,11 +312,28 @@ SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> 
   // Forward: accelerate as hard as traction and power allow.
   for (size_t k = 1; k <= n; ++k) {
     const size_t prev = (start + k - 1) % n, i = (start + k) % n;
-    SpeedLimit why = SpeedLimit::kTraction;
     const double v = out.speed[prev];
-    const double drive = CalcMaxDriveForce(car, road[prev], v, grip_at(prev), &why);
-    const double a =
-        (drive - CalcResistance(car, road[prev], v, drag_at(prev), rolling_at(prev))) / m;
+    const double resistance = CalcResistance(car, road[prev], v, drag_at(prev), rolling_at(prev));
+    // Coasting (no drive: the least speed the car can reach) already leaves the point's limit
+    // in force: the drive force is of no consequence, and not searched.
+    if (std::sqrt(std::max(v * v - 2.0 * resistance / m * ds, 0.25)) >= out.speed[i] - 1e-6) {
+      continue;
+    }
+    SpeedLimit why = SpeedLimit::kTraction;
+    double drive = 0.0;
+    if (near != nullptr && near->searches.drive_speed[prev] == v) {
+      drive = near->searches.drive_force[prev];  // the same search
+      why = near->searches.drive_limit[prev];
+    } else {
+      const double from = near == nullptr || near->searches.drive_speed[prev] < 0.0
+                              ? -1.0
+                              : near->searches.drive_force[prev];
+      drive = CalcMaxDriveForce(car, road[prev], v, grip_at(prev), &why, from);
+    }
+    searches.drive_speed[prev] = v;
+    searches.drive_force[prev] = drive;
+    searches.drive_limit[prev] = why;
+    const double a = (drive - resistance) / m;
     const double reachable = std::sqrt(std::max(v * v + 2.0 * a * ds, 0.25));
     if (reachable < out.speed[i] - 1e-6) {  // a limit search tolerance is not a limit
       out.speed[i] = reachable;
@@ -275,9 +344,24 @@ SpeedProfile CalcSpeedProfile(const QssVehicle& car, std::span<const RoadPoint> 
   for (size_t k = 1; k <= n; ++k) {
     const size_t next = (start + n - k + 1) % n, i = (start + n - k) % n;
     const double v = out.speed[next];
-    const double brake = CalcMaxBrakeForce(car, road[next], v, grip_at(next));
-    const double d =
-        (brake + CalcResistance(car, road[next], v, drag_at(next), rolling_at(next))) / m;
+    const double resistance = CalcResistance(car, road[next], v, drag_at(next), rolling_at(next));
+    // Without braking (the least speed the car can leave the point with) the point's speed is
+    // already reachable: the brake force is of no consequence, and not searched.
+    if (std::sqrt(std::max(v * v + 2.0 * resistance / m * ds, 0.25)) >= out.speed[i] - 1e-6) {
+      continue;
+    }
+    double brake = 0.0;
+    if (near != nullptr && near->searches.brake_speed[next] == v) {
+      brake = near->searches.brake_force[next];  // the same search
+    } else {
+      const double from = near == nullptr || near->searches.brake_speed[next] < 0.0
+                              ? -1.0
+                              : near->searches.brake_force[next];
+      brake = CalcMaxBrakeForce(car, road[next], v, grip_at(next), from);
+    }
+    searches.brake_speed[next] = v;
+    searches.brake_force[next] = brake;
+    const double d = (brake + resistance) / m;
     const double reachable = std::sqrt(std::max(v * v + 2.0 * d * ds, 0.25));
     if (reachable < out.speed[i] - 1e-6) {  // a limit search tolerance is not a limit
       out.speed[i] = reachable;

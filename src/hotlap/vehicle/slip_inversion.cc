@@ -116,6 +116,7 @@ FreeWheelSolution SolveFreeWheelSlips(const InvertibleTyre& tyre, const TyreCond
     out.iterations = SolveBounded<2>(x, Vec(-kMaxSlipRatio, -kMaxSlipAngle),
                                      Vec(kMaxSlipRatio, kMaxSlipAngle), tolerance, e, residual);
     out.wheel = {x[0], x[1], e.fx, e.fy};
+    out.jacobian = {e.dfx_dk, e.dfx_da, e.dfy_dk, e.dfy_da};
     out.reached =
         std::abs(e.fx - fx_target) <= tolerance && std::abs(e.fy - fy_target) <= tolerance;
     stable = OnRisingBranch(e);
@@ -157,17 +158,25 @@ SpoolAxleSolution SolveSpoolAxleSlips(const InvertibleTyre& left, const Invertib
     const double omega = omega_of(s);
     return std::array<double, 2>{omega * rl / cl.vx - 1.0, omega * rr / cr.vx - 1.0};
   };
+  // d kappa_i / d s = (v_mean / r_mean) R_i / vx_i.
+  const double dkl = v_mean / r_mean * rl / cl.vx, dkr = v_mean / r_mean * rr / cr.vx;
+  // Rows: fy_left, fy_right, fx_left, fx_right; columns: s, alpha_left, alpha_right.
+  const auto jacobian = [&](const TyreEval& a, const TyreEval& b) {
+    Eigen::Matrix<double, 4, 3, Eigen::RowMajor> jac;
+    jac << a.dfy_dk * dkl, a.dfy_da, 0.0,  //
+        b.dfy_dk * dkr, 0.0, b.dfy_da,     //
+        a.dfx_dk * dkl, a.dfx_da, 0.0,     //
+        b.dfx_dk * dkr, 0.0, b.dfx_da;
+    return jac;
+  };
   const auto residual = [&](const Vec& v, Eigen::Matrix3d& jac, std::array<TyreEval, 2>& ab) {
     const auto k = kappas(v[0]);
     ab[0] = Evaluate(left, cl, std::clamp(k[0], -0.99, 2.0), v[1]);
     ab[1] = Evaluate(right, cr, std::clamp(k[1], -0.99, 2.0), v[2]);
     const TyreEval& a = ab[0];
     const TyreEval& b = ab[1];
-    // d kappa_i / d s = (v_mean / r_mean) R_i / vx_i.
-    const double dkl = v_mean / r_mean * rl / cl.vx, dkr = v_mean / r_mean * rr / cr.vx;
-    jac << a.dfy_dk * dkl, a.dfy_da, 0.0,  //
-        b.dfy_dk * dkr, 0.0, b.dfy_da,     //
-        a.dfx_dk * dkl + b.dfx_dk * dkr, a.dfx_da, b.dfx_da;
+    const Eigen::Matrix<double, 4, 3, Eigen::RowMajor> wheels = jacobian(a, b);
+    jac << wheels.row(0), wheels.row(1), wheels.row(2) + wheels.row(3);
     return Vec(a.fy - fy_left, b.fy - fy_right, a.fx + b.fx - fx_total);
   };
   bool stable = true;  // of the last solve_from
@@ -179,6 +188,8 @@ SpoolAxleSolution SolveSpoolAxleSlips(const InvertibleTyre& left, const Invertib
     out.iterations =
         SolveBounded<3>(x, Vec(-kMaxSlipRatio, -kMaxSlipAngle, -kMaxSlipAngle),
                         Vec(kMaxSlipRatio, kMaxSlipAngle, kMaxSlipAngle), tolerance, ab, residual);
+    Eigen::Map<Eigen::Matrix<double, 4, 3, Eigen::RowMajor>>(out.jacobian.data()) =
+        jacobian(ab[0], ab[1]);
     const auto k = kappas(x[0]);
     const TyreEval& a = ab[0];
     const TyreEval& b = ab[1];

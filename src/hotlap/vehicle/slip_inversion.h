@@ -49,6 +49,8 @@ struct FreeWheelSolution {
   WheelSlips wheel;
   bool reached = false;  ///< both targets met within 1 N (or 1e-4 of the load)
   int iterations = 0;
+  /// d(fx, fy) / d(slip ratio, slip angle) at the solution, row-major, N (grip factor applied).
+  std::array<double, 4> jacobian{};
 };
 
 /// Slips of a free-rolling or independently braked wheel for targets (fx, fy), from the guess.
@@ -60,6 +62,11 @@ struct SpoolAxleSolution {
   double wheel_speed = 0.0;          ///< common angular speed, rad/s
   bool reached = false;
   int iterations = 0;
+  /// d(fy_left, fy_right, fx_left, fx_right) / d(s, alpha_left, alpha_right) at the solution,
+  /// row-major (4 x 3), N; s = omega R_mean / vx_mean - 1 (R_mean, vx_mean: the two wheels'
+  /// means), the slip of the mean wheel: at a given s each wheel's slip ratio depends only on the
+  /// ratio of the wheels' speeds, not on the car's.
+  std::array<double, 12> jacobian{};
 };
 
 /// Slips of two wheels on a spool: targets fy_left, fy_right and fx_total (sum of both Fx).
