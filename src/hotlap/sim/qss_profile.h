@@ -70,36 +70,45 @@ double CalcResistance(const QssVehicle& car, const RoadPoint& point, double spee
 double CalcCorneringDragCoefficient(const std::array<double, 4>& fy,
                                     const std::array<double, 4>& slip_angle);
 
+/// A limit search's answer and the slope of its excess there (the utilisation or power beyond
+/// the limit, per m/s or per N), so that a search at nearby inputs (the next profile's, with other
+/// cornering-drag coefficients) starts with a Newton step from it and brackets its answer to the
+/// tolerance in about three evaluations of the force demand instead of 10-15.
+struct LimitSearch {
+  double value = -1.0;  ///< the answer; < 0: none yet (a search from scratch)
+  double slope = 0.0;   ///< d excess / d value at the answer; 0: not known
+};
+
 /// Highest speed at which the car holds its speed at `point` with every tyre inside its ellipse
 /// and the power to overcome the resistance (to 1 mm/s below it). 0 if not even a crawl works.
-/// `near` > 0: the search starts there (a limit found before with other coefficients: a few
-/// evaluations instead of 10-15); the answer is the same to the tolerance.
+/// `search`: where given, the search starts from what it holds and leaves what it found there
+/// (the answer is the same to the tolerance).
 double CalcCorneringLimit(const QssVehicle& car, const RoadPoint& point,
                           const std::array<double, 4>& grip, double cornering_drag = 0.0,
-                          double rolling_coefficient = -1.0, double near = 0.0);
+                          double rolling_coefficient = -1.0, LimitSearch* search = nullptr);
 
 /// Largest total drive force (>= 0) at (point, speed) within the ellipses and the wheel power
-/// (to 0.5 N). Sets `limit` to kPower or kTraction. `near` >= 0: a traction search starts there.
+/// (to 0.5 N). Sets `limit` to kPower or kTraction. `search`: as for CalcCorneringLimit.
 double CalcMaxDriveForce(const QssVehicle& car, const RoadPoint& point, double speed,
-                         const std::array<double, 4>& grip, SpeedLimit* limit, double near = -1.0);
+                         const std::array<double, 4>& grip, SpeedLimit* limit,
+                         LimitSearch* search = nullptr);
 
 /// Largest total braking force (>= 0, i.e. sum Fx = -value) at (point, speed) within the ellipses
-/// (to 0.5 N). `near` >= 0: the search starts there.
+/// (to 0.5 N). `search`: as for CalcCorneringLimit.
 double CalcMaxBrakeForce(const QssVehicle& car, const RoadPoint& point, double speed,
-                         const std::array<double, 4>& grip, double near = -1.0);
+                         const std::array<double, 4>& grip, LimitSearch* search = nullptr);
 
 /// What a profile's limit searches found at each point, so that the next profile of the same road,
 /// grip and rolling-resistance coefficients with other cornering-drag coefficients (the drag's
-/// fixed point, qss_lap.h) starts its searches there: a few evaluations of the force demand a
-/// point instead of about 30.
+/// fixed point, qss_lap.h) starts its searches there.
 struct ProfileSearches {
   std::vector<double> cornering_drag;   ///< the coefficient each cornering limit was found with
-  std::vector<double> cornering_limit;  ///< m/s, before the speed cap
-  std::vector<double> drive_speed;      ///< m/s, where the forward pass searched the drive force
-  std::vector<double> drive_force;      ///< N
+  std::vector<LimitSearch> cornering;   ///< m/s, before the speed cap
+  std::vector<double> drive_speed;      ///< m/s, where the forward pass searched (< 0: not)
+  std::vector<LimitSearch> drive;       ///< N
   std::vector<SpeedLimit> drive_limit;  ///< kPower or kTraction
-  std::vector<double> brake_speed;      ///< m/s, where the backward pass searched the brake force
-  std::vector<double> brake_force;      ///< N
+  std::vector<double> brake_speed;      ///< m/s, where the backward pass searched (< 0: not)
+  std::vector<LimitSearch> brake;       ///< N
 };
 
 struct SpeedProfile {
