@@ -87,7 +87,9 @@ def test_wear_in_programme_equals_the_command_line(cli, tmp_path):
         assert got["lap_time_s"] == expected["lap_time_s"]
         assert got["frozen_wear_grip_difference"] == expected["frozen_wear_grip_difference"]
         assert (got["frozen_wear_grip_difference"] == 0.0) == keep
-        assert got["frozen_wear_grip_difference"] < 1e-4
+        # A lap's wear moves h by about 0.01 at the right rear (the tuned wear, docs/race.md);
+        # frozen at the 30 m solve's, h is within 0.86e-3 of the 15 m solution's (2026-11-29).
+        assert got["frozen_wear_grip_difference"] < 2e-3
 
 
 def test_a_stint_with_checkpoints_resumes_from_them(tmp_path):
