@@ -11,33 +11,13 @@
 #include <gtest/gtest.h>
 
 #include "hotlap/common/error.h"
+#include "race/short_race.h"
 
 namespace hotlap::race {
 namespace {
 
-// A 60-lap race, 25 laps to a cell: at least two stops.
-RaceRules ShortRace() {
-  RaceRules r;
-  r.laps = 60;
-  r.stage_ends = {20, 40};
-  r.fuel_per_lap_kg = 1.0;
-  r.fuel_capacity_kg = 25.5;
-  r.tyre_sets = 4;
-  r.pit_loss_s = 30.0;
-  r.caution_pit_loss_s = 12.0;
-  r.tyre_service_s = 11.0;
-  r.fuel_rate_kg_per_s = 2.5;
-  return r;
-}
-
-// A cold out lap, then a set that loses `per_lap` s a lap; fuel weighs 0.03 s/kg.
-FallOff Linear(double per_lap, int table = 30) {
-  FallOff f;
-  f.reference_fuel_kg = 12.0;
-  f.fuel_s_per_kg = 0.03;
-  for (int a = 0; a < table; ++a) f.lap_time_s.push_back(30.0 + (a == 0 ? 1.2 : 0.0) + per_lap * a);
-  return f;
-}
+using testing::Linear;
+using testing::ShortRace;
 
 // Every plan of up to three stops, each either service, that the rules allow: the least time.
 double BruteForce(const RaceRules& r, const FallOff& f) {

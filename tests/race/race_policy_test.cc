@@ -12,32 +12,13 @@
 
 #include "hotlap/common/error.h"
 #include "hotlap/race/race_plan.h"
+#include "race/short_race.h"
 
 namespace hotlap::race {
 namespace {
 
-// A 60-lap race, 25 laps to a cell: at least two stops.
-RaceRules ShortRace() {
-  RaceRules r;
-  r.laps = 60;
-  r.stage_ends = {20, 40};
-  r.fuel_per_lap_kg = 1.0;
-  r.fuel_capacity_kg = 25.5;
-  r.tyre_sets = 4;
-  r.pit_loss_s = 30.0;
-  r.caution_pit_loss_s = 12.0;
-  r.tyre_service_s = 11.0;
-  r.fuel_rate_kg_per_s = 2.5;
-  return r;
-}
-
-FallOff Linear(double per_lap) {
-  FallOff f;
-  f.reference_fuel_kg = 12.0;
-  f.fuel_s_per_kg = 0.03;
-  for (int a = 0; a < 30; ++a) f.lap_time_s.push_back(30.0 + (a == 0 ? 1.2 : 0.0) + per_lap * a);
-  return f;
-}
+using testing::Linear;
+using testing::ShortRace;
 
 CautionModel Frequent() {
   CautionModel m;
