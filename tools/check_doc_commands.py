@@ -19,7 +19,8 @@ PYTHONPATH=build/python; the lines after a command, up to the next, are what it 
 order on a terminal). A line `...` stands for any number of lines. Before comparing, the
 repository's absolute path is removed and run times (`in 0.44 s`, `done in 3 ms`, `(180 times real time)`) are blanked, so
 a page shows the real output of a real run. Every command must exit 0. --update rewrites the
-pages' expected output with what the commands print now (then read the diff). Run from the
+pages' expected output with what the commands print now, keeping their `...` elisions (then read
+the diff). Run from the
 repository root; the default pages are docs/**/*.md.
 """
 import argparse
@@ -82,6 +83,34 @@ def matches(expected, actual):
     return bool(actual) and expected[0] == actual[0] and matches(expected[1:], actual[1:])
 
 
+def keep_elisions(expected, raw):
+    """The program's lines `raw` with the page's `...` elisions kept: the lines before the first
+    `...` and after the last are the program's first and last lines, each middle run of expected
+    lines the program's run that shares most of their first words."""
+    segments = [[]]
+    for line in expected:
+        if line.strip() == "...":
+            segments.append([])
+        else:
+            segments[-1].append(line)
+    if len(segments) == 1 or sum(len(s) for s in segments) > len(raw):
+        return raw
+    out = list(raw[:len(segments[0])])
+    cursor = len(segments[0])
+    tail = len(segments[-1])
+    for segment in segments[1:-1]:
+        out.append("...")
+        last = len(raw) - tail - len(segment)
+        best = max(range(cursor, max(cursor, last) + 1),
+                   key=lambda j: sum((a.split()[:1] == b.split()[:1]) + (a.split()[:2] == b.split()[:2])
+                                  for a, b in zip(segment, raw[j:j + len(segment)])))
+        out += raw[best:best + len(segment)]
+        cursor = best + len(segment)
+    out.append("...")
+    out += raw[len(raw) - tail:] if tail else []
+    return out
+
+
 def run(cmd, root):
     env = dict(os.environ)
     env["PATH"] = os.path.join(root, "build") + os.pathsep + env.get("PATH", "")
@@ -125,7 +154,7 @@ def main():
                     import difflib
                     for d in difflib.unified_diff(want, actual, "page", "program", lineterm="", n=1):
                         print("  " + d, file=sys.stderr)
-                shown = expected if (rc == 0 and matches(want, actual)) else raw
+                shown = expected if (rc == 0 and matches(want, actual)) else keep_elisions(expected, raw)
                 rendered += ("$ " + cmd).split("\n") + (shown if args.update and rc == 0 else expected)
             new[start:end] = rendered
         if args.update and new != lines:
