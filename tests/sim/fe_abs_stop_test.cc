@@ -143,8 +143,8 @@ double SlipAt(const std::vector<fe::HistoryRow>& h, double t) {
 // kDuration at the stable step and at half of it (SolverOptions::time_step_scale, the road's
 // penalty springs unchanged): the slip histories agree within kSlipRms (RMS over the stop, on a
 // 1 ms grid) and the control cycles are as many and begin within 10 ms. Measured (2026-11-26,
-// docs/validation/fe-tyre.md "ABS stop"): RMS 0.0026 with 7 cycles at the same ticks; the bound is
-// about twice that. On finer meshes the event after the third cycle moves with any perturbation,
+// docs/validation/fe-tyre.md "ABS stop"): RMS 0.0026 with 7 cycles at the same ticks; the bound is about
+// twice that. On finer meshes the event after the third cycle moves with any perturbation,
 // round-off included, so this coarse mesh, whose slip stays small, is the one that can be held
 // to a tight bound over several cycles.
 TEST_F(FeAbsStopTest, HalvingTheStepKeepsTheSlipHistoryAndTheCycles) {

@@ -9,7 +9,6 @@
 #include "hotlap/common/error.h"
 #include "hotlap/sim/hot_pressure.h"
 #include "hotlap/sim/qss_profile.h"
-#include "hotlap/sim/qss_slips.h"
 #include "hotlap/vehicle/slip_inversion.h"
 
 namespace hotlap::sim {
@@ -17,12 +16,6 @@ namespace hotlap::sim {
 namespace {
 
 using vehicle::VehicleParams;
-
-// The cornering drag's fixed point is taken as settled when a profile moves the speeds by less
-// than this on average, m/s (or the lap time as QssOptions::drag_settled_lap_time says). A few
-// points where a braking point moves by a sample keep moving by 0.02-0.04 m/s while the rest
-// settle.
-constexpr double kSettledSpeed = 1e-3;
 
 void CheckRoad(std::span<const RoadPoint> road) {
   if (road.size() < 16) {
@@ -69,16 +62,12 @@ struct Prepared {
 
 // Channels of one lap from its speed profile: forces, loads, slips (step 3 of qss_lap.h).
 // `cornering_drag`: the profile's coefficients (CalcResistance), one per point; `solved_drag`
-// gets those that the lap's own forces and slip angles give. `slips`: each point's slips, solved
-// along the lap where it comes empty, else updated from what it holds (the last profile's solve,
-// UpdatePointSlips), a point solved afresh kept there.
+// gets those that the lap's own forces and slip angles give.
 QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, double track_length,
                 const SpeedProfile& profile, const std::array<std::vector<double>, 4>& grip,
                 const std::array<std::vector<double>, 4>& tread_temp,
                 std::span<const double> cornering_drag, std::span<const double> rolling,
-                std::vector<double>* solved_drag, std::vector<PointSlips>* slips) {
-  const bool update = slips->size() == road.size();
-  slips->resize(road.size());
+                std::vector<double>* solved_drag) {
   const VehicleParams& p = *prep.params;
   const size_t n = road.size();
   const double ds = road[1].distance - road[0].distance;
@@ -101,7 +90,8 @@ QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, double tr
   }
   for (auto& t : lap.tread_temp_used) t.resize(n + 1);
 
-  PointSlips last;  // the last point's, the next one's guess
+  std::array<vehicle::WheelSlips, 2> front_guess{};
+  vehicle::SpoolAxleSolution rear_guess;
   double time = 0.0;
   solved_drag->assign(n, 0.0);
   for (size_t i = 0; i < n; ++i) {
@@ -116,26 +106,43 @@ QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, double tr
     const double kappa_g = point.curvature * std::cos(point.bank);
     const double yaw_rate = v * kappa_g;
 
-    PointTargets targets;
+    std::array<vehicle::TyreConditions, 4> cond;
     for (Corner c : kAllCorners) {
       const int k = CornerIndex(c);
       const double y = p.CornerPosition(c)[1];
-      targets.conditions[k] = {std::max(demand.fz[k], 1.0), std::max(v - yaw_rate * y, 0.5),
-                               tread_temp[k][i], g[k]};
-      targets.fx[k] = demand.fx[k];
-      targets.fy[k] = demand.fy[k];
+      cond[k] = {std::max(demand.fz[k], 1.0), std::max(v - yaw_rate * y, 0.5), tread_temp[k][i],
+                 g[k]};
     }
-    const std::array<vehicle::TyreConditions, 4>& cond = targets.conditions;
-    PointSlips& point_slips = (*slips)[i];
-    if (update) {
-      last = UpdatePointSlips(prep.tyres, targets, point_slips);
-    } else {
-      last = SolvePointSlips(prep.tyres, targets, last);
-      point_slips = last;
+    // Front wheels roll or brake independently.
+    std::array<vehicle::WheelSlips, 4> slips;
+    bool reached = true;
+    for (Corner c : {Corner::kFrontLeft, Corner::kFrontRight}) {
+      const int k = CornerIndex(c);
+      const vehicle::FreeWheelSolution s = vehicle::SolveFreeWheelSlips(
+          prep.tyres[k], cond[k], demand.fx[k], demand.fy[k], front_guess[k]);
+      slips[k] = s.wheel;
+      front_guess[k] = s.wheel;
+      reached = reached && s.reached;
+      lap.max_force_deficit = std::max({lap.max_force_deficit, std::abs(s.wheel.fx - demand.fx[k]),
+                                        std::abs(s.wheel.fy - demand.fy[k])});
     }
-    const std::array<vehicle::WheelSlips, 4>& slips_now = last.wheels;
-    lap.max_force_deficit = std::max(lap.max_force_deficit, last.force_deficit);
-    if (!last.Reached()) ++lap.slip_points_not_reached;
+    // Rear wheels turn together on the spool.
+    {
+      const int l = CornerIndex(Corner::kRearLeft), r = CornerIndex(Corner::kRearRight);
+      const double fx_total = demand.fx[l] + demand.fx[r];
+      const vehicle::SpoolAxleSolution s =
+          vehicle::SolveSpoolAxleSlips(prep.tyres[l], prep.tyres[r], cond[l], cond[r], demand.fy[l],
+                                       demand.fy[r], fx_total, rear_guess);
+      slips[l] = s.wheels[0];
+      slips[r] = s.wheels[1];
+      rear_guess = s;
+      reached = reached && s.reached;
+      lap.max_force_deficit =
+          std::max({lap.max_force_deficit, std::abs(s.wheels[0].fy - demand.fy[l]),
+                    std::abs(s.wheels[1].fy - demand.fy[r]),
+                    std::abs(s.wheels[0].fx + s.wheels[1].fx - fx_total)});
+    }
+    if (!reached) ++lap.slip_points_not_reached;
 
     lap.distance[i] = point.distance - road[0].distance;
     lap.centre_distance[i] = point.centre_distance;
@@ -146,22 +153,21 @@ QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, double tr
     lap.accel_lat[i] = v * v * kappa_g;
     lap.limit[i] = profile.limit[i];
     // Steady-state kinematics: delta = L kappa + alpha_rear - alpha_front (ISO slip angles).
-    const double alpha_front = 0.5 * (slips_now[0].slip_angle + slips_now[1].slip_angle);
-    const double alpha_rear = 0.5 * (slips_now[2].slip_angle + slips_now[3].slip_angle);
+    const double alpha_front = 0.5 * (slips[0].slip_angle + slips[1].slip_angle);
+    const double alpha_rear = 0.5 * (slips[2].slip_angle + slips[3].slip_angle);
     lap.steer[i] = p.chassis.wheelbase * kappa_g + alpha_rear - alpha_front;
     (*solved_drag)[i] = CalcCorneringDragCoefficient(
-        {slips_now[0].fy, slips_now[1].fy, slips_now[2].fy, slips_now[3].fy},
-        {slips_now[0].slip_angle, slips_now[1].slip_angle, slips_now[2].slip_angle,
-         slips_now[3].slip_angle});
+        {slips[0].fy, slips[1].fy, slips[2].fy, slips[3].fy},
+        {slips[0].slip_angle, slips[1].slip_angle, slips[2].slip_angle, slips[3].slip_angle});
     for (Corner c : kAllCorners) {
       const int k = CornerIndex(c);
       CornerChannels& ch = lap.corners[k];
       ch.speed[i] = cond[k].vx;
-      ch.fx[i] = slips_now[k].fx;
-      ch.fy[i] = slips_now[k].fy;
+      ch.fx[i] = slips[k].fx;
+      ch.fy[i] = slips[k].fy;
       ch.fz[i] = demand.fz[k];
-      ch.slip_angle[i] = slips_now[k].slip_angle;
-      ch.slip_ratio[i] = slips_now[k].slip_ratio;
+      ch.slip_angle[i] = slips[k].slip_angle;
+      ch.slip_ratio[i] = slips[k].slip_ratio;
       // Brakes: each front wheel has its own; the rear wheels share one axle torque on the spool,
       // so each rear disc takes half the axle's braking (the tyres' split is the spool's).
       if (IsFront(c)) {
@@ -310,10 +316,9 @@ QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
   bool own_rolling = false;
   for (Corner c : kAllCorners) own_rolling = own_rolling || car.tyre(c).params.HasGasAndRim();
   // One pass: speed profile, forces and slips, thermal replay from `from`. The profile and the
-  // forces are solved again with the cornering drag the last forces and slip angles gave, each
-  // profile's searches from the last one's and its slips updated from the last solve's, until
-  // the drag is settled (QssOptions::drag_settled_lap_time): from a lap's own first guess one or
-  // two profiles more, each moving the lap by about a sixth of the last one's move.
+  // forces are solved again with the cornering drag the last forces and slip angles gave, until
+  // the speeds move by less than 1 mm/s on average (each coefficient is then its point's own to
+  // that; the lap time settles to about 0.2 ms in 3-4 profiles).
   const auto run_pass =
       [&](std::span<const RoadPoint> r, const std::array<std::vector<double>, 4>& g,
           const std::array<std::vector<double>, 4>& t, const ReplayInitialState& from,
@@ -321,30 +326,18 @@ QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
         if (max_passes <= 1) std::fill(drag.begin(), drag.end(), 0.0);
         SpeedProfile profile = CalcSpeedProfile(prep.qss, r, g, drag, rolling);
         std::vector<double> solved;
-        std::vector<PointSlips> slips;
-        QssLap lap = BuildLap(prep, r, track_length, profile, g, t, drag, rolling, &solved, &slips);
-        double last_change = 0.0;  // of the lap time, s
+        QssLap lap = BuildLap(prep, r, track_length, profile, g, t, drag, rolling, &solved);
         for (int pass = 1; pass < max_passes; ++pass) {
           drag = solved;
-          SpeedProfile next = CalcSpeedProfile(prep.qss, r, g, drag, rolling, &profile);
+          SpeedProfile next = CalcSpeedProfile(prep.qss, r, g, drag, rolling);
           // The mean change: a few points where the limit switches (a braking point moving by a
           // point) keep moving by 0.02-0.04 m/s while the rest settle.
           double moved = 0.0;
           for (size_t i = 0; i < r.size(); ++i) moved += std::abs(next.speed[i] - profile.speed[i]);
           moved /= static_cast<double>(r.size());
           profile = std::move(next);
-          const double last_time = lap.lap_time;
-          lap = BuildLap(prep, r, track_length, profile, g, t, drag, rolling, &solved, &slips);
-          // Settled, or near enough that the moves left (each this one's share of the last,
-          // summed) come to less than half the tolerance.
-          const double change = std::abs(lap.lap_time - last_time);
-          const double share = last_change > 0.0 ? change / last_change : 1.0;
-          const double left = share < 1.0 ? change * share / (1.0 - share) : change;
-          const double tolerance = options.drag_settled_lap_time;
-          if (moved < kSettledSpeed || change < tolerance || left < 0.5 * tolerance) {
-            break;
-          }
-          last_change = change;
+          lap = BuildLap(prep, r, track_length, profile, g, t, drag, rolling, &solved);
+          if (moved < 1e-3) break;
         }
         drag = std::move(solved);
         ReplayInputs inputs;
