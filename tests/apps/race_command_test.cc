@@ -63,6 +63,12 @@ TEST_F(RaceCommandTest, WritesThePlanAndTheFixedPlansItBeats) {
               policy["expected_time_s"].get<double>(),
               4.0 * policy["monte_carlo"]["standard_error_s"].get<double>());
   EXPECT_FALSE(policy["caution_chart"].empty());
+  // Within the rules in every race: the sets, and no set older than the programme keeps.
+  EXPECT_LE(policy["monte_carlo"]["most_tyre_sets"].get<int>(), 13);
+  EXPECT_GE(policy["monte_carlo"]["most_tyre_sets"].get<int>(), 1);
+  EXPECT_GT(policy["monte_carlo"]["longest_set_laps"].get<int>(), 0);
+  EXPECT_LE(policy["monte_carlo"]["longest_set_laps"].get<int>(),
+            policy["max_tyre_age_laps"].get<int>());
   // With --cautions off there is nothing random: the means are the plans' times, and the policy
   // is the optimal plan.
   const fs::path off = dir() / "off.json";

@@ -27,10 +27,11 @@ std::string PolicyText(const PolicyRun& pr) {
       pr.policy.expected_time_s);
   if (pr.monte_carlo.races > 0) {
     out += fmt::format(
-        "  in the same races: {:.3f} s +- {:.3f}, {:.1f} stops a race; it gains {:.3f} s +- {:.3f} "
-        "over the best plan ({})\n",
-        pr.monte_carlo.mean_time_s, pr.monte_carlo.standard_error_s, pr.mean_stops,
-        pr.gain_over_best_plan.mean_time_s, pr.gain_over_best_plan.standard_error_s, pr.best_plan);
+        "  in the same races: {:.3f} s +- {:.3f}, {:.1f} stops a race (at most {} sets, at most {} "
+        "green laps on one); it gains {:.3f} s +- {:.3f} over the best plan ({})\n",
+        pr.monte_carlo.mean_time_s, pr.monte_carlo.standard_error_s, pr.stats.mean_stops,
+        pr.stats.most_tyre_sets, pr.stats.longest_set_laps, pr.gain_over_best_plan.mean_time_s,
+        pr.gain_over_best_plan.standard_error_s, pr.best_plan);
   }
   out += "  a caution out on lap N: four new tyres from a set of this age (fuel filled with it):\n";
   std::string laps = "    lap ", ages = "    age ";
@@ -107,7 +108,9 @@ nlohmann::json RaceJson(const RaceRun& run, const CautionModel& cautions) {
           {"races", pr.monte_carlo.races},
           {"mean_time_s", RoundSignificant(pr.monte_carlo.mean_time_s)},
           {"standard_error_s", RoundSignificant(pr.monte_carlo.standard_error_s)},
-          {"mean_stops", RoundSignificant(pr.mean_stops)}};
+          {"mean_stops", RoundSignificant(pr.stats.mean_stops)},
+          {"longest_set_laps", pr.stats.longest_set_laps},
+          {"most_tyre_sets", pr.stats.most_tyre_sets}};
       policy["gain_over_best_plan"] = {
           {"plan", pr.best_plan},
           {"mean_s", RoundSignificant(pr.gain_over_best_plan.mean_time_s)},

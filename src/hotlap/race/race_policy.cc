@@ -289,6 +289,7 @@ PolicyRace RaceWithPolicy(const RacePolicy& p, const FallOff& f, uint64_t stream
       race.time_s += lap_time(age, fuel) + (restart ? f.restart_penalty_s : 0.0);
       fuel -= p.green_burn;
       ++age;
+      race.longest_set_laps = std::max(race.longest_set_laps, age);
     }
     restart = under;
     if (fuel < 0 || age > p.max_age) {  // the programme's states keep to both: a bug if not
@@ -328,17 +329,20 @@ PolicyRace RaceWithPolicy(const RacePolicy& p, const FallOff& f, uint64_t stream
 }
 
 MonteCarloResult SimulatePolicy(const RacePolicy& p, const FallOff& f, int races,
-                                std::vector<double>* times, double* mean_stops) {
+                                std::vector<double>* times, PolicyRaceStats* stats) {
   if (races < 1) throw InputError(fmt::format("Monte Carlo: {} races; at least 1", races));
   std::vector<double> all;
   all.reserve(static_cast<size_t>(races));
   MonteCarloResult out;
   out.races = races;
   double cautions = 0.0, stops = 0.0;
+  PolicyRaceStats found;
   for (int i = 0; i < races; ++i) {
     const PolicyRace race = RaceWithPolicy(p, f, static_cast<uint64_t>(i));
     all.push_back(race.time_s);
     stops += race.stops;
+    found.longest_set_laps = std::max(found.longest_set_laps, race.longest_set_laps);
+    found.most_tyre_sets = std::max(found.most_tyre_sets, race.tyre_sets_used);
     cautions += static_cast<double>(race.caution_starts.size());
     if (out.caution_histogram.size() <= race.caution_starts.size()) {
       out.caution_histogram.resize(race.caution_starts.size() + 1);
@@ -346,11 +350,12 @@ MonteCarloResult SimulatePolicy(const RacePolicy& p, const FallOff& f, int races
     ++out.caution_histogram[race.caution_starts.size()];
   }
   // The mean and its standard error of the times, as GainOver makes them against zero.
-  const MonteCarloResult stats = GainOver(std::vector<double>(all.size(), 0.0), all);
-  out.mean_time_s = stats.mean_time_s;
-  out.standard_error_s = stats.standard_error_s;
+  const MonteCarloResult mean = GainOver(std::vector<double>(all.size(), 0.0), all);
+  out.mean_time_s = mean.mean_time_s;
+  out.standard_error_s = mean.standard_error_s;
   out.mean_cautions = cautions / races;
-  if (mean_stops != nullptr) *mean_stops = stops / races;
+  found.mean_stops = stops / races;
+  if (stats != nullptr) *stats = found;
   if (times != nullptr) *times = std::move(all);
   return out;
 }

@@ -79,7 +79,15 @@ struct PolicyRace {
   double time_s = 0.0;
   int stops = 0;
   int tyre_sets_used = 1;
+  int longest_set_laps = 0;  ///< the most green laps run on one set
   std::vector<int> caution_starts;
+};
+
+/// What the policy's races did besides their times.
+struct PolicyRaceStats {
+  double mean_stops = 0.0;
+  int longest_set_laps = 0;  ///< over every race: the most green laps on one set
+  int most_tyre_sets = 0;    ///< over every race: the most sets used
 };
 
 /// One race under the policy with race stream `stream` (the cautions RaceUnderCautions draws for
@@ -88,7 +96,8 @@ PolicyRace RaceWithPolicy(const RacePolicy& policy, const FallOff& fall_off, uin
 
 /// `races` races under the policy, stream i for race i; each race's time in `times` if given.
 MonteCarloResult SimulatePolicy(const RacePolicy& policy, const FallOff& fall_off, int races,
-                                std::vector<double>* times = nullptr, double* mean_stops = nullptr);
+                                std::vector<double>* times = nullptr,
+                                PolicyRaceStats* stats = nullptr);
 
 /// What the policy says when a caution comes out on lap `lap` (its first open lap the next) with
 /// a set of `age` laps and the fuel of a cell filled `laps_since_fill` green laps ago, and

@@ -84,7 +84,7 @@ void WriteRaceReport(const std::filesystem::path& path, const RaceRun& run, cons
           " In the plans' {} races it averages {:.2f} ± {:.2f} s with {:.1f} stops and gains "
           "{:.2f} ± {:.2f} s over the best plan ({}).",
           pr.monte_carlo.races, pr.monte_carlo.mean_time_s, pr.monte_carlo.standard_error_s,
-          pr.mean_stops, pr.gain_over_best_plan.mean_time_s,
+          pr.stats.mean_stops, pr.gain_over_best_plan.mean_time_s,
           pr.gain_over_best_plan.standard_error_s, pr.best_plan);
     }
     page.AddText(text);

@@ -53,7 +53,7 @@ PolicyRun RunPolicy(const RaceRun& run, const RaceRunOptions& o,
   out.policy = SolvePolicy(o.rules, run.fall_off, o.cautions, o.policy_options);
   if (!plan_times.empty()) {
     std::vector<double> times;
-    out.monte_carlo = SimulatePolicy(out.policy, run.fall_off, o.races, &times, &out.mean_stops);
+    out.monte_carlo = SimulatePolicy(out.policy, run.fall_off, o.races, &times, &out.stats);
     size_t best = 0;
     for (size_t i = 1; i < run.monte_carlo.size(); ++i) {
       if (run.monte_carlo[i].mean_time_s < run.monte_carlo[best].mean_time_s) best = i;

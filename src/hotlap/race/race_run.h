@@ -35,7 +35,7 @@ struct RaceRunOptions {
 struct PolicyRun {
   RacePolicy policy;
   MonteCarloResult monte_carlo;  ///< its races, the same cautions as the plans'
-  double mean_stops = 0.0;
+  PolicyRaceStats stats;         ///< of its races
   /// Under the same cautions, what the policy gains over the fixed or optimal plan of least mean
   /// time (mean_time_s is the gain); races 0 where there was no Monte Carlo.
   MonteCarloResult gain_over_best_plan;
