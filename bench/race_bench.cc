@@ -1,7 +1,7 @@
 // Race plan speed: the Southern 500 (367 laps, 13 sets, a 56-lap cell) planned by the dynamic
 // programme from a fall-off table of 60 laps (a steady 0.04 s a lap, so tyres are worth stopping
-// for), and the fixed plans; the policy under the record's cautions (the stochastic programme) and
-// 10,000 Monte Carlo races of it. The fall-off's QSS laps are qss_bench's business.
+// for), and with right-side stops allowed; the policy under the record's cautions (the stochastic
+// programme) and 10,000 Monte Carlo races of it. The fall-off's QSS laps are qss_bench's business.
 //
 // Run: ./build/race_bench
 
@@ -29,6 +29,28 @@ void BM_RacePlanSouthern500(benchmark::State& state) {
   state.counters["stops"] = static_cast<double>(race::OptimalPlan(rules, f).stops.size());
 }
 BENCHMARK(BM_RacePlanSouthern500)->Unit(benchmark::kMillisecond);
+
+// The same with right-side stops allowed: the programme over both sides' ages (to two fuel
+// windows), the left tyres' extra age costing 0.01 s a lap (right-side stops after 15 to 60
+// laps "driven").
+void BM_RacePlanRightSideStops(benchmark::State& state) {
+  race::RaceRules rules = race::SouthernFiveHundred();
+  rules.right_side_stops = true;
+  race::FallOff f = Table();
+  for (int after : {15, 30, 45, 60}) {
+    f.right_stop_after_laps.push_back(after);
+    f.right_stop_lap_time_s.push_back(f.lap_time_s);
+    for (double& t : f.right_stop_lap_time_s.back()) t += 0.01 * after;
+  }
+  for (auto _ : state) benchmark::DoNotOptimize(race::OptimalPlan(rules, f));
+  const race::RacePlan plan = race::OptimalPlan(rules, f);
+  int rights = 0;
+  for (const race::PitStop& s : plan.stops)
+    rights += s.service == race::Service::kRightTyresAndFuel;
+  state.counters["stops"] = static_cast<double>(plan.stops.size());
+  state.counters["right_side"] = rights;
+}
+BENCHMARK(BM_RacePlanRightSideStops)->Unit(benchmark::kMillisecond);
 
 void BM_RacePolicySouthern500(benchmark::State& state) {
   const race::RaceRules rules = race::SouthernFiveHundred();

@@ -212,7 +212,8 @@ def run(build: Path, out: Path, only):
     if not hotlap.exists():
         sys.exit(f"{hotlap}: no such program (build first)")
     env = dict(os.environ, HOTLAP=str(hotlap),
-               PYTHONPATH=str((build / "python").resolve()), OMP_NUM_THREADS="1")
+               PYTHONPATH=str((build / "python").resolve()), OMP_NUM_THREADS="1",
+               HOTLAP_CACHE_DIR="")  # no cache (`hotlap race`): every run drives its laps
     out.mkdir(parents=True, exist_ok=True)
     # The build's source tree, whose data/ the program finds its built-in cars and tracks in
     # (their paths are printed): masked by `compare` as the repository's root is.

@@ -12,9 +12,9 @@ A checked example in a page is a ```console block right after the line `<!-- che
     ...
     ```
 
-Lines starting with `$ ` are commands (a trailing backslash continues one), run by bash from the
+The pages' commands run in page order. Lines starting with `$ ` are commands (a trailing backslash continues one), run by bash from the
 repository root with build/ first on PATH (so `hotlap` is the program just built) and
-PYTHONPATH=build/python; the lines after a command, up to the next, are what it must print
+PYTHONPATH=build/python and HOTLAP_CACHE_DIR a fresh folder for the whole check; the lines after a command, up to the next, are what it must print
 (its standard output, then its standard error: warnings come last on the page, whatever their
 order on a terminal). A line `...` stands for any number of lines. Before comparing, the
 repository's absolute path is removed and run times (`in 0.44 s`, `done in 3 ms`, `(180 times real time)`) are blanked, so
@@ -24,11 +24,14 @@ the diff). Run from the
 repository root; the default pages are docs/**/*.md.
 """
 import argparse
+import atexit
 import glob
 import os
 import re
+import shutil
 import subprocess
 import sys
+import tempfile
 
 MARK = "<!-- check-output -->"
 TIME = re.compile(r"\b(done )?in \d+(\.\d+)? ?(s|ms|min|h)\b")
@@ -111,8 +114,15 @@ def keep_elisions(expected, raw):
     return out
 
 
+# One fresh cache folder for the whole check (`hotlap race` caches its fall-off): the pages'
+# commands run in page order, so what they read from it is the same on every run.
+CACHE = tempfile.mkdtemp(prefix="hotlap-doc-cache-")
+atexit.register(shutil.rmtree, CACHE, True)
+
+
 def run(cmd, root):
     env = dict(os.environ)
+    env["HOTLAP_CACHE_DIR"] = CACHE
     env["PATH"] = os.path.join(root, "build") + os.pathsep + env.get("PATH", "")
     env["PYTHONPATH"] = os.path.join(root, "build", "python")
     env["COLUMNS"] = "100"
@@ -136,7 +146,8 @@ def main():
         if not found:
             continue
         new = list(lines)
-        for start, end in reversed(found):
+        done = []  # (start, end, rendered): run in page order, put back from the end
+        for start, end in found:
             rendered = []
             for cmd, expected in parse(lines[start:end]):
                 checked += 1
@@ -156,6 +167,8 @@ def main():
                         print("  " + d, file=sys.stderr)
                 shown = expected if (rc == 0 and matches(want, actual)) else keep_elisions(expected, raw)
                 rendered += ("$ " + cmd).split("\n") + (shown if args.update and rc == 0 else expected)
+            done.append((start, end, rendered))
+        for start, end, rendered in reversed(done):
             new[start:end] = rendered
         if args.update and new != lines:
             with open(page, "w") as f:

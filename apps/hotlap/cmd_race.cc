@@ -14,6 +14,7 @@
 #include "hotlap/common/output_folder.h"
 #include "hotlap/common/units.h"
 #include "hotlap/ocp/min_curvature_line.h"
+#include "hotlap/race/fall_off_cache.h"
 #include "hotlap/race/race_json.h"
 #include "hotlap/race/race_plan.h"
 #include "hotlap/race/race_report.h"
@@ -33,6 +34,8 @@ struct RaceArgs {
   std::string stages = "115,230";
   std::string cautions = "record";
   double step_m = 2.0;
+  std::string cache_dir = race::DefaultCacheDir().string();
+  bool no_cache = false;
   std::string json;
   std::string report;
 };
@@ -53,13 +56,22 @@ int RunRace(RaceArgs a) {
   const std::vector<sim::RoadPoint> road = sim::SampleRoadAlongLine(
       track, ocp::MinimumCurvatureLine(track, {.step_m = std::max(a.step_m, 2.0), .margin_m = 1.5}),
       a.step_m);
-  fmt::print("hotlap race: car '{}' on {}: the fall-off from {} QSS laps on a new set...\n",
-             car.name, track.name(), a.run.fall_off_laps);
+  fmt::print("hotlap race: car '{}' on {}: the fall-off from {} QSS laps on a new set\n", car.name,
+             track.name(), a.run.fall_off_laps);
   std::fflush(stdout);
+  if (!a.no_cache) a.run.cache_dir = a.cache_dir;  // empty: no cache
+  a.run.progress = [](const std::string& line) {
+    fmt::print("  {}...\n", line);
+    std::fflush(stdout);
+  };
   const race::RaceRun run = race::RunRace(car, track.length_m(), road, a.run);
   fmt::print("{}", race::RaceText(run));
-  fmt::print("the fall-off in {:.1f} s, the plans in {:.2f} s\n", run.fall_off_seconds,
-             run.plan_seconds);
+  fmt::print("the fall-off {} in {:.1f} s, the plans in {:.2f} s\n",
+             run.fall_off_from_cache      ? "read from the cache"
+             : run.fall_off_cache.empty() ? "driven"
+                                          : "driven (and cached)",
+             run.fall_off_seconds, run.plan_seconds);
+  if (!run.cache_warning.empty()) fmt::print(stderr, "warning: {}\n", run.cache_warning);
   if (!a.json.empty()) {
     WriteJsonFile(a.json, race::RaceJson(run, a.run.cautions));
     fmt::print("wrote {}\n", a.json);
@@ -77,7 +89,8 @@ CommandRunner RegisterRaceCommand(CLI::App& app) {
   auto args = std::make_shared<RaceArgs>();
   CLI::App* sub = app.add_subcommand(
       "race",
-      "Plan a race's pit stops (four tyres and fuel, or fuel only) from the car's own "
+      "Plan a race's pit stops (four tyres, right-side tyres where allowed, or fuel only) from "
+      "the car's own "
       "fall-off: the least race time under the rules, against fixed plans, and the policy under "
       "cautions");
   sub->add_option("--track", args->track, "Track name or file")->capture_default_str();
@@ -98,6 +111,13 @@ CommandRunner RegisterRaceCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--caution-pit-loss-s", args->run.rules.caution_pit_loss_s,
                   "Time a stop at a stage end loses, service aside")
+      ->capture_default_str();
+  sub->add_flag(
+      "--right-side-stops", args->run.rules.right_side_stops,
+      "Allow stops for the two right-side tyres (and fuel) beside four-tyre and fuel-only "
+      "stops");
+  sub->add_option("--right-tyre-service-s", args->run.rules.right_tyre_service_s,
+                  "Time the two right-side tyres take to change, s")
       ->capture_default_str();
   sub->add_option("--fall-off-laps", args->run.fall_off_laps, "QSS laps on a set for the fall-off")
       ->capture_default_str();
@@ -120,6 +140,12 @@ CommandRunner RegisterRaceCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--step-m", args->step_m, "Road spacing of the QSS laps, m")
       ->capture_default_str();
+  sub->add_option("--cache-dir", args->cache_dir,
+                  "Keep the fall-off here, keyed by the car's files, the track and the settings "
+                  "(default: $HOTLAP_CACHE_DIR, else $XDG_CACHE_HOME/hotlap or ~/.cache/hotlap)");
+  sub->add_flag("--no-cache", args->no_cache,
+                "Drive the fall-off's laps, neither reading nor "
+                "writing the cache");
   sub->add_option("--json", args->json, "Write the summary as JSON (docs/json-output.md)");
   sub->add_option("--report", args->report,
                   "Write an HTML report: the plans, the fall-off, the race traces, the cautions");

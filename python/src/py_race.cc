@@ -12,6 +12,7 @@
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
 #include "hotlap/ocp/min_curvature_line.h"
+#include "hotlap/race/fall_off_cache.h"
 #include "hotlap/race/race_json.h"
 #include "hotlap/race/race_run.h"
 #include "hotlap/sim/road.h"
@@ -29,7 +30,8 @@ py::dict Race(const vehicle::Car& car, const track::Track& track, int laps,
               const std::string& stages, double fuel_capacity_kg, double fuel_per_lap_kg,
               int tyre_sets, double pit_loss_s, double caution_pit_loss_s, int fall_off_laps,
               double reference_fuel_kg, double step_m, const std::string& cautions, int races,
-              bool policy, int fuel_units_per_lap) {
+              bool policy, int fuel_units_per_lap, bool right_side_stops,
+              double right_tyre_service_s, const py::object& cache_dir) {
   race::RaceRunOptions o;
   o.rules.laps = laps;
   o.rules.stage_ends = race::ParseStageEnds(stages, laps, "stages");
@@ -38,6 +40,9 @@ py::dict Race(const vehicle::Car& car, const track::Track& track, int laps,
   o.rules.tyre_sets = tyre_sets;
   o.rules.pit_loss_s = pit_loss_s;
   o.rules.caution_pit_loss_s = caution_pit_loss_s;
+  o.rules.right_side_stops = right_side_stops;
+  o.rules.right_tyre_service_s = right_tyre_service_s;
+  if (!cache_dir.is_none()) o.cache_dir = py::str(cache_dir).cast<std::string>();
   o.fall_off_laps = fall_off_laps;
   o.reference_fuel_kg = reference_fuel_kg;
   o.cautions = race::ParseCautions(cautions, "cautions");
@@ -70,11 +75,18 @@ void BindRace(py::module_& m) {
         py::arg("pit_loss_s") = d.pit_loss_s, py::arg("caution_pit_loss_s") = d.caution_pit_loss_s,
         py::arg("fall_off_laps") = 60, py::arg("reference_fuel_kg") = 25.0, py::arg("step_m") = 2.0,
         py::arg("cautions") = "record", py::arg("races") = 10000, py::arg("policy") = true,
-        py::arg("fuel_units_per_lap") = 2,
+        py::arg("fuel_units_per_lap") = 2, py::arg("right_side_stops") = d.right_side_stops,
+        py::arg("right_tyre_service_s") = d.right_tyre_service_s, py::arg("cache_dir") = py::none(),
         "The race plan from the car's own fall-off over a set (QSS laps from pit-out), by dynamic "
         "programming, against the fixed plans, and the policy under cautions (a stochastic "
         "programme): the summary `hotlap race --json` writes "
-        "(docs/race.md).");
+        "(docs/race.md). `cache_dir` (a folder, e.g. hotlap.default_cache_dir()): keep the "
+        "fall-off there, keyed by the car's files and overrides, the track and the settings; "
+        "None: drive its laps every time.");
+  m.def(
+      "default_cache_dir", [] { return race::DefaultCacheDir().string(); },
+      "The folder `hotlap race` caches in by default: $HOTLAP_CACHE_DIR where it is set, else "
+      "$XDG_CACHE_HOME/hotlap or ~/.cache/hotlap ('': no cache).");
 }
 
 }  // namespace hotlap::python

@@ -8,6 +8,7 @@ import json
 import os
 import pathlib
 import subprocess
+import tempfile
 
 import pytest
 
@@ -23,8 +24,13 @@ def cli():
     if not pathlib.Path(binary).exists():
         pytest.fail("the hotlap program is not built (HOTLAP_BINARY=%s)" % binary)
 
+    # `hotlap race` caches its fall-off: in a folder of the test session's, never the user's.
+    cache = tempfile.mkdtemp(prefix="hotlap-test-cache-")
+    env = dict(os.environ, HOTLAP_CACHE_DIR=cache)
+
     def run(*args, check=True):
-        return subprocess.run([binary, *map(str, args)], capture_output=True, text=True, check=check)
+        return subprocess.run([binary, *map(str, args)], capture_output=True, text=True,
+                              check=check, env=env)
 
     return run
 

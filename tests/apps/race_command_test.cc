@@ -2,6 +2,7 @@
 // plans it lists, and bad rules refused with nothing written.
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -83,6 +84,71 @@ TEST_F(RaceCommandTest, WritesThePlanAndTheFixedPlansItBeats) {
   EXPECT_TRUE(Json(none)["policy"].is_null());
 }
 
+TEST_F(RaceCommandTest, TheSecondRunReadsTheFallOffFromTheCacheAndPlansTheSame) {
+  const fs::path cache = dir() / "my cache", first = dir() / "1.json", second = dir() / "2.json";
+  const std::string args =
+      kShort + " --races 200 --no-policy --cache-dir '" + cache.string() + "' --json ";
+  const test::RunResult a = Run(args + first.string());
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  EXPECT_TRUE(test::Contains(a.out, "1 of 3: 6 laps on a new set...")) << a.out;  // progress
+  EXPECT_TRUE(test::Contains(a.out, "the fall-off driven (and cached) in")) << a.out;
+  const test::RunResult b = Run(args + second.string());
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_TRUE(test::Contains(b.out, "the fall-off read from the cache in")) << b.out;
+  EXPECT_FALSE(test::Contains(b.out, "1 of 3")) << b.out;
+  const nlohmann::json ja = Json(first), jb = Json(second);
+  EXPECT_FALSE(ja["fall_off"]["from_cache"].get<bool>());
+  EXPECT_TRUE(jb["fall_off"]["from_cache"].get<bool>());
+  EXPECT_EQ(ja["fall_off"]["cache_file"], jb["fall_off"]["cache_file"]);
+  EXPECT_EQ(ja["fall_off"]["lap_time_s"], jb["fall_off"]["lap_time_s"]);
+  EXPECT_EQ(ja["plan"], jb["plan"]);
+  EXPECT_EQ(ja["monte_carlo"], jb["monte_carlo"]);
+  // A cache whose first lap the car no longer drives (the models changed under the same files)
+  // is not believed: the laps are driven again and the file replaced.
+  const fs::path file = ja["fall_off"]["cache_file"].get<std::string>();
+  std::string text = test::ReadTextFile(file);
+  const size_t at = text.find("\nlap_time_s 6 ") + 14;
+  text.replace(at, 2, "29");  // 31.3... s -> 29.3... s
+  std::ofstream(file, std::ios::trunc) << text;
+  const test::RunResult stale = Run(args + second.string());
+  EXPECT_TRUE(test::Contains(stale.out, "the fall-off driven (and cached) in")) << stale.out;
+  EXPECT_EQ(Json(second)["plan"], ja["plan"]);
+  EXPECT_EQ(Run(args + second.string()).out.find("read from the cache") != std::string::npos, true);
+  // Another setting of the laps is another key; --no-cache neither reads nor writes.
+  const test::RunResult c =
+      Run("race --laps 60 --stages 20,40 --fall-off-laps 7 --step-m 4 --races 0 --no-policy "
+          "--cache-dir '" +
+          cache.string() + "'");
+  EXPECT_TRUE(test::Contains(c.out, "the fall-off driven (and cached) in")) << c.out << c.err;
+  EXPECT_EQ(std::distance(fs::directory_iterator(cache), fs::directory_iterator()), 2);
+  const test::RunResult d = Run(kShort + " --races 0 --no-policy --no-cache");
+  EXPECT_TRUE(test::Contains(d.out, "the fall-off driven in")) << d.out;
+}
+
+TEST_F(RaceCommandTest, RightSideStopsDriveTheirOwnLapsAndAreCheckedAgainstThem) {
+  const fs::path json = dir() / "rights.json";
+  const test::RunResult r =
+      Run("race --laps 60 --stages 20,40 --fall-off-laps 16 --step-m 4 "
+          "--races 200 --no-policy --right-side-stops --json " +
+          json.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(test::Contains(r.out, "right-side stops allowed")) << r.out;
+  const nlohmann::json j = Json(json);
+  EXPECT_TRUE(j["rules"]["right_side_stops"].get<bool>());
+  ASSERT_EQ(j["fall_off"]["right_side_stops"].size(), 4u);  // after 4, 8, 12 and 16 laps
+  EXPECT_EQ(j["fall_off"]["right_side_stops"][0]["after_laps"].get<int>(), 4);
+  EXPECT_EQ(j["fall_off"]["right_side_stops"][3]["lap_time_s"].size(), 16u);
+  const nlohmann::json& check = j["side_check"];
+  EXPECT_EQ(check["laps_before"].get<int>(), 6);
+  EXPECT_EQ(check["driven_lap_time_s"].size(), 16u);
+  EXPECT_LT(check["max_abs_difference_s"].get<double>(), 0.1);
+  // The fixed plan that alternates right sides and four tyres is among those tried.
+  bool alternating = false;
+  for (const auto& p : j["fixed_plans"]) alternating |= p["name"] == "rights between";
+  EXPECT_TRUE(alternating);
+  EXPECT_TRUE(Json(dir() / "rights.json")["plan"].contains("optimality_gap_s"));
+}
+
 TEST_F(RaceCommandTest, BadRulesFailCleanlyWithoutOutput) {
   const fs::path json = dir() / "bad.json";
   for (const auto& [args, message] :
@@ -94,7 +160,9 @@ TEST_F(RaceCommandTest, BadRulesFailCleanlyWithoutOutput) {
         std::pair{std::string("race --cautions 1.5"), "must be in [0, 1]"},
         std::pair{std::string("race --cautions often"), "'record' or 'off'"},
         std::pair{std::string("race --races -1"), "Monte Carlo races -1"},
-        std::pair{std::string("race --fuel-units-per-lap 0"), "fuel units a lap"}}) {
+        std::pair{std::string("race --fuel-units-per-lap 0"), "fuel units a lap"},
+        std::pair{std::string("race --right-side-stops --right-tyre-service-s -2"),
+                  "right-side tyre service -2 s"}}) {
     const test::RunResult r = Run(args + " --json " + json.string());
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
     EXPECT_TRUE(test::Contains(r.err, message)) << args << ": " << r.err;

@@ -22,11 +22,13 @@ struct RunResult {
 };
 
 /// Runs `hotlap ARGS` through the shell (ARGS may hold redirections and quotes), capturing its
-/// standard output and error in files in `scratch`.
+/// standard output and error in files in `scratch`; its cache (`hotlap race`'s fall-off) in
+/// `scratch`/cache, never the user's.
 inline RunResult RunHotlap(const std::string& args, const std::filesystem::path& scratch) {
   const std::filesystem::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
-  const std::string command =
-      std::string(HOTLAP_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
+  const std::string command = "HOTLAP_CACHE_DIR='" + (scratch / "cache").string() + "' " +
+                              std::string(HOTLAP_BINARY) + " " + args + " >" + out.string() +
+                              " 2>" + err.string();
   const int status = std::system(command.c_str());
   return {WEXITSTATUS(status), ReadTextFile(out), ReadTextFile(err)};
 }

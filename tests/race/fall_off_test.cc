@@ -5,6 +5,7 @@
 #include "hotlap/race/fall_off.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <gtest/gtest.h>
 
@@ -30,8 +31,10 @@ TEST(FallOffTest, SixtyLapsAtDarlingtonLoseTwoToThreeAndAHalfSecondsFromTheWear)
   o.track_temp = CelsiusToKelvin(40.0);
   o.initial = sim::CarStartState(car);  // new tyres from pit-out
   // A caution of six laps at 65 s a lap after 20 green laps.
-  const FallOff f = FallOffFromQss(car, road, o, 60, 25.0, 10.0,
-                                   {.after_green_laps = 20, .laps = 6, .speed = 2198.0 / 65.0});
+  const FallOff f =
+      FallOffFromQss(car, road, o, 60, 25.0,
+                     {.caution = {.after_green_laps = 20, .laps = 6, .speed = 2198.0 / 65.0},
+                      .right_stops_after = {15, 30, 45, 60}});
   ASSERT_EQ(f.lap_time_s.size(), 60u);
   ASSERT_EQ(f.heat_only_lap_time_s.size(), 60u);
   EXPECT_GE(f.Spread(), 2.0);
@@ -48,6 +51,23 @@ TEST(FallOffTest, SixtyLapsAtDarlingtonLoseTwoToThreeAndAHalfSecondsFromTheWear)
   // slower, by some seconds over three laps, not by a lap's worth.
   EXPECT_GT(f.restart_penalty_s, 0.5);
   EXPECT_LT(f.restart_penalty_s, 8.0);
+  // Right-side stops: new right tyres on old left ones are slower than a new set of the same age
+  // (the old lefts' lost grip) and faster than the old set run on (the rights' lost grip).
+  ASSERT_EQ(f.right_stop_lap_time_s.size(), 4u);
+  for (size_t i = 0; i < 4; ++i) {
+    ASSERT_EQ(f.right_stop_lap_time_s[i].size(), 60u);
+    const int after = f.right_stop_after_laps[i];
+    for (int k = 5; k < 60; ++k) {
+      EXPECT_GT(f.right_stop_lap_time_s[i][k], f.lap_time_s[k]) << after << " " << k;
+      if (after + k < 60) EXPECT_LT(f.right_stop_lap_time_s[i][k], f.lap_time_s[after + k]);
+    }
+  }
+  // A right-side stop between two of them, driven: the interpolated two-age times hold it within
+  // a few hundredths a lap over the 60 laps after it (0.025 s measured).
+  const SideStopCheck check = CheckRightSideStop(car, road, o, f, 22, 60);
+  ASSERT_EQ(check.driven_s.size(), 60u);
+  EXPECT_LT(check.max_abs_difference_s, 0.06);
+  EXPECT_LT(std::abs(check.mean_difference_s), 0.02);
 }
 
 TEST(FallOffTest, WithoutGripLossFromWearHoldsEveryCompoundAtOne) {
@@ -71,9 +91,14 @@ TEST(FallOffTest, WithoutAHeatOnlyTableItsSpreadIsZeroAndShortRunsAreRefused) {
   const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
   EXPECT_THROW(FallOffFromQss(car, {}, {}, 1, 25.0), InputError);
   // A caution run that leaves fewer than the restart's laps of the table after it.
-  EXPECT_THROW(FallOffFromQss(car, {}, {}, 10, 25.0, 10.0,
-                              {.after_green_laps = 5, .laps = 4, .speed = 30.0}),
+  EXPECT_THROW(FallOffFromQss(car, {}, {}, 10, 25.0,
+                              {.caution = {.after_green_laps = 5, .laps = 4, .speed = 30.0}}),
                InputError);
+  EXPECT_THROW(FallOffFromQss(car, {}, {}, 10, 25.0, {.fuel_delta_kg = 0.0}), InputError);
+  // Right-side stops outside the table or out of order.
+  EXPECT_THROW(FallOffFromQss(car, {}, {}, 10, 25.0, {.right_stops_after = {5, 11}}), InputError);
+  EXPECT_THROW(FallOffFromQss(car, {}, {}, 10, 25.0, {.right_stops_after = {6, 4}}), InputError);
+  EXPECT_THROW(CheckRightSideStop(car, {}, {}, f, 5, 5), InputError);  // no right-side stops
 }
 
 }  // namespace

@@ -29,7 +29,7 @@ double RaceUnderCautions(const RaceRules& r, const FallOff& f, const std::vector
   std::mt19937_64 draw(m.seed * 0x9E3779B97F4A7C15ull + stream);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   double fuel = r.fuel_capacity_kg, time = 0.0;
-  int age = 0, caution_left = 0;
+  int left_age = 0, right_age = 0, caution_left = 0;
   std::vector<int> starts;
   bool first_caution_lap = false;
   bool restart = false;  // the last lap was a caution's
@@ -43,7 +43,7 @@ double RaceUnderCautions(const RaceRules& r, const FallOff& f, const std::vector
       first_caution_lap = true;
       starts.push_back(lap);
       // A green stop made on the lap before is caught a lap down by the field.
-      if (last_green_stop == lap - 1) time += f.LapTime(age, fuel);
+      if (last_green_stop == lap - 1) time += f.LapTime(left_age, right_age, fuel);
     }
     const bool under_caution = caution_left > 0;
     if (under_caution) {
@@ -52,9 +52,10 @@ double RaceUnderCautions(const RaceRules& r, const FallOff& f, const std::vector
       --caution_left;
     } else {
       // The tyres and brakes a caution cooled: the laps after it, booked on the first.
-      time += f.LapTime(age, fuel) + (restart ? f.restart_penalty_s : 0.0);
+      time += f.LapTime(left_age, right_age, fuel) + (restart ? f.restart_penalty_s : 0.0);
       fuel -= r.fuel_per_lap_kg;
-      ++age;
+      ++left_age;
+      ++right_age;
     }
     restart = under_caution;
     const bool pit_closed = under_caution && first_caution_lap;
@@ -67,15 +68,12 @@ double RaceUnderCautions(const RaceRules& r, const FallOff& f, const std::vector
         const PitStop& stop = pending >= 0 ? stops[static_cast<size_t>(pending)] : stops[next++];
         pending = -1;
         const double added = r.fuel_capacity_kg - fuel;
-        const double service_fuel = added / r.fuel_rate_kg_per_s;
-        const double service = stop.service == Service::kFourTyresAndFuel
-                                   ? std::max(r.tyre_service_s, service_fuel)
-                                   : service_fuel;
         const bool cheap = under_caution || r.EndsStage(lap);
-        time += (cheap ? r.caution_pit_loss_s : r.pit_loss_s) + service;
+        time += (cheap ? r.caution_pit_loss_s : r.pit_loss_s) + ServiceTime(r, stop.service, added);
         if (!cheap) last_green_stop = lap;
         fuel = r.fuel_capacity_kg;
-        if (stop.service == Service::kFourTyresAndFuel) age = 0;
+        if (stop.service != Service::kFuelOnly) right_age = 0;
+        if (stop.service == Service::kFourTyresAndFuel) left_age = 0;
       }
     }
     // The stage ends: a scheduled caution from the next lap.

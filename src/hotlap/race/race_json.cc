@@ -12,7 +12,45 @@ namespace hotlap::race {
 namespace {
 
 const char* ServiceName(Service s) {
-  return s == Service::kFuelOnly ? "fuel only" : "four tyres and fuel";
+  switch (s) {
+    case Service::kFuelOnly:
+      return "fuel only";
+    case Service::kRightTyresAndFuel:
+      return "right-side tyres and fuel";
+    case Service::kFourTyresAndFuel:
+      break;
+  }
+  return "four tyres and fuel";
+}
+
+// A stop's mark in the plans' lines: f fuel only, r right-side tyres, none four tyres.
+const char* ServiceMark(Service s) {
+  return s == Service::kFuelOnly ? "f" : s == Service::kRightTyresAndFuel ? "r" : "";
+}
+
+nlohmann::json Rounded(const std::vector<double>& v) {
+  nlohmann::json out = nlohmann::json::array();
+  for (double x : v) out.push_back(RoundSignificant(x));
+  return out;
+}
+
+nlohmann::json RightStopsJson(const FallOff& f) {
+  nlohmann::json out = nlohmann::json::array();
+  for (size_t i = 0; i < f.right_stop_after_laps.size(); ++i) {
+    out.push_back({{"after_laps", f.right_stop_after_laps[i]},
+                   {"lap_time_s", Rounded(f.right_stop_lap_time_s[i])}});
+  }
+  return out;
+}
+
+nlohmann::json SideCheckJson(const std::optional<SideStopCheck>& c) {
+  if (!c) return nullptr;
+  return {{"laps_before", c->before},
+          {"laps_after", c->after},
+          {"driven_lap_time_s", Rounded(c->driven_s)},
+          {"fall_off_lap_time_s", Rounded(c->fall_off_s)},
+          {"max_abs_difference_s", RoundSignificant(c->max_abs_difference_s)},
+          {"mean_difference_s", RoundSignificant(c->mean_difference_s)}};
 }
 
 double BestFixed(const std::vector<RacePlan>& fixed) {
@@ -54,6 +92,7 @@ nlohmann::json PlanJson(const RacePlan& plan) {
   }
   return {{"name", plan.name},
           {"race_time_s", RoundSignificant(plan.race_time_s)},
+          {"optimality_gap_s", RoundSignificant(plan.optimality_gap_s)},
           {"tyre_sets_used", plan.tyre_sets_used},
           {"stops", stops}};
 }
@@ -117,34 +156,42 @@ nlohmann::json RaceJson(const RaceRun& run, const CautionModel& cautions) {
           {"standard_error_s", RoundSignificant(pr.gain_over_best_plan.standard_error_s)}};
     }
   }
-  return {{"command", "race"},
-          {"rules",
-           {{"laps", r.laps},
-            {"stage_ends", r.stage_ends},
-            {"fuel_capacity_kg", r.fuel_capacity_kg},
-            {"fuel_per_lap_kg", r.fuel_per_lap_kg},
-            {"fuel_window_laps", r.FuelWindow()},
-            {"tyre_sets", r.tyre_sets},
-            {"pit_loss_s", r.pit_loss_s},
-            {"caution_pit_loss_s", r.caution_pit_loss_s},
-            {"tyre_service_s", r.tyre_service_s},
-            {"fuel_rate_kg_per_s", r.fuel_rate_kg_per_s}}},
-          {"fall_off",
-           {{"laps", f.lap_time_s.size()},
-            {"lap_time_s", lap_times},
-            {"spread_s", RoundSignificant(f.Spread())},
-            {"heat_only_lap_time_s", heat_only},
-            {"heat_only_spread_s", RoundSignificant(f.HeatOnlySpread())},
-            {"restart_penalty_s", RoundSignificant(f.restart_penalty_s)},
-            {"fuel_s_per_kg", RoundSignificant(f.fuel_s_per_kg)},
-            {"reference_fuel_kg", f.reference_fuel_kg}}},
-          {"plan", PlanJson(plan)},
-          {"fixed_plans", fixed_json},
-          {"gain_over_best_fixed_s",
-           fixed.empty() ? nlohmann::json(nullptr)
-                         : nlohmann::json(RoundSignificant(best - plan.race_time_s))},
-          {"monte_carlo", mc},
-          {"policy", policy}};
+  return {
+      {"command", "race"},
+      {"rules",
+       {{"laps", r.laps},
+        {"stage_ends", r.stage_ends},
+        {"fuel_capacity_kg", r.fuel_capacity_kg},
+        {"fuel_per_lap_kg", r.fuel_per_lap_kg},
+        {"fuel_window_laps", r.FuelWindow()},
+        {"tyre_sets", r.tyre_sets},
+        {"pit_loss_s", r.pit_loss_s},
+        {"caution_pit_loss_s", r.caution_pit_loss_s},
+        {"tyre_service_s", r.tyre_service_s},
+        {"right_side_stops", r.right_side_stops},
+        {"right_tyre_service_s", r.right_tyre_service_s},
+        {"fuel_rate_kg_per_s", r.fuel_rate_kg_per_s}}},
+      {"fall_off",
+       {{"laps", f.lap_time_s.size()},
+        {"lap_time_s", lap_times},
+        {"spread_s", RoundSignificant(f.Spread())},
+        {"heat_only_lap_time_s", heat_only},
+        {"heat_only_spread_s", RoundSignificant(f.HeatOnlySpread())},
+        {"right_side_stops", RightStopsJson(f)},
+        {"from_cache", run.fall_off_from_cache},
+        {"cache_file", run.fall_off_cache.empty() ? nlohmann::json(nullptr)
+                                                  : nlohmann::json(run.fall_off_cache.string())},
+        {"restart_penalty_s", RoundSignificant(f.restart_penalty_s)},
+        {"fuel_s_per_kg", RoundSignificant(f.fuel_s_per_kg)},
+        {"reference_fuel_kg", f.reference_fuel_kg}}},
+      {"side_check", SideCheckJson(run.side_check)},
+      {"plan", PlanJson(plan)},
+      {"fixed_plans", fixed_json},
+      {"gain_over_best_fixed_s", fixed.empty()
+                                     ? nlohmann::json(nullptr)
+                                     : nlohmann::json(RoundSignificant(best - plan.race_time_s))},
+      {"monte_carlo", mc},
+      {"policy", policy}};
 }
 
 std::string RaceText(const RaceRun& run) {
@@ -167,18 +214,34 @@ std::string RaceText(const RaceRun& run) {
         fmt::format("  a caution's cooled tyres and brakes cost the {} laps after it {:+.3f} s\n",
                     FallOff::kRestartLaps, f.restart_penalty_s);
   }
-  out += fmt::format("rules: {} laps, stages end at {}, {} tyre sets, a cell lasts {} laps\n",
-                     r.laps, fmt::join(r.stage_ends, ", "), r.tyre_sets, r.FuelWindow());
+  if (run.side_check) {
+    const SideStopCheck& c = *run.side_check;
+    out += fmt::format(
+        "  a right-side stop after lap {} driven: the {} laps after it {:.3f} s from the two-age "
+        "lap times at most ({:+.3f} s on average)\n",
+        c.before, c.after, c.max_abs_difference_s, c.mean_difference_s);
+  }
+  out += fmt::format("rules: {} laps, stages end at {}, {} tyre sets, a cell lasts {} laps{}\n",
+                     r.laps, fmt::join(r.stage_ends, ", "), r.tyre_sets, r.FuelWindow(),
+                     r.right_side_stops ? ", right-side stops allowed" : "");
   const auto plan_text = [&](const RacePlan& p) {
     std::string stops;
     for (const PitStop& s : p.stops) {
-      stops += fmt::format(" {}{}", s.lap, s.service == Service::kFuelOnly ? "f" : "");
+      stops += fmt::format(" {}{}", s.lap, ServiceMark(s.service));
     }
     return fmt::format("  {:<14} {:>10.3f} s  {:>2} stops, {:>2} sets; stops after laps{}\n",
                        p.name, p.race_time_s, p.stops.size(), p.tyre_sets_used, stops);
   };
-  out += "plans (stops after lap N; f: fuel only, else four tyres and fuel):\n";
+  out += r.right_side_stops
+             ? "plans (stops after lap N; f: fuel only, r: right-side tyres and "
+               "fuel, else four tyres and fuel):\n"
+             : "plans (stops after lap N; f: fuel only, else four tyres and fuel):\n";
   out += plan_text(plan);
+  if (plan.optimality_gap_s > 0.0) {
+    out += fmt::format(
+        "    (the tyre sets bind: priced per set, the plan is within {:.3f} s of the least time)\n",
+        plan.optimality_gap_s);
+  }
   for (const RacePlan& p : fixed) out += plan_text(p);
   if (!fixed.empty()) {
     out += fmt::format("the optimal plan gains {:.3f} s over the best fixed plan\n",

@@ -14,18 +14,26 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// The fuel aboard with `laps_left` laps of it, kg: the cell less what its laps since the fill
-// burnt (the part of the cell under one lap's burn stays aboard).
-double FuelMass(const RaceRules& r, int laps_left) {
-  return r.fuel_capacity_kg - (r.FuelWindow() - laps_left) * r.fuel_per_lap_kg;
-}
+double FuelMass(const RaceRules& r, int laps_left) { return r.FuelAboard(laps_left); }
 
 }  // namespace
 
-double StopTime(const RaceRules& r, int lap, Service service, double fuel_added_kg) {
-  const double loss = r.EndsStage(lap) ? r.caution_pit_loss_s : r.pit_loss_s;
+double ServiceTime(const RaceRules& r, Service service, double fuel_added_kg) {
   const double fuel = fuel_added_kg / r.fuel_rate_kg_per_s;
-  return loss + (service == Service::kFourTyresAndFuel ? std::max(r.tyre_service_s, fuel) : fuel);
+  switch (service) {
+    case Service::kFourTyresAndFuel:
+      return std::max(r.tyre_service_s, fuel);
+    case Service::kRightTyresAndFuel:
+      return std::max(r.right_tyre_service_s, fuel);
+    case Service::kFuelOnly:
+      break;
+  }
+  return fuel;
+}
+
+double StopTime(const RaceRules& r, int lap, Service service, double fuel_added_kg) {
+  return (r.EndsStage(lap) ? r.caution_pit_loss_s : r.pit_loss_s) +
+         ServiceTime(r, service, fuel_added_kg);
 }
 
 RacePlan EvaluatePlan(const RaceRules& r, const FallOff& f, const std::vector<PitStop>& stops,
@@ -35,26 +43,33 @@ RacePlan EvaluatePlan(const RaceRules& r, const FallOff& f, const std::vector<Pi
   RacePlan plan;
   plan.name = std::move(name);
   plan.tyre_sets_used = 1;
-  int age = 0, fuel = window;
+  int left_age = 0, right_age = 0, fuel = window;
   size_t next = 0;
   for (int lap = 1; lap <= r.laps; ++lap) {
     if (fuel < 1) {
       throw InputError(fmt::format("plan '{}': the fuel runs out on lap {}", plan.name, lap));
     }
-    const double t = f.LapTime(age, FuelMass(r, fuel));
+    const double t = f.LapTime(left_age, right_age, FuelMass(r, fuel));
     plan.lap_time_s.push_back(t);
     plan.race_time_s += t;
-    ++age;
+    ++left_age;
+    ++right_age;
     --fuel;
     if (next < stops.size() && stops[next].lap == lap) {
       if (lap >= r.laps)
         throw InputError(fmt::format("plan '{}': a stop after the race", plan.name));
       PitStop stop = stops[next++];
+      if (stop.service == Service::kRightTyresAndFuel && !r.right_side_stops) {
+        throw InputError(
+            fmt::format("plan '{}': a right-side stop after lap {}; the rules change four tyres",
+                        plan.name, lap));
+      }
       stop.time_lost_s = StopTime(r, lap, stop.service, (window - fuel) * r.fuel_per_lap_kg);
       plan.race_time_s += stop.time_lost_s;
       fuel = window;
-      if (stop.service == Service::kFourTyresAndFuel) {
-        age = 0;
+      if (stop.service != Service::kFuelOnly) {
+        right_age = 0;
+        if (stop.service == Service::kFourTyresAndFuel) left_age = 0;
         ++plan.tyre_sets_used;
       }
       plan.stops.push_back(stop);
@@ -73,6 +88,7 @@ RacePlan EvaluatePlan(const RaceRules& r, const FallOff& f, const std::vector<Pi
 
 RacePlan OptimalPlan(const RaceRules& r, const FallOff& f) {
   CheckRaceRules(r);
+  if (r.right_side_stops) return OptimalPlanWithRightSideStops(r, f);
   const int n = r.laps, window = r.FuelWindow(), sets = r.tyre_sets;
   // State after lap l, before the decision: age a in [1, l] (laps on the set), fuel f in
   // [0, window] (laps of it left), sets used s in [1, sets]. value[a][f][s]: the least time of
@@ -159,6 +175,12 @@ std::vector<RacePlan> FixedPlans(const RaceRules& r, const FallOff& f) {
   for (int lap = window; lap < r.laps; lap += window)
     late.push_back({lap, Service::kFourTyresAndFuel, 0.0});
   add(late, "fuel windows");
+  if (r.right_side_stops) {
+    std::vector<PitStop> alternate = late;
+    for (size_t i = 0; i < alternate.size(); i += 2)
+      alternate[i].service = Service::kRightTyresAndFuel;
+    add(alternate, "rights between");
+  }
   // A stop at each stage end (its cheap caution), and between them, and after the last, the
   // fewest stops the fuel allows, evenly spaced.
   std::vector<PitStop> stages;

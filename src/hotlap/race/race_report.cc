@@ -18,19 +18,25 @@ std::vector<double> Laps(size_t n) {
   return laps;
 }
 
-// The laps run on the current set at the end of each lap of a plan.
-std::vector<double> SetAges(const RacePlan& plan) {
+// The laps run on the current right-side tyres (`right`) or left-side ones at the end of each lap
+// of a plan.
+std::vector<double> SetAges(const RacePlan& plan, bool right = true) {
   std::vector<double> age;
   int a = 0;
   size_t next = 0;
   for (size_t lap = 1; lap <= plan.lap_time_s.size(); ++lap) {
     age.push_back(++a);
     if (next < plan.stops.size() && plan.stops[next].lap == static_cast<int>(lap)) {
-      if (plan.stops[next].service == Service::kFourTyresAndFuel) a = 0;
+      const Service s = plan.stops[next].service;
+      if (s == Service::kFourTyresAndFuel || (right && s == Service::kRightTyresAndFuel)) a = 0;
       ++next;
     }
   }
   return age;
+}
+
+const char* Mark(Service s) {
+  return s == Service::kFuelOnly ? "f" : s == Service::kRightTyresAndFuel ? "r" : "";
 }
 
 }  // namespace
@@ -48,7 +54,7 @@ void WriteRaceReport(const std::filesystem::path& path, const RaceRun& run, cons
   const auto row = [&](const RacePlan& p, const MonteCarloResult* mc) {
     std::string stops;
     for (const PitStop& s : p.stops) {
-      stops += fmt::format("{}{} ", s.lap, s.service == Service::kFuelOnly ? "f" : "");
+      stops += fmt::format("{}{} ", s.lap, Mark(s.service));
     }
     rows.push_back({p.name, fmt::format("{:.3f}", p.race_time_s), std::to_string(p.stops.size()),
                     std::to_string(p.tyre_sets_used), stops,
@@ -61,7 +67,11 @@ void WriteRaceReport(const std::filesystem::path& path, const RaceRun& run, cons
   row(run.plan, mc_of(0));
   for (size_t i = 0; i < run.fixed.size(); ++i) row(run.fixed[i], mc_of(i + 1));
   page.AddTable(
-      {.title = "The optimal plan and the fixed plans (stops after lap N; f: fuel only)",
+      {.title = run.rules.right_side_stops
+                    ? "The optimal plan and the fixed plans (stops after lap "
+                      "N; f: fuel only, r: right-side tyres and fuel)"
+                    : "The optimal plan and the fixed plans (stops after lap "
+                      "N; f: fuel only)",
        .header = {"plan", "race time s", "stops", "sets", "stops after laps", "under cautions s"},
        .rows = rows});
   if (run.gain_under_cautions.races > 0) {
@@ -106,7 +116,8 @@ void WriteRaceReport(const std::filesystem::path& path, const RaceRun& run, cons
     ages.push_back(static_cast<double>(a));
   report::LineChart fall_off{
       .title = "Lap time on a set (the out lap first), from the QSS laps",
-      .x_axis = {.label = "laps on the set", .integer_ticks = true},
+      .x_axis = {.label = "laps on the set (the right-side tyres after a right-side stop)",
+                 .integer_ticks = true},
       .y_axis = {.label = "lap time", .unit = "s"},
       .series = {{.label = "fall-off", .x = ages, .y = run.fall_off.lap_time_s}}};
   if (run.fall_off.heat_only_lap_time_s.size() == ages.size()) {
@@ -114,7 +125,34 @@ void WriteRaceReport(const std::filesystem::path& path, const RaceRun& run, cons
                                .x = ages,
                                .y = run.fall_off.heat_only_lap_time_s});
   }
+  for (size_t i = 0; i < run.fall_off.right_stop_after_laps.size(); ++i) {
+    const int after = run.fall_off.right_stop_after_laps[i];
+    std::vector<double> x;
+    for (size_t k = 0; k < run.fall_off.right_stop_lap_time_s[i].size(); ++k)
+      x.push_back(static_cast<double>(k));
+    fall_off.series.push_back(
+        {.label = fmt::format("new right-side tyres after {} laps on the set", after),
+         .x = x,
+         .y = run.fall_off.right_stop_lap_time_s[i],
+         .style = report::LineStyle::kDashed});
+  }
   page.AddLineChart(fall_off);
+  if (run.side_check) {
+    const SideStopCheck& c = *run.side_check;
+    std::vector<double> after;
+    for (int k = 0; k < c.after; ++k) after.push_back(static_cast<double>(k));
+    page.AddLineChart(
+        {.title = fmt::format("A right-side stop after lap {}, driven, against the two-age lap "
+                              "times (largest difference {:.3f} s)",
+                              c.before, c.max_abs_difference_s),
+         .x_axis = {.label = "laps on the new right-side tyres", .integer_ticks = true},
+         .y_axis = {.label = "lap time", .unit = "s"},
+         .series = {{.label = "driven (QSS)", .x = after, .y = c.driven_s},
+                    {.label = "fall-off, two ages",
+                     .x = after,
+                     .y = c.fall_off_s,
+                     .style = report::LineStyle::kDashed}}});
+  }
   report::LineChart trace{.title = "Lap times over the race (stops not included)",
                           .x_axis = {.label = "lap", .integer_ticks = true},
                           .y_axis = {.label = "lap time", .unit = "s"},
@@ -128,6 +166,13 @@ void WriteRaceReport(const std::filesystem::path& path, const RaceRun& run, cons
   const std::vector<double> laps = Laps(run.plan.lap_time_s.size());
   trace.series.push_back({.label = run.plan.name, .x = laps, .y = run.plan.lap_time_s});
   runs.series.push_back({.label = run.plan.name, .x = laps, .y = SetAges(run.plan)});
+  if (run.rules.right_side_stops) {
+    runs.title = "Laps on the right-side tyres (and, dotted, the optimal plan's left-side ones)";
+    runs.series.push_back({.label = run.plan.name + ", left side",
+                           .x = laps,
+                           .y = SetAges(run.plan, false),
+                           .style = report::LineStyle::kDotted});
+  }
   for (const RacePlan& p : run.fixed) {
     trace.series.push_back(
         {.label = p.name, .x = laps, .y = p.lap_time_s, .style = report::LineStyle::kDashed});

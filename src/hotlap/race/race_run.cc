@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
+#include "hotlap/common/fnv1a.h"
+#include "hotlap/race/fall_off_cache.h"
 #include "hotlap/sim/replay.h"
 
 namespace hotlap::race {
@@ -78,6 +80,61 @@ PolicyRun RunPolicy(const RaceRun& run, const RaceRunOptions& o,
   return out;
 }
 
+// The right-side stops the fall-off drives where the rules allow them: after a quarter, a half,
+// three quarters and all of its laps on the set.
+std::vector<int> RightStopsFor(const RaceRunOptions& o) {
+  std::vector<int> after;
+  if (!o.rules.right_side_stops) return after;
+  for (int k = 1; k <= 4; ++k) {
+    const int a = std::max(1, k * o.fall_off_laps / 4);
+    if (after.empty() || a > after.back()) after.push_back(a);
+  }
+  return after;
+}
+
+// The cache's key: the car's files, the road's points, every setting the laps depend on.
+std::string FallOffKey(const vehicle::Car& car, std::span<const sim::RoadPoint> road,
+                       const sim::QssOptions& qss, const RaceRunOptions& o,
+                       const CautionLaps& caution) {
+  uint64_t h = Fnv1a64("road");
+  for (const sim::RoadPoint& p : road) {
+    h = Fnv1a64(std::string_view(reinterpret_cast<const char*>(&p), sizeof p), h);
+  }
+  return fmt::format(
+      "{} | road {:016x} {} | track {:.17g} m, ambient {:.17g} K, track {:.17g} K | laps {}, fuel "
+      "{:.17g} kg | caution {} after {} at {:.17g} m/s | right-side stops after {}",
+      CarFilesKey(car), h, road.size(), qss.track_length, qss.ambient_temp, qss.track_temp,
+      o.fall_off_laps, o.reference_fuel_kg, caution.laps, caution.after_green_laps, caution.speed,
+      fmt::join(RightStopsFor(o), ","));
+}
+
+// The run's fall-off and right-side stop check into the cache; where it cannot be written, a
+// warning and no cache.
+void WriteCache(const std::filesystem::path& file, const std::string& key, RaceRun& run) {
+  try {
+    WriteCachedFallOff(file, key, run.fall_off, run.side_check);
+  } catch (const InputError& e) {
+    run.cache_warning = e.what();
+    run.fall_off_cache.clear();
+  }
+}
+
+// The fall-off (and the right-side stop check) from the cache into the run, where it holds this
+// key and the car's first lap still drives as it did (a change of the models the key cannot
+// see); whether it did.
+bool ReadCache(const vehicle::Car& car, std::span<const sim::RoadPoint> road,
+               const sim::QssOptions& qss, const std::string& key, RaceRun* run) {
+  std::optional<SideStopCheck> check;
+  std::optional<FallOff> cached = ReadCachedFallOff(run->fall_off_cache, key, &check);
+  if (!cached) return false;
+  sim::QssOptions one = qss;
+  one.laps = 1;
+  if (sim::RunQssLap(car, road, one).laps[0].lap_time != cached->lap_time_s[0]) return false;
+  run->fall_off = std::move(*cached);
+  run->side_check = std::move(check);
+  return true;
+}
+
 }  // namespace
 
 RaceRun RunRace(const vehicle::Car& car, double track_length_m,
@@ -114,8 +171,28 @@ RaceRun RunRace(const vehicle::Car& car, double track_length_m,
       caution.speed = 0.0;  // too few laps for it: no restart penalty
     }
   }
-  run.fall_off =
-      FallOffFromQss(car, road, qss, o.fall_off_laps, o.reference_fuel_kg, 10.0, caution);
+  std::string key;
+  if (!o.cache_dir.empty()) {
+    key = FallOffKey(car, road, qss, o, caution);
+    run.fall_off_cache = FallOffCacheFile(o.cache_dir, key);
+    run.fall_off_from_cache = ReadCache(car, road, qss, key, &run);
+  }
+  if (!run.fall_off_from_cache) {
+    FallOffRuns runs{
+        .caution = caution, .right_stops_after = RightStopsFor(o), .progress = o.progress};
+    run.fall_off = FallOffFromQss(car, road, qss, o.fall_off_laps, o.reference_fuel_kg, runs);
+    if (o.rules.right_side_stops) {
+      // A right-side stop between two of the fall-off's, driven against the interpolation.
+      const int before = std::max(1, (3 * o.fall_off_laps) / 8);
+      if (o.progress) {
+        o.progress(fmt::format(
+            "a right-side stop after {} laps driven, against the fall-off's two-age lap times",
+            before));
+      }
+      run.side_check = CheckRightSideStop(car, road, qss, run.fall_off, before, o.fall_off_laps);
+    }
+    if (!key.empty()) WriteCache(run.fall_off_cache, key, run);
+  }
   const auto curves = std::chrono::steady_clock::now();
   run.plan = OptimalPlan(o.rules, run.fall_off);
   run.fixed = FixedPlans(o.rules, run.fall_off);

@@ -3,6 +3,8 @@
 /// The race run as `hotlap race` and Python's `hotlap.race` make it (docs/race.md): the fall-off
 /// from the car's QSS laps on the given road, the optimal plan and the fixed plans.
 
+#include <filesystem>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -29,6 +31,11 @@ struct RaceRunOptions {
   /// The stochastic programme's policy under the cautions (race_policy.h) beside the plans.
   bool policy = true;
   PolicyOptions policy_options;
+  /// Where the fall-off is cached (fall_off_cache.h), keyed by the car's files and overrides
+  /// (CarFilesKey), the road and the settings; empty: no cache.
+  std::filesystem::path cache_dir;
+  /// Told the fall-off's progress, a line at a time; may be empty.
+  std::function<void(const std::string&)> progress;
 };
 
 /// The policy's part of a race run.
@@ -59,8 +66,13 @@ struct RaceRun {
   /// (mean_time_s is the gain); races 0 where there was no Monte Carlo.
   MonteCarloResult gain_under_cautions;
   std::optional<PolicyRun> policy;  ///< where RaceRunOptions::policy asked for it
-  double fall_off_seconds = 0.0;    ///< wall time of the QSS laps
-  double plan_seconds = 0.0;        ///< wall time of the plans
+  /// With right-side stops allowed: one driven in QSS laps against the fall-off's two-age times.
+  std::optional<SideStopCheck> side_check;
+  bool fall_off_from_cache = false;      ///< read from the cache, not driven
+  std::filesystem::path fall_off_cache;  ///< the cache file read or written; empty: none
+  std::string cache_warning;             ///< why the cache could not be written, if it could not
+  double fall_off_seconds = 0.0;         ///< wall time of the QSS laps (or the cache's read)
+  double plan_seconds = 0.0;             ///< wall time of the plans
 };
 
 /// The run. InputError for bad rules or options (before any lap is driven).
