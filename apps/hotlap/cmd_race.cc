@@ -19,6 +19,7 @@
 #include "hotlap/race/race_plan.h"
 #include "hotlap/race/race_report.h"
 #include "hotlap/race/race_run.h"
+#include "hotlap/runs/race_spot_checks.h"
 #include "hotlap/sim/road.h"
 #include "hotlap/track/track_io.h"
 
@@ -34,6 +35,8 @@ struct RaceArgs {
   std::string stages = "115,230";
   std::string cautions = "record";
   double step_m = 2.0;
+  std::string spot_checks;
+  double spot_check_step_m = 6.0;
   std::string cache_dir = race::DefaultCacheDir().string();
   bool no_cache = false;
   std::string json;
@@ -46,6 +49,12 @@ int RunRace(RaceArgs a) {
   race::CheckRaceRules(a.run.rules);
   if (!(a.step_m >= 0.5 && a.step_m <= 10.0)) {
     throw InputError(fmt::format("--step-m {:g} must be in [0.5, 10] m", a.step_m));
+  }
+  const std::vector<int> spot_ages =
+      runs::ParseSpotCheckAges(a.spot_checks, a.run.fall_off_laps, "--spot-checks");
+  if (!(a.spot_check_step_m >= 1.0 && a.spot_check_step_m <= 20.0)) {
+    throw InputError(
+        fmt::format("--spot-check-step-m {:g} must be in [1, 20] m", a.spot_check_step_m));
   }
   if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
   if (!a.report.empty()) CheckOutputFolder(a.report, "--report");
@@ -66,6 +75,13 @@ int RunRace(RaceArgs a) {
   };
   const race::RaceRun run = race::RunRace(car, track.length_m(), road, a.run);
   fmt::print("{}", race::RaceText(run));
+  runs::RaceSpotChecks spots;
+  if (!spot_ages.empty()) {
+    spots = runs::RunRaceSpotChecks(car, track, road,
+                                    race::FallOffQssOptions(car, track.length_m(), a.run),
+                                    run.fall_off, spot_ages, a.spot_check_step_m, a.run.progress);
+    fmt::print("{}", runs::RaceSpotChecksText(spots));
+  }
   fmt::print("the fall-off {} in {:.1f} s, the plans in {:.2f} s\n",
              run.fall_off_from_cache      ? "read from the cache"
              : run.fall_off_cache.empty() ? "driven"
@@ -73,7 +89,10 @@ int RunRace(RaceArgs a) {
              run.fall_off_seconds, run.plan_seconds);
   if (!run.cache_warning.empty()) fmt::print(stderr, "warning: {}\n", run.cache_warning);
   if (!a.json.empty()) {
-    WriteJsonFile(a.json, race::RaceJson(run, a.run.cautions));
+    nlohmann::json j = race::RaceJson(run, a.run.cautions);
+    j["spot_checks"] =
+        spot_ages.empty() ? nlohmann::json(nullptr) : runs::RaceSpotChecksJson(spots);
+    WriteJsonFile(a.json, j);
     fmt::print("wrote {}\n", a.json);
   }
   if (!a.report.empty()) {
@@ -139,6 +158,12 @@ CommandRunner RegisterRaceCommand(CLI::App& app) {
                   "burn rounded up)")
       ->capture_default_str();
   sub->add_option("--step-m", args->step_m, "Road spacing of the QSS laps, m")
+      ->capture_default_str();
+  sub->add_option("--spot-checks", args->spot_checks,
+                  "Ages of the set (laps on it, e.g. 2,30,59) at which to solve the optimal lap "
+                  "from the fall-off's state, against its QSS lap");
+  sub->add_option("--spot-check-step-m", args->spot_check_step_m,
+                  "Mesh of the spot checks' optimal laps, m")
       ->capture_default_str();
   sub->add_option("--cache-dir", args->cache_dir,
                   "Keep the fall-off here, keyed by the car's files, the track and the settings "

@@ -137,6 +137,16 @@ bool ReadCache(const vehicle::Car& car, std::span<const sim::RoadPoint> road,
 
 }  // namespace
 
+sim::QssOptions FallOffQssOptions(const vehicle::Car& car, double track_length_m,
+                                  const RaceRunOptions& o) {
+  sim::QssOptions qss;
+  qss.track_length = track_length_m;
+  qss.ambient_temp = o.ambient_temp;
+  qss.track_temp = o.track_temp;
+  qss.initial = sim::CarStartState(car);  // a new set from the pit-out state
+  return qss;
+}
+
 RaceRun RunRace(const vehicle::Car& car, double track_length_m,
                 std::span<const sim::RoadPoint> road, const RaceRunOptions& o) {
   CheckRaceRules(o.rules);
@@ -153,11 +163,7 @@ RaceRun RunRace(const vehicle::Car& car, double track_length_m,
   if (o.policy) CheckPolicyOptions(o.policy_options);
   vehicle::RequireVehicle(car, "a race plan");
   const auto started = std::chrono::steady_clock::now();
-  sim::QssOptions qss;
-  qss.track_length = track_length_m;
-  qss.ambient_temp = o.ambient_temp;
-  qss.track_temp = o.track_temp;
-  qss.initial = sim::CarStartState(car);  // a new set from the pit-out state
+  const sim::QssOptions qss = FallOffQssOptions(car, track_length_m, o);
   RaceRun run;
   run.rules = o.rules;
   // A caution as the Monte Carlo drives it, after a third of the laps (at most 20) on the set.

@@ -75,6 +75,11 @@ struct RaceRun {
   double plan_seconds = 0.0;             ///< wall time of the plans
 };
 
+/// The QSS options the fall-off's laps run with: from the car's pit-out state on new tyres, the
+/// options' weather.
+sim::QssOptions FallOffQssOptions(const vehicle::Car& car, double track_length_m,
+                                  const RaceRunOptions& options);
+
 /// The run. InputError for bad rules or options (before any lap is driven).
 RaceRun RunRace(const vehicle::Car& car, double track_length_m,
                 std::span<const sim::RoadPoint> road, const RaceRunOptions& options);

@@ -1,0 +1,120 @@
+#include "hotlap/runs/race_spot_checks.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include <fmt/format.h>
+
+#include "hotlap/common/error.h"
+#include "hotlap/common/json_output.h"
+#include "hotlap/ocp/optimal_lap.h"
+#include "hotlap/sim/replay.h"
+
+namespace hotlap::runs {
+
+std::vector<int> ParseSpotCheckAges(const std::string& text, int fall_off_laps,
+                                    std::string_view option) {
+  std::vector<int> ages;
+  if (text.empty()) return ages;
+  size_t at = 0;
+  while (at <= text.size()) {
+    const size_t comma = std::min(text.find(',', at), text.size());
+    const std::string item = text.substr(at, comma - at);
+    int age = -1;
+    try {
+      size_t used = 0;
+      age = std::stoi(item, &used);
+      if (used != item.size()) age = -1;
+    } catch (const std::exception&) {
+    }
+    if (age < 0 || age >= fall_off_laps || (!ages.empty() && age <= ages.back())) {
+      throw InputError(fmt::format(
+          "{} '{}': ages (laps on the set) increasing, each in [0, {}] (the fall-off's laps)",
+          option, text, fall_off_laps - 1));
+    }
+    ages.push_back(age);
+    at = comma + 1;
+  }
+  return ages;
+}
+
+RaceSpotChecks RunRaceSpotChecks(const vehicle::Car& car, const track::Track& track,
+                                 std::span<const sim::RoadPoint> road, const sim::QssOptions& qss,
+                                 const race::FallOff& fall_off, const std::vector<int>& ages,
+                                 double step_m,
+                                 const std::function<void(const std::string&)>& progress) {
+  const auto started = std::chrono::steady_clock::now();
+  RaceSpotChecks out;
+  out.step_m = step_m;
+  if (ages.empty()) return out;
+  if (ages.back() >= static_cast<int>(fall_off.lap_time_s.size())) {
+    throw InputError(fmt::format("spot check at age {}: the fall-off has {} laps", ages.back(),
+                                 fall_off.lap_time_s.size()));
+  }
+  // The states the fall-off's laps reach: the same QSS laps again, as far as the oldest age.
+  sim::QssOptions laps = qss;
+  laps.laps = std::max(1, ages.back());
+  const sim::QssResult run = sim::RunQssLap(car, road, laps);
+  ocp::OptimalLapOptions o;
+  o.step_m = step_m;
+  o.ambient_temp = qss.ambient_temp;
+  o.track_temp = qss.track_temp;
+  o.thermal_start = ocp::ThermalStart::kCar;  // the guess's lap; its start replaced below
+  // The wear as states (its start is each age's), and each lap after the first started from the
+  // last one's solution: the laps differ only in the state they start from.
+  o.wear_in_programme = true;
+  ocp::LapWarmUp warm = ocp::RunLapWarmUp(car, track, o);
+  for (int age : ages) {
+    if (progress) progress(fmt::format("the optimal lap at age {} (a {:g} m mesh)", age, step_m));
+    warm.start = age == 0 ? qss.initial : sim::EndState(run.laps[age - 1].thermal);
+    const ocp::OptimalLapRun lap = ocp::RunOptimalLap(car, track, o, &warm);
+    if (lap.solution.solve.ok()) o.start_point = lap.solution.solve.x;
+    out.checks.push_back({.age = age,
+                          .qss_lap_time_s = fall_off.lap_time_s[age],
+                          .optimal_lap_time_s = lap.solution.lap_time,
+                          .converged = lap.solution.solve.ok(),
+                          .iterations = lap.coarse.iterations + lap.solution.solve.iterations});
+  }
+  out.qss_fall_off_s = out.checks.back().qss_lap_time_s - out.checks.front().qss_lap_time_s;
+  out.optimal_fall_off_s =
+      out.checks.back().optimal_lap_time_s - out.checks.front().optimal_lap_time_s;
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return out;
+}
+
+nlohmann::json RaceSpotChecksJson(const RaceSpotChecks& c) {
+  nlohmann::json checks = nlohmann::json::array();
+  for (const RaceSpotCheck& s : c.checks) {
+    checks.push_back({{"age_laps", s.age},
+                      {"qss_lap_time_s", RoundSignificant(s.qss_lap_time_s)},
+                      {"optimal_lap_time_s", RoundSignificant(s.optimal_lap_time_s)},
+                      {"difference_s", RoundSignificant(s.qss_lap_time_s - s.optimal_lap_time_s)},
+                      {"converged", s.converged},
+                      {"iterations", s.iterations}});
+  }
+  return {{"step_m", c.step_m},
+          {"checks", checks},
+          {"qss_fall_off_s", RoundSignificant(c.qss_fall_off_s)},
+          {"optimal_fall_off_s", RoundSignificant(c.optimal_fall_off_s)}};
+}
+
+std::string RaceSpotChecksText(const RaceSpotChecks& c) {
+  if (c.checks.empty()) return "";
+  std::string out = fmt::format(
+      "optimal-lap spot checks (the minimum-time lap from the QSS laps' state at each age, {:g} m "
+      "mesh):\n    age       QSS   optimal  QSS - optimal\n",
+      c.step_m);
+  for (const RaceSpotCheck& s : c.checks) {
+    out += fmt::format("  {:>5} {:>9.3f} {:>9.3f} {:>+14.3f}{}\n", s.age, s.qss_lap_time_s,
+                       s.optimal_lap_time_s, s.qss_lap_time_s - s.optimal_lap_time_s,
+                       s.converged ? "" : "  (not converged)");
+  }
+  if (c.checks.size() > 1) {
+    out += fmt::format(
+        "  from age {} to {}: the QSS laps fall off {:+.3f} s, the optimal laps {:+.3f} s\n",
+        c.checks.front().age, c.checks.back().age, c.qss_fall_off_s, c.optimal_fall_off_s);
+  }
+  return out;
+}
+
+}  // namespace hotlap::runs
