@@ -120,9 +120,8 @@ int RunLap(const LapArgs& a) {
   const runs::LapFiles files = runs::WriteLapFiles(a.out, run, a.run, car, track);
   fmt::print("wrote {} and {} in {:.2f} s\n", files.csv.string(), files.html.string(), elapsed);
   if (!a.json.empty()) {
-    WriteJsonFile(a.json,
-                  sim::StintJson(run.stint, track, car, files.csv.string(), files.html.string()));
-    fmt::print("wrote {}\n", a.json);
+    WriteJsonFileAndSay(
+        a.json, sim::StintJson(run.stint, track, car, files.csv.string(), files.html.string()));
   }
   return 0;
 }

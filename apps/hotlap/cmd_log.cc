@@ -40,10 +40,7 @@ int RunLogInfo(const LogArgs& a) {
   (void)Telemetry::FromTable(log.table);
   const LogInfo info = DescribeLog(log);
   PrintLogInfo(std::cout, info);
-  if (!a.json.empty()) {
-    WriteJsonFile(a.json, LogInfoJson(info));
-    fmt::print("wrote {}\n", a.json);
-  }
+  if (!a.json.empty()) WriteJsonFileAndSay(a.json, LogInfoJson(info));
   return 0;
 }
 

@@ -83,8 +83,7 @@ int RunStint(const StintArgs& a) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   fmt::print("done in {:.1f} s\n", elapsed);
   if (!a.json.empty()) {
-    WriteJsonFile(a.json, ocp::StintJson(r, o, track.name(), car, elapsed));
-    fmt::print("wrote {}\n", a.json);
+    WriteJsonFileAndSay(a.json, ocp::StintJson(r, o, track.name(), car, elapsed));
   }
   return r.ok() ? 0 : 3;
 }

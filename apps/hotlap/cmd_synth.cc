@@ -39,9 +39,9 @@ int RunSynth(const SynthArgs& a) {
   fmt::print("{}", runs::SynthRunText(run, car, track));
   fmt::print("wrote {}\n", a.out);
   if (!a.json.empty()) {
-    WriteJsonFile(a.json, sim::SynthJson(run.log, run.options, car,
-                                         {track.name(), params, a.out, run.process_noise_file}));
-    fmt::print("wrote {}\n", a.json);
+    WriteJsonFileAndSay(a.json,
+                        sim::SynthJson(run.log, run.options, car,
+                                       {track.name(), params, a.out, run.process_noise_file}));
   }
   return 0;
 }

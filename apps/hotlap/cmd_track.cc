@@ -92,10 +92,7 @@ int RunTrackInfo(const TrackInfoArgs& a) {
     track::WriteRibbonCsv(a.out, file, a.step_m);
     fmt::print("wrote {}\n", a.out);
   }
-  if (!a.json.empty()) {
-    WriteJsonFile(a.json, track::TrackInfoJson(file, s, options, a.out));
-    fmt::print("wrote {}\n", a.json);
-  }
+  if (!a.json.empty()) WriteJsonFileAndSay(a.json, track::TrackInfoJson(file, s, options, a.out));
   return 0;
 }
 

@@ -116,10 +116,7 @@ int RunEval(const EvalArgs& a) {
         model.kind(), model.name, g.points, g.peak_abs_fx, g.peak_abs_fy, g.peak_abs_mz, a.out);
     tyre::AddTyreGridJson(summary, g, a.out);
   }
-  if (!a.json.empty()) {
-    WriteJsonFile(a.json, summary);
-    fmt::print("wrote {}\n", a.json);
-  }
+  if (!a.json.empty()) WriteJsonFileAndSay(a.json, summary);
   return 0;
 }
 

@@ -82,9 +82,8 @@ int RunFitUniTire(const FitArgs& a) {
   }
   fmt::print("wrote {}\n", a.out);
   if (!a.json.empty()) {
-    WriteJsonFile(a.json,
-                  ident::UniTireFitJson(fit, a.data, a.out, a.predict_temps_C, a.temp_tolerance_K));
-    fmt::print("wrote {}\n", a.json);
+    WriteJsonFileAndSay(
+        a.json, ident::UniTireFitJson(fit, a.data, a.out, a.predict_temps_C, a.temp_tolerance_K));
   }
   return fit.converged ? 0 : 3;
 }
@@ -148,10 +147,7 @@ int RunFitMagicFormula(const FitArgs& a) {
                   HOTLAP_VERSION, std::filesystem::path(a.data).filename().string(),
                   fmt::join(fit.fitted_coefficients, " ")));
   fmt::print("wrote {}\n", a.out);
-  if (!a.json.empty()) {
-    WriteJsonFile(a.json, ident::MagicFormulaFitJson(fit, a.data, a.out));
-    fmt::print("wrote {}\n", a.json);
-  }
+  if (!a.json.empty()) WriteJsonFileAndSay(a.json, ident::MagicFormulaFitJson(fit, a.data, a.out));
   if (!fit.plausibility.passed) {
     std::fprintf(stderr, "hotlap: the fitted tyre is not physically plausible: %s\n",
                  fmt::format("{}", fmt::join(fit.plausibility.failures, "; ")).c_str());

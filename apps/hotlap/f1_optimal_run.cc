@@ -52,8 +52,7 @@ int RunF1Optimal(const OptimalArgs& a, const fs::path& car_file) {
   ocp::WriteF1LapCsv(csv, s, track, car);
   fmt::print("wrote {}\n", csv.string());
   if (!a.json.empty()) {
-    WriteJsonFile(a.json, ocp::F1LapJson(s, track.name(), car.name, o.mesh_points));
-    fmt::print("wrote {}\n", a.json);
+    WriteJsonFileAndSay(a.json, ocp::F1LapJson(s, track.name(), car.name, o.mesh_points));
   }
   const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -4,12 +4,19 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include <fmt/format.h>
+
 #include "hotlap/common/atomic_file.h"
 
 namespace hotlap {
 
 void WriteJsonFile(const std::filesystem::path& path, const nlohmann::json& json) {
   WriteFileAtomically(path, [&](std::ostream& out) { out << json.dump(2) << '\n'; });
+}
+
+void WriteJsonFileAndSay(const std::filesystem::path& path, const nlohmann::json& json) {
+  WriteJsonFile(path, json);
+  fmt::print("wrote {}\n", path.string());
 }
 
 double RoundSignificant(double x, int digits) {

@@ -13,6 +13,9 @@ namespace hotlap {
 /// Writes `json` (pretty-printed, two spaces, a final newline) to `path` atomically.
 void WriteJsonFile(const std::filesystem::path& path, const nlohmann::json& json);
 
+/// WriteJsonFile, then `wrote PATH` on standard output (the commands' `--json`).
+void WriteJsonFileAndSay(const std::filesystem::path& path, const nlohmann::json& json);
+
 /// Rounds to `digits` significant digits for JSON (keeps summaries readable, enough for checks);
 /// zero, infinities and NaN as they are.
 double RoundSignificant(double x, int digits = 9);

@@ -182,6 +182,132 @@ int MotecLapAt(double t, const std::vector<double>& beacons) {
          static_cast<int>(std::upper_bound(beacons.begin(), beacons.end(), t) - beacons.begin());
 }
 
+namespace {
+
+void CheckWidth(const Record& record, std::string_view what, const Record& names,
+                const std::string& file) {
+  const size_t width = names.cells.size();
+  if (record.cells.size() != width) {
+    throw InputError(fmt::format("{}:{}: {} has {} cells, but the channel names row (line {}) {}",
+                                 file, record.line, what, record.cells.size(), names.line, width));
+  }
+}
+
+// The units row under the channel names row records[r], which must have data rows under it.
+const Record& UnitsRow(const std::vector<Record>& records, size_t r, const std::string& file) {
+  const Record& names = records[r];
+  if (r + 1 == records.size()) {
+    throw InputError(fmt::format("{}:{}: no units row under the channel names", file, names.line));
+  }
+  const Record& units = records[r + 1];
+  // A units row of numbers only is a data row: the units row is missing.
+  if (std::all_of(units.cells.begin(), units.cells.end(),
+                  [](const std::string& c) { return c.empty() || ParseNumber(c); })) {
+    throw InputError(fmt::format(
+        "{}:{}: expected the units row (\"s\",\"km/h\",...) under the channel names (line {}), "
+        "found numbers",
+        file, units.line, names.line));
+  }
+  CheckWidth(units, "the units row", names, file);
+  if (r + 2 == records.size()) {
+    throw InputError(fmt::format("{}:{}: no data rows under the units row", file, units.line));
+  }
+  return units;
+}
+
+// The channels' names: each named, no two the same.
+std::vector<std::string> ChannelNames(const Record& names, const std::string& file) {
+  const size_t width = names.cells.size();
+  std::vector<std::string> channel_names(width);
+  for (size_t c = 0; c < width; ++c) {
+    channel_names[c] = names.cells[c];
+    if (channel_names[c].empty()) {
+      throw InputError(fmt::format("{}:{}: channel {} has no name", file, names.line, c + 1));
+    }
+    for (size_t d = 0; d < c; ++d) {
+      if (channel_names[d] == channel_names[c]) {
+        throw InputError(fmt::format("{}:{}: channel '{}' (column {}) is also column {}", file,
+                                     names.line, channel_names[c], c + 1, d + 1));
+      }
+    }
+  }
+  return channel_names;
+}
+
+// The data rows from records[first] on into table's values (converted by the plans). An unmapped
+// channel with text in it (a gear shown as "N") cannot be carried as numbers: it is marked in
+// the result, to be left out; a mapped one's text is an error.
+std::vector<bool> ReadDataRows(const std::vector<Record>& records, size_t first,
+                               const Record& names, const std::vector<std::string>& channel_names,
+                               const std::vector<MotecChannelPlan>& plans, const std::string& file,
+                               CsvTable& table) {
+  const size_t width = names.cells.size();
+  table.values.assign(width, {});
+  std::vector<bool> text_channel(width, false);
+  for (size_t d = first; d < records.size(); ++d) {
+    const Record& row = records[d];
+    CheckWidth(row, "this row", names, file);
+    for (size_t c = 0; c < width; ++c) {
+      double value = kNaN;
+      if (!row.cells[c].empty()) {
+        const std::optional<double> number = ParseNumber(row.cells[c]);
+        if (!number && plans[c].entry == nullptr && c > 0) {
+          text_channel[c] = true;
+          table.values[c].push_back(kNaN);
+          continue;
+        }
+        if (!number) {
+          throw InputError(fmt::format("{}:{}: channel '{}' (column {}): '{}' is not a number",
+                                       file, row.line, channel_names[c], c + 1, row.cells[c]));
+        }
+        value = plans[c].entry != nullptr ? plans[c].conversion.Apply(*number) : *number;
+      }
+      table.values[c].push_back(value);
+    }
+    table.line_numbers.push_back(row.line);
+  }
+  return text_channel;
+}
+
+// Leaves the text channels out (and off the unmapped list); returns their names.
+std::string DropTextChannels(const std::vector<bool>& text_channel,
+                             const std::vector<std::string>& channel_names, MotecTable& out,
+                             std::vector<std::string>& unmapped) {
+  CsvTable& table = out.table;
+  std::string dropped;
+  for (size_t c = text_channel.size(); c-- > 0;) {
+    if (!text_channel[c]) continue;
+    dropped = channel_names[c] + (dropped.empty() ? "" : ", ") + dropped;
+    table.columns.erase(table.columns.begin() + static_cast<std::ptrdiff_t>(c));
+    table.values.erase(table.values.begin() + static_cast<std::ptrdiff_t>(c));
+    out.channels.erase(out.channels.begin() + static_cast<std::ptrdiff_t>(c));
+    const auto it = std::find(unmapped.begin(), unmapped.end(), channel_names[c]);
+    if (it != unmapped.end()) unmapped.erase(it);
+  }
+  return dropped;
+}
+
+// Lap numbers from the beacons, by the logged time: the "lap" column; returns the last lap.
+int AddLapColumn(const std::vector<double>& beacons, const std::string& file, CsvTable& table) {
+  std::vector<double> laps;
+  int last_lap = 0;
+  for (size_t i = 0; i < table.line_numbers.size(); ++i) {
+    const double t = table.values[0][i];
+    if (std::isnan(t)) {
+      throw InputError(
+          fmt::format("{}:{}: channel 'Time' (column 1) is empty", file, table.line_numbers[i]));
+    }
+    const int lap = MotecLapAt(t, beacons);  // Time is converted to s
+    laps.push_back(lap);
+    last_lap = std::max(last_lap, lap);
+  }
+  table.columns.push_back("lap");
+  table.values.push_back(std::move(laps));
+  return last_lap;
+}
+
+}  // namespace
+
 MotecTable ReadMotecCsv(const std::filesystem::path& path, const MotecChannelMap& map) {
   const std::string file = path.string();
   const std::vector<Record> records = ReadRecords(path);
@@ -202,45 +328,11 @@ MotecTable ReadMotecCsv(const std::filesystem::path& path, const MotecChannelMap
         file));
   }
   const Record& names = records[r];
-  if (r + 1 == records.size()) {
-    throw InputError(fmt::format("{}:{}: no units row under the channel names", file, names.line));
-  }
-  const Record& units = records[r + 1];
+  const Record& units = UnitsRow(records, r, file);
   const size_t width = names.cells.size();
-  auto check_width = [&](const Record& record, std::string_view what) {
-    if (record.cells.size() != width) {
-      throw InputError(fmt::format("{}:{}: {} has {} cells, but the channel names row (line {}) {}",
-                                   file, record.line, what, record.cells.size(), names.line,
-                                   width));
-    }
-  };
-  // A units row of numbers only is a data row: the units row is missing.
-  if (std::all_of(units.cells.begin(), units.cells.end(),
-                  [](const std::string& c) { return c.empty() || ParseNumber(c); })) {
-    throw InputError(fmt::format(
-        "{}:{}: expected the units row (\"s\",\"km/h\",...) under the channel names (line {}), "
-        "found numbers",
-        file, units.line, names.line));
-  }
-  check_width(units, "the units row");
-  if (r + 2 == records.size()) {
-    throw InputError(fmt::format("{}:{}: no data rows under the units row", file, units.line));
-  }
 
   // Which channel becomes which column (PlanMotecChannels).
-  std::vector<std::string> channel_names(width);
-  for (size_t c = 0; c < width; ++c) {
-    channel_names[c] = names.cells[c];
-    if (channel_names[c].empty()) {
-      throw InputError(fmt::format("{}:{}: channel {} has no name", file, names.line, c + 1));
-    }
-    for (size_t d = 0; d < c; ++d) {
-      if (channel_names[d] == channel_names[c]) {
-        throw InputError(fmt::format("{}:{}: channel '{}' (column {}) is also column {}", file,
-                                     names.line, channel_names[c], c + 1, d + 1));
-      }
-    }
-  }
+  const std::vector<std::string> channel_names = ChannelNames(names, file);
   const std::vector<MotecChannelPlan> plans =
       PlanMotecChannels(channel_names, units.cells, map, [&](size_t c) {
         return fmt::format("{}:{}: channel '{}' (column {})", file, units.line, channel_names[c],
@@ -253,59 +345,10 @@ MotecTable ReadMotecCsv(const std::filesystem::path& path, const MotecChannelMap
     out.channels.push_back({channel_names[c], units.cells[c], std::nan(""), 0});
   }
 
-  // Data rows. An unmapped channel with text in it (a gear shown as "N") cannot be carried as
-  // numbers: it is left out, and the metadata says so; a mapped one's text is an error.
-  table.values.assign(width, {});
-  std::vector<bool> text_channel(width, false);
-  for (size_t d = r + 2; d < records.size(); ++d) {
-    const Record& row = records[d];
-    check_width(row, "this row");
-    for (size_t c = 0; c < width; ++c) {
-      double value = kNaN;
-      if (!row.cells[c].empty()) {
-        const std::optional<double> number = ParseNumber(row.cells[c]);
-        if (!number && plans[c].entry == nullptr && c > 0) {
-          text_channel[c] = true;
-          table.values[c].push_back(kNaN);
-          continue;
-        }
-        if (!number) {
-          throw InputError(fmt::format("{}:{}: channel '{}' (column {}): '{}' is not a number",
-                                       file, row.line, channel_names[c], c + 1, row.cells[c]));
-        }
-        value = plans[c].entry != nullptr ? plans[c].conversion.Apply(*number) : *number;
-      }
-      table.values[c].push_back(value);
-    }
-    table.line_numbers.push_back(row.line);
-  }
-
-  std::string dropped;
-  for (size_t c = width; c-- > 0;) {
-    if (!text_channel[c]) continue;
-    dropped = channel_names[c] + (dropped.empty() ? "" : ", ") + dropped;
-    table.columns.erase(table.columns.begin() + static_cast<std::ptrdiff_t>(c));
-    table.values.erase(table.values.begin() + static_cast<std::ptrdiff_t>(c));
-    out.channels.erase(out.channels.begin() + static_cast<std::ptrdiff_t>(c));
-    const auto it = std::find(unmapped.begin(), unmapped.end(), channel_names[c]);
-    if (it != unmapped.end()) unmapped.erase(it);
-  }
-
-  // Lap numbers from the beacons, by the logged time.
-  std::vector<double> laps;
-  int last_lap = 0;
-  for (size_t i = 0; i < table.line_numbers.size(); ++i) {
-    const double t = table.values[0][i];
-    if (std::isnan(t)) {
-      throw InputError(
-          fmt::format("{}:{}: channel 'Time' (column 1) is empty", file, table.line_numbers[i]));
-    }
-    const int lap = MotecLapAt(t, beacons);  // Time is converted to s
-    laps.push_back(lap);
-    last_lap = std::max(last_lap, lap);
-  }
-  table.columns.push_back("lap");
-  table.values.push_back(std::move(laps));
+  const std::vector<bool> text_channel =
+      ReadDataRows(records, r + 2, names, channel_names, plans, file, table);
+  const std::string dropped = DropTextChannels(text_channel, channel_names, out, unmapped);
+  const int last_lap = AddLapColumn(beacons, file, table);
   table.metadata.emplace_back("laps", std::to_string(last_lap));
   if (!unmapped.empty()) {
     std::string list;

@@ -171,7 +171,6 @@ struct Builder {
     hs = options.collocation == Collocation::kHermiteSimpson;
     intervals = LapNodeCount(track, options.step_m, options.collocation) - 1;
     ds = track.length_m() / intervals;
-    const double wheel_power = p.powertrain.WheelPower();
     max_brake_force = options.max_brake_force > 0.0 ? options.max_brake_force : 2.0 * p.Weight();
     for (int k = 0; k <= intervals; ++k) {
       const double s = std::min(k * ds, track.length_m());
@@ -184,107 +183,130 @@ struct Builder {
       };
       const double speed = std::max(at(guess.speed), 10.0);
       NodeVars nv;
-      // Mechanical states.
-      nv.u = nlp.AddVariable(speed, 5.0, 150.0, 50.0);
-      nv.v = nlp.AddVariable(0.0, -20.0, 20.0, 1.0);
-      nv.r = nlp.AddVariable(speed * roads.back().kappa_g(), -3.0, 3.0, 0.3);
-      const double n_max = tp.width_left_m - options.car_half_width;
-      const double n_min = -(tp.width_right_m - options.car_half_width);
-      if (!(n_max > n_min)) {
-        throw InputError(
-            fmt::format("optimal lap: the track at {:.0f} m is narrower than the car ({:.2f} m)", s,
-                        2.0 * options.car_half_width));
-      }
-      nv.n = nlp.AddVariable(std::clamp(at(guess.offset), n_min, n_max), n_min, n_max, 5.0);
-      // Heading error of the guess's line: atan(dn/ds) (the offset's slope).
-      const double dn = (Sample(guess.centre_distance, guess.offset,
-                                std::min(g_s + 1.0, guess.centre_distance.back())) -
-                         Sample(guess.centre_distance, guess.offset, std::max(g_s - 1.0, 0.0))) /
-                        2.0;
-      nv.xi = nlp.AddVariable(std::atan(dn), -1.0, 1.0, 0.05);
-      // Thermal states: the start's fixed (unless periodic), the rest from the QSS replay.
-      for (int c = 0; c < 4; ++c) {
-        const sim::CornerHistory& h = guess.thermal.corners[c];
-        const bool fix = k == 0 && !options.periodic_thermal;
-        const auto state = [&](const std::vector<double>& hist, double start, double lo, double hi,
-                               double scale, bool in_programme = true,
-                               std::optional<bool> fixed_start = std::nullopt) {
-          const double value = k == 0 ? start : Sample(guess.centre_distance, hist, g_s);
-          // A state left out of the programme is a fixed variable: Ipopt leaves it out of its
-          // programme, and it is integrated after the solve (IntegrateBrakesLeftOut,
-          // IntegrateWearLeftOut).
-          if (!in_programme) return nlp.AddVariable(value, value, value, scale);
-          const bool fixed = fixed_start.value_or(fix);
-          return nlp.AddVariable(value, fixed ? start : lo, fixed ? start : hi, scale);
-        };
-        nv.tread[c] = state(h.tread_temp, options.initial.tyres[c].tread_temp, 200.0, 800.0, 100.0);
-        nv.carcass[c] =
-            state(h.carcass_temp, options.initial.tyres[c].carcass_temp, 200.0, 800.0, 100.0);
-        // The wear starts at `initial` even on a periodic lap: it only grows.
-        nv.wear[c] = state(h.wear, options.initial.tyres[c].wear, 0.0, 50.0, 0.01,
-                           options.wear_in_programme, k == 0);
-        double disc_hi = 2000.0;
-        if (options.front_disc_limit && IsFront(kAllCorners[c]))
-          disc_hi = *options.front_disc_limit;
-        const bool in = brake_in_programme[c];
-        nv.disc[c] =
-            state(h.disc_temp, options.initial.brakes[c].disc_temp, 200.0, disc_hi, 100.0, in);
-        if (!fix && in) {
-          nlp.set_initial(nv.disc[c], std::min(nlp.initial(nv.disc[c]), disc_hi - 1.0));
-        }
-        nv.calliper[c] = state(h.calliper_temp, options.initial.brakes[c].calliper_temp, 200.0,
-                               2000.0, 100.0, in);
-      }
+      AddMechanicalStates(s, tp, g_s, speed, at, nv);
+      AddThermalStates(k, g_s, nv);
       // Controls from the QSS lap's forces.
       double total_fx = 0.0;
       for (int c = 0; c < 4; ++c) total_fx += at(guess.corners[c].fx);
-      nv.steer = nlp.AddVariable(at(guess.steer), -0.5, 0.5, 0.05);
-      // The pedal: the QSS lap's drive power or braking force as a fraction of its range.
-      const double power0 = std::clamp(total_fx * speed, 0.0, wheel_power);
-      const double brake0 = std::clamp(-total_fx, 0.0, max_brake_force);
-      const double pedal0 = power0 > 0.0 ? power0 / wheel_power : -brake0 / max_brake_force;
-      const bool pedal = !options.independent_drive_and_brake;
-      nv.pedal = nlp.AddVariable(pedal ? pedal0 : 0.0, pedal ? -1.0 : 0.0, pedal ? 1.0 : 0.0, 0.5);
-      const internal::PedalSplitFn split = Split();
-      // Their range is the pedal's, bounds of their own none: pos() > 0 keeps them positive, and
-      // a bound would nearly coincide with the pedal's (the upper) or with the defining equation
-      // (the lower: off the pedal, P = P_max eps^2 / (4 |p|) is a few watts above 0). Nearly
-      // parallel active constraints drive Ipopt's multipliers to 1e15 and stall the solve.
-      const double lo = pedal ? -kInf : 0.0;
-      nv.power = nlp.AddVariable(wheel_power * split.Pos(pedal0, split.eps), lo,
-                                 pedal ? kInf : wheel_power, 2e5);
-      nv.brake = nlp.AddVariable(max_brake_force * split.Pos(-pedal0, split.eps), lo,
-                                 pedal ? kInf : max_brake_force, 1e4);
-      // Algebraic variables.
-      const double r_mean = 0.5 * (p.corner(Corner::kRearLeft).rolling_radius +
-                                   p.corner(Corner::kRearRight).rolling_radius);
-      for (int c = 0; c < 4; ++c) {
-        const sim::CornerChannels& ch = guess.corners[c];
-        nv.kappa[c] = nlp.AddVariable(at(ch.slip_ratio), -0.6, 0.6, 0.05);
-        nv.alpha[c] = nlp.AddVariable(
-            std::clamp(at(ch.slip_angle), -options.max_slip_angle, options.max_slip_angle),
-            -options.max_slip_angle, options.max_slip_angle, 0.05);
-        nv.vx[c] = nlp.AddVariable(at(ch.speed), 1.0, 160.0, 50.0);
-        nv.fz[c] = nlp.AddVariable(at(ch.fz), 0.0, 40000.0, 5000.0);
-        nv.fx[c] = nlp.AddVariable(at(ch.fx), -40000.0, 40000.0, 5000.0);
-        nv.fy[c] = nlp.AddVariable(at(ch.fy), -40000.0, 40000.0, 5000.0);
-      }
-      {
-        const sim::CornerChannels& rl = guess.corners[CornerIndex(Corner::kRearLeft)];
-        const double axle = (1.0 + at(rl.slip_ratio)) * at(rl.speed) /
-                                p.corner(Corner::kRearLeft).rolling_radius * r_mean / speed -
-                            1.0;
-        nv.kappa_axle = nlp.AddVariable(axle, -0.6, 0.6, 0.05);
-      }
-      double fy_total = 0.0;
-      for (int c = 0; c < 4; ++c) fy_total += at(guess.corners[c].fy);
-      nv.sum_fx = nlp.AddVariable(total_fx, -kInf, kInf, 1e4);
-      nv.sum_fy = nlp.AddVariable(fy_total, -kInf, kInf, 1e4);
-      nv.yaw_moment = nlp.AddVariable(0.0, -kInf, kInf, 1e4);
-      nv.w = nlp.AddVariable(1.0 / speed, 1.0 / 150.0, 1.0 / 3.0, 0.015);
+      AddControls(speed, total_fx, at, nv);
+      AddAlgebraicVariables(speed, total_fx, at, nv);
       if (wheel_states) AddWheelVariables(k, nv, at);
       nodes.push_back(nv);
     }
+  }
+
+  // A node's mechanical states at distance s (track point tp, the guess's g_s), from the guess.
+  template <class At>
+  void AddMechanicalStates(double s, const track::TrackPoint& tp, double g_s, double speed,
+                           const At& at, NodeVars& nv) {
+    nv.u = nlp.AddVariable(speed, 5.0, 150.0, 50.0);
+    nv.v = nlp.AddVariable(0.0, -20.0, 20.0, 1.0);
+    nv.r = nlp.AddVariable(speed * roads.back().kappa_g(), -3.0, 3.0, 0.3);
+    const double n_max = tp.width_left_m - options.car_half_width;
+    const double n_min = -(tp.width_right_m - options.car_half_width);
+    if (!(n_max > n_min)) {
+      throw InputError(
+          fmt::format("optimal lap: the track at {:.0f} m is narrower than the car ({:.2f} m)", s,
+                      2.0 * options.car_half_width));
+    }
+    nv.n = nlp.AddVariable(std::clamp(at(guess.offset), n_min, n_max), n_min, n_max, 5.0);
+    // Heading error of the guess's line: atan(dn/ds) (the offset's slope).
+    const double dn = (Sample(guess.centre_distance, guess.offset,
+                              std::min(g_s + 1.0, guess.centre_distance.back())) -
+                       Sample(guess.centre_distance, guess.offset, std::max(g_s - 1.0, 0.0))) /
+                      2.0;
+    nv.xi = nlp.AddVariable(std::atan(dn), -1.0, 1.0, 0.05);
+  }
+
+  // Node k's thermal states: the start's fixed (unless periodic), the rest from the QSS replay
+  // (at the guess's distance g_s).
+  void AddThermalStates(int k, double g_s, NodeVars& nv) {
+    for (int c = 0; c < 4; ++c) {
+      const sim::CornerHistory& h = guess.thermal.corners[c];
+      const bool fix = k == 0 && !options.periodic_thermal;
+      const auto state = [&](const std::vector<double>& hist, double start, double lo, double hi,
+                             double scale, bool in_programme = true,
+                             std::optional<bool> fixed_start = std::nullopt) {
+        const double value = k == 0 ? start : Sample(guess.centre_distance, hist, g_s);
+        // A state left out of the programme is a fixed variable: Ipopt leaves it out of its
+        // programme, and it is integrated after the solve (IntegrateBrakesLeftOut,
+        // IntegrateWearLeftOut).
+        if (!in_programme) return nlp.AddVariable(value, value, value, scale);
+        const bool fixed = fixed_start.value_or(fix);
+        return nlp.AddVariable(value, fixed ? start : lo, fixed ? start : hi, scale);
+      };
+      nv.tread[c] = state(h.tread_temp, options.initial.tyres[c].tread_temp, 200.0, 800.0, 100.0);
+      nv.carcass[c] =
+          state(h.carcass_temp, options.initial.tyres[c].carcass_temp, 200.0, 800.0, 100.0);
+      // The wear starts at `initial` even on a periodic lap: it only grows.
+      nv.wear[c] = state(h.wear, options.initial.tyres[c].wear, 0.0, 50.0, 0.01,
+                         options.wear_in_programme, k == 0);
+      double disc_hi = 2000.0;
+      if (options.front_disc_limit && IsFront(kAllCorners[c])) disc_hi = *options.front_disc_limit;
+      const bool in = brake_in_programme[c];
+      nv.disc[c] =
+          state(h.disc_temp, options.initial.brakes[c].disc_temp, 200.0, disc_hi, 100.0, in);
+      if (!fix && in) {
+        nlp.set_initial(nv.disc[c], std::min(nlp.initial(nv.disc[c]), disc_hi - 1.0));
+      }
+      nv.calliper[c] =
+          state(h.calliper_temp, options.initial.brakes[c].calliper_temp, 200.0, 2000.0, 100.0, in);
+    }
+  }
+
+  // A node's controls from the QSS lap's forces (total_fx their sum).
+  template <class At>
+  void AddControls(double speed, double total_fx, const At& at, NodeVars& nv) {
+    const double wheel_power = p.powertrain.WheelPower();
+    nv.steer = nlp.AddVariable(at(guess.steer), -0.5, 0.5, 0.05);
+    // The pedal: the QSS lap's drive power or braking force as a fraction of its range.
+    const double power0 = std::clamp(total_fx * speed, 0.0, wheel_power);
+    const double brake0 = std::clamp(-total_fx, 0.0, max_brake_force);
+    const double pedal0 = power0 > 0.0 ? power0 / wheel_power : -brake0 / max_brake_force;
+    const bool pedal = !options.independent_drive_and_brake;
+    nv.pedal = nlp.AddVariable(pedal ? pedal0 : 0.0, pedal ? -1.0 : 0.0, pedal ? 1.0 : 0.0, 0.5);
+    const internal::PedalSplitFn split = Split();
+    // Their range is the pedal's, bounds of their own none: pos() > 0 keeps them positive, and
+    // a bound would nearly coincide with the pedal's (the upper) or with the defining equation
+    // (the lower: off the pedal, P = P_max eps^2 / (4 |p|) is a few watts above 0). Nearly
+    // parallel active constraints drive Ipopt's multipliers to 1e15 and stall the solve.
+    const double lo = pedal ? -kInf : 0.0;
+    nv.power = nlp.AddVariable(wheel_power * split.Pos(pedal0, split.eps), lo,
+                               pedal ? kInf : wheel_power, 2e5);
+    nv.brake = nlp.AddVariable(max_brake_force * split.Pos(-pedal0, split.eps), lo,
+                               pedal ? kInf : max_brake_force, 1e4);
+  }
+
+  // A node's algebraic variables: the tyres' slips, speeds and forces, the spool's slip and the
+  // force and moment sums, from the QSS lap (total_fx its longitudinal force).
+  template <class At>
+  void AddAlgebraicVariables(double speed, double total_fx, const At& at, NodeVars& nv) {
+    const double r_mean = 0.5 * (p.corner(Corner::kRearLeft).rolling_radius +
+                                 p.corner(Corner::kRearRight).rolling_radius);
+    for (int c = 0; c < 4; ++c) {
+      const sim::CornerChannels& ch = guess.corners[c];
+      nv.kappa[c] = nlp.AddVariable(at(ch.slip_ratio), -0.6, 0.6, 0.05);
+      nv.alpha[c] = nlp.AddVariable(
+          std::clamp(at(ch.slip_angle), -options.max_slip_angle, options.max_slip_angle),
+          -options.max_slip_angle, options.max_slip_angle, 0.05);
+      nv.vx[c] = nlp.AddVariable(at(ch.speed), 1.0, 160.0, 50.0);
+      nv.fz[c] = nlp.AddVariable(at(ch.fz), 0.0, 40000.0, 5000.0);
+      nv.fx[c] = nlp.AddVariable(at(ch.fx), -40000.0, 40000.0, 5000.0);
+      nv.fy[c] = nlp.AddVariable(at(ch.fy), -40000.0, 40000.0, 5000.0);
+    }
+    {
+      const sim::CornerChannels& rl = guess.corners[CornerIndex(Corner::kRearLeft)];
+      const double axle = (1.0 + at(rl.slip_ratio)) * at(rl.speed) /
+                              p.corner(Corner::kRearLeft).rolling_radius * r_mean / speed -
+                          1.0;
+      nv.kappa_axle = nlp.AddVariable(axle, -0.6, 0.6, 0.05);
+    }
+    double fy_total = 0.0;
+    for (int c = 0; c < 4; ++c) fy_total += at(guess.corners[c].fy);
+    nv.sum_fx = nlp.AddVariable(total_fx, -kInf, kInf, 1e4);
+    nv.sum_fy = nlp.AddVariable(fy_total, -kInf, kInf, 1e4);
+    nv.yaw_moment = nlp.AddVariable(0.0, -kInf, kInf, 1e4);
+    nv.w = nlp.AddVariable(1.0 / speed, 1.0 / 150.0, 1.0 / 3.0, 0.015);
   }
 
   // Node k's wheel states (rim, disc bulk: fixed at the start's value where the corner's model
@@ -973,92 +995,65 @@ LapMultipliers ResampleLapMultipliers(const SolveResult& solve, const LapLayout&
   return out;
 }
 
-LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& track,
-                                const LapProblemOptions& options, const sim::QssLap& guess,
-                                const IpoptOptions& ipopt, const SolveResult* solved) {
-  const VehicleParams& p = vehicle::RequireVehicle(car, "the optimal lap");
-  if (!(options.step_m > 0.0)) throw InputError("optimal lap: the mesh step must be > 0 m");
-  if (options.front_disc_limit && !options.periodic_thermal) {
-    RequireFrontDiscsWithinLimit(options.initial, *options.front_disc_limit);
+namespace {
+
+// A solve from a given point (options.start_point, as many values as variables): every variable
+// starts there, within its bounds.
+void ApplyStartPoint(const LapProblemOptions& options, Builder& b) {
+  if (static_cast<int>(options.start_point.size()) != b.nlp.variables()) {
+    throw InputError(fmt::format("optimal lap: a start point of {} values for {} variables",
+                                 options.start_point.size(), b.nlp.variables()));
   }
-  Builder b(car, p, track, options, guess);
-  b.Build();
-  if (!options.start_point.empty()) {
-    if (static_cast<int>(options.start_point.size()) != b.nlp.variables()) {
-      throw InputError(fmt::format("optimal lap: a start point of {} values for {} variables",
-                                   options.start_point.size(), b.nlp.variables()));
-    }
-    for (int i = 0; i < b.nlp.variables(); ++i) {
-      b.nlp.set_initial(i, std::clamp(options.start_point[i], b.nlp.lower(i), b.nlp.upper(i)));
-    }
-    if (!options.wear_in_programme) {
-      // The wear left out is frozen at the start's wear gained along the lap, added to this
-      // lap's own start (a saved lap may have started with other wear).
-      for (int c = 0; c < 4; ++c) {
-        const double shift =
-            options.initial.tyres[c].wear - options.start_point[b.nodes[0].wear[c]];
-        for (size_t k = 1; k < b.nodes.size(); ++k) {
-          const int i = b.nodes[k].wear[c];
-          const double v = std::max(0.0, options.start_point[i] + shift);
-          b.nlp.set_bounds(i, v, v);
-          b.nlp.set_initial(i, v);
-        }
-      }
-    }
-    if (!options.independent_drive_and_brake) {
-      // The pedal of the start's drive power and brake force (p = P / P_max - B / B_max, exact for
-      // a pedal solution, since pos(p) - pos(-p) = p; a start with both on gets the net of them).
-      const internal::PedalSplitFn split = b.Split();
-      for (const NodeVars& nv : b.nodes) {
-        const double pedal = std::clamp(b.nlp.initial(nv.power) / split.max_power -
-                                            b.nlp.initial(nv.brake) / split.max_brake_force,
-                                        -1.0, 1.0);
-        b.nlp.set_initial(nv.pedal, pedal);
-        b.nlp.set_initial(nv.power, split.max_power * split.Pos(pedal, split.eps));
-        b.nlp.set_initial(nv.brake, split.max_brake_force * split.Pos(-pedal, split.eps));
-      }
-    }
-  }
-  LapSolution out;
-  out.layout = b.layout;
-  out.variables = b.nlp.variables();
-  out.constraints = b.nlp.constraints();
-  // Multipliers come and go in the layout's rows (every state's defects; zero for the brakes
-  // left out, whose costates are zero: they feed nothing back).
-  if (solved != nullptr) {
-    // Solved elsewhere, already in the layout (x complete, multipliers in the layout's rows).
-    if (!solved->x.empty() && static_cast<int>(solved->x.size()) != b.nlp.variables()) {
-      throw InputError(fmt::format("optimal lap: a solution of {} values for {} variables",
-                                   solved->x.size(), b.nlp.variables()));
-    }
-    out.solve = *solved;
-    if (out.solve.x.empty()) return out;
-  } else {
-    IpoptOptions programme_ipopt = ipopt;
-    if (programme_ipopt.warm_lambda.size() == static_cast<size_t>(b.layout.rows())) {
-      programme_ipopt.warm_lambda = b.ToProgrammeRows(ipopt.warm_lambda);
-    }
-    out.solve = SolveWithIpopt(b.nlp, programme_ipopt);
-    if (out.solve.lambda.size() == static_cast<size_t>(b.nlp.constraints())) {
-      out.solve.lambda = b.ToLayoutRows(out.solve.lambda);
-    }
-    if (out.solve.x.empty()) return out;
-    b.IntegrateBrakesLeftOut(out.solve.x);
-    b.IntegrateWearLeftOut(out.solve.x);
+  for (int i = 0; i < b.nlp.variables(); ++i) {
+    b.nlp.set_initial(i, std::clamp(options.start_point[i], b.nlp.lower(i), b.nlp.upper(i)));
   }
   if (!options.wear_in_programme) {
-    // The grip factor's error from the frozen wear (the fixed variables keep the frozen values).
-    for (const NodeVars& nv : b.nodes) {
-      for (int c = 0; c < 4; ++c) {
-        const tyre::GripWearTable& h = car.tyres[c].compound->grip_vs_wear;
-        out.frozen_wear_grip_difference = std::max(
-            out.frozen_wear_grip_difference,
-            std::abs(h.Evaluate(out.solve.x[nv.wear[c]]) - h.Evaluate(b.nlp.lower(nv.wear[c]))));
+    // The wear left out is frozen at the start's wear gained along the lap, added to this
+    // lap's own start (a saved lap may have started with other wear).
+    for (int c = 0; c < 4; ++c) {
+      const double shift = options.initial.tyres[c].wear - options.start_point[b.nodes[0].wear[c]];
+      for (size_t k = 1; k < b.nodes.size(); ++k) {
+        const int i = b.nodes[k].wear[c];
+        const double v = std::max(0.0, options.start_point[i] + shift);
+        b.nlp.set_bounds(i, v, v);
+        b.nlp.set_initial(i, v);
       }
     }
   }
-  const std::vector<double>& x = out.solve.x;
-  const double time = AppendRoadFrameChannels(b.nodes, x, b.ds, out, b.hs);
+  if (!options.independent_drive_and_brake) {
+    // The pedal of the start's drive power and brake force (p = P / P_max - B / B_max, exact for
+    // a pedal solution, since pos(p) - pos(-p) = p; a start with both on gets the net of them).
+    const internal::PedalSplitFn split = b.Split();
+    for (const NodeVars& nv : b.nodes) {
+      const double pedal = std::clamp(b.nlp.initial(nv.power) / split.max_power -
+                                          b.nlp.initial(nv.brake) / split.max_brake_force,
+                                      -1.0, 1.0);
+      b.nlp.set_initial(nv.pedal, pedal);
+      b.nlp.set_initial(nv.power, split.max_power * split.Pos(pedal, split.eps));
+      b.nlp.set_initial(nv.brake, split.max_brake_force * split.Pos(-pedal, split.eps));
+    }
+  }
+}
+
+// The grip factor's largest error from the frozen wear (the fixed variables keep the frozen
+// values).
+double FrozenWearGripDifference(const vehicle::Car& car, const Builder& b,
+                                const std::vector<double>& x) {
+  double difference = 0.0;
+  for (const NodeVars& nv : b.nodes) {
+    for (int c = 0; c < 4; ++c) {
+      const tyre::GripWearTable& h = car.tyres[c].compound->grip_vs_wear;
+      difference = std::max(
+          difference, std::abs(h.Evaluate(x[nv.wear[c]]) - h.Evaluate(b.nlp.lower(nv.wear[c]))));
+    }
+  }
+  return difference;
+}
+
+// The solution's channels node by node: the heading error, the controls and each corner's
+// forces, slips, temperatures, brake power and (a gas-and-rim tyre) its gas.
+void AppendNodeChannels(const vehicle::Car& car, const VehicleParams& p, const Builder& b,
+                        const std::vector<double>& x, LapSolution& out) {
   for (int k = 0; k <= b.intervals; ++k) {
     const NodeVars& nv = b.nodes[k];
     out.xi.push_back(x[nv.xi]);
@@ -1094,6 +1089,54 @@ LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& tra
       t.rolling_resistance.push_back(gas.rolling_resistance);
     }
   }
+}
+
+}  // namespace
+
+LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& track,
+                                const LapProblemOptions& options, const sim::QssLap& guess,
+                                const IpoptOptions& ipopt, const SolveResult* solved) {
+  const VehicleParams& p = vehicle::RequireVehicle(car, "the optimal lap");
+  if (!(options.step_m > 0.0)) throw InputError("optimal lap: the mesh step must be > 0 m");
+  if (options.front_disc_limit && !options.periodic_thermal) {
+    RequireFrontDiscsWithinLimit(options.initial, *options.front_disc_limit);
+  }
+  Builder b(car, p, track, options, guess);
+  b.Build();
+  if (!options.start_point.empty()) ApplyStartPoint(options, b);
+  LapSolution out;
+  out.layout = b.layout;
+  out.variables = b.nlp.variables();
+  out.constraints = b.nlp.constraints();
+  // Multipliers come and go in the layout's rows (every state's defects; zero for the brakes
+  // left out, whose costates are zero: they feed nothing back).
+  if (solved != nullptr) {
+    // Solved elsewhere, already in the layout (x complete, multipliers in the layout's rows).
+    if (!solved->x.empty() && static_cast<int>(solved->x.size()) != b.nlp.variables()) {
+      throw InputError(fmt::format("optimal lap: a solution of {} values for {} variables",
+                                   solved->x.size(), b.nlp.variables()));
+    }
+    out.solve = *solved;
+    if (out.solve.x.empty()) return out;
+  } else {
+    IpoptOptions programme_ipopt = ipopt;
+    if (programme_ipopt.warm_lambda.size() == static_cast<size_t>(b.layout.rows())) {
+      programme_ipopt.warm_lambda = b.ToProgrammeRows(ipopt.warm_lambda);
+    }
+    out.solve = SolveWithIpopt(b.nlp, programme_ipopt);
+    if (out.solve.lambda.size() == static_cast<size_t>(b.nlp.constraints())) {
+      out.solve.lambda = b.ToLayoutRows(out.solve.lambda);
+    }
+    if (out.solve.x.empty()) return out;
+    b.IntegrateBrakesLeftOut(out.solve.x);
+    b.IntegrateWearLeftOut(out.solve.x);
+  }
+  if (!options.wear_in_programme) {
+    out.frozen_wear_grip_difference = FrozenWearGripDifference(car, b, out.solve.x);
+  }
+  const std::vector<double>& x = out.solve.x;
+  const double time = AppendRoadFrameChannels(b.nodes, x, b.ds, out, b.hs);
+  AppendNodeChannels(car, p, b, x, out);
   out.lap_time = time;
   out.max_brake_force = b.max_brake_force;
   return out;

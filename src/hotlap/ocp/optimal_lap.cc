@@ -34,6 +34,155 @@ sim::QssOptions WarmUpQss(const vehicle::Car& car, const track::Track& track,
   return qss;
 }
 
+// The lap problem's options from the optimal lap's, starting from `start`.
+LapProblemOptions ProblemOptions(const OptimalLapOptions& options,
+                                 const sim::ReplayInitialState& start) {
+  LapProblemOptions lap;
+  lap.step_m = options.step_m;
+  lap.collocation = options.collocation;
+  lap.front_disc_limit = options.front_disc_limit;
+  lap.ambient_temp = options.ambient_temp;
+  lap.track_temp = options.track_temp;
+  lap.car_half_width = options.car_half_width_m;
+  lap.periodic_thermal = options.thermal_start == ThermalStart::kPeriodic;
+  lap.initial = start;
+  lap.start_point = options.start_point;
+  lap.lap_mass_kg = options.lap_mass_kg;
+  lap.pedal_smoothing = options.pedal_smoothing;
+  lap.convex_element_hessians = options.convex_element_hessians;
+  lap.derivative_threads = options.derivative_threads;
+  lap.all_brake_states = options.all_brake_states;
+  // From the QSS guess the wear stays in the programme either way: left out, 3 of 6 meshes
+  // (10, 12, 25 m) went astray from the guess on the Gen-7-like car's lap, none with it
+  // (docs/validation/optimal-control.md, "Speed"). A solve from a solution leaves it out unless
+  // asked.
+  lap.wear_in_programme = true;  // (the problem's default)
+  lap.independent_drive_and_brake = options.independent_drive_and_brake;
+  if (options.steer_smoothing_weight >= 0.0) {
+    lap.steer_smoothing_weight = options.steer_smoothing_weight;
+  }
+  if (options.pedal_smoothing_weight >= 0.0) {
+    lap.pedal_smoothing_weight = options.pedal_smoothing_weight;
+  }
+  return lap;
+}
+
+// Coarse to fine: the same problem on the coarse mesh from the guess, then its solution on the
+// fine mesh as the fine solve's start (lap.start_point and fine_ipopt's multipliers).
+void SolveCoarseFirst(const vehicle::Car& hot_car, const track::Track& track,
+                      const OptimalLapOptions& options, const LapWarmUp& w, LapProblemOptions& lap,
+                      IpoptOptions& fine_ipopt, OptimalLapRun& run) {
+  LapProblemOptions coarse = lap;
+  coarse.step_m = options.coarse_step_m;
+  coarse.collocation = options.coarse_collocation;
+  IpoptOptions coarse_ipopt = options.ipopt;
+  if (options.coarse_start) {
+    // From another coarse solution: as any solve from a solution (below), the wear frozen unless
+    // asked and SCOTCH's ordering.
+    StartFromSolution(options.coarse_start->solve, options.coarse_start->layout,
+                      LapNodeCount(track, coarse.step_m, coarse.collocation), coarse.collocation,
+                      true, coarse.start_point, coarse_ipopt);
+    coarse.wear_in_programme = options.wear_in_programme;
+    coarse_ipopt.extra.insert(coarse_ipopt.extra.begin(), {"mumps_pivot_order", "3"});
+  }
+  const LapSolution c =
+      SolveMinimumTimeLap(hot_car, track, coarse, w.guess, coarse_ipopt,
+                          options.presolved ? &options.presolved->coarse : nullptr);
+  if (options.on_coarse_solve) options.on_coarse_solve(c);
+  run.coarse = c.solve;
+  run.coarse_lap_time = c.lap_time;
+  if (c.solve.ok()) {
+    StartFromSolution(c.solve, c.layout, LapNodeCount(track, options.step_m, lap.collocation),
+                      lap.collocation, options.coarse_multipliers, lap.start_point, fine_ipopt);
+  }
+}
+
+// The QSS lap on the optimal line, one lap from the optimal lap's own thermal start.
+void QssOnOptimalLine(const vehicle::Car& car, const track::Track& track,
+                      const sim::QssOptions& qss, OptimalLapRun& run) {
+  const LapSolution& s = run.solution;
+  if (s.distance.size() >= 4 && s.distance.size() == s.n.size()) {
+    std::vector<double> at(s.distance), offset(s.n);
+    if (at.back() >= track.length_m() - 1e-9) at.pop_back(), offset.pop_back();  // closing node
+    const std::vector<sim::RoadPoint> own =
+        sim::SampleRoadAlongLine(track, track::ResampleLine(at, offset, track, 2.0), 1.0);
+    sim::QssOptions on_line = qss;
+    on_line.laps = 1;
+    on_line.initial = run.start;
+    run.qss_on_line_lap_time = sim::RunQssLap(car, own, on_line).laps[0].lap_time;
+  }
+}
+
+// The solution's channels as the exact models' inputs (each corner's share of the brake force).
+sim::ReplayInputs ReplayInputsOf(const vehicle::Car& car, const LapSolution& s,
+                                 const OptimalLapOptions& options) {
+  sim::ReplayInputs in;
+  in.time = s.time;
+  const vehicle::VehicleParams& p = *car.vehicle;
+  for (int c = 0; c < 4; ++c) {
+    sim::CornerChannels& ch = in.corners[c];
+    const CornerTrace& t = s.corners[c];
+    ch.speed = t.speed;
+    ch.fx = t.fx;
+    ch.fy = t.fy;
+    ch.fz = t.fz;
+    ch.slip_angle = t.slip_angle;
+    ch.slip_ratio = t.slip_ratio;
+    const double share =
+        IsFront(kAllCorners[c]) ? 0.5 * p.brakes.front_share : 0.5 * (1.0 - p.brakes.front_share);
+    for (double b : s.brake_force) ch.brake_fx.push_back(-share * b);
+  }
+  in.ambient_temp.assign(s.time.size(), options.ambient_temp);
+  in.track_temp.assign(s.time.size(), options.track_temp);
+  return in;
+}
+
+// Where the replay starts: the run's start, or a periodic lap's own first node.
+sim::ReplayInitialState ReplayStart(const LapSolution& s, bool periodic_thermal,
+                                    const sim::ReplayInitialState& start) {
+  sim::ReplayInitialState from = start;
+  if (periodic_thermal) {
+    for (int c = 0; c < 4; ++c) {
+      const CornerTrace& t = s.corners[c];
+      from.tyres[c] = {t.tread_temp[0], t.carcass_temp[0], t.wear[0],
+                       t.rim_temp.empty() ? from.tyres[c].rim_temp : t.rim_temp[0]};
+      from.brakes[c] = {t.disc_temp[0], t.calliper_temp[0],
+                        t.disc_bulk_temp.empty() ? from.brakes[c].bulk_temp : t.disc_bulk_temp[0]};
+    }
+  }
+  return from;
+}
+
+// The exact models over the solution's channels, and how far they are from the solution's.
+void ReplayExact(const vehicle::Car& car, const track::Track& track,
+                 const OptimalLapOptions& options, bool periodic_thermal, OptimalLapRun& run) {
+  const LapSolution& s = run.solution;
+  if (s.time.size() < 2) return;
+  const sim::ReplayInputs in = ReplayInputsOf(car, s, options);
+  const sim::ReplayInitialState from = ReplayStart(s, periodic_thermal, run.start);
+  // The audit a lap at a time (a stint's track repeats the lap): a stretch from each lap's
+  // first node.
+  sim::ReplayOptions replay;
+  for (int lap = 1; lap < track.laps(); ++lap) {
+    const double s0 = lap * track.length_m() / track.laps();
+    const size_t k = static_cast<size_t>(
+        std::lower_bound(s.distance.begin(), s.distance.end(), s0 - 1e-9) - s.distance.begin());
+    const size_t last = replay.audit_starts.empty() ? 0 : replay.audit_starts.back();
+    if (k > last && k + 1 < s.time.size()) replay.audit_starts.push_back(k);
+  }
+  run.exact = sim::RunReplay(car, in, from, replay);
+  for (int c = 0; c < 4; ++c) {
+    for (size_t k = 0; k < s.time.size(); ++k) {
+      run.max_tread_difference_K =
+          std::max(run.max_tread_difference_K,
+                   std::abs(run.exact.corners[c].tread_temp[k] - s.corners[c].tread_temp[k]));
+      run.max_disc_difference_K =
+          std::max(run.max_disc_difference_K,
+                   std::abs(run.exact.corners[c].disc_temp[k] - s.corners[c].disc_temp[k]));
+    }
+  }
+}
+
 }  // namespace
 
 ThermalStart ParseThermalStart(const std::string& name) {
@@ -115,59 +264,10 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& any_car, const track::Track& tra
   run.start_carcass_rise_K = w.start_carcass_rise_K;
   run.qss_lap_time = w.guess.lap_time;
 
-  LapProblemOptions lap;
-  lap.step_m = options.step_m;
-  lap.collocation = options.collocation;
-  lap.front_disc_limit = options.front_disc_limit;
-  lap.ambient_temp = options.ambient_temp;
-  lap.track_temp = options.track_temp;
-  lap.car_half_width = options.car_half_width_m;
-  lap.periodic_thermal = options.thermal_start == ThermalStart::kPeriodic;
-  lap.initial = run.start;
-  lap.start_point = options.start_point;
-  lap.lap_mass_kg = options.lap_mass_kg;
-  lap.pedal_smoothing = options.pedal_smoothing;
-  lap.convex_element_hessians = options.convex_element_hessians;
-  lap.derivative_threads = options.derivative_threads;
-  lap.all_brake_states = options.all_brake_states;
-  // From the QSS guess the wear stays in the programme either way: left out, 3 of 6 meshes
-  // (10, 12, 25 m) went astray from the guess on the Gen-7-like car's lap, none with it
-  // (docs/validation/optimal-control.md, "Speed"). A solve from a solution leaves it out unless asked.
-  lap.wear_in_programme = true;  // (the problem's default)
-  lap.independent_drive_and_brake = options.independent_drive_and_brake;
-  if (options.steer_smoothing_weight >= 0.0) {
-    lap.steer_smoothing_weight = options.steer_smoothing_weight;
-  }
-  if (options.pedal_smoothing_weight >= 0.0) {
-    lap.pedal_smoothing_weight = options.pedal_smoothing_weight;
-  }
+  LapProblemOptions lap = ProblemOptions(options, run.start);
   IpoptOptions fine_ipopt = options.ipopt;
   if (options.start_point.empty() && options.coarse_step_m > options.step_m) {
-    // Coarse to fine: the same problem on the coarse mesh from the guess, then its solution on
-    // the fine mesh as the fine solve's start.
-    LapProblemOptions coarse = lap;
-    coarse.step_m = options.coarse_step_m;
-    coarse.collocation = options.coarse_collocation;
-    IpoptOptions coarse_ipopt = options.ipopt;
-    if (options.coarse_start) {
-      // From another coarse solution: as any solve from a solution (below), the wear frozen unless
-      // asked and SCOTCH's ordering.
-      StartFromSolution(options.coarse_start->solve, options.coarse_start->layout,
-                        LapNodeCount(track, coarse.step_m, coarse.collocation), coarse.collocation,
-                        true, coarse.start_point, coarse_ipopt);
-      coarse.wear_in_programme = options.wear_in_programme;
-      coarse_ipopt.extra.insert(coarse_ipopt.extra.begin(), {"mumps_pivot_order", "3"});
-    }
-    const LapSolution c =
-        SolveMinimumTimeLap(hot_car, track, coarse, w.guess, coarse_ipopt,
-                            options.presolved ? &options.presolved->coarse : nullptr);
-    if (options.on_coarse_solve) options.on_coarse_solve(c);
-    run.coarse = c.solve;
-    run.coarse_lap_time = c.lap_time;
-    if (c.solve.ok()) {
-      StartFromSolution(c.solve, c.layout, LapNodeCount(track, options.step_m, lap.collocation),
-                        lap.collocation, options.coarse_multipliers, lap.start_point, fine_ipopt);
-    }
+    SolveCoarseFirst(hot_car, track, options, w, lap, fine_ipopt, run);
   }
   // With the coarse solve's multipliers the fine solve is a warm start (small barrier, the point
   // kept where it is). Without them, Ipopt's own first barrier: a small one with the point alone
@@ -180,79 +280,14 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& any_car, const track::Track& tra
     // s an iteration on the 3 m lap against 0.47 with PORD's and 0.57 with its automatic choice,
     // to the same laps, and bit for bit the same from run to run on one SCOTCH thread
     // (ipopt_solve.cc). Not from the QSS guess, where SCOTCH sent the limited lap's 15 m solve the
-    // long way (266 iterations against 92; docs/validation/optimal-control.md, "Speed"). First, so that an
-    // option given wins.
+    // long way (266 iterations against 92; docs/validation/optimal-control.md, "Speed"). First, so
+    // that an option given wins.
     fine_ipopt.extra.insert(fine_ipopt.extra.begin(), {"mumps_pivot_order", "3"});
   }
   run.solution = SolveMinimumTimeLap(hot_car, track, lap, w.guess, fine_ipopt,
                                      options.presolved ? &options.presolved->fine : nullptr);
-
-  // The QSS lap on the optimal line, one lap from the optimal lap's own thermal start.
-  const LapSolution& s = run.solution;
-  if (s.distance.size() >= 4 && s.distance.size() == s.n.size()) {
-    std::vector<double> at(s.distance), offset(s.n);
-    if (at.back() >= track.length_m() - 1e-9) at.pop_back(), offset.pop_back();  // closing node
-    const std::vector<sim::RoadPoint> own =
-        sim::SampleRoadAlongLine(track, track::ResampleLine(at, offset, track, 2.0), 1.0);
-    sim::QssOptions on_line = qss;
-    on_line.laps = 1;
-    on_line.initial = run.start;
-    run.qss_on_line_lap_time = sim::RunQssLap(car, own, on_line).laps[0].lap_time;
-  }
-
-  // The exact models over the solution's channels.
-  if (s.time.size() >= 2) {
-    sim::ReplayInputs in;
-    in.time = s.time;
-    const vehicle::VehicleParams& p = *car.vehicle;
-    for (int c = 0; c < 4; ++c) {
-      sim::CornerChannels& ch = in.corners[c];
-      const CornerTrace& t = s.corners[c];
-      ch.speed = t.speed;
-      ch.fx = t.fx;
-      ch.fy = t.fy;
-      ch.fz = t.fz;
-      ch.slip_angle = t.slip_angle;
-      ch.slip_ratio = t.slip_ratio;
-      const double share =
-          IsFront(kAllCorners[c]) ? 0.5 * p.brakes.front_share : 0.5 * (1.0 - p.brakes.front_share);
-      for (double b : s.brake_force) ch.brake_fx.push_back(-share * b);
-    }
-    in.ambient_temp.assign(s.time.size(), options.ambient_temp);
-    in.track_temp.assign(s.time.size(), options.track_temp);
-    sim::ReplayInitialState from = run.start;
-    if (lap.periodic_thermal) {
-      for (int c = 0; c < 4; ++c) {
-        const CornerTrace& t = s.corners[c];
-        from.tyres[c] = {t.tread_temp[0], t.carcass_temp[0], t.wear[0],
-                         t.rim_temp.empty() ? from.tyres[c].rim_temp : t.rim_temp[0]};
-        from.brakes[c] = {
-            t.disc_temp[0], t.calliper_temp[0],
-            t.disc_bulk_temp.empty() ? from.brakes[c].bulk_temp : t.disc_bulk_temp[0]};
-      }
-    }
-    // The audit a lap at a time (a stint's track repeats the lap): a stretch from each lap's
-    // first node.
-    sim::ReplayOptions replay;
-    for (int lap = 1; lap < track.laps(); ++lap) {
-      const double s0 = lap * track.length_m() / track.laps();
-      const size_t k = static_cast<size_t>(
-          std::lower_bound(s.distance.begin(), s.distance.end(), s0 - 1e-9) - s.distance.begin());
-      const size_t last = replay.audit_starts.empty() ? 0 : replay.audit_starts.back();
-      if (k > last && k + 1 < s.time.size()) replay.audit_starts.push_back(k);
-    }
-    run.exact = sim::RunReplay(car, in, from, replay);
-    for (int c = 0; c < 4; ++c) {
-      for (size_t k = 0; k < s.time.size(); ++k) {
-        run.max_tread_difference_K =
-            std::max(run.max_tread_difference_K,
-                     std::abs(run.exact.corners[c].tread_temp[k] - s.corners[c].tread_temp[k]));
-        run.max_disc_difference_K =
-            std::max(run.max_disc_difference_K,
-                     std::abs(run.exact.corners[c].disc_temp[k] - s.corners[c].disc_temp[k]));
-      }
-    }
-  }
+  QssOnOptimalLine(car, track, qss, run);
+  ReplayExact(car, track, options, lap.periodic_thermal, run);
   return run;
 }
 

@@ -168,9 +168,9 @@ SolveResult ConcatenateLaps(const std::vector<const SolveResult*>& laps,
   return out;
 }
 
-StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
-                       const StintOptions& options, const StintLog& log) {
-  vehicle::RequireVehicle(car, "a stint");
+namespace {
+
+void CheckStintOptions(const vehicle::Car& car, const StintOptions& options) {
   if (options.laps < 1 || options.laps > 100) {
     throw InputError(fmt::format("laps: a stint is 1 to 100 laps, not {}", options.laps));
   }
@@ -189,12 +189,11 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
       options.lap.coarse_collocation != Collocation::kTrapezoid) {
     throw InputError("a stint is transcribed by the trapezoid (Hermite-Simpson: single laps only)");
   }
-  const double eta = car.vehicle->powertrain.driveline_efficiency;
-  const auto say = [&](const std::string& text) {
-    if (log) log(text);
-  };
+}
 
-  // Every lap of the same mesh: the single lap's spacing rounded to a whole number of intervals.
+// The stint's options with every lap of the same mesh: the single lap's spacing rounded to a
+// whole number of intervals.
+StintOptions OnCommonMesh(const track::Track& track, const StintOptions& options) {
   StintOptions o = options;
   const int intervals = LapNodeCount(track, options.lap.step_m) - 1;
   o.lap.step_m = track.length_m() / intervals;
@@ -205,60 +204,90 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
     throw InputError(fmt::format("checkpoint interval: {} is not a number of iterations >= 1",
                                  options.checkpoint_every));
   }
-  const vehicle::Car worn = StintCar(car, options.wear_scale);
-  const LapWarmUp warm_up = RunLapWarmUp(worn, track, o.lap);
-  std::optional<StintCheckpoints> checkpoints;
-  if (!options.checkpoint_dir.empty()) {
-    checkpoints.emplace(options.checkpoint_dir, StintFingerprint(o, track, warm_up));
-  }
-  // A checkpoint that cannot be written (a full disk) costs the resume, not the run: said once.
-  bool checkpoint_warned = false;
-  const auto save = [&](const std::function<void()>& write) {
+  return o;
+}
+
+void Say(const StintLog& log, const std::string& text) {
+  if (log) log(text);
+}
+
+// Runs a checkpoint's write: one that cannot be written (a full disk) costs the resume, not the
+// run, and is said once.
+class CheckpointSaver {
+ public:
+  explicit CheckpointSaver(const StintLog& log) : log_(log) {}
+
+  bool operator()(const std::function<void()>& write) {
     try {
       write();
       return true;
     } catch (const std::exception& e) {
-      if (!checkpoint_warned && log) log(fmt::format("warning: no checkpoint: {}", e.what()));
-      checkpoint_warned = true;
+      if (!warned_ && log_) log_(fmt::format("warning: no checkpoint: {}", e.what()));
+      warned_ = true;
       return false;
     }
-  };
+  }
 
-  // The greedy driver: one optimal lap after another, each from the last one's end.
-  StintResult result;
+ private:
+  const StintLog& log_;
+  bool warned_ = false;
+};
+
+// A solve's point and multipliers as the start of the next.
+void WarmStartFrom(const SolveResult& from, OptimalLapOptions& lap) {
+  lap.start_point = from.x;
+  lap.ipopt.warm_z_lower = from.z_lower;
+  lap.ipopt.warm_z_upper = from.z_upper;
+  lap.ipopt.warm_lambda = from.lambda;
+}
+
+// What the greedy laps and the stint solve share.
+struct StintSetup {
+  const StintOptions& options;  // as given
+  const StintOptions& o;        // on the common mesh
+  const vehicle::Car& worn;
+  const track::Track& track;
+  const LapWarmUp& warm_up;
+  double mass0;
+  double eta;
+  std::optional<StintCheckpoints>& checkpoints;
+  CheckpointSaver& save;
+  const StintLog& log;
+};
+
+// The greedy driver: one optimal lap after another, each from the last one's end. Fills the
+// greedy fields of `result`; returns each lap's mass.
+std::vector<double> RunGreedyLaps(const StintSetup& s, StintResult& result) {
+  const StintOptions& options = s.options;
   const auto greedy_start = std::chrono::steady_clock::now();
-  sim::ReplayInitialState state = warm_up.start;
+  sim::ReplayInitialState state = s.warm_up.start;
   double fuel = options.fuel_kg;
   std::vector<double> masses;
   for (int i = 0; i < options.laps; ++i) {
-    const double mass = mass0 - (options.fuel_kg - fuel);
+    const double mass = s.mass0 - (options.fuel_kg - fuel);
     masses.push_back(mass);
-    LapWarmUp w = warm_up;
+    LapWarmUp w = s.warm_up;
     w.start = state;
     // Each lap after the first from the last one's solution and multipliers: the same lap but
     // for the state it starts from (the start's fixed states are clipped to it). From the QSS
     // guess instead, a 30 m lap from a hot start found a local optimum 1.9 s slower.
-    OptimalLapOptions lap_options = o.lap;
+    OptimalLapOptions lap_options = s.o.lap;
     if (i > 0 && result.greedy_runs.back().solution.solve.ok()) {
-      const SolveResult& last = result.greedy_runs.back().solution.solve;
-      lap_options.start_point = last.x;
-      lap_options.ipopt.warm_z_lower = last.z_lower;
-      lap_options.ipopt.warm_z_upper = last.z_upper;
-      lap_options.ipopt.warm_lambda = last.lambda;
+      WarmStartFrom(result.greedy_runs.back().solution.solve, lap_options);
     }
     const std::optional<PresolvedLap> saved =
-        checkpoints ? checkpoints->ReadGreedyLap(i + 1) : std::nullopt;
+        s.checkpoints ? s.checkpoints->ReadGreedyLap(i + 1) : std::nullopt;
     if (saved) {
       lap_options.presolved = *saved;
       ++result.greedy_laps_resumed;
     }
-    OptimalLapRun run = RunOptimalLap(WithMass(worn, mass), track, lap_options, &w);
-    if (checkpoints && !saved) {
-      save([&] {
-        checkpoints->WriteGreedyLap(i + 1, PresolvedLap{run.coarse, run.solution.solve});
+    OptimalLapRun run = RunOptimalLap(WithMass(s.worn, mass), s.track, lap_options, &w);
+    if (s.checkpoints && !saved) {
+      s.save([&] {
+        s.checkpoints->WriteGreedyLap(i + 1, PresolvedLap{run.coarse, run.solution.solve});
       });
     }
-    StintLap lap = StintLaps(run.solution, track, 1, fuel, {mass}, o.bsfc_kg_per_J, eta)[0];
+    StintLap lap = StintLaps(run.solution, s.track, 1, fuel, {mass}, s.o.bsfc_kg_per_J, s.eta)[0];
     lap.lap = i + 1;
     if (!run.exact.audits.empty()) {
       lap.audit = run.exact.audits[0];
@@ -269,20 +298,21 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
                                    options.laps));
     }
     fuel = lap.fuel_end_kg;
-    say(fmt::format("greedy lap {} of {}: {:.3f} s ({}, {} iterations{})", i + 1, options.laps,
-                    lap.time_s, run.solution.solve.message, run.solution.solve.iterations,
-                    saved ? "; from its checkpoint" : ""));
+    Say(s.log, fmt::format("greedy lap {} of {}: {:.3f} s ({}, {} iterations{})", i + 1,
+                           options.laps, lap.time_s, run.solution.solve.message,
+                           run.solution.solve.iterations, saved ? "; from its checkpoint" : ""));
     state = EndState(run.solution);
     result.greedy_total_time_s += lap.time_s;
     result.greedy_laps.push_back(lap);
     result.greedy_runs.push_back(std::move(run));
   }
   result.greedy_solve_time_s = Seconds(greedy_start);
+  return masses;
+}
 
-  // The stint, from the greedy laps' point and multipliers with their fuel plan.
-  const track::Track stint_track = track.Repeated(options.laps);
-  StintOptions so = o;
-  so.lap.lap_mass_kg = options.fuel_kg > 0.0 ? masses : std::vector<double>{};
+// The stint from the greedy laps' point and multipliers, if every greedy lap solved; returns
+// whether they did.
+bool StartFromGreedyLaps(const StintResult& result, OptimalLapOptions& lap) {
   bool all_ok = true;
   std::vector<const SolveResult*> solves;
   for (const OptimalLapRun& r : result.greedy_runs) {
@@ -291,64 +321,44 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
   }
   if (all_ok) {
     const SolveResult start = ConcatenateLaps(solves, result.greedy_runs.front().solution.layout);
-    so.lap.start_point = start.x;
-    so.lap.ipopt.warm_z_lower = start.z_lower;
-    so.lap.ipopt.warm_z_upper = start.z_upper;
-    so.lap.ipopt.warm_lambda = start.lambda;
+    WarmStartFrom(start, lap);
   }
-  // The stint's own guess: QSS laps over the whole stint (only used if a greedy lap failed).
-  LapWarmUp stint_warm = warm_up;
-  if (!all_ok) {
-    OptimalLapOptions qss_only = so.lap;
-    qss_only.thermal_start = ThermalStart::kCar;
-    stint_warm = RunLapWarmUp(worn, stint_track, qss_only);
-    stint_warm.start = warm_up.start;
-  }
-  // Resuming: the stint solve's last iterate (point, multipliers, barrier) as a warm start.
+  return all_ok;
+}
+
+// Resuming: the stint solve's last iterate (point, multipliers, barrier) as a warm start; and
+// each iterate saved as the solve goes.
+void ResumeAndCheckpointStint(const StintSetup& s, OptimalLapOptions& lap, StintResult& result) {
   const std::optional<SolveResult> iterate =
-      checkpoints ? checkpoints->ReadStintIterate() : std::nullopt;
+      s.checkpoints ? s.checkpoints->ReadStintIterate() : std::nullopt;
   if (iterate) {  // the fingerprint says it is this stint's programme
-    so.lap.start_point = iterate->x;
-    so.lap.ipopt.warm_z_lower = iterate->z_lower;
-    so.lap.ipopt.warm_z_upper = iterate->z_upper;
-    so.lap.ipopt.warm_lambda = iterate->lambda;
-    if (iterate->barrier_mu > 0.0) so.lap.ipopt.warm_mu = iterate->barrier_mu;
+    WarmStartFrom(*iterate, lap);
+    if (iterate->barrier_mu > 0.0) lap.ipopt.warm_mu = iterate->barrier_mu;
     result.resumed_from_iteration = iterate->iterations;
   }
-  if (checkpoints) {
-    so.lap.ipopt.checkpoint_every = options.checkpoint_every;
+  if (s.checkpoints) {
+    lap.ipopt.checkpoint_every = s.options.checkpoint_every;
     const int offset = result.resumed_from_iteration;
     // Each iterate saved is said once it is in its file (the event a test of a kill waits for).
-    so.lap.ipopt.on_checkpoint = [&checkpoints, &save, &say, offset](const SolveResult& at) {
+    lap.ipopt.on_checkpoint = [&checkpoints = s.checkpoints, &save = s.save, &log = s.log,
+                               offset](const SolveResult& at) {
       SolveResult saved = at;
       saved.iterations += offset;
       if (save([&] { checkpoints->WriteStintIterate(saved); })) {
-        say(fmt::format("the stint: iterate of iteration {} saved", saved.iterations));
+        Say(log, fmt::format("the stint: iterate of iteration {} saved", saved.iterations));
       }
     };
   }
-  if (checkpoints && checkpoints->foreign_files() > 0) {
-    say(fmt::format("checkpoints in '{}': {} file(s) of another stint, not used",
-                    checkpoints->dir().string(), checkpoints->foreign_files()));
+  if (s.checkpoints && s.checkpoints->foreign_files() > 0) {
+    Say(s.log, fmt::format("checkpoints in '{}': {} file(s) of another stint, not used",
+                           s.checkpoints->dir().string(), s.checkpoints->foreign_files()));
   }
-  say(result.resumed_from_iteration > 0
-          ? fmt::format("the stint: {} laps as one problem, resumed from its checkpoint at "
-                        "iteration {}...",
-                        options.laps, result.resumed_from_iteration)
-          : fmt::format("the stint: {} laps as one problem, from the greedy laps...",
-                        options.laps));
-  const auto stint_start = std::chrono::steady_clock::now();
-  result.run = RunOptimalLap(worn, stint_track, so.lap, &stint_warm);
-  result.solve_time_s = Seconds(stint_start);
-  result.ipopt_iterations = result.run.solution.solve.iterations;
-  // The end as a last checkpoint: a run again with the same folder converges at once.
-  if (checkpoints && result.run.solution.solve.ok()) {
-    SolveResult end = result.run.solution.solve;
-    end.iterations += result.resumed_from_iteration;
-    save([&] { checkpoints->WriteStintIterate(end); });
-  }
-  result.laps = StintLaps(result.run.solution, track, options.laps, options.fuel_kg, masses,
-                          o.bsfc_kg_per_J, eta);
+}
+
+// The stint solve's laps (with their audits), its total time and its fuel plan's error.
+void StintTotals(const StintSetup& s, const std::vector<double>& masses, StintResult& result) {
+  result.laps = StintLaps(result.run.solution, s.track, s.options.laps, s.options.fuel_kg, masses,
+                          s.o.bsfc_kg_per_J, s.eta);
   // The exact replay's audit has a stretch a lap (RunOptimalLap on a repeated track).
   if (result.run.exact.audits.size() == result.laps.size()) {
     for (size_t i = 0; i < result.laps.size(); ++i) {
@@ -362,11 +372,64 @@ StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
         std::max(result.fuel_plan_error_kg,
                  std::abs(result.laps[i].fuel_burnt_kg - result.greedy_laps[i].fuel_burnt_kg));
   }
-  say(
-      fmt::format("the stint: {} after {} iterations in {:.1f} s: {:.3f} s against the greedy "
-                  "{:.3f} s",
-                  result.run.solution.solve.message, result.ipopt_iterations, result.solve_time_s,
-                  result.total_time_s, result.greedy_total_time_s));
+}
+
+}  // namespace
+
+StintResult SolveStint(const vehicle::Car& car, const track::Track& track,
+                       const StintOptions& options, const StintLog& log) {
+  vehicle::RequireVehicle(car, "a stint");
+  CheckStintOptions(car, options);
+  const double mass0 = car.vehicle->chassis.mass;
+  const double eta = car.vehicle->powertrain.driveline_efficiency;
+  const StintOptions o = OnCommonMesh(track, options);
+  const vehicle::Car worn = StintCar(car, options.wear_scale);
+  const LapWarmUp warm_up = RunLapWarmUp(worn, track, o.lap);
+  std::optional<StintCheckpoints> checkpoints;
+  if (!options.checkpoint_dir.empty()) {
+    checkpoints.emplace(options.checkpoint_dir, StintFingerprint(o, track, warm_up));
+  }
+  CheckpointSaver save(log);
+  const StintSetup setup{options, o, worn, track, warm_up, mass0, eta, checkpoints, save, log};
+
+  StintResult result;
+  const std::vector<double> masses = RunGreedyLaps(setup, result);
+
+  // The stint, from the greedy laps' point and multipliers with their fuel plan.
+  const track::Track stint_track = track.Repeated(options.laps);
+  StintOptions so = o;
+  so.lap.lap_mass_kg = options.fuel_kg > 0.0 ? masses : std::vector<double>{};
+  const bool all_ok = StartFromGreedyLaps(result, so.lap);
+  // The stint's own guess: QSS laps over the whole stint (only used if a greedy lap failed).
+  LapWarmUp stint_warm = warm_up;
+  if (!all_ok) {
+    OptimalLapOptions qss_only = so.lap;
+    qss_only.thermal_start = ThermalStart::kCar;
+    stint_warm = RunLapWarmUp(worn, stint_track, qss_only);
+    stint_warm.start = warm_up.start;
+  }
+  ResumeAndCheckpointStint(setup, so.lap, result);
+  Say(log, result.resumed_from_iteration > 0
+               ? fmt::format("the stint: {} laps as one problem, resumed from its checkpoint at "
+                             "iteration {}...",
+                             options.laps, result.resumed_from_iteration)
+               : fmt::format("the stint: {} laps as one problem, from the greedy laps...",
+                             options.laps));
+  const auto stint_start = std::chrono::steady_clock::now();
+  result.run = RunOptimalLap(worn, stint_track, so.lap, &stint_warm);
+  result.solve_time_s = Seconds(stint_start);
+  result.ipopt_iterations = result.run.solution.solve.iterations;
+  // The end as a last checkpoint: a run again with the same folder converges at once.
+  if (checkpoints && result.run.solution.solve.ok()) {
+    SolveResult end = result.run.solution.solve;
+    end.iterations += result.resumed_from_iteration;
+    save([&] { checkpoints->WriteStintIterate(end); });
+  }
+  StintTotals(setup, masses, result);
+  Say(log, fmt::format("the stint: {} after {} iterations in {:.1f} s: {:.3f} s against the greedy "
+                       "{:.3f} s",
+                       result.run.solution.solve.message, result.ipopt_iterations,
+                       result.solve_time_s, result.total_time_s, result.greedy_total_time_s));
   return result;
 }
 

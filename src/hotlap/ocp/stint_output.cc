@@ -162,12 +162,10 @@ nlohmann::json StintJson(const StintResult& r, const StintOptions& o, const std:
       {"wall_time_s", RoundSignificant(wall_time_s)}};
 }
 
-std::vector<fs::path> WriteStintFiles(const fs::path& out, const StintResult& r,
-                                      const StintOptions& o, const vehicle::Car& car,
-                                      const track::Track& track) {
-  fs::create_directories(out);
-  const fs::path csv = out / "stint.csv", html = out / "stint.html";
-  const sim::ColumnSet columns = StintColumns(r, track);
+namespace {
+
+void WriteStintCsv(const fs::path& csv, const sim::ColumnSet& columns, const StintResult& r,
+                   const StintOptions& o, const vehicle::Car& car, const track::Track& track) {
   std::vector<std::pair<std::string, std::string>> metadata = {
       {"source", fmt::format("hotlap {} stint", HOTLAP_VERSION)},
       {"track", track.name()},
@@ -180,9 +178,11 @@ std::vector<fs::path> WriteStintFiles(const fs::path& out, const StintResult& r,
     metadata.emplace_back("overrides", vehicle::OverridesText(car.overrides));
   }
   WriteCsv(csv, metadata, columns.names, columns.values);
+}
 
-  report::HtmlReport page(
-      fmt::format("hotlap stint: {} laps of {} with {}", o.laps, track.name(), car.name));
+// The page's metadata, the laps' table and what managing the stint gains.
+void AddStintSummary(report::HtmlReport& page, const StintResult& r, const StintOptions& o,
+                     const vehicle::Car& car, const track::Track& track) {
   page.AddMetadata("car", car.path.string());
   page.AddMetadata("track", fmt::format("{} ({:.1f} m a lap)", track.name(), track.length_m()));
   page.AddMetadata("wear", fmt::format("rate x {:g} (accelerated wear)", o.wear_scale));
@@ -213,78 +213,93 @@ std::vector<fs::path> WriteStintFiles(const fs::path& out, const StintResult& r,
       "brakes for later. The greedy driver solves each lap on its own from where the last one "
       "left the car. Managing the stint gains {:.3f} s over {} laps.",
       r.greedy_total_time_s - r.total_time_s, o.laps));
+}
 
+template <class Field>
+std::vector<double> PerLap(const std::vector<StintLap>& laps, Field field) {
+  std::vector<double> y;
+  for (const StintLap& l : laps) y.push_back(field(l));
+  return y;
+}
+
+// A figure of each corner, lap by lap.
+template <class Field>
+void AddCornerChart(report::HtmlReport& page, const std::vector<StintLap>& laps,
+                    const std::vector<double>& lap_numbers, const char* title, const char* quantity,
+                    const char* unit, Field field) {
+  report::LineChart chart{.title = title,
+                          .x_axis = {.label = "lap", .integer_ticks = true},
+                          .y_axis = {quantity, unit}};
+  for (Corner c : kAllCorners) {
+    const int i = CornerIndex(c);
+    chart.series.push_back({.label = std::string(CornerName(c)),
+                            .x = lap_numbers,
+                            .y = PerLap(laps, [&](const StintLap& l) { return field(l, i); }),
+                            .corner = c});
+  }
+  page.AddLineChart(chart);
+}
+
+// Each corner's lowest (dashed) and highest (solid) temperature over each lap: the window it
+// works in, lap by lap.
+template <class Low, class High>
+void AddEnvelopeChart(report::HtmlReport& page, const std::vector<StintLap>& laps,
+                      const std::vector<double>& lap_numbers, const char* title,
+                      const char* quantity, Low low, High high) {
+  report::LineChart chart{.title = title,
+                          .x_axis = {.label = "lap", .integer_ticks = true},
+                          .y_axis = {quantity, "degC"}};
+  for (Corner c : kAllCorners) {
+    const int i = CornerIndex(c);
+    const std::string name(CornerName(c));
+    chart.series.push_back(
+        {.label = name + " highest",
+         .x = lap_numbers,
+         .y = PerLap(laps, [&](const StintLap& l) { return KelvinToCelsius(high(l)[i]); }),
+         .corner = c});
+    chart.series.push_back(
+        {.label = name + " lowest",
+         .x = lap_numbers,
+         .y = PerLap(laps, [&](const StintLap& l) { return KelvinToCelsius(low(l)[i]); }),
+         .corner = c,
+         .style = report::LineStyle::kDashed});
+  }
+  page.AddLineChart(chart);
+}
+
+// Lap by lap: the lap times (stint and greedy), each corner's temperature windows and wear.
+void AddLapCharts(report::HtmlReport& page, const StintResult& r) {
   std::vector<double> lap_numbers;
   for (const StintLap& l : r.laps) lap_numbers.push_back(l.lap);
-  const auto per_lap = [&](const std::vector<StintLap>& laps, auto field) {
-    std::vector<double> y;
-    for (const StintLap& l : laps) y.push_back(field(l));
-    return y;
-  };
   report::LineChart times{.title = "Lap time, lap by lap",
                           .x_axis = {.label = "lap", .integer_ticks = true},
                           .y_axis = {"lap time", "s"}};
   times.series.push_back({.label = "stint (one problem)",
                           .x = lap_numbers,
-                          .y = per_lap(r.laps, [](const StintLap& l) { return l.time_s; })});
+                          .y = PerLap(r.laps, [](const StintLap& l) { return l.time_s; })});
   times.series.push_back({.label = "greedy (lap by lap)",
                           .x = lap_numbers,
-                          .y = per_lap(r.greedy_laps, [](const StintLap& l) { return l.time_s; }),
+                          .y = PerLap(r.greedy_laps, [](const StintLap& l) { return l.time_s; }),
                           .style = report::LineStyle::kDashed});
   page.AddLineChart(times);
-  const auto corner_chart = [&](const char* title, const char* quantity, const char* unit,
-                                auto field) {
-    report::LineChart chart{.title = title,
-                            .x_axis = {.label = "lap", .integer_ticks = true},
-                            .y_axis = {quantity, unit}};
-    for (Corner c : kAllCorners) {
-      const int i = CornerIndex(c);
-      chart.series.push_back({.label = std::string(CornerName(c)),
-                              .x = lap_numbers,
-                              .y = per_lap(r.laps, [&](const StintLap& l) { return field(l, i); }),
-                              .corner = c});
-    }
-    page.AddLineChart(chart);
-  };
-  // Each corner's lowest (dashed) and highest (solid) temperature over each lap: the window it
-  // works in, lap by lap.
-  const auto envelope_chart = [&](const char* title, const char* quantity, auto low, auto high) {
-    report::LineChart chart{.title = title,
-                            .x_axis = {.label = "lap", .integer_ticks = true},
-                            .y_axis = {quantity, "degC"}};
-    for (Corner c : kAllCorners) {
-      const int i = CornerIndex(c);
-      const std::string name(CornerName(c));
-      chart.series.push_back(
-          {.label = name + " highest",
-           .x = lap_numbers,
-           .y = per_lap(r.laps, [&](const StintLap& l) { return KelvinToCelsius(high(l)[i]); }),
-           .corner = c});
-      chart.series.push_back(
-          {.label = name + " lowest",
-           .x = lap_numbers,
-           .y = per_lap(r.laps, [&](const StintLap& l) { return KelvinToCelsius(low(l)[i]); }),
-           .corner = c,
-           .style = report::LineStyle::kDashed});
-    }
-    page.AddLineChart(chart);
-  };
-  envelope_chart(
-      "Tread temperature per lap, lowest and highest", "tread",
+  AddEnvelopeChart(
+      page, r.laps, lap_numbers, "Tread temperature per lap, lowest and highest", "tread",
       [](const StintLap& l) { return l.min_tread_temp_K; },
       [](const StintLap& l) { return l.peak_tread_temp_K; });
-  envelope_chart(
-      "Carcass temperature per lap, lowest and highest", "carcass",
+  AddEnvelopeChart(
+      page, r.laps, lap_numbers, "Carcass temperature per lap, lowest and highest", "carcass",
       [](const StintLap& l) { return l.min_carcass_temp_K; },
       [](const StintLap& l) { return l.peak_carcass_temp_K; });
-  envelope_chart(
-      "Disc temperature per lap, lowest and highest", "disc",
+  AddEnvelopeChart(
+      page, r.laps, lap_numbers, "Disc temperature per lap, lowest and highest", "disc",
       [](const StintLap& l) { return l.min_disc_temp_K; },
       [](const StintLap& l) { return l.peak_disc_temp_K; });
-  corner_chart("Cumulative wear", "wear", "mm",
-               [](const StintLap& l, int i) { return l.wear_end_mm[i]; });
+  AddCornerChart(page, r.laps, lap_numbers, "Cumulative wear", "wear", "mm",
+                 [](const StintLap& l, int i) { return l.wear_end_mm[i]; });
+}
 
-  // The channels over the stint: speed and the front-left temperatures.
+// The channels over the stint: speed and the carcass temperatures.
+void AddChannelCharts(report::HtmlReport& page, const sim::ColumnSet& columns) {
   const auto column = [&](const char* name) -> const std::vector<double>& {
     const auto it = std::find(columns.names.begin(), columns.names.end(), name);
     return columns.values.at(static_cast<size_t>(it - columns.names.begin()));
@@ -310,6 +325,22 @@ std::vector<fs::path> WriteStintFiles(const fs::path& out, const StintResult& r,
                             .corner = c});
   }
   page.AddLineChart(temps);
+}
+
+}  // namespace
+
+std::vector<fs::path> WriteStintFiles(const fs::path& out, const StintResult& r,
+                                      const StintOptions& o, const vehicle::Car& car,
+                                      const track::Track& track) {
+  fs::create_directories(out);
+  const fs::path csv = out / "stint.csv", html = out / "stint.html";
+  const sim::ColumnSet columns = StintColumns(r, track);
+  WriteStintCsv(csv, columns, r, o, car, track);
+  report::HtmlReport page(
+      fmt::format("hotlap stint: {} laps of {} with {}", o.laps, track.name(), car.name));
+  AddStintSummary(page, r, o, car, track);
+  AddLapCharts(page, r);
+  AddChannelCharts(page, columns);
   page.Write(html);
   return {csv, html};
 }

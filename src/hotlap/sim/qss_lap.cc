@@ -60,18 +60,8 @@ struct Prepared {
   }
 };
 
-// Channels of one lap from its speed profile: forces, loads, slips (step 3 of qss_lap.h).
-// `cornering_drag`: the profile's coefficients (CalcResistance), one per point; `solved_drag`
-// gets those that the lap's own forces and slip angles give.
-QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, double track_length,
-                const SpeedProfile& profile, const std::array<std::vector<double>, 4>& grip,
-                const std::array<std::vector<double>, 4>& tread_temp,
-                std::span<const double> cornering_drag, std::span<const double> rolling,
-                std::vector<double>* solved_drag) {
-  const VehicleParams& p = *prep.params;
-  const size_t n = road.size();
-  const double ds = road[1].distance - road[0].distance;
-  const double m = p.chassis.mass;
+// A lap of n points and its closing sample, every channel sized.
+QssLap SizedLap(size_t n) {
   QssLap lap;
   lap.distance.resize(n + 1);
   lap.centre_distance.resize(n + 1);
@@ -89,9 +79,88 @@ QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, double tr
     }
   }
   for (auto& t : lap.tread_temp_used) t.resize(n + 1);
+  return lap;
+}
 
-  std::array<vehicle::WheelSlips, 2> front_guess{};
-  vehicle::SpoolAxleSolution rear_guess;
+// The last slips solved, each point's first guess at the next.
+struct SlipGuesses {
+  std::array<vehicle::WheelSlips, 2> front{};
+  vehicle::SpoolAxleSolution rear;
+};
+
+// The four wheels' slips that give the demanded forces at one point: the front wheels roll or
+// brake independently, the rear wheels turn together on the spool. Counts a point where they
+// are not reached and keeps the largest force deficit in `lap`.
+std::array<vehicle::WheelSlips, 4> SolvePointSlips(
+    const Prepared& prep, const std::array<vehicle::TyreConditions, 4>& cond,
+    const ForceDemand& demand, SlipGuesses& guess, QssLap& lap) {
+  std::array<vehicle::WheelSlips, 4> slips;
+  bool reached = true;
+  for (Corner c : {Corner::kFrontLeft, Corner::kFrontRight}) {
+    const int k = CornerIndex(c);
+    const vehicle::FreeWheelSolution s = vehicle::SolveFreeWheelSlips(
+        prep.tyres[k], cond[k], demand.fx[k], demand.fy[k], guess.front[k]);
+    slips[k] = s.wheel;
+    guess.front[k] = s.wheel;
+    reached = reached && s.reached;
+    lap.max_force_deficit = std::max({lap.max_force_deficit, std::abs(s.wheel.fx - demand.fx[k]),
+                                      std::abs(s.wheel.fy - demand.fy[k])});
+  }
+  {
+    const int l = CornerIndex(Corner::kRearLeft), r = CornerIndex(Corner::kRearRight);
+    const double fx_total = demand.fx[l] + demand.fx[r];
+    const vehicle::SpoolAxleSolution s =
+        vehicle::SolveSpoolAxleSlips(prep.tyres[l], prep.tyres[r], cond[l], cond[r], demand.fy[l],
+                                     demand.fy[r], fx_total, guess.rear);
+    slips[l] = s.wheels[0];
+    slips[r] = s.wheels[1];
+    guess.rear = s;
+    reached = reached && s.reached;
+    lap.max_force_deficit =
+        std::max({lap.max_force_deficit, std::abs(s.wheels[0].fy - demand.fy[l]),
+                  std::abs(s.wheels[1].fy - demand.fy[r]),
+                  std::abs(s.wheels[0].fx + s.wheels[1].fx - fx_total)});
+  }
+  if (!reached) ++lap.slip_points_not_reached;
+  return slips;
+}
+
+// Close the lap at the start line (point n) with the first sample's channels.
+void CloseLap(QssLap& lap, size_t n, double ds, double track_length, double time) {
+  lap.distance[n] = n * ds;
+  lap.centre_distance[n] = lap.centre_distance[0] + track_length;
+  lap.offset[n] = lap.offset[0];
+  lap.time[n] = time;
+  lap.lap_time = time;
+  lap.speed[n] = lap.speed[0];
+  lap.accel_long[n] = lap.accel_long[0];
+  lap.accel_lat[n] = lap.accel_lat[0];
+  lap.steer[n] = lap.steer[0];
+  lap.limit[n] = lap.limit[0];
+  for (int k = 0; k < 4; ++k) {
+    CornerChannels& ch = lap.corners[k];
+    for (auto* v :
+         {&ch.speed, &ch.fx, &ch.fy, &ch.fz, &ch.slip_angle, &ch.slip_ratio, &ch.brake_fx}) {
+      (*v)[n] = (*v)[0];
+    }
+    lap.tread_temp_used[k][n] = lap.tread_temp_used[k][0];
+  }
+}
+
+// Channels of one lap from its speed profile: forces, loads, slips (step 3 of qss_lap.h).
+// `cornering_drag`: the profile's coefficients (CalcResistance), one per point; `solved_drag`
+// gets those that the lap's own forces and slip angles give.
+QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, double track_length,
+                const SpeedProfile& profile, const std::array<std::vector<double>, 4>& grip,
+                const std::array<std::vector<double>, 4>& tread_temp,
+                std::span<const double> cornering_drag, std::span<const double> rolling,
+                std::vector<double>* solved_drag) {
+  const VehicleParams& p = *prep.params;
+  const size_t n = road.size();
+  const double ds = road[1].distance - road[0].distance;
+  const double m = p.chassis.mass;
+  QssLap lap = SizedLap(n);
+  SlipGuesses guess;
   double time = 0.0;
   solved_drag->assign(n, 0.0);
   for (size_t i = 0; i < n; ++i) {
@@ -113,36 +182,8 @@ QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, double tr
       cond[k] = {std::max(demand.fz[k], 1.0), std::max(v - yaw_rate * y, 0.5), tread_temp[k][i],
                  g[k]};
     }
-    // Front wheels roll or brake independently.
-    std::array<vehicle::WheelSlips, 4> slips;
-    bool reached = true;
-    for (Corner c : {Corner::kFrontLeft, Corner::kFrontRight}) {
-      const int k = CornerIndex(c);
-      const vehicle::FreeWheelSolution s = vehicle::SolveFreeWheelSlips(
-          prep.tyres[k], cond[k], demand.fx[k], demand.fy[k], front_guess[k]);
-      slips[k] = s.wheel;
-      front_guess[k] = s.wheel;
-      reached = reached && s.reached;
-      lap.max_force_deficit = std::max({lap.max_force_deficit, std::abs(s.wheel.fx - demand.fx[k]),
-                                        std::abs(s.wheel.fy - demand.fy[k])});
-    }
-    // Rear wheels turn together on the spool.
-    {
-      const int l = CornerIndex(Corner::kRearLeft), r = CornerIndex(Corner::kRearRight);
-      const double fx_total = demand.fx[l] + demand.fx[r];
-      const vehicle::SpoolAxleSolution s =
-          vehicle::SolveSpoolAxleSlips(prep.tyres[l], prep.tyres[r], cond[l], cond[r], demand.fy[l],
-                                       demand.fy[r], fx_total, rear_guess);
-      slips[l] = s.wheels[0];
-      slips[r] = s.wheels[1];
-      rear_guess = s;
-      reached = reached && s.reached;
-      lap.max_force_deficit =
-          std::max({lap.max_force_deficit, std::abs(s.wheels[0].fy - demand.fy[l]),
-                    std::abs(s.wheels[1].fy - demand.fy[r]),
-                    std::abs(s.wheels[0].fx + s.wheels[1].fx - fx_total)});
-    }
-    if (!reached) ++lap.slip_points_not_reached;
+    const std::array<vehicle::WheelSlips, 4> slips =
+        SolvePointSlips(prep, cond, demand, guess, lap);
 
     lap.distance[i] = point.distance - road[0].distance;
     lap.centre_distance[i] = point.centre_distance;
@@ -180,25 +221,7 @@ QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, double tr
     }
     time += 2.0 * ds / (v + v_next);
   }
-  // Close the lap at the start line with the first sample's channels.
-  lap.distance[n] = n * ds;
-  lap.centre_distance[n] = lap.centre_distance[0] + track_length;
-  lap.offset[n] = lap.offset[0];
-  lap.time[n] = time;
-  lap.lap_time = time;
-  lap.speed[n] = lap.speed[0];
-  lap.accel_long[n] = lap.accel_long[0];
-  lap.accel_lat[n] = lap.accel_lat[0];
-  lap.steer[n] = lap.steer[0];
-  lap.limit[n] = lap.limit[0];
-  for (int k = 0; k < 4; ++k) {
-    CornerChannels& ch = lap.corners[k];
-    for (auto* v :
-         {&ch.speed, &ch.fx, &ch.fy, &ch.fz, &ch.slip_angle, &ch.slip_ratio, &ch.brake_fx}) {
-      (*v)[n] = (*v)[0];
-    }
-    lap.tread_temp_used[k][n] = lap.tread_temp_used[k][0];
-  }
+  CloseLap(lap, n, ds, track_length, time);
   return lap;
 }
 
@@ -283,6 +306,117 @@ double CheckCautionSpeed(double kph, std::string_view option) {
   return kph / 3.6;
 }
 
+namespace {
+
+// What every pass of a QSS lap shares. `prep` follows the lap's set-up (the hot pressures).
+struct PassContext {
+  const vehicle::Car& car;
+  const Prepared& prep;
+  const QssOptions& options;
+  double track_length;
+  bool own_rolling;
+};
+
+// One pass: speed profile, forces and slips, thermal replay from `from`. The profile and the
+// forces are solved again with the cornering drag the last forces and slip angles gave, until
+// the speeds move by less than 1 mm/s on average (each coefficient is then its point's own to
+// that; the lap time settles to about 0.2 ms in 3-4 profiles).
+QssLap RunPass(const PassContext& x, std::span<const RoadPoint> r,
+               const std::array<std::vector<double>, 4>& g,
+               const std::array<std::vector<double>, 4>& t, const ReplayInitialState& from,
+               std::vector<double>& drag, std::span<const double> rolling, int max_passes) {
+  const Prepared& prep = x.prep;
+  if (max_passes <= 1) std::fill(drag.begin(), drag.end(), 0.0);
+  SpeedProfile profile = CalcSpeedProfile(prep.qss, r, g, drag, rolling);
+  std::vector<double> solved;
+  QssLap lap = BuildLap(prep, r, x.track_length, profile, g, t, drag, rolling, &solved);
+  for (int pass = 1; pass < max_passes; ++pass) {
+    drag = solved;
+    SpeedProfile next = CalcSpeedProfile(prep.qss, r, g, drag, rolling);
+    // The mean change: a few points where the limit switches (a braking point moving by a
+    // point) keep moving by 0.02-0.04 m/s while the rest settle.
+    double moved = 0.0;
+    for (size_t i = 0; i < r.size(); ++i) moved += std::abs(next.speed[i] - profile.speed[i]);
+    moved /= static_cast<double>(r.size());
+    profile = std::move(next);
+    lap = BuildLap(prep, r, x.track_length, profile, g, t, drag, rolling, &solved);
+    if (moved < 1e-3) break;
+  }
+  drag = std::move(solved);
+  ReplayInputs inputs;
+  inputs.time = lap.time;
+  inputs.corners = lap.corners;
+  inputs.ambient_temp.assign(r.size() + 1, x.options.ambient_temp);
+  inputs.track_temp.assign(r.size() + 1, x.options.track_temp);
+  lap.thermal = RunReplay(x.car, inputs, from, x.options.replay);
+  return lap;
+}
+
+// The grip and tread temperature a lap left at each point drive the next pass; so do the
+// tyres' rolling-resistance coefficients, weighted by their loads there.
+void TakeThermal(const PassContext& x, const QssLap& lap, std::array<std::vector<double>, 4>& g,
+                 std::array<std::vector<double>, 4>& t, std::vector<double>& rolling) {
+  for (int k = 0; k < 4; ++k) {
+    const CornerHistory& h = lap.thermal.corners[k];
+    g[k].assign(h.grip_factor.begin(), h.grip_factor.end() - 1);
+    t[k].assign(h.tread_temp.begin(), h.tread_temp.end() - 1);
+  }
+  if (!x.own_rolling) return;
+  const size_t m = lap.speed.size() - 1;
+  rolling.assign(m, 0.0);
+  for (size_t i = 0; i < m; ++i) {
+    double load = 0.0, weighted = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      const CornerHistory& h = lap.thermal.corners[k];
+      const double fz = std::max(lap.corners[k].fz[i], 0.0);
+      const double c = h.rolling_resistance.empty() ? x.prep.qss.rolling_coefficient[k]
+                                                    : h.rolling_resistance[i];
+      load += fz;
+      weighted += c * fz;
+    }
+    rolling[i] = load > 0.0 ? weighted / load : -1.0;
+  }
+}
+
+// What a pass over the full road starts from: each corner's grip and tread temperature at each
+// point, the cornering-drag coefficients of the last solution (CalcResistance: the next lap's
+// first guess, so that it needs one or two profiles where the first needs three) and the
+// rolling-resistance coefficients the last lap's tyres had, where a tyre's thermal model carries
+// its own (the gas-and-rim tyre: the car pays for its hysteresis; empty: the car's force
+// models', CalcResistance).
+struct RoadGuess {
+  std::array<std::vector<double>, 4> grip, tread;
+  std::vector<double> drag;
+  std::vector<double> rolling;
+};
+
+// Thermal coupling of the first lap: a first pass on a road of about 4 m spacing (the
+// temperatures it gives vary over tens of metres) from the starting temperatures, its grip
+// and tread temperatures interpolated onto the full road for the real pass.
+void CoupleFirstLap(const PassContext& x, std::span<const RoadPoint> road,
+                    const ReplayInitialState& state, RoadGuess& guess) {
+  const std::vector<RoadPoint> coarse = Coarsen(road, 4.0);
+  std::array<std::vector<double>, 4> g, t;
+  for (int k = 0; k < 4; ++k) {
+    g[k].assign(coarse.size(), guess.grip[k][0]);
+    t[k].assign(coarse.size(), guess.tread[k][0]);
+  }
+  std::vector<double> coarse_drag(coarse.size(), 0.0);
+  std::vector<double> coarse_rolling;
+  // Two profiles here: this pass only sets the grip the real one starts from.
+  const QssLap first =
+      RunPass(x, coarse, g, t, state, coarse_drag, {}, std::min(x.options.max_drag_passes, 2));
+  TakeThermal(x, first, g, t, coarse_rolling);
+  for (int k = 0; k < 4; ++k) {
+    guess.grip[k] = InterpolatePeriodic(coarse, g[k], road);
+    guess.tread[k] = InterpolatePeriodic(coarse, t[k], road);
+  }
+  guess.drag = InterpolatePeriodic(coarse, coarse_drag, road);  // the full road's first guess
+  if (x.own_rolling) guess.rolling = InterpolatePeriodic(coarse, coarse_rolling, road);
+}
+
+}  // namespace
+
 QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
                     const QssOptions& options) {
   const VehicleParams& params = vehicle::RequireVehicle(car, "the QSS lap");
@@ -298,82 +432,18 @@ QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
       options.track_length > 0.0 ? options.track_length : n * (road[1].distance - road[0].distance);
 
   ReplayInitialState state = options.initial;
-  std::array<std::vector<double>, 4> grip, tread;
+  RoadGuess guess;
   {
     const std::array<double, 4> g0 = GripOf(car, state);
     for (int k = 0; k < 4; ++k) {
-      grip[k].assign(n, g0[k]);
-      tread[k].assign(n, state.tyres[k].tread_temp);
+      guess.grip[k].assign(n, g0[k]);
+      guess.tread[k].assign(n, state.tyres[k].tread_temp);
     }
   }
-  // The cornering-drag coefficients of the last solution on the full road (CalcResistance): the
-  // next lap's first guess, so that it needs one or two profiles where the first needs three.
-  std::vector<double> road_drag(n, 0.0);
-  // The rolling-resistance coefficients the last lap's tyres had at each point, where a tyre's
-  // thermal model carries its own (the gas-and-rim tyre: the car pays for its hysteresis); empty:
-  // the car's force models' (CalcResistance).
-  std::vector<double> road_rolling;
+  guess.drag.assign(n, 0.0);
   bool own_rolling = false;
   for (Corner c : kAllCorners) own_rolling = own_rolling || car.tyre(c).params.HasGasAndRim();
-  // One pass: speed profile, forces and slips, thermal replay from `from`. The profile and the
-  // forces are solved again with the cornering drag the last forces and slip angles gave, until
-  // the speeds move by less than 1 mm/s on average (each coefficient is then its point's own to
-  // that; the lap time settles to about 0.2 ms in 3-4 profiles).
-  const auto run_pass =
-      [&](std::span<const RoadPoint> r, const std::array<std::vector<double>, 4>& g,
-          const std::array<std::vector<double>, 4>& t, const ReplayInitialState& from,
-          std::vector<double>& drag, std::span<const double> rolling, int max_passes) {
-        if (max_passes <= 1) std::fill(drag.begin(), drag.end(), 0.0);
-        SpeedProfile profile = CalcSpeedProfile(prep.qss, r, g, drag, rolling);
-        std::vector<double> solved;
-        QssLap lap = BuildLap(prep, r, track_length, profile, g, t, drag, rolling, &solved);
-        for (int pass = 1; pass < max_passes; ++pass) {
-          drag = solved;
-          SpeedProfile next = CalcSpeedProfile(prep.qss, r, g, drag, rolling);
-          // The mean change: a few points where the limit switches (a braking point moving by a
-          // point) keep moving by 0.02-0.04 m/s while the rest settle.
-          double moved = 0.0;
-          for (size_t i = 0; i < r.size(); ++i) moved += std::abs(next.speed[i] - profile.speed[i]);
-          moved /= static_cast<double>(r.size());
-          profile = std::move(next);
-          lap = BuildLap(prep, r, track_length, profile, g, t, drag, rolling, &solved);
-          if (moved < 1e-3) break;
-        }
-        drag = std::move(solved);
-        ReplayInputs inputs;
-        inputs.time = lap.time;
-        inputs.corners = lap.corners;
-        inputs.ambient_temp.assign(r.size() + 1, options.ambient_temp);
-        inputs.track_temp.assign(r.size() + 1, options.track_temp);
-        lap.thermal = RunReplay(car, inputs, from, options.replay);
-        return lap;
-      };
-  // The grip and tread temperature a lap left at each point drive the next pass; so do the
-  // tyres' rolling-resistance coefficients, weighted by their loads there.
-  const auto take_thermal = [&](const QssLap& lap, std::array<std::vector<double>, 4>& g,
-                                std::array<std::vector<double>, 4>& t,
-                                std::vector<double>& rolling) {
-    for (int k = 0; k < 4; ++k) {
-      const CornerHistory& h = lap.thermal.corners[k];
-      g[k].assign(h.grip_factor.begin(), h.grip_factor.end() - 1);
-      t[k].assign(h.tread_temp.begin(), h.tread_temp.end() - 1);
-    }
-    if (!own_rolling) return;
-    const size_t m = lap.speed.size() - 1;
-    rolling.assign(m, 0.0);
-    for (size_t i = 0; i < m; ++i) {
-      double load = 0.0, weighted = 0.0;
-      for (int k = 0; k < 4; ++k) {
-        const CornerHistory& h = lap.thermal.corners[k];
-        const double fz = std::max(lap.corners[k].fz[i], 0.0);
-        const double c = h.rolling_resistance.empty() ? prep.qss.rolling_coefficient[k]
-                                                      : h.rolling_resistance[i];
-        load += fz;
-        weighted += c * fz;
-      }
-      rolling[i] = load > 0.0 ? weighted / load : -1.0;
-    }
-  };
+  const PassContext x{car, prep, options, track_length, own_rolling};
 
   QssResult result;
   for (int lap_index = 0; lap_index < options.laps; ++lap_index) {
@@ -384,32 +454,10 @@ QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
       prep = Prepared(hot_car, *hot_car.vehicle);
     }
     prep.qss.speed_cap = options.SpeedCapOfLap(lap_index);
-    if (lap_index == 0 && options.couple_first_lap) {
-      // Thermal coupling of the first lap: a first pass on a road of about 4 m spacing (the
-      // temperatures it gives vary over tens of metres) from the starting temperatures, its grip
-      // and tread temperatures interpolated onto the full road for the real pass.
-      const std::vector<RoadPoint> coarse = Coarsen(road, 4.0);
-      std::array<std::vector<double>, 4> g, t;
-      for (int k = 0; k < 4; ++k) {
-        g[k].assign(coarse.size(), grip[k][0]);
-        t[k].assign(coarse.size(), tread[k][0]);
-      }
-      std::vector<double> coarse_drag(coarse.size(), 0.0);
-      std::vector<double> coarse_rolling;
-      // Two profiles here: this pass only sets the grip the real one starts from.
-      const QssLap first =
-          run_pass(coarse, g, t, state, coarse_drag, {}, std::min(options.max_drag_passes, 2));
-      take_thermal(first, g, t, coarse_rolling);
-      for (int k = 0; k < 4; ++k) {
-        grip[k] = InterpolatePeriodic(coarse, g[k], road);
-        tread[k] = InterpolatePeriodic(coarse, t[k], road);
-      }
-      road_drag = InterpolatePeriodic(coarse, coarse_drag, road);  // the full road's first guess
-      if (own_rolling) road_rolling = InterpolatePeriodic(coarse, coarse_rolling, road);
-    }
-    QssLap lap =
-        run_pass(road, grip, tread, state, road_drag, road_rolling, options.max_drag_passes);
-    take_thermal(lap, grip, tread, road_rolling);
+    if (lap_index == 0 && options.couple_first_lap) CoupleFirstLap(x, road, state, guess);
+    QssLap lap = RunPass(x, road, guess.grip, guess.tread, state, guess.drag, guess.rolling,
+                         options.max_drag_passes);
+    TakeThermal(x, lap, guess.grip, guess.tread, guess.rolling);
     state = EndState(lap.thermal);
     result.laps.push_back(std::move(lap));
   }

@@ -159,38 +159,27 @@ ReplayResult RunStochasticReplay(const vehicle::Car& any_car, const ReplayInputs
   return result;
 }
 
-SynthLog SynthesizeLog(const vehicle::Car& any_car, std::span<const RoadPoint> road,
-                       const SynthOptions& o) {
-  CheckOptions(o);
-  vehicle::RequireVehicle(any_car, "hotlap synth (the lap simulation)");
-  // The truth is the paper's models, which the fits identify and the observer tracks
-  // (docs/fitting.md): a gas-and-rim tyre or a bulk disc runs as its paper part.
-  const vehicle::Car car = vehicle::PaperModelsOf(any_car);
-  ReplayInitialState initial;
-  if (o.initial) {
-    initial = *o.initial;
-  } else {
-    initial = CarStartState(car);
-  }
-  QssOptions qss;
-  qss.laps = o.laps;
-  qss.ambient_temp = o.ambient_temp;
-  qss.track_temp = o.track_temp;
-  qss.initial = initial;
-  qss.replay.max_step_s = o.max_step_s;
-  const QssResult laps = RunQssLap(car, road, qss);
+namespace {
 
-  // The laps back to back (each lap's closing sample is the next one's first).
-  ReplayInputs joined;
+// The QSS laps back to back (each lap's closing sample is the next one's first): the corners'
+// channels with the distance and the speed along the lap.
+struct JoinedLaps {
+  ReplayInputs inputs;
   std::vector<double> distance, speed;
+  double total_time_s = 0.0;
+};
+
+JoinedLaps JoinLaps(const QssResult& laps, const SynthOptions& o) {
+  JoinedLaps out;
+  ReplayInputs& joined = out.inputs;
   double t0 = 0.0, s0 = 0.0;
   for (size_t l = 0; l < laps.laps.size(); ++l) {
     const QssLap& lap = laps.laps[l];
     const size_t count = lap.time.size() - (l + 1 < laps.laps.size() ? 1 : 0);
     for (size_t i = 0; i < count; ++i) {
       joined.time.push_back(t0 + lap.time[i]);
-      distance.push_back(s0 + lap.distance[i]);
-      speed.push_back(lap.speed[i]);
+      out.distance.push_back(s0 + lap.distance[i]);
+      out.speed.push_back(lap.speed[i]);
       for (int c = 0; c < 4; ++c) {
         const CornerChannels& from = lap.corners[c];
         CornerChannels& to = joined.corners[c];
@@ -208,16 +197,15 @@ SynthLog SynthesizeLog(const vehicle::Car& any_car, std::span<const RoadPoint> r
   }
   joined.ambient_temp.assign(joined.time.size(), o.ambient_temp);
   joined.track_temp.assign(joined.time.size(), o.track_temp);
+  out.total_time_s = t0;
+  return out;
+}
 
-  SynthLog log;
-  log.lap_time_s = t0 / static_cast<double>(laps.laps.size());
-  log.inputs = ResampleReplayInputs(joined, o.rate_hz, 1);
-  ReplayOptions replay;
-  replay.max_step_s = o.max_step_s;
-  log.truth = o.process_noise ? RunStochasticReplay(car, log.inputs, initial, o.max_step_s,
-                                                    *o.process_noise, ProcessNoiseSeed(o.seed))
-                              : RunReplay(car, log.inputs, initial, replay);
-
+// The log's channels at its rate: the inputs as they are, the truth's temperatures and wear as a
+// lagged, noisy sensor reads them, and the rolling radius with its noise (one noise stream from
+// the seed, drawn in the columns' order).
+void AddSynthChannels(const vehicle::Car& car, const JoinedLaps& joined, const SynthOptions& o,
+                      SynthLog& log) {
   const ReplayInputs& in = log.inputs;
   const size_t n = in.time.size();
   const auto add = [&](std::string_view quantity, std::optional<Corner> corner,
@@ -228,7 +216,7 @@ SynthLog SynthesizeLog(const vehicle::Car& any_car, std::span<const RoadPoint> r
   };
   const auto resample = [&](const std::vector<double>& y) {
     std::vector<double> out(n);
-    for (size_t k = 0; k < n; ++k) out[k] = Interpolate(joined.time, y, in.time[k]);
+    for (size_t k = 0; k < n; ++k) out[k] = Interpolate(joined.inputs.time, y, in.time[k]);
     return out;
   };
   GaussianNoise noise(o.seed);
@@ -239,8 +227,8 @@ SynthLog SynthesizeLog(const vehicle::Car& any_car, std::span<const RoadPoint> r
     return out;
   };
   add("time", std::nullopt, in.time);
-  add("distance", std::nullopt, resample(distance));
-  add("speed", std::nullopt, resample(speed));
+  add("distance", std::nullopt, resample(joined.distance));
+  add("speed", std::nullopt, resample(joined.speed));
   add("ambient_temp", std::nullopt, in.ambient_temp);
   add("track_temp", std::nullopt, in.track_temp);
   for (Corner c : kAllCorners) {
@@ -272,12 +260,16 @@ SynthLog SynthesizeLog(const vehicle::Car& any_car, std::span<const RoadPoint> r
     }
     add("rolling_radius", c, std::move(radius));
   }
+}
 
-  log.metadata = {
+std::vector<std::pair<std::string, std::string>> SynthMetadata(const vehicle::Car& car,
+                                                               const SynthOptions& o,
+                                                               double lap_time_s) {
+  std::vector<std::pair<std::string, std::string>> metadata = {
       {"source", fmt::format("hotlap {} synth: simulated, not measured", HOTLAP_VERSION)},
       {"car", car.name},
       {"laps", std::to_string(o.laps)},
-      {"lap_time_s", fmt::format("{:.6f}", log.lap_time_s)},
+      {"lap_time_s", fmt::format("{:.6f}", lap_time_s)},
       {"rate_hz", fmt::format("{:g}", o.rate_hz)},
       {"temp_noise_C", fmt::format("{:g}", o.temp_noise_K)},
       {"sensor_lag_s", fmt::format("{:g}", o.sensor_lag_s)},
@@ -288,7 +280,7 @@ SynthLog SynthesizeLog(const vehicle::Car& any_car, std::span<const RoadPoint> r
   if (o.process_noise) {
     // Only with the option, so that a log without it is what it always was.
     const SynthProcessNoise& q = *o.process_noise;
-    log.metadata.push_back(
+    metadata.push_back(
         {"process_noise",
          fmt::format("random walk on the true states, intensities tread {:g} K^2/s, carcass {:g} "
                      "K^2/s, wear {:g} mm^2/s, disc {:g} K^2/s, calliper {:g} K^2/s",
@@ -296,9 +288,45 @@ SynthLog SynthesizeLog(const vehicle::Car& any_car, std::span<const RoadPoint> r
                      q.disc_temp_K2_per_s, q.calliper_temp_K2_per_s)});
   }
   if (!car.overrides.empty()) {
-    log.metadata.insert(log.metadata.begin() + 2,
-                        {"overrides", vehicle::OverridesText(car.overrides)});
+    metadata.insert(metadata.begin() + 2, {"overrides", vehicle::OverridesText(car.overrides)});
   }
+  return metadata;
+}
+
+}  // namespace
+
+SynthLog SynthesizeLog(const vehicle::Car& any_car, std::span<const RoadPoint> road,
+                       const SynthOptions& o) {
+  CheckOptions(o);
+  vehicle::RequireVehicle(any_car, "hotlap synth (the lap simulation)");
+  // The truth is the paper's models, which the fits identify and the observer tracks
+  // (docs/fitting.md): a gas-and-rim tyre or a bulk disc runs as its paper part.
+  const vehicle::Car car = vehicle::PaperModelsOf(any_car);
+  ReplayInitialState initial;
+  if (o.initial) {
+    initial = *o.initial;
+  } else {
+    initial = CarStartState(car);
+  }
+  QssOptions qss;
+  qss.laps = o.laps;
+  qss.ambient_temp = o.ambient_temp;
+  qss.track_temp = o.track_temp;
+  qss.initial = initial;
+  qss.replay.max_step_s = o.max_step_s;
+  const QssResult laps = RunQssLap(car, road, qss);
+  const JoinedLaps joined = JoinLaps(laps, o);
+
+  SynthLog log;
+  log.lap_time_s = joined.total_time_s / static_cast<double>(laps.laps.size());
+  log.inputs = ResampleReplayInputs(joined.inputs, o.rate_hz, 1);
+  ReplayOptions replay;
+  replay.max_step_s = o.max_step_s;
+  log.truth = o.process_noise ? RunStochasticReplay(car, log.inputs, initial, o.max_step_s,
+                                                    *o.process_noise, ProcessNoiseSeed(o.seed))
+                              : RunReplay(car, log.inputs, initial, replay);
+  AddSynthChannels(car, joined, o, log);
+  log.metadata = SynthMetadata(car, o, log.lap_time_s);
   return log;
 }
 

@@ -146,130 +146,150 @@ std::string UnknownList(const SegmentLoop& loop, const std::vector<double>& u) {
   return out;
 }
 
-}  // namespace
-
-const char* SegmentTypeName(SegmentType type) {
-  switch (type) {
-    case SegmentType::kStraight:
-      return "straight";
-    case SegmentType::kArc:
-      return "arc";
-    case SegmentType::kClothoid:
-      return "clothoid";
+// The closure equations of a loop (x, y, heading and, with a target length, length) and the
+// loop's centre line for unknown values x.
+class Closure {
+ public:
+  // Integrates the loop once at `guess` for the turns it winds and the heading's scale.
+  Closure(const SegmentLoop& loop, const std::vector<double>& guess)
+      : loop_(loop), equations_(loop.target_length_m ? 4 : 3) {
+    const internal::CentreLineEnd guess_end = Integrate(guess);
+    winding_ = static_cast<int>(std::lround(guess_end.heading_rad / (2.0 * kPi)));
+    heading_scale_m_ = guess_end.length_m / (2.0 * kPi);
   }
-  return "?";
-}
 
-SegmentTrack SolveSegmentLoop(const SegmentLoop& loop) {
-  const size_t n_unknowns = loop.unknowns.size();
-  const int equations = loop.target_length_m ? 4 : 3;
-  std::vector<double> u(n_unknowns);
-  for (size_t k = 0; k < n_unknowns; ++k) u[k] = loop.unknowns[k].guess;
+  int equations() const { return equations_; }
+  double heading_scale_m() const { return heading_scale_m_; }
 
-  const TrackStart origin;
   // A geometry the unknowns make impossible (a track beyond the longest the builder takes, a
   // piece of no length): an InputError naming the file's unknowns, not a NumericalError out of
   // the loader (found by fuzzing, 2026-11-27: a Newton step through such a geometry).
-  const auto integrate = [&](const std::vector<double>& x) {
+  internal::CentreLineEnd Integrate(const std::vector<double>& x) const {
     try {
-      return internal::IntegrateCentreLine(Pieces(Geometry(loop, x)), origin);
+      return internal::IntegrateCentreLine(Pieces(Geometry(loop_, x)), origin_);
     } catch (const NumericalError& e) {
       throw InputError(fmt::format("{}: the loop cannot be built with these numbers ({}): {}",
-                                   Where(loop, "solve"), UnknownList(loop, x), e.what()));
-    }
-  };
-  const internal::CentreLineEnd guess_end = integrate(u);
-  const int winding = static_cast<int>(std::lround(guess_end.heading_rad / (2.0 * kPi)));
-  const double heading_scale_m = guess_end.length_m / (2.0 * kPi);
-  const auto residual = [&](const std::vector<double>& x) {
-    Residual out;
-    out.end = integrate(x);
-    out.r.resize(equations);
-    out.r[0] = out.end.x_m;
-    out.r[1] = out.end.y_m;
-    out.r[2] = (out.end.heading_rad - 2.0 * kPi * winding) * heading_scale_m;
-    if (loop.target_length_m) out.r[3] = out.end.length_m - *loop.target_length_m;
-    return out;
-  };
-  const auto solved = [&](const Residual& res) {
-    const double heading = res.r[2] / heading_scale_m;
-    return std::abs(res.r[0]) < kSolvedMetres && std::abs(res.r[1]) < kSolvedMetres &&
-           std::abs(heading) < kSolvedHeading &&
-           (equations == 3 || std::abs(res.r[3]) < kSolvedMetres);
-  };
-
-  int iterations = 0;
-  if (n_unknowns > 0) {
-    if (static_cast<int>(n_unknowns) != equations) {
-      throw InputError(fmt::format(
-          "{}: {} unknown(s) for {} closure equations (x, y, heading{}): declare exactly {} "
-          "unknowns, or none and numbers that close the loop",
-          Where(loop, "solve"), n_unknowns, equations, loop.target_length_m ? ", length_m" : "",
-          equations));
-    }
-    Residual res = residual(u);
-    for (;; ++iterations) {
-      if (solved(res)) break;
-      if (iterations == kMaxIterations) break;  // judged by the closure check below
-      // Central-difference Jacobian, steps relative to each unknown.
-      Eigen::MatrixXd jacobian(equations, equations);
-      for (int k = 0; k < equations; ++k) {
-        const double h = 1e-6 * std::max(1.0, std::abs(u[k]));
-        std::vector<double> up = u, down = u;
-        up[k] += h;
-        down[k] -= h;
-        jacobian.col(k) = (residual(up).r - residual(down).r) / (2.0 * h);
-      }
-      Eigen::FullPivLU<Eigen::MatrixXd> lu(jacobian);
-      lu.setThreshold(1e-8);
-      if (lu.rank() < equations) {
-        throw InputError(fmt::format(
-            "{}: the unknowns cannot close the loop: changing them does not move the end "
-            "independently in x, y, heading{} (e.g. two parallel straights both unknown); choose "
-            "other unknowns ({})",
-            Where(loop, "solve"), loop.target_length_m ? " and length" : "", UnknownList(loop, u)));
-      }
-      const Eigen::VectorXd step = lu.solve(-res.r);
-      // Damped step: keep every unknown positive and the residual decreasing.
-      bool moved = false;
-      for (double alpha = 1.0; alpha > 1e-6; alpha /= 2.0) {
-        std::vector<double> trial = u;
-        bool positive = true;
-        for (int k = 0; k < equations; ++k) {
-          trial[k] += alpha * step[k];
-          positive = positive && trial[k] > 0.0;
-        }
-        if (!positive) continue;
-        Residual next;
-        try {
-          next = residual(trial);
-        } catch (const InputError&) {
-          continue;  // a step too far: a shorter one may build
-        }
-        if (next.r.norm() < res.r.norm()) {
-          u = trial;
-          res = std::move(next);
-          moved = true;
-          break;
-        }
-      }
-      if (!moved) break;  // no further progress; judged below
-    }
-    // Solved values must lie in the ranges a file could give them.
-    for (size_t k = 0; k < n_unknowns; ++k) {
-      const LoopUnknown& x = loop.unknowns[k];
-      if (x.kind == UnknownKind::kAngle && u[k] > 2.0 * kPi) {
-        throw InputError(fmt::format(
-            "{}: solved value {:.6g} deg is out of range: must be in (0, 360] deg; the loop "
-            "cannot close with these numbers ({})",
-            Where(loop, "solve." + x.name), RadToDeg(u[k]), UnknownList(loop, u)));
-      }
+                                   Where(loop_, "solve"), UnknownList(loop_, x), e.what()));
     }
   }
 
-  // Whether solved or given, the loop must close.
-  const Residual final_res = residual(u);
-  const double heading_gap = final_res.r[2] / heading_scale_m;
+  Residual At(const std::vector<double>& x) const {
+    Residual out;
+    out.end = Integrate(x);
+    out.r.resize(equations_);
+    out.r[0] = out.end.x_m;
+    out.r[1] = out.end.y_m;
+    out.r[2] = (out.end.heading_rad - 2.0 * kPi * winding_) * heading_scale_m_;
+    if (loop_.target_length_m) out.r[3] = out.end.length_m - *loop_.target_length_m;
+    return out;
+  }
+
+  bool Solved(const Residual& res) const {
+    const double heading = res.r[2] / heading_scale_m_;
+    return std::abs(res.r[0]) < kSolvedMetres && std::abs(res.r[1]) < kSolvedMetres &&
+           std::abs(heading) < kSolvedHeading &&
+           (equations_ == 3 || std::abs(res.r[3]) < kSolvedMetres);
+  }
+
+ private:
+  const SegmentLoop& loop_;
+  const int equations_;
+  const TrackStart origin_;
+  int winding_ = 0;
+  double heading_scale_m_ = 0.0;
+};
+
+// Central-difference Jacobian of the closure at u, steps relative to each unknown.
+Eigen::MatrixXd Jacobian(const Closure& closure, const std::vector<double>& u) {
+  const int equations = closure.equations();
+  Eigen::MatrixXd jacobian(equations, equations);
+  for (int k = 0; k < equations; ++k) {
+    const double h = 1e-6 * std::max(1.0, std::abs(u[k]));
+    std::vector<double> up = u, down = u;
+    up[k] += h;
+    down[k] -= h;
+    jacobian.col(k) = (closure.At(up).r - closure.At(down).r) / (2.0 * h);
+  }
+  return jacobian;
+}
+
+// Damped step: keep every unknown positive and the residual decreasing. Moves u and res and
+// returns true, or returns false if no fraction of the step does.
+bool TakeDampedStep(const Closure& closure, const Eigen::VectorXd& step, std::vector<double>& u,
+                    Residual& res) {
+  for (double alpha = 1.0; alpha > 1e-6; alpha /= 2.0) {
+    std::vector<double> trial = u;
+    bool positive = true;
+    for (int k = 0; k < closure.equations(); ++k) {
+      trial[k] += alpha * step[k];
+      positive = positive && trial[k] > 0.0;
+    }
+    if (!positive) continue;
+    Residual next;
+    try {
+      next = closure.At(trial);
+    } catch (const InputError&) {
+      continue;  // a step too far: a shorter one may build
+    }
+    if (next.r.norm() < res.r.norm()) {
+      u = trial;
+      res = std::move(next);
+      return true;
+    }
+  }
+  return false;
+}
+
+// Newton's method on the closure from u (as many unknowns as equations); returns the
+// iterations taken. Whether it closed is judged by the caller.
+int SolveUnknowns(const SegmentLoop& loop, const Closure& closure, std::vector<double>& u) {
+  const int equations = closure.equations();
+  if (static_cast<int>(loop.unknowns.size()) != equations) {
+    throw InputError(fmt::format(
+        "{}: {} unknown(s) for {} closure equations (x, y, heading{}): declare exactly {} "
+        "unknowns, or none and numbers that close the loop",
+        Where(loop, "solve"), loop.unknowns.size(), equations,
+        loop.target_length_m ? ", length_m" : "", equations));
+  }
+  int iterations = 0;
+  Residual res = closure.At(u);
+  for (;; ++iterations) {
+    if (closure.Solved(res)) break;
+    if (iterations == kMaxIterations) break;  // judged by the closure check
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(Jacobian(closure, u));
+    lu.setThreshold(1e-8);
+    if (lu.rank() < equations) {
+      throw InputError(fmt::format(
+          "{}: the unknowns cannot close the loop: changing them does not move the end "
+          "independently in x, y, heading{} (e.g. two parallel straights both unknown); choose "
+          "other unknowns ({})",
+          Where(loop, "solve"), loop.target_length_m ? " and length" : "", UnknownList(loop, u)));
+    }
+    const Eigen::VectorXd step = lu.solve(-res.r);
+    if (!TakeDampedStep(closure, step, u, res)) break;  // no further progress; judged later
+  }
+  return iterations;
+}
+
+// Solved values must lie in the ranges a file could give them.
+void CheckSolvedRanges(const SegmentLoop& loop, const std::vector<double>& u) {
+  for (size_t k = 0; k < loop.unknowns.size(); ++k) {
+    const LoopUnknown& x = loop.unknowns[k];
+    if (x.kind == UnknownKind::kAngle && u[k] > 2.0 * kPi) {
+      throw InputError(fmt::format(
+          "{}: solved value {:.6g} deg is out of range: must be in (0, 360] deg; the loop "
+          "cannot close with these numbers ({})",
+          Where(loop, "solve." + x.name), RadToDeg(u[k]), UnknownList(loop, u)));
+    }
+  }
+}
+
+// Whether solved or given, the loop must close.
+void CheckClosed(const SegmentLoop& loop, const Closure& closure, const std::vector<double>& u,
+                 int iterations) {
+  const int equations = closure.equations();
+  const Residual final_res = closure.At(u);
+  const double heading_gap = final_res.r[2] / closure.heading_scale_m();
   const double position_gap = std::hypot(final_res.r[0], final_res.r[1]);
   const double length_gap = equations == 4 ? final_res.r[3] : 0.0;
   if (position_gap > kClosePosition || std::abs(heading_gap) > kCloseHeading ||
@@ -280,7 +300,7 @@ SegmentTrack SolveSegmentLoop(const SegmentLoop& loop) {
         position_gap, final_res.r[0], final_res.r[1], heading_gap,
         equations == 4 ? fmt::format(" and the length by {:.6g} m", length_gap) : "",
         kClosePosition, kCloseHeading, equations == 4 ? fmt::format(", {} m", kCloseLength) : "");
-    if (n_unknowns == 0) {
+    if (loop.unknowns.empty()) {
       throw InputError(fmt::format(
           "{}: the loop does not close: {}. Declare unknowns under 'solve:' so that the loader "
           "closes it (docs/tracks.md)",
@@ -291,8 +311,11 @@ SegmentTrack SolveSegmentLoop(const SegmentLoop& loop) {
                     "iterations {} ({}); change the guesses or the fixed numbers",
                     Where(loop, "solve"), iterations, gaps, UnknownList(loop, u)));
   }
+}
 
-  // Build from the start/finish point: split the first segment there.
+// The track of the closed loop, built from the start/finish point (the first segment split
+// there), with its segments' spans.
+SegmentTrack BuildLoopTrack(const SegmentLoop& loop, const std::vector<double>& u, int iterations) {
   const std::vector<SegmentGeometry> geometry = Geometry(loop, u);
   std::vector<RibbonPiece> pieces = Pieces(geometry);
   const double lead = loop.start_finish_fraction * geometry[0].length;
@@ -302,7 +325,8 @@ SegmentTrack SolveSegmentLoop(const SegmentLoop& loop) {
     pieces.push_back(before);
   }
   std::vector<LoopUnknown> unknowns = loop.unknowns;
-  for (size_t k = 0; k < n_unknowns; ++k) unknowns[k].value = u[k];
+  for (size_t k = 0; k < loop.unknowns.size(); ++k) unknowns[k].value = u[k];
+  const TrackStart origin;
   SegmentTrack out{Track::FromPieces(loop.name, pieces, origin), {}, unknowns, iterations};
   double s = 0.0;
   for (size_t i = 0; i < geometry.size(); ++i) {
@@ -320,6 +344,33 @@ SegmentTrack SolveSegmentLoop(const SegmentLoop& loop) {
     s += g.length;
   }
   return out;
+}
+
+}  // namespace
+
+const char* SegmentTypeName(SegmentType type) {
+  switch (type) {
+    case SegmentType::kStraight:
+      return "straight";
+    case SegmentType::kArc:
+      return "arc";
+    case SegmentType::kClothoid:
+      return "clothoid";
+  }
+  return "?";
+}
+
+SegmentTrack SolveSegmentLoop(const SegmentLoop& loop) {
+  std::vector<double> u(loop.unknowns.size());
+  for (size_t k = 0; k < u.size(); ++k) u[k] = loop.unknowns[k].guess;
+  const Closure closure(loop, u);
+  int iterations = 0;
+  if (!loop.unknowns.empty()) {
+    iterations = SolveUnknowns(loop, closure, u);
+    CheckSolvedRanges(loop, u);
+  }
+  CheckClosed(loop, closure, u, iterations);
+  return BuildLoopTrack(loop, u, iterations);
 }
 
 }  // namespace hotlap::track

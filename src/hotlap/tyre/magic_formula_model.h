@@ -30,6 +30,7 @@
 #include <array>
 #include <cmath>
 #include <type_traits>
+#include <utility>
 
 #include "hotlap/common/scalar.h"
 #include "hotlap/common/units.h"
@@ -431,6 +432,107 @@ HOTLAP_MF_MODEL_INLINE T EquivalentSlip(const T& alpha, const T& atan_argument) 
   return Where(Eq(sign, 0.0), T(0.0), T(atan_argument * sign));
 }
 
+// The pneumatic trail's slip angle (4.E34-E35) and its curve's B (A58) and C (4.E41).
+template <Value T>
+struct TrailCoefficients {
+  T alpha_t, bt, ct;
+};
+
+template <Value T>
+HOTLAP_MF_MODEL_INLINE TrailCoefficients<T> CalcTrailCoefficients(const Params<T>& p,
+                                                                  const Inputs<T>& in) {
+  using std::abs;
+  const T& dfz = in.dfz;
+  const T& gamma = in.gamma;
+  const T sht = p.QHZ1 + p.QHZ2 * dfz + (p.QHZ3 + p.QHZ4 * dfz) * in.gamma_star;  // (4.E35)
+  const T alpha_t = in.alpha_star + sht;                                          // (4.E34)
+  const T bt = (p.QBZ1 + p.QBZ2 * dfz + p.QBZ3 * dfz * dfz) *
+               (1.0 + p.QBZ4 * gamma + p.QBZ5 * abs(gamma)) * p.LKY / p.LMUY;  // (A58)
+  const T ct = p.QCZ1;                                                         // (4.E41)
+  return {alpha_t, bt, ct};
+}
+
+// The trail's curvature factor Et (4.E44), given atan(Bt Ct alpha_t); at most 1 with the limits.
+template <Value T>
+HOTLAP_MF_MODEL_INLINE T CalcTrailCurvature(const Params<T>& p, const Inputs<T>& in,
+                                            const T& atan_bt_ct_alpha_t, bool limits) {
+  const T& dfz = in.dfz;
+  T et = (p.QEZ1 + p.QEZ2 * dfz + p.QEZ3 * dfz * dfz) *
+         (1.0 + (p.QEZ4 + p.QEZ5 * in.gamma_star) * (2.0 / kPi) * atan_bt_ct_alpha_t);  // (4.E44)
+  if (limits) et = CapAtOne(et);
+  return et;
+}
+
+// The residual torque's slip angle alpha_r (4.E37-38) and the square of the term the slip ratio
+// adds to both equivalent slip angles (A54-A55).
+template <Value T>
+HOTLAP_MF_MODEL_INLINE std::pair<T, T> CalcResidualSlip(const Inputs<T>& in,
+                                                        const PureLateral<T>& lat,
+                                                        const PureLongitudinal<T>& lon) {
+  const T kya_prime = lat.kya + kEpsilon * SignOr1(lat.kya);        // (4.E39)
+  const T alpha_r = in.alpha_star + lat.shy + lat.svy / kya_prime;  // (4.E37-38)
+  const T kappa_term = lon.kxk / kya_prime * in.kappa;
+  const T kappa_term2 = kappa_term * kappa_term;
+  return {alpha_r, kappa_term2};
+}
+
+// The cosines that finish the weightings, given their curves' outer arctangents: Gxa (4.E51)
+// and Gyk (4.E59).
+template <Value T, class Math>
+HOTLAP_MF_MODEL_INLINE std::pair<T, T> FinishWeightings(const Weighting<T>& gxa_curves,
+                                                        const Weighting<T>& gyk_curves,
+                                                        const std::array<T, 4>& outer_atan) {
+  const std::array<T, 4> cosines = Math::SinOrCos(
+      std::array<T, 4>{
+          T(gxa_curves.num.c * outer_atan[0]),
+          T(gxa_curves.den.c * outer_atan[1]),
+          T(gyk_curves.num.c * outer_atan[2]),
+          T(gyk_curves.den.c * outer_atan[3]),
+      },
+      0b1111u);
+  return {cosines[0] / cosines[1], cosines[2] / cosines[3]};  // (4.E51), (4.E59)
+}
+
+// The aligning torque's parts: the pneumatic trail t, the residual torque mzr and the arm s of
+// Fx (4.E71).
+template <Value T>
+struct AligningTorqueParts {
+  T t, mzr, s;
+};
+
+// Pneumatic trail (4.E33-E44 with mfeval's choices), given cos(Ct atan(...)) of its curve, and
+// residual torque (4.E45-E47, 4.E75), given cos(alpha*) and the equivalent slip angle alpha_r,eq;
+// both reduced at low speed. And the arm s of Fx (A56).
+template <Value T>
+HOTLAP_MF_MODEL_INLINE AligningTorqueParts<T> CalcAligningTorqueParts(
+    const Params<T>& p, const Inputs<T>& in, const PureLateral<T>& lat, const T& fz_t,
+    const T& trail_cos, const T& cos_alpha_star, const T& alpha_r_eq, const T& fy) {
+  using std::abs;
+  const T& dfz = in.dfz;
+  const T& gamma = in.gamma;
+  const T& gamma_star = in.gamma_star;
+  const T r0 = p.UNLOADED_RADIUS;
+  const T dt = (p.QDZ1 + p.QDZ2 * dfz) * (1.0 - p.PPZ1 * in.dpi) *
+               (1.0 + p.QDZ3 * gamma + p.QDZ4 * gamma * gamma) * fz_t * (r0 / in.fz0_prime) *
+               p.LTR;                                  // (A60)
+  T t = dt * trail_cos * in.cos_alpha_prime * p.LFZO;  // (4.E73), mfeval
+  const T dr =
+      fz_t * r0 *
+      ((p.QDZ6 + p.QDZ7 * dfz) * p.LRES + ((p.QDZ8 + p.QDZ9 * dfz) * (1.0 + p.PPZ2 * in.dpi) +
+                                           (p.QDZ10 + p.QDZ11 * dfz) * abs(gamma_star)) *
+                                              gamma_star * p.LKZC) *
+      p.LMUY * Sign(in.vx) * cos_alpha_star;                         // (4.E47)
+  const T br = p.QBZ9 * p.LKY / p.LMUY + p.QBZ10 * lat.by * lat.cy;  // (4.E45)
+  T mzr = dr * CosAtan(T(br * alpha_r_eq));                          // (4.E75), Cr = 1
+  if (Any(in.low_speed)) {
+    t *= in.reduction_smooth;
+    mzr *= in.reduction_smooth;
+  }
+  const T s =
+      r0 * (p.SSZ1 + p.SSZ2 * (fy / p.FNOMIN) + (p.SSZ3 + p.SSZ4 * dfz) * gamma) * p.LS;  // (A56)
+  return {t, mzr, s};
+}
+
 // The whole model, in stages of batched transcendental functions (see the file comment).
 //
 // The longest chains of dependent functions run through the cornering stiffness: Kya (atan,
@@ -441,11 +543,9 @@ HOTLAP_MF_MODEL_INLINE T EquivalentSlip(const T& alpha, const T& atan_argument) 
 template <Value T, class Math>
 HOTLAP_MF_MODEL_INLINE Outputs<T> Evaluate(const Params<T>& p, const Point<T>& op,
                                            const MagicFormulaOptions& options) {
-  using std::abs;
   const Inputs<T> in = PrepareInputs<T, Math>(p, op, options);
   const bool mf52 = p.version == MagicFormulaVersion::kMf52;
   const bool limits = options.limits == MagicFormulaLimits::kClamp;
-  const T& dfz = in.dfz;
   const T& gamma = in.gamma;
   const T& gamma_star = in.gamma_star;
   const T zero(0.0);
@@ -462,13 +562,8 @@ HOTLAP_MF_MODEL_INLINE Outputs<T> Evaluate(const Params<T>& p, const Point<T>& o
   const Weighting<T> gxa_curves = CalcGxaCurves(p, in);
   const Weighting<T> gyk_curves = CalcGykCurves(p, in, options);
   const T q6 = p.QSX6 * mx_fz_n;
-  const T r0 = p.UNLOADED_RADIUS;
   const T& fz_t = limits ? in.fz_trail : in.fz;
-  const T sht = p.QHZ1 + p.QHZ2 * dfz + (p.QHZ3 + p.QHZ4 * dfz) * gamma_star;  // (4.E35)
-  const T alpha_t = in.alpha_star + sht;                                       // (4.E34)
-  const T bt = (p.QBZ1 + p.QBZ2 * dfz + p.QBZ3 * dfz * dfz) *
-               (1.0 + p.QBZ4 * gamma + p.QBZ5 * abs(gamma)) * p.LKY / p.LMUY;  // (A58)
-  const T ct = p.QCZ1;                                                         // (4.E41)
+  const auto [alpha_t, bt, ct] = CalcTrailCoefficients(p, in);
   const std::array<T, 7> atan1b = Math::Atan(std::array<T, 7>{
       lon.curve.bx,          // 0: Fx0
       gxa_curves.num.bx,     // 1: Gxa
@@ -490,9 +585,7 @@ HOTLAP_MF_MODEL_INLINE Outputs<T> Evaluate(const Params<T>& p, const Point<T>& o
       OuterArgument(gyk_curves.num, atan1b[3]),
       OuterArgument(gyk_curves.den, atan1b[4]),
   });
-  T et = (p.QEZ1 + p.QEZ2 * dfz + p.QEZ3 * dfz * dfz) *
-         (1.0 + (p.QEZ4 + p.QEZ5 * gamma_star) * (2.0 / kPi) * atan1b[5]);  // (4.E44)
-  if (limits) et = CapAtOne(et);
+  const T et = CalcTrailCurvature(p, in, atan1b[5], limits);
   const T tan_alpha_t = Math::Tan(alpha_t);
 
   // Stage 3: the pure lateral force's coefficients at both cambers and their curves' first
@@ -500,10 +593,7 @@ HOTLAP_MF_MODEL_INLINE Outputs<T> Evaluate(const Params<T>& p, const Point<T>& o
   const PureLateral<T> lat = CalcFy0Coefficients(p, in, gamma_star, sin2[0], options);
   // (MF 5.2's Mz does not use Fy0 at zero camber: its lanes then repeat the cambered one's.)
   const PureLateral<T> lat_flat = mf52 ? lat : CalcFy0Coefficients(p, in, zero, sin2[1], options);
-  const T kya_prime = lat.kya + kEpsilon * SignOr1(lat.kya);        // (4.E39)
-  const T alpha_r = in.alpha_star + lat.shy + lat.svy / kya_prime;  // (4.E37-38)
-  const T kappa_term = lon.kxk / kya_prime * in.kappa;
-  const T kappa_term2 = kappa_term * kappa_term;
+  const auto [alpha_r, kappa_term2] = CalcResidualSlip(in, lat, lon);
   const std::array<T, 4> atan3 = Math::Atan(std::array<T, 4>{
       lat.curve.bx,
       lat_flat.curve.bx,
@@ -513,16 +603,7 @@ HOTLAP_MF_MODEL_INLINE Outputs<T> Evaluate(const Params<T>& p, const Point<T>& o
   // (The residual torque's slip angle waits for stage 6: its tangent would hold up this batch.)
   const T tan_alpha_r = Math::Tan(alpha_r);
   // ... and meanwhile the cosines that finish the weightings (4.E51, 4.E59).
-  const std::array<T, 4> cos3 = Math::SinOrCos(
-      std::array<T, 4>{
-          T(gxa_curves.num.c * atan2[0]),
-          T(gxa_curves.den.c * atan2[1]),
-          T(gyk_curves.num.c * atan2[2]),
-          T(gyk_curves.den.c * atan2[3]),
-      },
-      0b1111u);
-  const T gxa = cos3[0] / cos3[1];                                 // (4.E51)
-  const T gyk = cos3[2] / cos3[3];                                 // (4.E59)
+  const auto [gxa, gyk] = FinishWeightings<T, Math>(gxa_curves, gyk_curves, atan2);
   const T alpha_t_eq = EquivalentSlip(alpha_t, atan3[2]);          // (A55)
   const Curve<T> trail_curve = MakeCurve(bt, ct, et, alpha_t_eq);  // (4.E73)
 
@@ -567,26 +648,9 @@ HOTLAP_MF_MODEL_INLINE Outputs<T> Evaluate(const Params<T>& p, const Point<T>& o
   out.mx = CalcMx(p, in, out.fy, atan1[3], trig7[2], trig7[1]);
   out.my = CalcMy<T, Math>(p, in, out.fx, power);
 
-  // Aligning torque: pneumatic trail (4.E33-E44 with mfeval's choices) ...
-  const T dt = (p.QDZ1 + p.QDZ2 * dfz) * (1.0 - p.PPZ1 * in.dpi) *
-               (1.0 + p.QDZ3 * gamma + p.QDZ4 * gamma * gamma) * fz_t * (r0 / in.fz0_prime) *
-               p.LTR;                                 // (A60)
-  T t = dt * trig7[0] * in.cos_alpha_prime * p.LFZO;  // (4.E73), mfeval
-  // ... and residual torque (4.E45-E47, 4.E75).
-  const T dr =
-      fz_t * r0 *
-      ((p.QDZ6 + p.QDZ7 * dfz) * p.LRES + ((p.QDZ8 + p.QDZ9 * dfz) * (1.0 + p.PPZ2 * in.dpi) +
-                                           (p.QDZ10 + p.QDZ11 * dfz) * abs(gamma_star)) *
-                                              gamma_star * p.LKZC) *
-      p.LMUY * Sign(in.vx) * trig7[3];                               // (4.E47)
-  const T br = p.QBZ9 * p.LKY / p.LMUY + p.QBZ10 * lat.by * lat.cy;  // (4.E45)
-  T mzr = dr * CosAtan(T(br * alpha_r_eq));                          // (4.E75), Cr = 1
-  if (Any(in.low_speed)) {
-    t *= in.reduction_smooth;
-    mzr *= in.reduction_smooth;
-  }
-  const T s = r0 * (p.SSZ1 + p.SSZ2 * (out.fy / p.FNOMIN) + (p.SSZ3 + p.SSZ4 * dfz) * gamma) *
-              p.LS;  // (A56)
+  // Aligning torque: pneumatic trail, residual torque and Fx's arm.
+  const auto [t, mzr, s] =
+      CalcAligningTorqueParts(p, in, lat, fz_t, trig7[0], trig7[3], alpha_r_eq, out.fy);
   if (mf52) {
     out.mz = -t * (out.fy - svyk) + mzr + s * out.fx;  // MF-Tyre 5.2 manual (mfeval)
   } else {
