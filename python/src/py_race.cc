@@ -3,20 +3,10 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include <algorithm>
 #include <string>
-#include <vector>
 
-#include <fmt/format.h>
-
-#include "hotlap/common/error.h"
-#include "hotlap/common/units.h"
-#include "hotlap/ocp/min_curvature_line.h"
 #include "hotlap/race/fall_off_cache.h"
-#include "hotlap/race/race_json.h"
-#include "hotlap/race/race_run.h"
-#include "hotlap/runs/race_spot_checks.h"
-#include "hotlap/sim/road.h"
+#include "hotlap/runs/race_command_run.h"
 #include "hotlap/track/track.h"
 #include "hotlap/vehicle/car.h"
 #include "py_convert.h"
@@ -34,50 +24,34 @@ py::dict Race(const vehicle::Car& car, const track::Track& track, int laps,
               bool policy, int fuel_units_per_lap, bool right_side_stops,
               double right_tyre_service_s, const py::object& cache_dir,
               const std::string& spot_checks, double spot_check_step_m) {
-  race::RaceRunOptions o;
-  o.rules.laps = laps;
-  o.rules.stage_ends = race::ParseStageEnds(stages, laps, "stages");
-  o.rules.fuel_capacity_kg = fuel_capacity_kg;
-  o.rules.fuel_per_lap_kg = fuel_per_lap_kg;
-  o.rules.tyre_sets = tyre_sets;
-  o.rules.pit_loss_s = pit_loss_s;
-  o.rules.caution_pit_loss_s = caution_pit_loss_s;
-  o.rules.right_side_stops = right_side_stops;
-  o.rules.right_tyre_service_s = right_tyre_service_s;
-  if (!cache_dir.is_none()) o.cache_dir = py::str(cache_dir).cast<std::string>();
-  o.fall_off_laps = fall_off_laps;
-  o.reference_fuel_kg = reference_fuel_kg;
-  o.cautions = race::ParseCautions(cautions, "cautions");
-  o.races = races;
-  o.policy = policy;
-  o.policy_options.fuel_units_per_lap = fuel_units_per_lap;
-  race::CheckRaceRules(o.rules);
-  if (!(step_m >= 0.5 && step_m <= 10.0)) {
-    throw InputError(fmt::format("step_m {:g} must be in [0.5, 10] m", step_m));
-  }
-  const std::vector<int> spot_ages =
-      runs::ParseSpotCheckAges(spot_checks, fall_off_laps, "spot_checks");
-  if (!(spot_check_step_m >= 1.0 && spot_check_step_m <= 20.0)) {
-    throw InputError(fmt::format("spot_check_step_m {:g} must be in [1, 20] m", spot_check_step_m));
-  }
-  vehicle::RequireVehicle(car, "hotlap.race");
-  race::RaceRun run;
-  runs::RaceSpotChecks spots;
+  runs::RaceCommandOptions o;
+  race::RaceRules& r = o.run.rules;
+  r.laps = laps;
+  r.fuel_capacity_kg = fuel_capacity_kg;
+  r.fuel_per_lap_kg = fuel_per_lap_kg;
+  r.tyre_sets = tyre_sets;
+  r.pit_loss_s = pit_loss_s;
+  r.caution_pit_loss_s = caution_pit_loss_s;
+  r.right_side_stops = right_side_stops;
+  r.right_tyre_service_s = right_tyre_service_s;
+  o.run.fall_off_laps = fall_off_laps;
+  o.run.reference_fuel_kg = reference_fuel_kg;
+  o.run.races = races;
+  o.run.policy = policy;
+  o.run.policy_options.fuel_units_per_lap = fuel_units_per_lap;
+  if (!cache_dir.is_none()) o.run.cache_dir = py::str(cache_dir).cast<std::string>();
+  o.stages = stages;
+  o.cautions = cautions;
+  o.step_m = step_m;
+  o.spot_checks = spot_checks;
+  o.spot_check_step_m = spot_check_step_m;
+  const runs::RaceCommandPlan plan = runs::PlanRaceCommand(o, runs::NameStyle::kPython);
+  runs::RaceCommandRun run;
   {
     py::gil_scoped_release release;
-    const std::vector<sim::RoadPoint> road = sim::SampleRoadAlongLine(
-        track, ocp::MinimumCurvatureLine(track, {.step_m = std::max(step_m, 2.0), .margin_m = 1.5}),
-        step_m);
-    run = race::RunRace(car, track.length_m(), road, o);
-    if (!spot_ages.empty()) {
-      spots = runs::RunRaceSpotChecks(car, track, road,
-                                      race::FallOffQssOptions(car, track.length_m(), o),
-                                      run.fall_off, spot_ages, spot_check_step_m);
-    }
+    run = runs::RunRaceCommand(car, track, plan);
   }
-  nlohmann::json j = race::RaceJson(run, o.cautions);
-  j["spot_checks"] = spot_ages.empty() ? nlohmann::json(nullptr) : runs::RaceSpotChecksJson(spots);
-  return ToPython(j);
+  return ToPython(runs::RaceCommandJson(run));
 }
 
 }  // namespace

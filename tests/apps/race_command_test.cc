@@ -82,6 +82,7 @@ TEST_F(RaceCommandTest, WritesThePlanAndTheFixedPlansItBeats) {
   const fs::path none = dir() / "none.json";
   ASSERT_EQ(Run(kShort + " --no-policy --races 0 --json " + none.string()).exit_code, 0);
   EXPECT_TRUE(Json(none)["policy"].is_null());
+  EXPECT_TRUE(Json(none)["spot_checks"].is_null());
 }
 
 TEST_F(RaceCommandTest, TheSecondRunReadsTheFallOffFromTheCacheAndPlansTheSame) {
@@ -149,6 +150,33 @@ TEST_F(RaceCommandTest, RightSideStopsDriveTheirOwnLapsAndAreCheckedAgainstThem)
   EXPECT_TRUE(Json(dir() / "rights.json")["plan"].contains("optimality_gap_s"));
 }
 
+TEST_F(RaceCommandTest, SpotChecksSolveTheOptimalLapFromTheFallOffsStates) {
+  const fs::path json = dir() / "spots.json";
+  const test::RunResult r = Run(kShort +
+                                " --races 0 --no-policy --spot-checks 1,5 --spot-check-step-m 20 "
+                                "--json " +
+                                json.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(test::Contains(r.out, "optimal-lap spot checks")) << r.out;
+  const nlohmann::json j = Json(json);
+  const nlohmann::json& spots = j["spot_checks"];
+  EXPECT_EQ(spots["step_m"].get<double>(), 20.0);
+  ASSERT_EQ(spots["checks"].size(), 2u);
+  for (size_t i = 0; i < 2; ++i) {
+    const nlohmann::json& c = spots["checks"][i];
+    EXPECT_TRUE(c["converged"].get<bool>()) << i;
+    // The QSS lap is the fall-off's; the minimum-time lap from the same state is faster (the
+    // QSS driver keeps to a fixed line and quasi-steady limits), by under two and a half seconds.
+    EXPECT_EQ(c["qss_lap_time_s"], j["fall_off"]["lap_time_s"][c["age_laps"].get<int>()]);
+    EXPECT_GT(c["difference_s"].get<double>(), 0.5) << i;
+    EXPECT_LT(c["difference_s"].get<double>(), 2.5) << i;
+  }
+  EXPECT_NEAR(spots["optimal_fall_off_s"].get<double>(),
+              spots["checks"][1]["optimal_lap_time_s"].get<double>() -
+                  spots["checks"][0]["optimal_lap_time_s"].get<double>(),
+              1e-6);
+}
+
 TEST_F(RaceCommandTest, BadRulesFailCleanlyWithoutOutput) {
   const fs::path json = dir() / "bad.json";
   for (const auto& [args, message] :
@@ -162,7 +190,11 @@ TEST_F(RaceCommandTest, BadRulesFailCleanlyWithoutOutput) {
         std::pair{std::string("race --races -1"), "Monte Carlo races -1"},
         std::pair{std::string("race --fuel-units-per-lap 0"), "fuel units a lap"},
         std::pair{std::string("race --right-side-stops --right-tyre-service-s -2"),
-                  "right-side tyre service -2 s"}}) {
+                  "right-side tyre service -2 s"},
+        std::pair{std::string("race --spot-checks 60"), "--spot-checks '60': ages"},
+        std::pair{std::string("race --spot-checks 5,3"), "increasing"},
+        std::pair{std::string("race --spot-checks 2,x"), "--spot-checks"},
+        std::pair{std::string("race --spot-check-step-m 0.5"), "--spot-check-step-m 0.5"}}) {
     const test::RunResult r = Run(args + " --json " + json.string());
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
     EXPECT_TRUE(test::Contains(r.err, message)) << args << ": " << r.err;
