@@ -131,7 +131,7 @@ TEST_F(RaceCommandTest, RightSideStopsDriveTheirOwnLapsAndAreCheckedAgainstThem)
   const test::RunResult r =
       Run("race --laps 60 --stages 20,40 --fall-off-laps 16 --step-m 4 "
           "--races 200 --no-policy --right-side-stops --json " +
-          json.string());
+          json.string() + " --report " + (dir() / "rights.html").string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(test::Contains(r.out, "right-side stops allowed")) << r.out;
   const nlohmann::json j = Json(json);
@@ -148,6 +148,10 @@ TEST_F(RaceCommandTest, RightSideStopsDriveTheirOwnLapsAndAreCheckedAgainstThem)
   for (const auto& p : j["fixed_plans"]) alternating |= p["name"] == "rights between";
   EXPECT_TRUE(alternating);
   EXPECT_TRUE(Json(dir() / "rights.json")["plan"].contains("optimality_gap_s"));
+  // The report draws the driven stops and the check.
+  const std::string page = test::ReadTextFile(dir() / "rights.html");
+  EXPECT_TRUE(test::Contains(page, "new right-side tyres after 4 laps on the set"));
+  EXPECT_TRUE(test::Contains(page, "driven (QSS)"));
 }
 
 TEST_F(RaceCommandTest, SpotChecksSolveTheOptimalLapFromTheFallOffsStates) {

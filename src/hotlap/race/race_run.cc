@@ -183,22 +183,24 @@ RaceRun RunRace(const vehicle::Car& car, double track_length_m,
     run.fall_off_cache = FallOffCacheFile(o.cache_dir, key);
     run.fall_off_from_cache = ReadCache(car, road, qss, key, &run);
   }
-  if (!run.fall_off_from_cache) {
+  const bool driven = !run.fall_off_from_cache;
+  if (driven) {
     FallOffRuns runs{
         .caution = caution, .right_stops_after = RightStopsFor(o), .progress = o.progress};
     run.fall_off = FallOffFromQss(car, road, qss, o.fall_off_laps, o.reference_fuel_kg, runs);
-    if (o.rules.right_side_stops) {
-      // A right-side stop between two of the fall-off's, driven against the interpolation.
-      const int before = std::max(1, (3 * o.fall_off_laps) / 8);
-      if (o.progress) {
-        o.progress(fmt::format(
-            "a right-side stop after {} laps driven, against the fall-off's two-age lap times",
-            before));
-      }
-      run.side_check = CheckRightSideStop(car, road, qss, run.fall_off, before, o.fall_off_laps);
-    }
-    if (!key.empty()) WriteCache(run.fall_off_cache, key, run);
   }
+  const bool check = o.rules.right_side_stops && !run.side_check;  // (a cache may lack it)
+  if (check) {
+    // A right-side stop between two of the fall-off's, driven against the interpolation.
+    const int before = std::max(1, (3 * o.fall_off_laps) / 8);
+    if (o.progress) {
+      o.progress(fmt::format(
+          "a right-side stop after {} laps driven, against the fall-off's two-age lap times",
+          before));
+    }
+    run.side_check = CheckRightSideStop(car, road, qss, run.fall_off, before, o.fall_off_laps);
+  }
+  if (!key.empty() && (driven || check)) WriteCache(run.fall_off_cache, key, run);
   const auto curves = std::chrono::steady_clock::now();
   run.plan = OptimalPlan(o.rules, run.fall_off);
   run.fixed = FixedPlans(o.rules, run.fall_off);
