@@ -78,6 +78,26 @@ CommandRunner RegisterSynthCommand(CLI::App& app) {
                   "Standard deviation of the rolling radius")
       ->capture_default_str()
       ->check(kNonNegative);
+  sub->add_option("--truth", a->run.truth,
+                  "The truth's models: 'paper' (the paper's two masses and lumped disc, what the "
+                  "fits identify and the observer tracks) or 'car' (the car's own gas-and-rim "
+                  "tyres and bulk discs, with TPMS channels)")
+      ->capture_default_str();
+  sub->add_flag("--tpms,!--no-tpms", a->run.tpms.enabled,
+                "With --truth car, write the TPMS channels pressure_<c>_kPa and gas_temp_<c>_C")
+      ->capture_default_str();
+  sub->add_option("--tpms-noise-kPa", a->run.tpms.pressure_noise_kPa,
+                  "Standard deviation of the TPMS pressure")
+      ->capture_default_str()
+      ->check(kNonNegative);
+  sub->add_option("--tpms-temp-noise-C", a->run.tpms.temp_noise_K,
+                  "Standard deviation of the TPMS gas temperature")
+      ->capture_default_str()
+      ->check(kNonNegative);
+  sub->add_option("--tpms-lag-s", a->run.tpms.lag_s,
+                  "First-order time constant of the TPMS sensors")
+      ->capture_default_str()
+      ->check(kNonNegative);
   sub->add_option("--process-noise", a->run.process_noise,
                   "Make the truth stochastic: the model plus the random-walk process noise of an "
                   "observer noise file (its process_noise section; 'default' for "

@@ -249,6 +249,12 @@ TEST(MotecChannelMapTest, UnitConversionsAgainstHandComputedValues) {
   EXPECT_NEAR(convert(330.0, "mm", "rolling_radius"), 0.33, 1e-15);
   EXPECT_NEAR(convert(1.5, "mm", "wear"), 1.5, 1e-15);  // wear is in mm
   EXPECT_NEAR(convert(2.0, "kW", "brake_power"), 2000.0, 0.0);
+  // TPMS: the inflation pressure to kPa, the gas temperature to degC.
+  EXPECT_NEAR(convert(48.0, "psi", "pressure"), 330.948350072, 1e-9);  // 48 x 6.894757293
+  EXPECT_NEAR(convert(2.2, "bar", "pressure"), 220.0, 1e-12);
+  EXPECT_NEAR(convert(185.0, "degF", "gas_temp"), 85.0, 1e-12);
+  EXPECT_FALSE(
+      ErrorOf([] { MotecConversionFor("degC", "pressure", "ch 'Tyre Pres FL'"); }).empty());
   // Units of kinds hotlap has no channel for are known, and refused for a channel of another kind.
   for (const char* unit : {"bar", "psi", "kPa", "g", "rpm", "rad"}) EXPECT_TRUE(IsMotecUnit(unit));
   EXPECT_TRUE(Contains(ErrorOf([] { MotecConversionFor("g", "speed", "ch 'Lat G'"); }),
@@ -265,6 +271,10 @@ TEST(MotecChannelMapTest, ShippedMapAndBadMaps) {
   EXPECT_EQ(map.Find("Wheel Speed FL")->corner, Corner::kFrontLeft);
   EXPECT_EQ(map.Find("Brake Disc Temp RR")->quantity, "disc_temp");
   EXPECT_EQ(map.Find("Track Temp")->corner, std::nullopt);
+  EXPECT_EQ(map.Find("Tyre Pres RF"), nullptr);  // MoTeC's corner order is FL FR RL RR
+  EXPECT_EQ(map.Find("Tyre Pres FR")->quantity, "pressure");
+  EXPECT_EQ(map.Find("Tyre Pres FR")->corner, Corner::kFrontRight);
+  EXPECT_EQ(map.Find("TPMS Temp RL")->quantity, "gas_temp");
   EXPECT_EQ(map.NamesFor("speed", std::nullopt),
             (std::vector<std::string>{"Ground Speed", "Corr Speed", "Vehicle Speed"}));
 

@@ -171,6 +171,41 @@ TEST_F(TelemetryTest, ConvertsEveryUnitToSi) {
   EXPECT_TRUE(log.unknown_columns().empty());
 }
 
+TEST_F(TelemetryTest, TpmsChannelsReadInPaAndKelvinAndRefusedWithoutAUnit) {
+  const fs::path path = tmp_.Write("tpms.csv",
+                                   "time_s,pressure_fl_psi,pressure_fr_kPa,pressure_rl_bar,"
+                                   "gas_temp_fl_C,gas_temp_fr_K,rim_temp_fl_C\n"
+                                   "0,20,330.95,1.5,60,350,45\n");
+  const Telemetry log = Telemetry::Read(path);
+  EXPECT_NEAR(log.Channel("pressure", Corner::kFrontLeft)[0], 20 * 6894.757293168361, 1e-6);
+  EXPECT_NEAR(log.Channel("pressure", Corner::kFrontRight)[0], 330950.0, 1e-6);
+  EXPECT_NEAR(log.Channel("pressure", Corner::kRearLeft)[0], 150000.0, 1e-6);
+  EXPECT_NEAR(log.Channel("gas_temp", Corner::kFrontLeft)[0], 333.15, kTol);
+  EXPECT_NEAR(log.Channel("gas_temp", Corner::kFrontRight)[0], 350.0, kTol);
+  EXPECT_NEAR(log.Channel("rim_temp", Corner::kFrontLeft)[0], 318.15, kTol);
+  EXPECT_EQ(ConvertSiToCanonical("pressure", 137895.14586336722), 137.89514586336722);
+  // A TPMS column without its unit: which unit is meant (psi or kPa differ by 6.9) is not
+  // guessed.
+  const fs::path bare = tmp_.Write("bare.csv", "time_s,pressure_fl\n0,20\n");
+  try {
+    (void)Telemetry::Read(bare);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(std::string(e.what()).find("bare.csv") != std::string::npos) << e.what();
+    EXPECT_TRUE(std::string(e.what()).find("'pressure_fl_kPa'") != std::string::npos) << e.what();
+  }
+  const fs::path mbar = tmp_.Write("mbar.csv", "time_s,pressure_fl_mbar\n0,20\n");
+  EXPECT_THROW((void)Telemetry::Read(mbar), InputError);
+  // A pressure no tyre holds (a sensor's fault code, 3000 psi): refused with its value.
+  const fs::path fault = tmp_.Write("fault.csv", "time_s,pressure_rr_psi\n0,44\n1,3000\n");
+  try {
+    (void)Telemetry::Read(fault);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(std::string(e.what()).find("3000") != std::string::npos) << e.what();
+  }
+}
+
 TEST_F(TelemetryTest, UnknownColumnsAreCarriedThroughRaw) {
   const Telemetry log = Telemetry::Read(
       tmp_.Write("log.csv", "throttle_pct,time_s,time_of_day,fx_fl_kN\n50,0,3600,1\n,1,3601,2\n"));

@@ -126,6 +126,44 @@ TEST_F(SynthTest, SameSeedSameLogOtherSeedOtherNoise) {
   EXPECT_EQ(Column(other, "fz_fl_N"), Column(*log_, "fz_fl_N"));
 }
 
+// With the car's own models as the truth, the TPMS channels: the gas's pressure and temperature
+// through a 2 s lag with their noise, from a stream of their own (the other channels unchanged);
+// with the paper's models (no gas) none.
+TEST_F(SynthTest, TheCarsOwnModelsWriteTpmsChannelsFromANoiseStreamOfTheirOwn) {
+  for (const std::string& c : log_->columns) {
+    EXPECT_EQ(c.find("pressure_"), std::string::npos) << c;
+    EXPECT_EQ(c.find("gas_temp_"), std::string::npos) << c;
+  }
+  SynthOptions o;
+  o.laps = 2;
+  o.rate_hz = 20.0;
+  o.paper_models = false;
+  const SynthLog with = SynthesizeLog(*car_, test::OvalRoad(), o);
+  o.tpms.enabled = false;
+  const SynthLog without = SynthesizeLog(*car_, test::OvalRoad(), o);
+  ASSERT_EQ(with.columns.size(), without.columns.size() + 8);
+  for (size_t i = 0; i < without.columns.size(); ++i) {
+    EXPECT_EQ(with.columns[i], without.columns[i]);
+    EXPECT_EQ(with.values[i], without.values[i]) << without.columns[i];
+  }
+  const std::vector<double>& p = Column(with, "pressure_fr_kPa");
+  const std::vector<double>& truth = with.truth.corners[1].pressure;
+  ASSERT_EQ(truth.size(), p.size());
+  FirstOrderLag<double> lag(2.0);
+  double sum2 = 0.0;
+  for (size_t k = 0; k < p.size(); ++k) {
+    const double e = p[k] - 1e-3 * lag.Next(with.inputs.time[k], truth[k]);
+    sum2 += e * e;
+  }
+  EXPECT_NEAR(std::sqrt(sum2 / p.size()), 0.35, 0.04);
+  // The right front's hot pressure above its cold set (48 psi at 25 degC) as its gas warms.
+  EXPECT_GT(p.back(), 48 * 6.894757);
+  EXPECT_GT(Column(with, "gas_temp_fr_C").back(), 40.0);
+  // The paper's stochastic truth only.
+  o.process_noise = SynthProcessNoise{};
+  EXPECT_THROW(SynthesizeLog(*car_, test::OvalRoad(), o), InputError);
+}
+
 // The stochastic truth with zero intensities is the deterministic replay, interval by interval.
 TEST_F(SynthTest, StochasticTruthWithoutNoiseIsTheReplay) {
   const vehicle::Car paper = vehicle::PaperModelsOf(*car_);
@@ -229,7 +267,9 @@ TEST(SynthOptionsTest, BadOptionsAreInputErrors) {
            },
            [](SynthOptions& o) {
              o.process_noise = SynthProcessNoise{0, 0, 0, std::nan(""), 0};
-           }}) {
+           },
+           [](SynthOptions& o) { o.tpms.pressure_noise_kPa = -0.1; },
+           [](SynthOptions& o) { o.tpms.lag_s = std::nan(""); }}) {
     SynthOptions o;
     edit(o);
     EXPECT_THROW(SynthesizeLog(car, road, o), InputError);

@@ -93,7 +93,8 @@ QuantityKind KindOf(std::string_view quantity) {
   if (quantity == "wear") return {Kind::kLength, 1000.0};  // canonical mm
   if (quantity == "rolling_radius" || quantity == "distance") return {Kind::kLength, 1.0};
   if (quantity == "time") return {Kind::kTime, 1.0};
-  return {Kind::kPower, 1.0};  // brake_power, q1..q7
+  if (quantity == "pressure") return {Kind::kPressure, 1.0};  // canonical kPa
+  return {Kind::kPower, 1.0};                                 // brake_power, q1..q7
 }
 
 // "FILE:LINE: " for a YAML node.

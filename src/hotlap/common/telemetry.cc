@@ -45,6 +45,9 @@ constexpr UnitInfo kWear[] = {{"mm", 1.0, 0.0}};  // wear is held in mm
 constexpr UnitInfo kLength[] = {{"m", 1.0, 0.0}, {"mm", 0.001, 0.0}};
 constexpr UnitInfo kPower[] = {{"W", 1.0, 0.0}, {"kW", 1000.0, 0.0}};
 constexpr UnitInfo kHeatFlow[] = {{"W", 1.0, 0.0}};
+// Inflation pressure, gauge, held in Pa; kPa is the file's unit.
+constexpr UnitInfo kPressure[] = {
+    {"kPa", 1000.0, 0.0}, {"psi", 6894.757293168361, 0.0}, {"bar", 1.0e5, 0.0}};
 
 constexpr QuantityInfo kQuantities[] = {
     {"time", false, kSeconds},
@@ -61,6 +64,9 @@ constexpr QuantityInfo kQuantities[] = {
     {"carcass_temp", true, kTemperature},
     {"disc_temp", true, kTemperature},
     {"calliper_temp", true, kTemperature},
+    {"gas_temp", true, kTemperature},  // the inflation gas (TPMS)
+    {"rim_temp", true, kTemperature},
+    {"pressure", true, kPressure},  // the inflation pressure, gauge (TPMS)
     {"wear", true, kWear},
     {"rolling_radius", true, kLength},
     {"grip_factor", true, kNone},

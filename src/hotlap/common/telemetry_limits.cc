@@ -14,6 +14,8 @@ constexpr double kHeaviest = 100000.0;    // N: 10 t on one wheel, ten times a C
 constexpr double kLoadNoise = 500.0;      // N: a load signal's offset with the wheel in the air
 constexpr double kSpeedNoise = 0.5;       // m/s: a speed signal's noise at standstill
 constexpr double kLockedSlipNoise = 0.1;  // slip ratio past -1 from two speed signals' lag
+constexpr double kVacuum = -101325.0;     // Pa gauge: no tyre holds less than a vacuum
+constexpr double kBurst = 2.0e6;          // Pa: 290 psi, several times any racing tyre's
 
 }  // namespace
 
@@ -41,6 +43,11 @@ std::optional<ChannelLimits> LimitsOf(std::string_view quantity) {
   if (quantity == "rolling_radius") {
     return ChannelLimits{std::numeric_limits<double>::min(), std::numeric_limits<double>::min(),
                          2.0, "", "a rolling radius is positive and below 2 m"};
+  }
+  if (quantity == "pressure") {
+    return ChannelLimits{kVacuum, kVacuum, kBurst, "",
+                         "a tyre's gauge pressure is above a vacuum (-101.3 kPa) and below 2000 "
+                         "kPa"};
   }
   if (quantity == "brake_power") {
     return ChannelLimits{0.0, 0.0, kInf, "", "a brake's power is not negative"};

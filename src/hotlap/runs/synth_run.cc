@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
 #include "hotlap/observe/observer_config.h"
 #include "hotlap/sim/road.h"
@@ -25,6 +26,11 @@ sim::SynthOptions SynthOptionsOf(const SynthRunOptions& a) {
   o.sensor_lag_s = a.lag_s;
   o.wear_noise_mm = a.wear_noise_mm;
   o.radius_noise_m = 1e-3 * a.radius_noise_mm;
+  o.tpms = a.tpms;
+  if (a.truth != "paper" && a.truth != "car") {
+    throw InputError(fmt::format("--truth '{}': 'paper' or 'car'", a.truth));
+  }
+  o.paper_models = a.truth == "paper";
   o.seed = a.seed;
   o.ambient_temp = CelsiusToKelvin(a.ambient_C);
   o.track_temp = CelsiusToKelvin(a.track_C);

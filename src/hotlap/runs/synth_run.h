@@ -19,6 +19,8 @@ struct SynthRunOptions {
   std::string process_noise;  ///< an observer noise file, "default", or "" (a deterministic truth)
   int laps = 1;
   double rate_hz = 50.0, noise_C = 0.5, lag_s = 0.2, wear_noise_mm = 1e-4, radius_noise_mm = 0.1;
+  sim::SynthTpms tpms;          ///< the TPMS channels (kPa, degC = K differences, s)
+  std::string truth = "paper";  ///< the truth's models: "paper" or "car" (SynthOptions)
   double ambient_C = 25.0, track_C = 40.0, step_m = 1.0;
   uint64_t seed = 1;
 };

@@ -37,6 +37,18 @@ void CheckOptions(const SynthOptions& o) {
       throw InputError(fmt::format("synth: {} must be finite and >= 0, got {:g}", name, value));
     }
   }
+  for (const auto& [value, name] : {std::pair{o.tpms.pressure_noise_kPa, "TPMS pressure noise"},
+                                    std::pair{o.tpms.temp_noise_K, "TPMS temperature noise"},
+                                    std::pair{o.tpms.lag_s, "TPMS lag"}}) {
+    if (!(value >= 0.0) || !std::isfinite(value)) {
+      throw InputError(fmt::format("synth: {} must be finite and >= 0, got {:g}", name, value));
+    }
+  }
+  if (o.process_noise && !o.paper_models) {
+    throw InputError(
+        "synth: process noise makes a stochastic truth of the paper's models only; not with the "
+        "car's own models");
+  }
   if (o.process_noise) {
     const SynthProcessNoise& q = *o.process_noise;
     for (const auto& [value, name] :
@@ -204,6 +216,32 @@ JoinedLaps JoinLaps(const QssResult& laps, const SynthOptions& o) {
 // The log's channels at its rate: the inputs as they are, the truth's temperatures and wear as a
 // lagged, noisy sensor reads them, and the rolling radius with its noise (one noise stream from
 // the seed, drawn in the columns' order).
+// The TPMS channels of the tyres with a gas node, from a noise stream of their own.
+void AddTpmsChannels(const SynthOptions& o, SynthLog& log) {
+  if (!o.tpms.enabled) return;
+  const std::vector<double>& time = log.inputs.time;
+  GaussianNoise noise(TpmsNoiseSeed(o.seed));
+  const auto sensed = [&](const std::vector<double>& truth, double sd) {
+    FirstOrderLag<double> sensor(o.tpms.lag_s);
+    std::vector<double> out(time.size());
+    for (size_t k = 0; k < time.size(); ++k)
+      out[k] = sensor.Next(time[k], truth[k]) + sd * noise.Next();
+    return out;
+  };
+  for (Corner c : kAllCorners) {
+    const CornerHistory& h = log.truth.corners[CornerIndex(c)];
+    if (h.pressure.size() != time.size() || h.gas_temp.size() != time.size()) continue;
+    for (const auto& [quantity, values] :
+         {std::pair{"pressure", sensed(h.pressure, 1e3 * o.tpms.pressure_noise_kPa)},
+          std::pair{"gas_temp", sensed(h.gas_temp, o.tpms.temp_noise_K)}}) {
+      std::vector<double> file = values;
+      for (double& v : file) v = ConvertSiToCanonical(quantity, v);
+      log.columns.push_back(ChannelColumn(quantity, c, CanonicalUnit(quantity)));
+      log.values.push_back(std::move(file));
+    }
+  }
+}
+
 void AddSynthChannels(const vehicle::Car& car, const JoinedLaps& joined, const SynthOptions& o,
                       SynthLog& log) {
   const ReplayInputs& in = log.inputs;
@@ -260,6 +298,7 @@ void AddSynthChannels(const vehicle::Car& car, const JoinedLaps& joined, const S
     }
     add("rolling_radius", c, std::move(radius));
   }
+  AddTpmsChannels(o, log);
 }
 
 std::vector<std::pair<std::string, std::string>> SynthMetadata(const vehicle::Car& car,
@@ -277,6 +316,12 @@ std::vector<std::pair<std::string, std::string>> SynthMetadata(const vehicle::Ca
       {"rolling_radius_noise_mm", fmt::format("{:g}", 1e3 * o.radius_noise_m)},
       {"seed", std::to_string(o.seed)},
   };
+  if (!o.paper_models) metadata.push_back({"truth", "the car's own models"});
+  if (o.tpms.enabled && !o.paper_models) {
+    metadata.push_back(
+        {"tpms", fmt::format("pressure noise {:g} kPa, gas temperature noise {:g} C, lag {:g} s",
+                             o.tpms.pressure_noise_kPa, o.tpms.temp_noise_K, o.tpms.lag_s)});
+  }
   if (o.process_noise) {
     // Only with the option, so that a log without it is what it always was.
     const SynthProcessNoise& q = *o.process_noise;
@@ -299,9 +344,9 @@ SynthLog SynthesizeLog(const vehicle::Car& any_car, std::span<const RoadPoint> r
                        const SynthOptions& o) {
   CheckOptions(o);
   vehicle::RequireVehicle(any_car, "hotlap synth (the lap simulation)");
-  // The truth is the paper's models, which the fits identify and the observer tracks
+  // By default the truth is the paper's models, which the fits identify and the observer tracks
   // (docs/fitting.md): a gas-and-rim tyre or a bulk disc runs as its paper part.
-  const vehicle::Car car = vehicle::PaperModelsOf(any_car);
+  const vehicle::Car car = o.paper_models ? vehicle::PaperModelsOf(any_car) : any_car;
   ReplayInitialState initial;
   if (o.initial) {
     initial = *o.initial;

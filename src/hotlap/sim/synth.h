@@ -48,6 +48,18 @@ struct SynthProcessNoise {
 /// The seed of the process noise's own stream, derived from SynthOptions::seed so that the sensor
 /// noise of a log is the same with and without process noise.
 constexpr uint64_t ProcessNoiseSeed(uint64_t seed) { return seed ^ 0x9E3779B97F4A7C15ULL; }
+/// The seed of the TPMS channels' own noise stream, so that adding them leaves the other
+/// channels' noise as it was.
+constexpr uint64_t TpmsNoiseSeed(uint64_t seed) { return seed ^ 0xC2B2AE3D27D4EB4FULL; }
+
+/// The tyre-pressure monitoring sensors of a synthetic log: the inflation pressure (gauge) and the
+/// gas temperature of each tyre that has a gas node, read through a first-order lag with noise.
+struct SynthTpms {
+  bool enabled = true;
+  double pressure_noise_kPa = 0.35;  ///< assumed: a TPMS's scatter, about 0.05 psi
+  double temp_noise_K = 0.5;         ///< assumed
+  double lag_s = 2.0;                ///< assumed: a valve-stem sensor in the gas
+};
 
 struct SynthOptions {
   int laps = 1;
@@ -56,6 +68,12 @@ struct SynthOptions {
   double sensor_lag_s = 0.2;     ///< time constant of every temperature sensor
   double wear_noise_mm = 1e-4;   ///< standard deviation of the wear channel
   double radius_noise_m = 1e-4;  ///< standard deviation of the rolling radius
+  /// The truth's models: the paper's (the default: what the fits identify and the observer
+  /// tracks), or the car's own (its gas-and-rim tyres and bulk discs; no process noise).
+  bool paper_models = true;
+  /// pressure_<c>_kPa and gas_temp_<c>_C of the tyres whose truth has a gas node (the car's own
+  /// models; noise from TpmsNoiseSeed).
+  SynthTpms tpms;
   uint64_t seed = 1;
   double ambient_temp = 298.15;               ///< K
   double track_temp = 313.15;                 ///< K
