@@ -58,26 +58,20 @@ CommandRunner RegisterSynthCommand(CLI::App& app) {
   sub->add_option("--params", a->run.params,
                   "Parameter file with the true values (model: parameter_overrides)");
   sub->add_option("--track", a->track, "Built-in track name or track file")->capture_default_str();
-  sub->add_option("--laps", a->run.laps, "Laps to simulate")
-      ->capture_default_str()
-      ->check(kPositive);
-  sub->add_option("--rate-hz", a->run.rate_hz, "Logging rate")
-      ->capture_default_str()
-      ->check(kPositive);
-  sub->add_option("--noise-C", a->run.noise_C,
-                  "Standard deviation of every temperature sensor, degC")
-      ->capture_default_str()
-      ->check(kNonNegative);
-  sub->add_option("--lag-s", a->run.lag_s, "First-order time constant of every temperature sensor")
-      ->capture_default_str()
-      ->check(kNonNegative);
-  sub->add_option("--wear-noise-mm", a->run.wear_noise_mm, "Standard deviation of the wear channel")
-      ->capture_default_str()
-      ->check(kNonNegative);
-  sub->add_option("--radius-noise-mm", a->run.radius_noise_mm,
-                  "Standard deviation of the rolling radius")
-      ->capture_default_str()
-      ->check(kNonNegative);
+  // An option with its default shown and its range checked.
+  const auto checked = [sub](const char* name, auto& value, const char* help, const auto& range) {
+    sub->add_option(name, value, help)->capture_default_str()->check(range);
+  };
+  checked("--laps", a->run.laps, "Laps to simulate", kPositive);
+  checked("--rate-hz", a->run.rate_hz, "Logging rate", kPositive);
+  checked("--noise-C", a->run.noise_C, "Standard deviation of every temperature sensor, degC",
+          kNonNegative);
+  checked("--lag-s", a->run.lag_s, "First-order time constant of every temperature sensor",
+          kNonNegative);
+  checked("--wear-noise-mm", a->run.wear_noise_mm, "Standard deviation of the wear channel",
+          kNonNegative);
+  checked("--radius-noise-mm", a->run.radius_noise_mm, "Standard deviation of the rolling radius",
+          kNonNegative);
   sub->add_option("--truth", a->run.truth,
                   "The truth's models: 'paper' (the paper's two masses and lumped disc, what the "
                   "fits identify and the observer tracks) or 'car' (the car's own gas-and-rim "
@@ -86,18 +80,12 @@ CommandRunner RegisterSynthCommand(CLI::App& app) {
   sub->add_flag("--tpms,!--no-tpms", a->run.tpms.enabled,
                 "With --truth car, write the TPMS channels pressure_<c>_kPa and gas_temp_<c>_C")
       ->capture_default_str();
-  sub->add_option("--tpms-noise-kPa", a->run.tpms.pressure_noise_kPa,
-                  "Standard deviation of the TPMS pressure")
-      ->capture_default_str()
-      ->check(kNonNegative);
-  sub->add_option("--tpms-temp-noise-C", a->run.tpms.temp_noise_K,
-                  "Standard deviation of the TPMS gas temperature")
-      ->capture_default_str()
-      ->check(kNonNegative);
-  sub->add_option("--tpms-lag-s", a->run.tpms.lag_s,
-                  "First-order time constant of the TPMS sensors")
-      ->capture_default_str()
-      ->check(kNonNegative);
+  checked("--tpms-noise-kPa", a->run.tpms.pressure_noise_kPa,
+          "Standard deviation of the TPMS pressure", kNonNegative);
+  checked("--tpms-temp-noise-C", a->run.tpms.temp_noise_K,
+          "Standard deviation of the TPMS gas temperature", kNonNegative);
+  checked("--tpms-lag-s", a->run.tpms.lag_s, "First-order time constant of the TPMS sensors",
+          kNonNegative);
   sub->add_option("--process-noise", a->run.process_noise,
                   "Make the truth stochastic: the model plus the random-walk process noise of an "
                   "observer noise file (its process_noise section; 'default' for "

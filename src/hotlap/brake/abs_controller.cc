@@ -2,29 +2,20 @@
 
 #include <algorithm>
 
+#include "hotlap/common/enum_names.h"
+
 namespace hotlap::brake {
 
-std::string_view AbsStateName(AbsState state) {
-  switch (state) {
-    case AbsState::kInitialise:
-      return "initialise";
-    case AbsState::kHold:
-      return "hold";
-    case AbsState::kIncrease:
-      return "increase";
-    case AbsState::kFastIncrease:
-      return "fast_increase";
-    case AbsState::kDecrease:
-      return "decrease";
-    case AbsState::kStepIncrease:
-      return "step_increase";
-    case AbsState::kStepDecrease:
-      return "step_decrease";
-    case AbsState::kExit:
-      return "exit";
-  }
-  return "unknown";
-}
+constexpr EnumNames<AbsState, 8> kAbsStates{{{{AbsState::kInitialise, "initialise"},
+                                              {AbsState::kHold, "hold"},
+                                              {AbsState::kIncrease, "increase"},
+                                              {AbsState::kFastIncrease, "fast_increase"},
+                                              {AbsState::kDecrease, "decrease"},
+                                              {AbsState::kStepIncrease, "step_increase"},
+                                              {AbsState::kStepDecrease, "step_decrease"},
+                                              {AbsState::kExit, "exit"}}}};
+
+std::string_view AbsStateName(AbsState state) { return kAbsStates.Name(state, "unknown"); }
 
 namespace {
 

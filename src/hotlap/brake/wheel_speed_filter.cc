@@ -5,33 +5,30 @@
 
 #include <fmt/format.h>
 
+#include "hotlap/common/enum_names.h"
+
 namespace hotlap::brake {
 
+constexpr EnumNames<WheelSpeedFilterKind, 3> kWheelSpeedFilterKinds{
+    {{{WheelSpeedFilterKind::kNone, "none"},
+      {WheelSpeedFilterKind::kNotch, "notch"},
+      {WheelSpeedFilterKind::kLowPass, "low-pass"}}}};
+
 const char* WheelSpeedFilterKindName(WheelSpeedFilterKind kind) {
-  switch (kind) {
-    case WheelSpeedFilterKind::kNone:
-      return "none";
-    case WheelSpeedFilterKind::kNotch:
-      return "notch";
-    case WheelSpeedFilterKind::kLowPass:
-      return "low-pass";
-  }
-  return "?";
+  return kWheelSpeedFilterKinds.Name(kind);
 }
 
 WheelSpeedFilterParams ReadWheelSpeedFilterParams(YamlReader& y, double period_s) {
   WheelSpeedFilterParams p;
   const std::string kind = y.String("kind");
-  if (kind == "none") {
+  const std::optional<WheelSpeedFilterKind> found = kWheelSpeedFilterKinds.Find(kind);
+  if (!found) {
+    y.Fail("kind", fmt::format("'{}' is not a filter ({})", kind, kWheelSpeedFilterKinds.List()));
+  }
+  p.kind = *found;
+  if (p.kind == WheelSpeedFilterKind::kNone) {
     y.Finish();
     return p;
-  }
-  if (kind == "notch") {
-    p.kind = WheelSpeedFilterKind::kNotch;
-  } else if (kind == "low-pass") {
-    p.kind = WheelSpeedFilterKind::kLowPass;
-  } else {
-    y.Fail("kind", fmt::format("'{}' is not a filter (none, notch, low-pass)", kind));
   }
   const double nyquist = 0.5 / period_s;
   p.frequency_hz = y.Number("frequency_hz", Range{0.0, nyquist, false, false, "Hz"});

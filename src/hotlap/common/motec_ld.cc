@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "hotlap/common/enum_names.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/read_file.h"
 
@@ -173,19 +174,12 @@ LdChannel ReadChannel(const Bytes& b, std::string_view bytes, uint32_t at) {
 
 }  // namespace
 
-std::string_view LdDataTypeName(LdDataType type) {
-  switch (type) {
-    case LdDataType::kInt16:
-      return "int16";
-    case LdDataType::kInt32:
-      return "int32";
-    case LdDataType::kFloat16:
-      return "float16";
-    case LdDataType::kFloat32:
-      return "float32";
-  }
-  return "?";
-}
+constexpr EnumNames<LdDataType, 4> kLdDataTypes{{{{LdDataType::kInt16, "int16"},
+                                                  {LdDataType::kInt32, "int32"},
+                                                  {LdDataType::kFloat16, "float16"},
+                                                  {LdDataType::kFloat32, "float32"}}}};
+
+std::string_view LdDataTypeName(LdDataType type) { return kLdDataTypes.Name(type); }
 
 uint32_t LdDataTypeSize(LdDataType type) {
   return type == LdDataType::kInt16 || type == LdDataType::kFloat16 ? 2 : 4;

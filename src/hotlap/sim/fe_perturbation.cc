@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "hotlap/common/enum_names.h"
 #include "hotlap/common/error.h"
 
 namespace hotlap::sim {
@@ -21,25 +22,17 @@ std::uint64_t Mix(std::uint64_t x) {
 
 }  // namespace
 
-const char* FePerturbationName(FePerturbation kind) {
-  switch (kind) {
-    case FePerturbation::kSpin:
-      return "spin";
-    case FePerturbation::kSumOrder:
-      return "sum-order";
-    case FePerturbation::kRoundOff:
-      return "round-off";
-  }
-  return "?";
-}
+constexpr EnumNames<FePerturbation, 3> kFePerturbations{
+    {{{FePerturbation::kSpin, "spin"},
+      {FePerturbation::kSumOrder, "sum-order"},
+      {FePerturbation::kRoundOff, "round-off"}}}};
+
+const char* FePerturbationName(FePerturbation kind) { return kFePerturbations.Name(kind); }
 
 FePerturbation ParseFePerturbation(const std::string& name, const std::string& what) {
-  for (FePerturbation k :
-       {FePerturbation::kSpin, FePerturbation::kSumOrder, FePerturbation::kRoundOff}) {
-    if (name == FePerturbationName(k)) return k;
-  }
-  throw InputError(
-      fmt::format("{}: '{}' is not a perturbation (spin, sum-order, round-off)", what, name));
+  if (const std::optional<FePerturbation> k = kFePerturbations.Find(name)) return *k;
+  throw InputError(fmt::format("{}: '{}' is not a perturbation ({})", what, name,
+                               kFePerturbations.List()));
 }
 
 void ApplyFePerturbation(FePerturbation kind, int member, int members, fe::TyreRun& run) {

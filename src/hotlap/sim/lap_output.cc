@@ -5,26 +5,19 @@
 
 #include <fmt/format.h>
 
+#include "hotlap/common/enum_names.h"
 #include "hotlap/common/units.h"
 #include "hotlap/track/track_point.h"
 
 namespace hotlap::sim {
 
-const char* SpeedLimitName(SpeedLimit limit) {
-  switch (limit) {
-    case SpeedLimit::kCornering:
-      return "cornering";
-    case SpeedLimit::kTraction:
-      return "traction";
-    case SpeedLimit::kPower:
-      return "power";
-    case SpeedLimit::kBraking:
-      return "braking";
-    case SpeedLimit::kPaceCar:
-      return "pace car";
-  }
-  return "?";
-}
+constexpr EnumNames<SpeedLimit, 5> kSpeedLimits{{{{SpeedLimit::kCornering, "cornering"},
+                                                  {SpeedLimit::kTraction, "traction"},
+                                                  {SpeedLimit::kPower, "power"},
+                                                  {SpeedLimit::kBraking, "braking"},
+                                                  {SpeedLimit::kPaceCar, "pace car"}}}};
+
+const char* SpeedLimitName(SpeedLimit limit) { return kSpeedLimits.Name(limit); }
 
 std::vector<BrakingZone> FindBrakingZones(const QssLap& lap, int lap_number, double min_decel) {
   std::vector<BrakingZone> zones;

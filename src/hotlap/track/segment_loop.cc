@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <Eigen/Dense>
 
+#include "hotlap/common/enum_names.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
 
@@ -348,17 +349,11 @@ SegmentTrack BuildLoopTrack(const SegmentLoop& loop, const std::vector<double>& 
 
 }  // namespace
 
-const char* SegmentTypeName(SegmentType type) {
-  switch (type) {
-    case SegmentType::kStraight:
-      return "straight";
-    case SegmentType::kArc:
-      return "arc";
-    case SegmentType::kClothoid:
-      return "clothoid";
-  }
-  return "?";
-}
+constexpr EnumNames<SegmentType, 3> kSegmentTypes{{{{SegmentType::kStraight, "straight"},
+                                                    {SegmentType::kArc, "arc"},
+                                                    {SegmentType::kClothoid, "clothoid"}}}};
+
+const char* SegmentTypeName(SegmentType type) { return kSegmentTypes.Name(type); }
 
 SegmentTrack SolveSegmentLoop(const SegmentLoop& loop) {
   std::vector<double> u(loop.unknowns.size());

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "hotlap/common/data_path.h"
+#include "hotlap/common/enum_names.h"
 #include "hotlap/common/error.h"
 #include "hotlap/track/fastest_lap_xml.h"
 #include "hotlap/track/segment_track_io.h"
@@ -14,17 +15,12 @@
 
 namespace hotlap::track {
 
-const char* TrackFormatName(TrackFormat format) {
-  switch (format) {
-    case TrackFormat::kSegments:
-      return "segments";
-    case TrackFormat::kTumCsv:
-      return "tum-csv";
-    case TrackFormat::kFastestLapXml:
-      return "fastest-lap-xml";
-  }
-  return "?";
-}
+constexpr EnumNames<TrackFormat, 3> kTrackFormats{
+    {{{TrackFormat::kSegments, "segments"},
+      {TrackFormat::kTumCsv, "tum-csv"},
+      {TrackFormat::kFastestLapXml, "fastest-lap-xml"}}}};
+
+const char* TrackFormatName(TrackFormat format) { return kTrackFormats.Name(format); }
 
 TrackFile LoadTrackFile(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
