@@ -174,7 +174,18 @@ TEST_F(RaceCommandTest, SpotChecksSolveTheOptimalLapFromTheFallOffsStates) {
     EXPECT_EQ(c["qss_lap_time_s"], j["fall_off"]["lap_time_s"][c["age_laps"].get<int>()]);
     EXPECT_GT(c["difference_s"].get<double>(), 0.5) << i;
     EXPECT_LT(c["difference_s"].get<double>(), 2.5) << i;
+    for (const char* key : {"qss_mean_tread_temp_C", "optimal_mean_tread_temp_C"}) {
+      EXPECT_GT(c[key].get<double>(), 40.0) << key;
+      EXPECT_LT(c[key].get<double>(), 130.0) << key;
+    }
   }
+  // On the cold second lap the optimal lap slides its tyres into their window: hotter treads and
+  // more grip than the QSS lap from the same start (80.8 against 66.2 degC measured).
+  const nlohmann::json& cold = spots["checks"][0];
+  EXPECT_GT(cold["optimal_mean_tread_temp_C"].get<double>(),
+            cold["qss_mean_tread_temp_C"].get<double>() + 5.0);
+  EXPECT_GT(cold["optimal_mean_grip_factor"].get<double>(),
+            cold["qss_mean_grip_factor"].get<double>());
   EXPECT_NEAR(spots["optimal_fall_off_s"].get<double>(),
               spots["checks"][1]["optimal_lap_time_s"].get<double>() -
                   spots["checks"][0]["optimal_lap_time_s"].get<double>(),

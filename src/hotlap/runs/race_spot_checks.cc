@@ -12,6 +12,18 @@
 
 namespace hotlap::runs {
 
+namespace {
+
+// The four corners' time-mean of a history member over a replay.
+double CornerMean(const sim::ReplayResult& r, std::vector<double> sim::CornerHistory::*member) {
+  double sum = 0.0;
+  for (const sim::CornerHistory& h : r.corners)
+    sum += sim::CalcHistoryStats(r.time, h.*member).mean;
+  return sum / 4.0;
+}
+
+}  // namespace
+
 std::vector<int> ParseSpotCheckAges(const std::string& text, int fall_off_laps,
                                     std::string_view option) {
   std::vector<int> ages;
@@ -53,7 +65,7 @@ RaceSpotChecks RunRaceSpotChecks(const vehicle::Car& car, const track::Track& tr
   }
   // The states the fall-off's laps reach: the same QSS laps again, as far as the oldest age.
   sim::QssOptions laps = qss;
-  laps.laps = std::max(1, ages.back());
+  laps.laps = ages.back() + 1;  // through the oldest age's own lap
   const sim::QssResult run = sim::RunQssLap(car, road, laps);
   ocp::OptimalLapOptions o;
   o.step_m = step_m;
@@ -69,11 +81,17 @@ RaceSpotChecks RunRaceSpotChecks(const vehicle::Car& car, const track::Track& tr
     warm.start = age == 0 ? qss.initial : sim::EndState(run.laps[age - 1].thermal);
     const ocp::OptimalLapRun lap = ocp::RunOptimalLap(car, track, o, &warm);
     if (lap.solution.solve.ok()) o.start_point = lap.solution.solve.x;
-    out.checks.push_back({.age = age,
-                          .qss_lap_time_s = fall_off.lap_time_s[age],
-                          .optimal_lap_time_s = lap.solution.lap_time,
-                          .converged = lap.solution.solve.ok(),
-                          .iterations = lap.coarse.iterations + lap.solution.solve.iterations});
+    const sim::ReplayResult& qss_lap = run.laps[std::min<size_t>(age, run.laps.size() - 1)].thermal;
+    out.checks.push_back(
+        {.age = age,
+         .qss_lap_time_s = fall_off.lap_time_s[age],
+         .optimal_lap_time_s = lap.solution.lap_time,
+         .qss_tread_temp = CornerMean(qss_lap, &sim::CornerHistory::tread_temp),
+         .optimal_tread_temp = CornerMean(lap.exact, &sim::CornerHistory::tread_temp),
+         .qss_grip = CornerMean(qss_lap, &sim::CornerHistory::grip_factor),
+         .optimal_grip = CornerMean(lap.exact, &sim::CornerHistory::grip_factor),
+         .converged = lap.solution.solve.ok(),
+         .iterations = lap.coarse.iterations + lap.solution.solve.iterations});
   }
   out.qss_fall_off_s = out.checks.back().qss_lap_time_s - out.checks.front().qss_lap_time_s;
   out.optimal_fall_off_s =
@@ -85,12 +103,17 @@ RaceSpotChecks RunRaceSpotChecks(const vehicle::Car& car, const track::Track& tr
 nlohmann::json RaceSpotChecksJson(const RaceSpotChecks& c) {
   nlohmann::json checks = nlohmann::json::array();
   for (const RaceSpotCheck& s : c.checks) {
-    checks.push_back({{"age_laps", s.age},
-                      {"qss_lap_time_s", RoundSignificant(s.qss_lap_time_s)},
-                      {"optimal_lap_time_s", RoundSignificant(s.optimal_lap_time_s)},
-                      {"difference_s", RoundSignificant(s.qss_lap_time_s - s.optimal_lap_time_s)},
-                      {"converged", s.converged},
-                      {"iterations", s.iterations}});
+    checks.push_back(
+        {{"age_laps", s.age},
+         {"qss_lap_time_s", RoundSignificant(s.qss_lap_time_s)},
+         {"optimal_lap_time_s", RoundSignificant(s.optimal_lap_time_s)},
+         {"difference_s", RoundSignificant(s.qss_lap_time_s - s.optimal_lap_time_s)},
+         {"qss_mean_tread_temp_C", RoundSignificant(s.qss_tread_temp - 273.15, 6)},
+         {"optimal_mean_tread_temp_C", RoundSignificant(s.optimal_tread_temp - 273.15, 6)},
+         {"qss_mean_grip_factor", RoundSignificant(s.qss_grip, 6)},
+         {"optimal_mean_grip_factor", RoundSignificant(s.optimal_grip, 6)},
+         {"converged", s.converged},
+         {"iterations", s.iterations}});
   }
   return {{"step_m", c.step_m},
           {"checks", checks},
@@ -102,12 +125,15 @@ std::string RaceSpotChecksText(const RaceSpotChecks& c) {
   if (c.checks.empty()) return "";
   std::string out = fmt::format(
       "optimal-lap spot checks (the minimum-time lap from the QSS laps' state at each age, {:g} m "
-      "mesh):\n    age       QSS   optimal  QSS - optimal\n",
+      "mesh; the four tyres' mean tread temperature and grip factor over each lap):\n"
+      "    age       QSS   optimal  QSS - optimal   tread C QSS/opt    grip QSS/opt\n",
       c.step_m);
   for (const RaceSpotCheck& s : c.checks) {
-    out += fmt::format("  {:>5} {:>9.3f} {:>9.3f} {:>+14.3f}{}\n", s.age, s.qss_lap_time_s,
-                       s.optimal_lap_time_s, s.qss_lap_time_s - s.optimal_lap_time_s,
-                       s.converged ? "" : "  (not converged)");
+    out += fmt::format(
+        "  {:>5} {:>9.3f} {:>9.3f} {:>+14.3f}   {:>7.1f}/{:<7.1f}  {:.3f}/{:.3f}{}\n", s.age,
+        s.qss_lap_time_s, s.optimal_lap_time_s, s.qss_lap_time_s - s.optimal_lap_time_s,
+        s.qss_tread_temp - 273.15, s.optimal_tread_temp - 273.15, s.qss_grip, s.optimal_grip,
+        s.converged ? "" : "  (not converged)");
   }
   if (c.checks.size() > 1) {
     out += fmt::format(

@@ -25,8 +25,12 @@ struct RaceSpotCheck {
   int age = 0;                      ///< laps on the set before this one (0: the out lap)
   double qss_lap_time_s = 0.0;      ///< the fall-off's lap at this age
   double optimal_lap_time_s = 0.0;  ///< the minimum-time lap from the same state
-  bool converged = false;           ///< the optimal lap's solve
-  int iterations = 0;               ///< its Ipopt iterations, coarse and fine
+  /// The four tyres' time-mean tread temperature (K) and grip factor g(T) h(wear) over each lap:
+  /// what the two laps make of the same start.
+  double qss_tread_temp = 0.0, optimal_tread_temp = 0.0;
+  double qss_grip = 0.0, optimal_grip = 0.0;
+  bool converged = false;  ///< the optimal lap's solve
+  int iterations = 0;      ///< its Ipopt iterations, coarse and fine
 };
 
 struct RaceSpotChecks {
