@@ -30,7 +30,8 @@ TEST_F(RaceCommandTest, WritesThePlanAndTheFixedPlansItBeats) {
   const std::string page = test::ReadTextFile(html);
   for (const char* part :
        {"The optimal plan and the fixed plans", "Lap time on a set", "Lap times over the race",
-        "Cautions in the 10000 simulated races", "The policy under cautions"}) {
+        "Cautions in the 10000 simulated races", "The policy under cautions",
+        "wear over the race, the optimal plan", "tread temperature (lap mean)"}) {
     EXPECT_TRUE(test::Contains(page, part)) << part;
   }
   const nlohmann::json j = Json(json);
@@ -48,6 +49,18 @@ TEST_F(RaceCommandTest, WritesThePlanAndTheFixedPlansItBeats) {
   EXPECT_GE(j["gain_over_best_fixed_s"].get<double>(), 0.0);
   // 60 laps on a cell of 56: one stop at least.
   EXPECT_GE(j["plan"]["stops"].size(), 1u);
+  // Each run's temperatures and wear: the runs cover the race, each tyre worn and warm.
+  const nlohmann::json& runs = j["plan"]["runs"];
+  ASSERT_FALSE(runs.empty());
+  EXPECT_EQ(runs.front()["first_lap"].get<int>(), 1);
+  EXPECT_EQ(runs.back()["last_lap"].get<int>(), 60);
+  for (const auto& run : runs) {
+    for (int k = 0; k < 4; ++k) {
+      EXPECT_GT(run["wear_mm"][k].get<double>(), 0.0);
+      EXPECT_GT(run["peak_tread_temp_C"][k].get<double>(), 30.0);
+      EXPECT_GT(run["end_pressure_kPa"][k].get<double>(), 100.0);  // hot gauge, 20-48 psi cold
+    }
+  }
   // Raced under the record's cautions (10,000 races by default): each plan's mean and error, and
   // the paired gain, whose error is far below each plan's own (the same cautions for all).
   const nlohmann::json& mc = j["monte_carlo"];

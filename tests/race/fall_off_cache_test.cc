@@ -25,6 +25,10 @@ FallOff Example() {
   f.fuel_s_per_kg = 0.0043999999999999997;
   f.reference_fuel_kg = 25.0;
   f.restart_penalty_s = 3.5731234567;
+  f.set_laps.resize(3);
+  f.set_laps[1].tread_temp = {350.1, 360.2, 351.3, 362.4};
+  f.set_laps[2].wear_mm = {0.1, 0.2, 0.3, 1.0 / 3.0};
+  f.set_laps[2].pressure = {170e3, 400e3, 190e3, 370e3};
   f.right_stop_after_laps = {1, 3};
   f.right_stop_lap_time_s = {{31.5, 30.2, 30.3}, {31.6, 30.4, 30.5}};
   return f;
@@ -61,6 +65,10 @@ TEST_F(FallOffCacheTest, WhatIsWrittenIsReadBackBitForBitUnderItsKeyOnly) {
   EXPECT_EQ(back->fuel_s_per_kg, f.fuel_s_per_kg);
   EXPECT_EQ(back->reference_fuel_kg, f.reference_fuel_kg);
   EXPECT_EQ(back->restart_penalty_s, f.restart_penalty_s);
+  ASSERT_EQ(back->set_laps.size(), 3u);
+  EXPECT_EQ(back->set_laps[1].tread_temp, f.set_laps[1].tread_temp);
+  EXPECT_EQ(back->set_laps[2].wear_mm, f.set_laps[2].wear_mm);
+  EXPECT_EQ(back->set_laps[2].pressure, f.set_laps[2].pressure);
   EXPECT_EQ(back->right_stop_after_laps, f.right_stop_after_laps);
   EXPECT_EQ(back->right_stop_lap_time_s, f.right_stop_lap_time_s);
   ASSERT_TRUE(back_check.has_value());

@@ -85,6 +85,20 @@ vehicle::Car WithoutGripLossFromWear(const vehicle::Car& car) {
 
 namespace {
 
+// A lap's per-corner state from its thermal replay.
+SetLap SetLapOf(const sim::ReplayResult& r) {
+  SetLap out;
+  for (size_t k = 0; k < 4; ++k) {
+    const sim::CornerHistory& h = r.corners[k];
+    out.tread_temp[k] = sim::CalcHistoryStats(r.time, h.tread_temp).mean;
+    out.carcass_temp[k] = sim::CalcHistoryStats(r.time, h.carcass_temp).mean;
+    out.disc_peak_temp[k] = sim::CalcHistoryStats(r.time, h.disc_temp).peak;
+    out.wear_mm[k] = h.wear.empty() ? 0.0 : h.wear.back();
+    out.pressure[k] = h.pressure.empty() ? 0.0 : sim::CalcHistoryStats(r.time, h.pressure).mean;
+  }
+  return out;
+}
+
 // The state after a right-side stop made at the end of `before` (the left tyres and brakes as
 // they are, new right tyres at the pit-out temperatures).
 sim::ReplayInitialState AfterRightSideStop(const vehicle::Car& car, const sim::QssLap& before) {
@@ -134,7 +148,10 @@ FallOff FallOffFromQss(const vehicle::Car& car, std::span<const sim::RoadPoint> 
   };
   tell(fmt::format("{} laps on a new set", laps));
   const sim::QssResult base = sim::RunQssLap(car, road, options);
-  for (const sim::QssLap& lap : base.laps) f.lap_time_s.push_back(lap.lap_time);
+  for (const sim::QssLap& lap : base.laps) {
+    f.lap_time_s.push_back(lap.lap_time);
+    f.set_laps.push_back(SetLapOf(lap.thermal));
+  }
   vehicle::Car heavier = car;
   vehicle::RequireVehicle(heavier, "the fall-off");
   heavier.vehicle->chassis.mass += fuel_delta_kg;

@@ -4,6 +4,7 @@
 /// the car's own laps (sim/qss_lap.h: the thermal models settling from pit-out, the wear growing)
 /// rather than fitted to a curve of age (docs/race.md).
 
+#include <array>
 #include <functional>
 #include <span>
 #include <string>
@@ -12,6 +13,16 @@
 #include "hotlap/sim/qss_lap.h"
 
 namespace hotlap::race {
+
+/// One lap on the set, per corner (fl, fr, rl, rr): the tyres' and brakes' state the lap time
+/// comes from.
+struct SetLap {
+  std::array<double, 4> tread_temp{};      ///< time-mean over the lap, K
+  std::array<double, 4> carcass_temp{};    ///< time-mean, K
+  std::array<double, 4> disc_peak_temp{};  ///< K
+  std::array<double, 4> wear_mm{};         ///< at the lap's end
+  std::array<double, 4> pressure{};        ///< time-mean hot gauge pressure, Pa (0: no gas node)
+};
 
 struct FallOff {
   /// Lap time on a set of age a laps (a = 0: the out lap on new, cold tyres), with the car's
@@ -35,6 +46,8 @@ struct FallOff {
   /// where it was not run).
   double restart_penalty_s = 0.0;
   static constexpr int kRestartLaps = 3;
+  /// The set's laps' temperatures, wear and pressures (as lap_time_s); empty where not kept.
+  std::vector<SetLap> set_laps;
 
   /// The lap time at `age` laps on the set (past the table, the last ten laps' trend carried on)
   /// with `fuel_kg` aboard, s.

@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::string_view kHeader = "hotlap race fall-off 1";
+constexpr std::string_view kHeader = "hotlap race fall-off 2";
 
 // The key on one line (line ends would end it early).
 std::string OneLine(std::string key) {
@@ -117,6 +117,17 @@ std::optional<FallOff> ReadCachedFallOff(const fs::path& file, const std::string
     return std::nullopt;
   }
   std::string word;
+  size_t laps = 0;
+  if (!(in >> word) || word != "set_laps" || !(in >> laps) || laps > 100000) return std::nullopt;
+  f.set_laps.resize(laps);
+  for (SetLap& l : f.set_laps) {
+    for (std::array<double, 4>* a :
+         {&l.tread_temp, &l.carcass_temp, &l.disc_peak_temp, &l.wear_mm, &l.pressure}) {
+      for (double& x : *a) {
+        if (!(in >> x)) return std::nullopt;
+      }
+    }
+  }
   size_t stops = 0;
   if (!(in >> word) || word != "right_stops" || !(in >> stops) || stops > 1000) return std::nullopt;
   for (size_t i = 0; i < stops; ++i) {
@@ -160,6 +171,14 @@ void WriteCachedFallOff(const fs::path& file, const std::string& key, const Fall
     out << "fuel_s_per_kg " << fmt::format("{:.17g}", f.fuel_s_per_kg) << '\n';
     out << "reference_fuel_kg " << fmt::format("{:.17g}", f.reference_fuel_kg) << '\n';
     out << "restart_penalty_s " << fmt::format("{:.17g}", f.restart_penalty_s) << '\n';
+    out << "set_laps " << f.set_laps.size() << '\n';
+    for (const SetLap& l : f.set_laps) {
+      for (const std::array<double, 4>* a :
+           {&l.tread_temp, &l.carcass_temp, &l.disc_peak_temp, &l.wear_mm, &l.pressure}) {
+        for (double x : *a) out << fmt::format("{:.17g} ", x);
+      }
+      out << '\n';
+    }
     out << "right_stops " << f.right_stop_after_laps.size() << '\n';
     for (size_t i = 0; i < f.right_stop_after_laps.size(); ++i) {
       out << "after " << f.right_stop_after_laps[i] << ' ';

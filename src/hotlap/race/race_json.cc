@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "hotlap/common/json_output.h"
+#include "hotlap/race/plan_runs.h"
 
 namespace hotlap::race {
 
@@ -83,7 +84,58 @@ std::string PolicyText(const PolicyRun& pr) {
 
 }  // namespace
 
-nlohmann::json PlanJson(const RacePlan& plan) {
+namespace {
+
+nlohmann::json Celsius(const std::array<double, 4>& kelvin) {
+  nlohmann::json out = nlohmann::json::array();
+  for (double t : kelvin) out.push_back(RoundSignificant(t - 273.15, 6));
+  return out;
+}
+
+nlohmann::json Scaled(const std::array<double, 4>& v, double scale) {
+  nlohmann::json out = nlohmann::json::array();
+  for (double x : v) out.push_back(RoundSignificant(x * scale, 6));
+  return out;
+}
+
+// The plan's runs between tyre changes, each corner's figures in fl, fr, rl, rr order.
+nlohmann::json RunsJson(const RacePlan& plan, const FallOff& f) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const PlanRun& r : PlanRuns(plan, PlanLapStates(plan, f))) {
+    out.push_back({{"first_lap", r.first_lap},
+                   {"last_lap", r.last_lap},
+                   {"fitted", r.first_lap == 1 ? "the starting set" : ServiceName(r.fitted)},
+                   {"wear_mm", Scaled(r.wear_mm, 1.0)},
+                   {"peak_tread_temp_C", Celsius(r.peak_tread_temp)},
+                   {"peak_carcass_temp_C", Celsius(r.peak_carcass_temp)},
+                   {"peak_disc_temp_C", Celsius(r.peak_disc_temp)},
+                   {"end_pressure_kPa", Scaled(r.end_pressure, 1e-3)}});
+  }
+  return out;
+}
+
+// The optimal plan's runs on the terminal: each tyre's wear at the stop and its hottest lap's
+// mean tread temperature.
+std::string RunsText(const RacePlan& plan, const FallOff& f) {
+  const std::vector<PlanRun> runs = PlanRuns(plan, PlanLapStates(plan, f));
+  if (runs.empty()) return "";
+  std::string out =
+      "the optimal plan's runs (fl fr rl rr: wear at the end, mm; the hottest lap's mean tread, "
+      "degC):\n";
+  for (const PlanRun& r : runs) {
+    out += fmt::format(
+        "  laps {:>3}-{:<3}  wear {:.2f} {:.2f} {:.2f} {:.2f}  tread {:.0f} {:.0f} {:.0f} "
+        "{:.0f}\n",
+        r.first_lap, r.last_lap, r.wear_mm[0], r.wear_mm[1], r.wear_mm[2], r.wear_mm[3],
+        r.peak_tread_temp[0] - 273.15, r.peak_tread_temp[1] - 273.15, r.peak_tread_temp[2] - 273.15,
+        r.peak_tread_temp[3] - 273.15);
+  }
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json PlanJson(const RacePlan& plan, const FallOff& fall_off) {
   nlohmann::json stops = nlohmann::json::array();
   for (const PitStop& s : plan.stops) {
     stops.push_back({{"lap", s.lap},
@@ -94,7 +146,8 @@ nlohmann::json PlanJson(const RacePlan& plan) {
           {"race_time_s", RoundSignificant(plan.race_time_s)},
           {"optimality_gap_s", RoundSignificant(plan.optimality_gap_s)},
           {"tyre_sets_used", plan.tyre_sets_used},
-          {"stops", stops}};
+          {"stops", stops},
+          {"runs", RunsJson(plan, fall_off)}};
 }
 
 nlohmann::json RaceJson(const RaceRun& run, const CautionModel& cautions) {
@@ -104,7 +157,7 @@ nlohmann::json RaceJson(const RaceRun& run, const CautionModel& cautions) {
   const std::vector<RacePlan>& fixed = run.fixed;
   const std::vector<MonteCarloResult>& monte_carlo = run.monte_carlo;
   nlohmann::json fixed_json = nlohmann::json::array();
-  for (const RacePlan& p : fixed) fixed_json.push_back(PlanJson(p));
+  for (const RacePlan& p : fixed) fixed_json.push_back(PlanJson(p, f));
   nlohmann::json lap_times = nlohmann::json::array();
   for (double t : f.lap_time_s) lap_times.push_back(RoundSignificant(t));
   nlohmann::json heat_only = nlohmann::json::array();
@@ -185,7 +238,7 @@ nlohmann::json RaceJson(const RaceRun& run, const CautionModel& cautions) {
         {"fuel_s_per_kg", RoundSignificant(f.fuel_s_per_kg)},
         {"reference_fuel_kg", f.reference_fuel_kg}}},
       {"side_check", SideCheckJson(run.side_check)},
-      {"plan", PlanJson(plan)},
+      {"plan", PlanJson(plan, f)},
       {"fixed_plans", fixed_json},
       {"gain_over_best_fixed_s", fixed.empty()
                                      ? nlohmann::json(nullptr)
@@ -243,6 +296,7 @@ std::string RaceText(const RaceRun& run) {
         plan.optimality_gap_s);
   }
   for (const RacePlan& p : fixed) out += plan_text(p);
+  out += RunsText(plan, f);
   if (!fixed.empty()) {
     out += fmt::format("the optimal plan gains {:.3f} s over the best fixed plan\n",
                        BestFixed(fixed) - plan.race_time_s);

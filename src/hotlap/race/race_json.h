@@ -15,7 +15,7 @@
 namespace hotlap::race {
 
 /// One plan: name, race_time_s, tyre_sets_used, stops [{lap, service, time_lost_s}].
-nlohmann::json PlanJson(const RacePlan& plan);
+nlohmann::json PlanJson(const RacePlan& plan, const FallOff& fall_off);
 
 /// The whole report: rules, fall_off {laps, lap_time_s[], spread_s, fuel_s_per_kg,
 /// reference_fuel_kg}, plan (the optimal), fixed_plans[], gain_over_best_fixed_s, and monte_carlo

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "hotlap/common/corner.h"
+#include "hotlap/race/plan_runs.h"
 #include "hotlap/report/html_report.h"
 
 namespace hotlap::race {
@@ -37,6 +39,35 @@ std::vector<double> SetAges(const RacePlan& plan, bool right = true) {
 
 const char* Mark(Service s) {
   return s == Service::kFuelOnly ? "f" : s == Service::kRightTyresAndFuel ? "r" : "";
+}
+
+// Each tyre's wear and lap-mean tread temperature over the race on the optimal plan, from the
+// fall-off's laps at the tyre's age.
+void AddTyreCharts(report::HtmlReport& page, const RaceRun& run, const std::vector<double>& laps) {
+  const std::vector<SetLap> states = PlanLapStates(run.plan, run.fall_off);
+  if (states.empty()) return;
+  report::LineChart wear{.title = "Each tyre's wear over the race, the optimal plan",
+                         .x_axis = {.label = "lap", .integer_ticks = true},
+                         .y_axis = {.label = "wear", .unit = "mm"},
+                         .x_link = "lap",
+                         .width = report::ChartWidth::kFullRow};
+  report::LineChart tread{.title = "Each tyre's tread temperature (lap mean), the optimal plan",
+                          .x_axis = {.label = "lap", .integer_ticks = true},
+                          .y_axis = {.label = "tread", .unit = "\u00b0C"},
+                          .x_link = "lap",
+                          .width = report::ChartWidth::kFullRow};
+  for (Corner c : kAllCorners) {
+    const size_t k = CornerIndex(c);
+    std::vector<double> w, t;
+    for (const SetLap& s : states) {
+      w.push_back(s.wear_mm[k]);
+      t.push_back(s.tread_temp[k] - 273.15);
+    }
+    wear.series.push_back({.label = std::string(CornerName(c)), .x = laps, .y = w});
+    tread.series.push_back({.label = std::string(CornerName(c)), .x = laps, .y = t});
+  }
+  page.AddLineChart(wear);
+  page.AddLineChart(tread);
 }
 
 }  // namespace
@@ -181,6 +212,7 @@ void WriteRaceReport(const std::filesystem::path& path, const RaceRun& run, cons
   }
   page.AddLineChart(trace);
   page.AddLineChart(runs);
+  AddTyreCharts(page, run, laps);
   if (!run.monte_carlo.empty() && !run.monte_carlo[0].caution_histogram.empty()) {
     const MonteCarloResult& mc = run.monte_carlo[0];
     std::vector<double> count, share;
