@@ -148,7 +148,9 @@ CommandRunner RegisterFitCommand(CLI::App& app) {
       "fit", "Fit thermal, wear, contact-length or brake parameters to a log, with uncertainty");
   fit->require_subcommand(1);
   CLI::App* tyre = fit->add_subcommand(
-      "tyre", "Fit p1..p5 to tread and carcass temperatures, then wp1, wp2 to the wear");
+      "tyre",
+      "Fit p1..p5 to tread and carcass temperatures, then wp1, wp2 to the wear, then the gas "
+      "path's conductances to TPMS pressure and gas temperature where logged");
   AddCommonOptions(tyre, *args);
   AddThermalOptions(tyre, *args);
   tyre->add_option("--wear-per-lap-mm", args->wear_per_lap,
@@ -157,6 +159,11 @@ CommandRunner RegisterFitCommand(CLI::App& app) {
                    "Standard deviation of a --wear-per-lap-mm value, mm per lap")
       ->capture_default_str()
       ->check(kPositive);
+  tyre->add_option("--tpms-lag-s", args->run.numeric.fit.tpms_lag_s,
+                   "First-order lag of the TPMS pressure and gas temperature, modelled in the "
+                   "gas stage")
+      ->capture_default_str()
+      ->check(kNonNegative);
   tyre->add_option("--laps", args->run.numeric.laps,
                    "Laps in the log, for --wear-per-lap-mm (default: the log's '# laps:', else 1)")
       ->check(kPositive);

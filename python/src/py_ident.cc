@@ -35,7 +35,7 @@ py::dict Fit(const vehicle::Car& car, const py::handle& telemetry, const std::st
              const std::filesystem::path& out_path, double loss_scale, double max_relative_ci,
              int random_starts, uint64_t seed, double sensor_lag_s, double max_step_s,
              std::optional<int> laps, double wear_sd_mm, const py::object& channel_map,
-             std::optional<int> lap) {
+             std::optional<int> lap, double tpms_lag_s) {
   runs::FitRunOptions options;
   options.kind = runs::ParseFitKind(kind, runs::NameStyle::kPython);
   const Telemetry log = LogFrom(telemetry, ReadOptionsFrom(channel_map, lap));
@@ -58,6 +58,7 @@ py::dict Fit(const vehicle::Car& car, const py::handle& telemetry, const std::st
   numeric.fit.random_starts = random_starts;
   numeric.fit.seed = seed;
   numeric.fit.sensor_lag_s = sensor_lag_s;
+  numeric.fit.tpms_lag_s = tpms_lag_s;
   numeric.fit.max_step_s = max_step_s;
   numeric.laps = laps;
   numeric.wear_sd_mm = wear_sd_mm;
@@ -98,10 +99,11 @@ void BindIdent(py::module_& m) {
         py::arg("sensor_lag_s") = defaults.fit.sensor_lag_s,
         py::arg("max_step_s") = defaults.fit.max_step_s, py::arg("laps") = py::none(),
         py::arg("wear_sd_mm") = defaults.wear_sd_mm, py::arg("channel_map") = py::none(),
-        py::arg("lap") = py::none(),
+        py::arg("lap") = py::none(), py::arg("tpms_lag_s") = defaults.fit.tpms_lag_s,
         "Fits the car's 'tyre', 'contact-length' or 'brake' parameters to a log (a path to a "
         "hotlap CSV, MoTeC i2 CSV or MoTeC .ld log, or a dict of arrays; channel_map and lap as "
-        "--channel-map and --lap). Returns {'summary': dict (the keys of `hotlap fit --json`), "
+        "--channel-map and --lap; tpms_lag_s as --tpms-lag-s). Returns {'summary': dict (the keys "
+        "of `hotlap fit --json`), "
         "'channels': {corner: {quantity_measured_unit, quantity_model_unit: array}}, 'time_s': "
         "array}; with out='fitted/car.yaml' also writes the fitted car's files.");
 }

@@ -20,7 +20,8 @@ TEST(FitParameterValues, NamesTheTyreAndBrakeValuesOfTheCorner) {
   b.calliper_convection = {2.0, 0.5, 3.0, -1.0, 0.25, 4.0};  // l11 l21 l22 l31 l32 l33
 
   const std::map<std::string, double> v = FitParameterValues(car, Corner::kRearLeft);
-  EXPECT_EQ(v.size(), 7u + 2u + 2u + 12u);
+  EXPECT_EQ(v.size(), 7u + 2u + 3u + 2u + 12u);  // tyre, contact length, gas path, brake
+  EXPECT_EQ(v.at("rim_air_W_per_K"), car.tyre(Corner::kRearLeft).params.rim_air_conductance);
   EXPECT_EQ(v.at("p3_J_per_kgN"), 1.25e-5);
   EXPECT_EQ(v.at("wp2"), car.tyre(Corner::kRearLeft).params.wear_exponent);
   EXPECT_EQ(v.at("p_cp1"), car.tyre(Corner::kRearLeft).params.contact_length_coeff);

@@ -62,6 +62,7 @@ TEST(TyreThermalFieldsTest, SectionsListTheirEntriesInTableOrder) {
   EXPECT_EQ(count, TyreThermalFields().size());
 }
 
+// The paper's three fitted sections, and the gas path's conductances the TPMS stage fits.
 TEST(TyreThermalFieldsTest, FittedEntriesAreTheThreeFittedSections) {
   std::vector<std::string> fitted;
   for (const TyreThermalField* f : FittedTyreThermalFields()) {
@@ -74,7 +75,8 @@ TEST(TyreThermalFieldsTest, FittedEntriesAreTheThreeFittedSections) {
                         "heat_generation.p1", "heat_generation.p2_J_per_kgN",
                         "heat_generation.p3_J_per_kgN", "heat_generation.p4_J_per_kgN",
                         "heat_generation.p5_W_per_m2K", "wear.wp1_mm_per_s", "wear.wp2",
-                        "contact_length.p_cp1", "contact_length.p_cp2"}));
+                        "contact_length.p_cp1", "contact_length.p_cp2", "gas.carcass_gas_W_per_K",
+                        "gas.gas_rim_W_per_K", "rim.rim_air_W_per_K"}));
   EXPECT_EQ(FittedTyreThermalFields("wear").size(), 2u);
   EXPECT_TRUE(FittedTyreThermalFields("construction").empty());
 }

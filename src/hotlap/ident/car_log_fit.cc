@@ -14,6 +14,7 @@
 #include "hotlap/ident/fit_log.h"
 #include "hotlap/ident/fit_parameter_values.h"
 #include "hotlap/ident/tyre_thermal_fit.h"
+#include "hotlap/tyre/tyre_thermal_fields.h"
 
 namespace hotlap::ident {
 
@@ -42,7 +43,48 @@ ChannelPair Pair(std::string quantity, std::string title, std::string unit, std:
   return p;
 }
 
-// p1..p5 to the tread and carcass temperatures, then wp1, wp2 to the wear.
+// What the tyre fit's gas stage reads: the TPMS channels, the brake whose heat the rim takes, and
+// the states that start the brake and the rim (the log's first disc and calliper samples, else
+// the car's starting values).
+void ReadGasStageData(const CarFitInputs& in, Corner c, TyreCornerData& d) {
+  // Gauge pressure from a vacuum to 2000 kPa, as telemetry reads it; a TPMS reads 0.1 kPa.
+  d.pressure = ReadLoggedChannel(in.log, "pressure", c, -tyre::kAtmosphericPressure, 2e6, 10.0);
+  d.gas_temp = ReadLoggedChannel(in.log, "gas_temp", c, 223.15, 573.15, 0.01);
+  if (d.pressure.column.empty() && d.gas_temp.column.empty()) return;
+  d.brake = &in.car.brake(c).params;
+  d.brake_samples = BrakeSamplesOf(*in.replay, c);
+  const sim::ReplayInitialState start =
+      sim::InitialStateFor(in.log, in.car, in.options.temperatures);
+  d.brake_start = start.brakes[CornerIndex(c)];
+  d.fallback_rim_temp = start.tyres[CornerIndex(c)].rim_temp;
+}
+
+// The gas stage's fit as reported: its edits name each conductance's own section (gas or rim).
+void ReportGasFit(const CarFitInputs& in, const FitResult& gas, const tyre::TyreFile& tyre,
+                  CornerFitOutcome& out, std::vector<FileEdit>& edits) {
+  ReportedFit reported{"gas", gas, {}};
+  for (const FileEdit& e : FileEditsOf(gas, "", in.date, in.log_name)) {
+    for (const tyre::TyreThermalField* f : GasFitFields()) {
+      if (e.key == f->key) edits.push_back({f->Path(), e.value, e.comment});
+    }
+  }
+  // The gas path's parameters it holds at the file's values (docs/fitting.md).
+  for (const char* path :
+       {"gas.gas_liner_W_per_K", "gas.liner_rim_W_per_K", "rim.sidewall_air_W_per_K",
+        "rim.rim_mass_kg", "rim.rim_heat_capacity_J_per_kgK", "rim.still_air_fraction"}) {
+    if (const tyre::TyreThermalField* f = tyre::FindTyreThermalField(path)) {
+      reported.held[std::string(f->key)] = f->Of(tyre.params);
+    }
+  }
+  out.fits.push_back(std::move(reported));
+  for (const ChannelStats& ch : gas.channels) {
+    if (ch.name == "pressure") out.rms.emplace_back("rms_pressure_kPa", 1e-3 * ch.rms);
+    if (ch.name == "gas_temp") out.rms.emplace_back("rms_gas_temp_C", ch.rms);
+  }
+}
+
+// p1..p5 to the tread and carcass temperatures, then wp1, wp2 to the wear; with TPMS channels,
+// the gas path's conductances to them.
 void FitTyre(const CarFitInputs& in, Corner c, CornerFitOutcome& out,
              std::vector<FileEdit>& edits) {
   const int i = CornerIndex(c);
@@ -54,6 +96,7 @@ void FitTyre(const CarFitInputs& in, Corner c, CornerFitOutcome& out,
   d.weights = in.weights;
   d.fallback_tread_temp = in.car.initial.tread_temp;
   d.fallback_carcass_temp = in.car.initial.carcass_temp;
+  ReadGasStageData(in, c, d);
   if (auto it = in.options.wear_per_lap_mm.find(c); it != in.options.wear_per_lap_mm.end()) {
     d.wear_total_mm = it->second * in.laps;
     d.wear_total_sd_mm = in.options.wear_sd_mm * in.laps;
@@ -85,12 +128,19 @@ void FitTyre(const CarFitInputs& in, Corner c, CornerFitOutcome& out,
     if (std::find(fitted_keys.begin(), fitted_keys.end(), key) != fitted_keys.end()) continue;
     out.fits.back().held[key] = f->Of(p);
   }
+  if (r.gas) ReportGasFit(in, *r.gas, in.car.tyres[i], out, edits);
   out.fitted = !out.fits.empty();
   out.channels = {Pair("tread_temp", "tread temperature", "\u00b0C", "C", d.tread.values,
                        r.tread_model, 1.0, -kZeroCelsius),
                   Pair("carcass_temp", "carcass temperature", "\u00b0C", "C", d.carcass.values,
                        r.carcass_model, 1.0, -kZeroCelsius),
                   Pair("wear", "wear", "mm", "mm", d.wear.values, r.wear_model, 1.0, 0.0)};
+  if (r.gas) {
+    out.channels.push_back(Pair("pressure", "inflation pressure", "kPa", "kPa", d.pressure.values,
+                                r.pressure_model, 1e-3, 0.0));
+    out.channels.push_back(Pair("gas_temp", "gas temperature", "\u00b0C", "C", d.gas_temp.values,
+                                r.gas_temp_model, 1.0, -kZeroCelsius));
+  }
 }
 
 // gamma, xi and the convection entries to the disc and calliper temperatures.
@@ -171,6 +221,19 @@ void CheckOptions(const CarFitOptions& o) {
   }
 }
 
+// The gas stage's model parameters over the corners it may fit (a gas-and-rim tyre and a TPMS
+// column): they join the report's joint family.
+int GasParametersFitted(const vehicle::Car& car, const Telemetry& log,
+                        const std::vector<Corner>& corners) {
+  int n = 0;
+  for (Corner c : corners) {
+    if (car.tyre(c).params.HasGasAndRim() && (log.Has("pressure", c) || log.Has("gas_temp", c))) {
+      n += static_cast<int>(GasFitFields().size());
+    }
+  }
+  return n;
+}
+
 }  // namespace
 
 int ModelParametersPerCorner(CarFitKind kind) {
@@ -192,6 +255,9 @@ CarFitResult FitCarToLog(const vehicle::Car& car, const Telemetry& log,
   // The joint intervals hold every model parameter fitted, over all corners.
   result.joint_family_size =
       static_cast<int>(options.corners.size()) * ModelParametersPerCorner(options.kind);
+  if (options.kind == CarFitKind::kTyre) {
+    result.joint_family_size += GasParametersFitted(car, log, options.corners);
+  }
   LogFitOptions fit = options.fit;
   fit.solver.joint_family_size = result.joint_family_size;
   std::optional<sim::ReplayInputs> replay;

@@ -1,5 +1,6 @@
 #include "hotlap/ident/fit_run_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -137,7 +138,10 @@ void AddChannels(report::HtmlReport& page, const FitRun& run, std::vector<std::s
                  std::vector<std::vector<double>>& columns) {
   if (!run.result.corners.empty()) {
     page.AddHeading("Measured and modelled");
-    for (size_t q = 0; q < run.result.corners.front().channels.size(); ++q) {
+    // A corner with TPMS channels has two more (inflation pressure, gas temperature).
+    size_t most = 0;
+    for (const CornerFitOutcome& c : run.result.corners) most = std::max(most, c.channels.size());
+    for (size_t q = 0; q < most; ++q) {
       for (const CornerFitOutcome& c : run.result.corners) {
         if (q >= c.channels.size()) continue;
         const ChannelPair& ch = c.channels[q];

@@ -57,7 +57,8 @@ double LogUniform(std::mt19937_64& rng, double lo, double hi) {
   return std::exp(std::log(lo) + u * (std::log(hi) - std::log(lo)));
 }
 
-void AddLagWarnings(const FitResult& fit, double modelled_lag_s, std::vector<std::string>* out) {
+void AddLagWarnings(const FitResult& fit, double modelled_lag_s, std::vector<std::string>* out,
+                    std::string_view option) {
   for (const ChannelStats& st : fit.channels) {
     if (!std::isfinite(st.apparent_lag) || !std::isfinite(st.apparent_lag_std_error)) continue;
     if (st.apparent_lag > 0.02 && st.apparent_lag > 3.0 * st.apparent_lag_std_error) {
@@ -65,10 +66,9 @@ void AddLagWarnings(const FitResult& fit, double modelled_lag_s, std::vector<std
       // disc's 0.2 s as 0.07-0.14 s), so the advice is to refit and look again.
       out->push_back(fmt::format(
           "{}: the measurements trail the model as a sensor lag of at least about {:.2f} s{} "
-          "would (+/- {:.3f} s); if the sensor lags, refit with --sensor-lag-s {:.2f} and look "
-          "again",
+          "would (+/- {:.3f} s); if the sensor lags, refit with {} {:.2f} and look again",
           st.name, st.apparent_lag, modelled_lag_s > 0.0 ? " beyond the modelled one" : "",
-          st.apparent_lag_std_error, modelled_lag_s + st.apparent_lag));
+          st.apparent_lag_std_error, option, modelled_lag_s + st.apparent_lag));
     }
   }
 }

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <random>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "hotlap/ident/channel_fit.h"
@@ -30,6 +31,9 @@ struct LogFitOptions {
   FitOptions solver;
   double max_step_s = 0.02;   ///< longest RK4 sub-step, s (as the replay)
   double sensor_lag_s = 0.0;  ///< first-order lag of the temperature sensors, modelled, s
+  /// First-order lag of the TPMS sensors (pressure and gas temperature), modelled, s; assumed
+  /// as hotlap synth's (a valve-stem sensor in the gas).
+  double tpms_lag_s = 2.0;
   InitialStateMode initial_state = InitialStateMode::kFitted;
   int random_starts = 6;  ///< seeded random starts scored besides the guesses
   uint64_t seed = 1;
@@ -52,7 +56,9 @@ double LogUniform(std::mt19937_64& rng, double lo, double hi);
 
 /// Adds a warning for every channel whose residuals look like an unmodelled sensor lag (apparent
 /// lag above 0.02 s and three of its standard errors).
-void AddLagWarnings(const FitResult& fit, double modelled_lag_s, std::vector<std::string>* out);
+/// `option` is the option the advice names (the TPMS channels': --tpms-lag-s).
+void AddLagWarnings(const FitResult& fit, double modelled_lag_s, std::vector<std::string>* out,
+                    std::string_view option = "--sensor-lag-s");
 
 /// Adds a warning for every channel whose residuals follow one another (lag-one
 /// autocorrelation above 0.9; white sensor noise gives about 0): the model misses something

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -124,6 +125,96 @@ class WearQuadratureModel {
  private:
   std::vector<double> weight_, rate_, log_power_;
   std::vector<size_t> end_of_sample_;
+};
+
+// The gas stage's parameters: the gas path's conductances (GasFitFields order), the rim's
+// starting temperature. Its channels: the TPMS's.
+enum GasIndex : int { kCarcassGas, kGasRim, kRimAir, kRim0, kGasCount };
+enum GasChannel : int { kPressure, kGasTemp };
+
+// The car's own gas-and-rim tyre over one corner's logged inputs, integrated with its brake as
+// sim/replay.cc does (the rim takes the brake's heat, which depends on the rim's temperature),
+// the TPMS lag on the pressure and gas temperature. The tread and carcass start where the thermal
+// stage's data say; the brake where the log's first disc and calliper samples say.
+class GasLogModel {
+ public:
+  GasLogModel(const tyre::TyreFile& tyre, const TyreCornerData& d, double tread0, double carcass0,
+              double max_step, double lag)
+      : tyre_(tyre),
+        samples_(d.samples),
+        brake_samples_(d.brake_samples),
+        brake_(d.brake),
+        brake_start_(d.brake_start),
+        tread0_(tread0),
+        carcass0_(carcass0),
+        max_step_(max_step),
+        lag_(lag) {}
+
+  size_t num_samples() const { return samples_.time.size(); }
+  int num_channels() const { return 2; }
+
+  template <Scalar T, class Emit>
+  void Run(std::span<const T> x, Emit&& emit) const {
+    tyre::TyreThermalParams<T> p = tyre_.params.Cast<T>();
+    p.carcass_gas_conductance = x[kCarcassGas];
+    p.gas_rim_conductance = x[kGasRim];
+    p.rim_air_conductance = x[kRimAir];
+    sim::FirstOrderLag<T> pressure_sensor(lag_), gas_sensor(lag_);
+    const auto on_sample = [&](size_t k, const tyre::TyreState<T>& s) {
+      const double t = samples_.time[k];
+      const tyre::TyreGas<T> gas =
+          tyre::CalcTyreGas(p, s.carcass_temp, s.rim_temp, T(samples_.speed[k]));
+      emit(kPressure, k, pressure_sensor.Next(t, gas.pressure));
+      emit(kGasTemp, k, gas_sensor.Next(t, gas.gas_temp));
+    };
+    const tyre::TyreState<T> start{T(tread0_), T(carcass0_), T(0.0), x[kRim0]};
+    if (brake_ == nullptr) {
+      sim::IntegrateTyre<T>(p, *tyre_.compound, samples_, start, max_step_, on_sample);
+    } else {
+      IntegrateWithBrake(p, start, on_sample);
+    }
+  }
+
+ private:
+  // The tyre and its brake together (sim/replay.cc, CornerReplay::RunTogether).
+  template <Scalar T, class OnSample>
+  void IntegrateWithBrake(const tyre::TyreThermalParams<T>& p, const tyre::TyreState<T>& start,
+                          OnSample&& on_sample) const {
+    const brake::BrakeThermalParams<T> bp = brake_->Cast<T>();
+    const tyre::TyreConstants<T> tyre_constants = tyre::CalcTyreConstants(p);
+    const brake::BrakeConstants<T> brake_constants = brake::CalcBrakeConstants(bp);
+    const tyre::TyreCompound& compound = *tyre_.compound;
+    using Terms = std::pair<tyre::TyreInputTerms<T>, brake::BrakeInputTerms<T>>;
+    const brake::BrakeState<T> brake_start{T(brake_start_.disc_temp), T(brake_start_.calliper_temp),
+                                           T(brake_start_.bulk_temp)};
+    sim::IntegrateOverSamples(
+        samples_, sim::WheelState<T>{start, brake_start}, max_step_,
+        [&](size_t k, double f, const Terms* near) {
+          return Terms{
+              tyre::CalcTyreInputTerms(p, tyre_constants, compound, samples_.TyreInputAt<T>(k, f),
+                                       near ? &near->first : nullptr),
+              brake::CalcBrakeInputTerms(bp, brake_constants,
+                                         brake_samples_.BrakeInputAt<T>(k, f))};
+        },
+        [&](const sim::WheelState<T>& s, const Terms& t) {
+          sim::WheelState<T> d;
+          brake::BrakeHeatFlows<T> bq;
+          d.brake = brake::CalcBrakeDerivatives(bp, s.brake, t.second, &bq, s.tyre.rim_temp);
+          d.tyre =
+              tyre::CalcTyreDerivatives(p, compound, s.tyre, t.first,
+                                        static_cast<tyre::TyreHeatFlows<T>*>(nullptr), bq.ToRim());
+          return d;
+        },
+        [&](size_t k, const sim::WheelState<T>& s) { on_sample(k, s.tyre); }, &brake_samples_);
+  }
+
+  const tyre::TyreFile& tyre_;
+  sim::CornerSamples samples_, brake_samples_;
+  const brake::BrakeThermalParams<double>* brake_;
+  brake::BrakeState<double> brake_start_;
+  double tread0_, carcass0_;
+  double max_step_;
+  double lag_;
 };
 
 FitParameter TyreParameter(int index, const tyre::TyreThermalParams<double>& car) {
@@ -262,6 +353,14 @@ const std::vector<const tyre::TyreThermalField*>& TyreFitFields() {
   return fields;
 }
 
+const std::vector<const tyre::TyreThermalField*>& GasFitFields() {
+  static const std::vector<const tyre::TyreThermalField*> fields = {
+      tyre::FindTyreThermalField("gas.carcass_gas_W_per_K"),
+      tyre::FindTyreThermalField("gas.gas_rim_W_per_K"),
+      tyre::FindTyreThermalField("rim.rim_air_W_per_K")};
+  return fields;
+}
+
 const std::vector<std::string>& TyreParameterKeys() {
   static const std::vector<std::string> keys = [] {
     std::vector<std::string> k;
@@ -391,6 +490,100 @@ void FitWearStage(const tyre::TyreFile& tyre, const TyreCornerData& d, const Log
   }
 }
 
+// A logged TPMS pressure (gauge, Pa) as a fitted channel, shown in kPa: trapezoid weights, a
+// prior noise of 1 kPa and a floor of 1 Pa on the estimated one.
+MeasuredChannel PressureChannel(const LoggedChannel& logged, const std::vector<double>& weights) {
+  return {.name = logged.quantity,
+          .unit = "kPa",
+          .display_scale = 1e-3,
+          .values = logged.values,
+          .weights = weights,
+          .prior_sigma = 1e3,
+          .min_sigma = 1.0};
+}
+
+// Starts of the gas stage: the file's conductances, and each scaled up and down together and
+// against one another (the gas temperature sees their ratio, the rim's warming their size).
+std::vector<std::vector<double>> GasStarts(const tyre::TyreThermalParams<double>& car,
+                                           double rim0) {
+  const double g_cg = car.carcass_gas_conductance, g_gr = car.gas_rim_conductance,
+               g_ra = car.rim_air_conductance;
+  std::vector<std::vector<double>> starts;
+  for (const auto& [a, b, c] :
+       {std::array{1.0, 1.0, 1.0}, std::array{2.0, 2.0, 2.0}, std::array{0.5, 0.5, 0.5},
+        std::array{2.0, 0.5, 1.0}, std::array{0.5, 2.0, 1.0}}) {
+    starts.push_back({a * g_cg, b * g_gr, c * g_ra, rim0});
+  }
+  return starts;
+}
+
+// The gas stage: the gas path's conductances and the rim's starting temperature to the TPMS
+// channels, on the car's own gas-and-rim model with the file's p1..p5 (docs/fitting.md, "The
+// gas path from TPMS"). Fills r.gas, the conductances of r.params and the modelled channels.
+void FitGasStage(const tyre::TyreFile& car_tyre, const TyreCornerData& d,
+                 const LogFitOptions& options, TyreFitResult& r) {
+  const std::span<const double> time = d.samples.time;
+  const tyre::TyreThermalParams<double>& car = car_tyre.params;
+  const double tread0 =
+      StartingTemperature(d.tread, time, options.initial_state, d.fallback_tread_temp);
+  const double carcass0 =
+      StartingTemperature(d.carcass, time, options.initial_state, d.fallback_carcass_temp);
+  const GasLogModel model(car_tyre, d, tread0, carcass0, options.max_step_s, options.tpms_lag_s);
+  std::vector<FitParameter> params;
+  for (const tyre::TyreThermalField* f : GasFitFields()) {
+    params.push_back(FitParameterOf(std::string(f->key), *f->fit, f->Of(car)));
+  }
+  params.push_back(InitialTemperatureParameter("initial_rim_temp_C", "T_rim(0)"));
+  std::vector<MeasuredChannel> channels;
+  std::vector<int> fitted_channels;
+  if (d.pressure.usable) {
+    channels.push_back(PressureChannel(d.pressure, d.weights));
+    fitted_channels.push_back(kPressure);
+  }
+  if (d.gas_temp.usable) {
+    channels.push_back(TemperatureChannel(d.gas_temp, d.weights));
+    fitted_channels.push_back(kGasTemp);
+  }
+  std::vector<double> all = {car.carcass_gas_conductance, car.gas_rim_conductance,
+                             car.rim_air_conductance, d.fallback_rim_temp};
+  const std::vector<int> free = {kCarcassGas, kGasRim, kRimAir, kRim0};
+  const JetPredictor<GasLogModel> predictor(model, all, free, fitted_channels);
+  r.gas = FitChannels(predictor, params, channels, GasStarts(car, d.fallback_rim_temp), time,
+                      options.solver);
+  for (size_t i = 0; i < free.size(); ++i) all[free[i]] = r.gas->estimates[i].value;
+  for (size_t i = 0; i < GasFitFields().size(); ++i) GasFitFields()[i]->Of(r.params) = all[i];
+  AddLagWarnings(*r.gas, options.tpms_lag_s, &r.warnings, "--tpms-lag-s");
+  AddMisfitWarnings(*r.gas, &r.warnings);
+  r.pressure_model.resize(time.size());
+  r.gas_temp_model.resize(time.size());
+  model.Run<double>(all, [&](int c, size_t k, double v) {
+    (c == kPressure ? r.pressure_model : r.gas_temp_model)[k] = v;
+  });
+}
+
+// Whether the gas stage runs: a gas-and-rim tyre and a usable TPMS channel. Says why not where
+// the log has a TPMS column the fit cannot use (a log without any is fitted as before, silently).
+bool WantsGasStage(const tyre::TyreFile& tyre, const TyreCornerData& d, TyreFitResult& r) {
+  const bool columns = !d.pressure.column.empty() || !d.gas_temp.column.empty();
+  if (!columns) return false;
+  if (!tyre.params.HasGasAndRim()) {
+    r.warnings.push_back(
+        "the tyre file runs the paper's model (no gas node): the TPMS channels are not fitted");
+    return false;
+  }
+  for (const LoggedChannel* ch : {&d.pressure, &d.gas_temp}) {
+    if (ch->column.empty()) continue;
+    if (const std::string s = DescribeChannelProblems(*ch); !s.empty()) r.warnings.push_back(s);
+  }
+  if (!d.pressure.usable && !d.gas_temp.usable) {
+    r.warnings.push_back(
+        "no usable pressure or gas temperature: the gas path's conductances kept from the car "
+        "file");
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 TyreFitResult FitTyreCorner(const tyre::TyreFile& any_tyre, const TyreCornerData& d,
@@ -447,6 +640,9 @@ TyreFitResult FitTyreCorner(const tyre::TyreFile& any_tyre, const TyreCornerData
   model.Run<double>(all, [&](int c, size_t k, double v) {
     (c == kTread ? r.tread_model : c == kCarcass ? r.carcass_model : r.wear_model)[k] = v;
   });
+
+  // Gas stage, on the car's own gas-and-rim model.
+  if (WantsGasStage(any_tyre, d, r)) FitGasStage(any_tyre, d, options, r);
   return r;
 }
 

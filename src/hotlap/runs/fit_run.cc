@@ -78,6 +78,10 @@ void CheckFitOptions(const ident::CarFitOptions& o, NameStyle style) {
     throw InputError(
         fmt::format("{} {} must be >= 0", OptionName(style, "sensor_lag_s"), o.fit.sensor_lag_s));
   }
+  if (!(o.fit.tpms_lag_s >= 0.0)) {
+    throw InputError(
+        fmt::format("{} {} must be >= 0", OptionName(style, "tpms_lag_s"), o.fit.tpms_lag_s));
+  }
   positive(o.fit.max_step_s, "max_step_s");
   positive(o.wear_sd_mm, "wear_sd_mm");
 }
@@ -103,6 +107,12 @@ ident::FitRun RunFit(const vehicle::Car& car, const Telemetry& log, const FitRun
                  {"random_starts", options.fit.random_starts},
                  {"seed", options.fit.seed}};
   run.result = ident::FitCarToLog(car, log, options);
+  // Only a fit that used TPMS channels names their lag (a log without them reports as before).
+  for (const ident::CornerFitOutcome& c : run.result.corners) {
+    for (const ident::ReportedFit& f : c.fits) {
+      if (f.title == "gas") run.options["tpms_lag_s"] = options.fit.tpms_lag_s;
+    }
+  }
   if (!o.out.empty()) {
     run.result.edits.header = {
         fmt::format("Fitted by {} {} on {} to {}.", provenance.program, run.command,

@@ -23,6 +23,10 @@ constexpr FitHint kWp1Fit{"wp1", "mm/s", 0.0, 1.0, 1e-8};
 constexpr FitHint kWp2Fit{"wp2", "", 0.0, 5.0, 0.5};
 constexpr FitHint kPcp1Fit{"p_cp1", "m/N^p_cp2", 1e-8, 1.0, 1e-6};
 constexpr FitHint kPcp2Fit{"p_cp2", "", 0.0, 2.0, 0.1};
+// The gas path's conductances the tyre fit's gas stage frees (TPMS channels; docs/fitting.md).
+constexpr FitHint kCarcassGasFit{"G_cg", "W/K", 0.1, 1000.0, 1.0};
+constexpr FitHint kGasRimFit{"G_gr", "W/K", 0.1, 1000.0, 1.0};
+constexpr FitHint kRimAirFit{"G_ra", "W/K", 0.0, 1000.0, 1.0};
 
 double DegreesToSi(double deg) { return DegToRad(deg); }
 double CelsiusToSi(double c) { return CelsiusToKelvin(c); }
@@ -63,14 +67,14 @@ std::span<const TyreThermalField> Table() {
       {"hysteresis", "pressure_exponent", &P::rolling_pressure_exponent, Range::Closed(0.0, 2.0, "")},
       {"gas", "cold_set_temp_C", &P::cold_set_temp, Range::Closed(-40.0, 80.0, "degC"), &CelsiusToSi},
       {"gas", "liner_pressure_above_tyre_kPa", &P::liner_pressure_offset, Range::Closed(0.0, 1000.0, "kPa"), &KilopascalsToSi},
-      {"gas", "carcass_gas_W_per_K", &P::carcass_gas_conductance, Range::Positive("W/K")},
-      {"gas", "gas_rim_W_per_K", &P::gas_rim_conductance, Range::Positive("W/K")},
+      {"gas", "carcass_gas_W_per_K", &P::carcass_gas_conductance, Range::Positive("W/K"), nullptr, &kCarcassGasFit},
+      {"gas", "gas_rim_W_per_K", &P::gas_rim_conductance, Range::Positive("W/K"), nullptr, &kGasRimFit},
       {"gas", "gas_liner_W_per_K", &P::gas_liner_conductance, Range::NonNegative("W/K")},
       {"gas", "liner_rim_W_per_K", &P::liner_rim_conductance, Range::NonNegative("W/K")},
       {"gas", "contact_length_pressure_exponent", &P::contact_length_pressure_exponent, Range::Closed(0.0, 2.0, "")},
       {"rim", "rim_mass_kg", &P::rim_mass, Range::Positive("kg")},
       {"rim", "rim_heat_capacity_J_per_kgK", &P::rim_heat_capacity, Range::Positive("J/(kg K)")},
-      {"rim", "rim_air_W_per_K", &P::rim_air_conductance, Range::NonNegative("W/K")},
+      {"rim", "rim_air_W_per_K", &P::rim_air_conductance, Range::NonNegative("W/K"), nullptr, &kRimAirFit},
       {"rim", "sidewall_air_W_per_K", &P::sidewall_air_conductance, Range::NonNegative("W/K")},
       {"rim", "still_air_fraction", &P::still_air_fraction, Range::Closed(0.0, 1.0, "")},
   });

@@ -51,7 +51,8 @@ bool IsGasRimSection(std::string_view section);
 /// The entries of one section, in file order.
 std::vector<const TyreThermalField*> TyreThermalFieldsIn(std::string_view section);
 
-/// The entries with a fit hint (p1..p5, wp1, wp2, p_cp1, p_cp2), in file order; with `section`
+/// The entries with a fit hint (p1..p5, wp1, wp2, p_cp1, p_cp2, and the gas path's carcass-gas,
+/// gas-rim and rim-air conductances), in file order; with `section`
 /// given, only those of that section.
 std::vector<const TyreThermalField*> FittedTyreThermalFields(std::string_view section = {});
 
