@@ -70,16 +70,8 @@ void AddTyreCharts(report::HtmlReport& page, const RaceRun& run, const std::vect
   page.AddLineChart(tread);
 }
 
-}  // namespace
-
-void WriteRaceReport(const std::filesystem::path& path, const RaceRun& run, const std::string& car,
-                     const std::string& track) {
-  report::HtmlReport page(fmt::format("hotlap race: {} on {}", car, track));
-  page.AddMetadata("laps", std::to_string(run.rules.laps));
-  page.AddMetadata("stages end", fmt::format("{}", fmt::join(run.rules.stage_ends, ", ")));
-  page.AddMetadata("tyre sets", std::to_string(run.rules.tyre_sets));
-  page.AddMetadata("fuel window", fmt::format("{} laps", run.rules.FuelWindow()));
-  page.AddMetadata("version", HOTLAP_VERSION);
+// The plans' table and the optimal plan's gain under cautions.
+void AddPlans(report::HtmlReport& page, const RaceRun& run) {
   page.AddHeading("Plans");
   std::vector<std::vector<std::string>> rows;
   const auto row = [&](const RacePlan& p, const MonteCarloResult* mc) {
@@ -112,36 +104,42 @@ void WriteRaceReport(const std::filesystem::path& path, const RaceRun& run, cons
         run.gain_under_cautions.mean_time_s, run.gain_under_cautions.standard_error_s,
         run.gain_under_cautions.races));
   }
-  if (run.policy) {
-    const PolicyRun& pr = *run.policy;
-    page.AddHeading("The policy under cautions");
-    std::string text = fmt::format(
-        "A stochastic dynamic programme over the laps, with the set's age, the fuel, the sets "
-        "used and the caution in its state, says at the end of every lap whether to pit: expected "
-        "race time {:.2f} s.",
-        pr.policy.expected_time_s);
-    if (pr.monte_carlo.races > 0) {
-      text += fmt::format(
-          " In the plans' {} races it averages {:.2f} ± {:.2f} s with {:.1f} stops and gains "
-          "{:.2f} ± {:.2f} s over the best plan ({}).",
-          pr.monte_carlo.races, pr.monte_carlo.mean_time_s, pr.monte_carlo.standard_error_s,
-          pr.stats.mean_stops, pr.gain_over_best_plan.mean_time_s,
-          pr.gain_over_best_plan.standard_error_s, pr.best_plan);
-    }
-    page.AddText(text);
-    std::vector<std::vector<std::string>> chart;
-    for (size_t i = 0; i < pr.caution_laps.size(); ++i) {
-      chart.push_back({std::to_string(pr.caution_laps[i]),
-                       pr.four_tyres_from_age[i] < 0
-                           ? std::string("stay out")
-                           : fmt::format("{} laps or older", pr.four_tyres_from_age[i])});
-    }
-    page.AddTable({.title = "A caution out on lap N: four new tyres (and fuel) from a set of this "
-                            "age, the fuel filled with the set",
-                   .header = {"caution on lap", "pit for four tyres"},
-                   .rows = chart});
+}
+
+// The policy: its expected time, its races and the caution chart.
+void AddPolicy(report::HtmlReport& page, const RaceRun& run) {
+  if (!run.policy) return;
+  const PolicyRun& pr = *run.policy;
+  page.AddHeading("The policy under cautions");
+  std::string text = fmt::format(
+      "A stochastic dynamic programme over the laps, with the set's age, the fuel, the sets "
+      "used and the caution in its state, says at the end of every lap whether to pit: expected "
+      "race time {:.2f} s.",
+      pr.policy.expected_time_s);
+  if (pr.monte_carlo.races > 0) {
+    text += fmt::format(
+        " In the plans' {} races it averages {:.2f} ± {:.2f} s with {:.1f} stops and gains "
+        "{:.2f} ± {:.2f} s over the best plan ({}).",
+        pr.monte_carlo.races, pr.monte_carlo.mean_time_s, pr.monte_carlo.standard_error_s,
+        pr.stats.mean_stops, pr.gain_over_best_plan.mean_time_s,
+        pr.gain_over_best_plan.standard_error_s, pr.best_plan);
   }
-  page.AddHeading("Fall-off and the race");
+  page.AddText(text);
+  std::vector<std::vector<std::string>> chart;
+  for (size_t i = 0; i < pr.caution_laps.size(); ++i) {
+    chart.push_back({std::to_string(pr.caution_laps[i]),
+                     pr.four_tyres_from_age[i] < 0
+                         ? std::string("stay out")
+                         : fmt::format("{} laps or older", pr.four_tyres_from_age[i])});
+  }
+  page.AddTable({.title = "A caution out on lap N: four new tyres (and fuel) from a set of this "
+                          "age, the fuel filled with the set",
+                 .header = {"caution on lap", "pit for four tyres"},
+                 .rows = chart});
+}
+
+// The fall-off with its heat-only and right-side curves, and the right-side check.
+void AddFallOff(report::HtmlReport& page, const RaceRun& run) {
   std::vector<double> ages;
   for (size_t a = 0; a < run.fall_off.lap_time_s.size(); ++a)
     ages.push_back(static_cast<double>(a));
@@ -184,6 +182,10 @@ void WriteRaceReport(const std::filesystem::path& path, const RaceRun& run, cons
                      .y = c.fall_off_s,
                      .style = report::LineStyle::kDashed}}});
   }
+}
+
+// Every plan's lap times and runs over the race, each tyre on the optimal plan.
+void AddRaceCharts(report::HtmlReport& page, const RaceRun& run) {
   report::LineChart trace{.title = "Lap times over the race (stops not included)",
                           .x_axis = {.label = "lap", .integer_ticks = true},
                           .y_axis = {.label = "lap time", .unit = "s"},
@@ -213,19 +215,40 @@ void WriteRaceReport(const std::filesystem::path& path, const RaceRun& run, cons
   page.AddLineChart(trace);
   page.AddLineChart(runs);
   AddTyreCharts(page, run, laps);
-  if (!run.monte_carlo.empty() && !run.monte_carlo[0].caution_histogram.empty()) {
-    const MonteCarloResult& mc = run.monte_carlo[0];
-    std::vector<double> count, share;
-    for (size_t k = 0; k < mc.caution_histogram.size(); ++k) {
-      count.push_back(static_cast<double>(k));
-      share.push_back(static_cast<double>(mc.caution_histogram[k]) / mc.races);
-    }
-    page.AddHeading("Cautions");
-    page.AddLineChart({.title = fmt::format("Cautions in the {} simulated races", mc.races),
-                       .x_axis = {.label = "cautions in a race", .integer_ticks = true},
-                       .y_axis = {.label = "share of the races"},
-                       .series = {{.label = "share", .x = count, .y = share}}});
+}
+
+// The simulated races' cautions.
+void AddCautionHistogram(report::HtmlReport& page, const RaceRun& run) {
+  if (run.monte_carlo.empty() || run.monte_carlo[0].caution_histogram.empty()) return;
+  const MonteCarloResult& mc = run.monte_carlo[0];
+  std::vector<double> count, share;
+  for (size_t k = 0; k < mc.caution_histogram.size(); ++k) {
+    count.push_back(static_cast<double>(k));
+    share.push_back(static_cast<double>(mc.caution_histogram[k]) / mc.races);
   }
+  page.AddHeading("Cautions");
+  page.AddLineChart({.title = fmt::format("Cautions in the {} simulated races", mc.races),
+                     .x_axis = {.label = "cautions in a race", .integer_ticks = true},
+                     .y_axis = {.label = "share of the races"},
+                     .series = {{.label = "share", .x = count, .y = share}}});
+}
+
+}  // namespace
+
+void WriteRaceReport(const std::filesystem::path& path, const RaceRun& run, const std::string& car,
+                     const std::string& track) {
+  report::HtmlReport page(fmt::format("hotlap race: {} on {}", car, track));
+  page.AddMetadata("laps", std::to_string(run.rules.laps));
+  page.AddMetadata("stages end", fmt::format("{}", fmt::join(run.rules.stage_ends, ", ")));
+  page.AddMetadata("tyre sets", std::to_string(run.rules.tyre_sets));
+  page.AddMetadata("fuel window", fmt::format("{} laps", run.rules.FuelWindow()));
+  page.AddMetadata("version", HOTLAP_VERSION);
+  AddPlans(page, run);
+  AddPolicy(page, run);
+  page.AddHeading("Fall-off and the race");
+  AddFallOff(page, run);
+  AddRaceCharts(page, run);
+  AddCautionHistogram(page, run);
   page.Write(path);
 }
 
