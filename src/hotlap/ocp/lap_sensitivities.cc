@@ -78,7 +78,7 @@ double SetupValue(const vehicle::Car& car, const std::string& key) {
     return p.corners[c].pressure / 1000.0;
   }
   if (c >= 0 && key.rfind("tyre_forces.", 0) == 0 && EndsWith(key, ".camber_deg")) {
-    return p.corners[c].camber * 180.0 / M_PI;
+    return RadToDeg(p.corners[c].camber);
   }
   if (c >= 0 && key.rfind("brakes.", 0) == 0 && EndsWith(key, ".duct_factor")) return 1.0;
   if (key == "brake_system.front_share") return p.brakes.front_share;

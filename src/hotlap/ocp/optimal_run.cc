@@ -1,6 +1,7 @@
 #include "hotlap/ocp/optimal_run.h"
 
 #include <algorithm>
+#include <chrono>
 #include <thread>
 
 #include <fmt/format.h>
@@ -60,7 +61,14 @@ void AddSensitivities(const vehicle::Car& car, const track::Track& track,
       continue;
     }
     if (log) log(fmt::format("{}: set-up sensitivities...", lap.label));
+    const auto started = std::chrono::steady_clock::now();
     lap.sensitivities = ComputeLapSensitivities(car, track, o, lap.run);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    if (log) {
+      log(fmt::format("{}: {} set-up sensitivities in {:.1f} s (no solve)", lap.label,
+                      lap.sensitivities.size(), seconds));
+    }
   }
 }
 
