@@ -97,6 +97,11 @@ void CompareWithSolves(std::vector<std::string> keys, std::optional<double> disc
     so.keys.clear();
     for (const SetupParameter& p : CrewChiefParameters()) so.keys.push_back(p.key);
   }
+  // HOTLAP_SENSITIVITY_KEY: that key alone; HOTLAP_SENSITIVITY_STEP_SCALE: the solves' steps
+  // times this (measurements).
+  if (const char* key = std::getenv("HOTLAP_SENSITIVITY_KEY")) so.keys = {key};
+  double step_scale = 1.0;
+  if (const char* f = std::getenv("HOTLAP_SENSITIVITY_STEP_SCALE")) step_scale = std::atof(f);
   const auto started = std::chrono::steady_clock::now();
   const std::vector<LapSensitivity> analytic = ComputeLapSensitivities(car, track, o, base, so);
   const double analytic_s =
@@ -105,6 +110,7 @@ void CompareWithSolves(std::vector<std::string> keys, std::optional<double> disc
   // The derivative hardly moves with h (first order in the Lagrangian, the central difference
   // second order).
   for (size_t k : h_keys) {
+    if (k >= analytic.size()) continue;
     SensitivityOptions one = so;
     one.keys = {analytic[k].parameter.key};
     for (double rel : {1e-4, 1e-2}) {
@@ -130,7 +136,7 @@ void CompareWithSolves(std::vector<std::string> keys, std::optional<double> disc
   std::cout << fmt::format("{:<32} {:>10} {:>12} {:>12} {:>12} {:>8} {:>9}\n", "key", "step",
                            "analytic ms", "solves ms", "objective ms", "diff %", "iters");
   for (const LapSensitivity& s : analytic) {
-    const double step = s.parameter.typical_step;
+    const double step = step_scale * s.parameter.typical_step;
     const auto solves_started = std::chrono::steady_clock::now();
     const OptimalLapRun plus = solve(s.parameter.key, s.value + step);
     const OptimalLapRun minus = solve(s.parameter.key, s.value - step);
@@ -141,7 +147,13 @@ void CompareWithSolves(std::vector<std::string> keys, std::optional<double> disc
     const double fd_effect = 0.5 * (plus.solution.lap_time - minus.solution.lap_time);
     const double fd_objective =
         0.5 * (plus.solution.solve.objective - minus.solution.solve.objective) * objective_scale;
-    const double effect = s.typical_effect_s();
+    const double effect = s.d_lap_time_per_unit * step;
+    // One-sided, against the base objective: a kink (another branch of optima) shows here.
+    const double base_objective = base.solution.solve.objective * objective_scale;
+    std::cout << fmt::format(
+        "  one-sided objective: +step {:.4f} ms, -step {:.4f} ms\n",
+        1e3 * (plus.solution.solve.objective * objective_scale - base_objective),
+        1e3 * (base_objective - minus.solution.solve.objective * objective_scale));
     std::cout << fmt::format(
         "{:<32} {:>10} {:>12.4f} {:>12.4f} {:>12.4f} {:>8.2f} {:>3}+{:<3} {:.1f} s\n",
         s.parameter.key, s.parameter.step_text, 1e3 * effect, 1e3 * fd_effect, 1e3 * fd_objective,
