@@ -43,6 +43,7 @@ struct LapArgs {
   std::optional<double> ocp_step_m;            // --method ocp
   bool single_process = false;                 // --method ocp with a comparison
   bool wear_in_programme = false;              // --method ocp
+  bool sensitivities = false;                  // --method ocp
   int threads = 0;                             // --method ocp: derivative threads (0: per core)
   // What was given on the command line (of the options that have defaults).
   std::vector<std::string> given;
@@ -77,6 +78,7 @@ void RefuseOtherMethodsOptions(const LapArgs& a) {
         std::pair{a.ocp_step_m.has_value(), "--ocp-step-m"},
         std::pair{a.single_process, "--single-process"},
         std::pair{a.wear_in_programme, "--wear-in-programme"},
+        std::pair{a.sensitivities, "--sensitivities"},
         std::pair{a.Given("--threads"), "--threads"}}) {
     if (given) throw InputError(fmt::format("{} is for --method ocp", name));
   }
@@ -98,6 +100,7 @@ int RunLap(const LapArgs& a) {
     if (a.ocp_step_m) o.run.step_m = *a.ocp_step_m;
     o.single_process = a.single_process;
     o.run.wear_in_programme = a.wear_in_programme;
+    o.run.sensitivities = a.sensitivities;
     o.run.threads = a.threads;
     return RunOptimal(o);
   }
@@ -145,6 +148,10 @@ CommandRunner RegisterLapCommand(CLI::App& app) {
   sub->add_flag("--wear-in-programme", args->wear_in_programme,
                 "ocp: keep the tyres' wear as states of the fine solves' programmes (by default "
                 "frozen for the forces and integrated after the solve; docs/optimal-control.md)");
+  sub->add_flag("--sensitivities", args->sensitivities,
+                "ocp: after the solves, each lap's set-up sensitivities (the lap time's derivative "
+                "with respect to pressures, cambers, brakes, weight split, aero, mass) from its "
+                "multipliers, without solving again (docs/optimal-control.md)");
   sub->add_option("--threads", args->threads,
                   "ocp: threads evaluating the derivatives (0: one per core, at most 8; the "
                   "comparison's two solves take half each)")

@@ -75,6 +75,11 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
   sub->add_option("--max-iterations", a.run.max_iterations, "Ipopt's iteration limit")
       ->capture_default_str()
       ->check(kPositive);
+  a.stock_car_only.push_back(sub->add_flag(
+      "--sensitivities", a.run.sensitivities,
+      "After the solve, the lap time's derivative with respect to each set-up parameter (cold "
+      "pressures, cambers, brake balance and ducts, weight split, aero, mass) from the solved "
+      "lap's multipliers, without solving again (docs/optimal-control.md)"));
   a.stock_car_only.push_back(
       sub->add_flag("--mesh-check", a.mesh_check,
                     "Solve again on a mesh of half the spacing and report the lap time's change"));

@@ -117,7 +117,8 @@ int RunOptimal(const OptimalArgs& a) {
     mesh_delta = fine.figures.lap_time_s - first.figures.lap_time_s;
   }
   for (const ocp::SolvedLap& s : runs.laps) {
-    fmt::print("{}:\n{}", s.label, ocp::SolvedLapText(s, o.thermal_start));
+    fmt::print("{}:\n{}{}", s.label, ocp::SolvedLapText(s, o.thermal_start),
+               ocp::SensitivitiesText(s));
   }
   if (runs.laps.size() == 2) fmt::print("{}", ocp::DiscLimitCostText(first, runs.laps[1]));
   if (mesh_delta) {

@@ -137,13 +137,22 @@ TEST_F(LapCommandTest, ChannelsReplayToTheSameTemperatures) {
 // does), on a coarse mesh so that it solves in seconds.
 TEST_F(LapCommandTest, OneOptimalLapSaysWhichCommandRanIt) {
   const fs::path out = dir() / "ocp", json = dir() / "ocp.json";
-  const RunResult r = Run("lap --method ocp --ocp-step-m 30 --threads 1 --out " + out.string() +
-                          " --json " + json.string());
+  const RunResult r = Run("lap --method ocp --ocp-step-m 30 --threads 1 --sensitivities --out " +
+                          out.string() + " --json " + json.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = Json(json);
   EXPECT_EQ(j["command"], "lap --method ocp");
   EXPECT_EQ(j["mesh_step_m"].get<double>(), 30.0);
   EXPECT_NEAR(j["lap_time_s"].get<double>(), 29.7, 0.3);
+  // --sensitivities: every parameter in the JSON, ranked on the terminal (mass costs time).
+  ASSERT_EQ(j["sensitivities"].size(), 19u);
+  for (const nlohmann::json& s : j["sensitivities"]) {
+    if (s["key"] != "chassis.mass_kg") continue;
+    EXPECT_GT(s["d_lap_time_s_per_unit"].get<double>(), 0.0);
+    EXPECT_EQ(s["typical_step_text"], "+10 kg");
+  }
+  EXPECT_NE(r.out.find("set-up sensitivities"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("+1 psi right-rear cold pressure:"), std::string::npos) << r.out;
 }
 
 // A stint: one row per lap in the JSON, wear accumulating, laps column counting up.
@@ -337,6 +346,7 @@ TEST_F(LapCommandTest, BadInputFailsCleanlyWithoutOutput) {
       {"lap --single-process", "--single-process is for --method ocp"},
       {"lap --wear-in-programme", "--wear-in-programme is for --method ocp"},
       {"lap --threads 2", "--threads is for --method ocp"},
+      {"lap --sensitivities", "--sensitivities is for --method ocp"},
       // And the QSS lap's by the optimal lap (refused before anything is solved).
       {"lap --method ocp --laps 2", "--laps is for --method qss"},
       {"lap --method ocp --step-m 2", "--ocp-step-m"},

@@ -36,6 +36,23 @@ TEST(SolvedLapJson, HoldsTheSolveFiguresTurnsAndStart) {
   const nlohmann::json car = SolvedLapJson(testing::MakeExampleSolvedLap("x", 30.0, 500.0), "car");
   EXPECT_EQ(car["front_disc_limit_C"], 500.0);
   EXPECT_FALSE(car["thermal_start"].contains("carcass_rise_K"));
+  EXPECT_TRUE(j["sensitivities"].is_null());  // not asked
+}
+
+TEST(SolvedLapJson, HoldsTheSensitivities) {
+  SolvedLap lap = testing::MakeExampleSolvedLap("optimal lap", 30.0);
+  lap.sensitivities = {{CrewChiefParameters()[3], 303.4, 0.3034, -5.255e-5}};
+  const nlohmann::json j = SolvedLapJson(lap, "racing")["sensitivities"];
+  ASSERT_EQ(j.size(), 1u);
+  EXPECT_EQ(j[0]["key"], "tyre_forces.rr.pressure_kPa");
+  EXPECT_EQ(j[0]["label"], "right-rear cold pressure");
+  EXPECT_EQ(j[0]["unit"], "kPa");
+  EXPECT_EQ(j[0]["value"], 303.4);
+  EXPECT_EQ(j[0]["step"], 0.3034);
+  EXPECT_EQ(j[0]["d_lap_time_s_per_unit"], -5.255e-5);
+  EXPECT_EQ(j[0]["typical_step_text"], "+1 psi");
+  EXPECT_NEAR(j[0]["typical_step"].get<double>(), 6.894757, 1e-6);
+  EXPECT_NEAR(j[0]["typical_step_effect_ms"].get<double>(), -0.36232, 1e-5);
 }
 
 TEST(OptimalRunsJson, OneSolveAndTheComparison) {

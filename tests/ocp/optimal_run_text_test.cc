@@ -26,6 +26,20 @@ TEST(SolvedLapText, SaysTheFiguresTurnsAndCorners) {
   EXPECT_EQ(t.back(), '\n');
 }
 
+TEST(SensitivitiesText, RanksTheStepsByTheirEffect) {
+  SolvedLap lap = testing::MakeExampleSolvedLap("optimal lap", 30.0);
+  EXPECT_EQ(SensitivitiesText(lap), "");
+  const auto& all = CrewChiefParameters();
+  lap.sensitivities = {{all[3], 303.4, 0.3034, -5.255e-5}, {all.back(), 1542.0, 1.542, 4.067e-3}};
+  const std::string t = SensitivitiesText(lap);
+  const size_t mass = t.find("+10 kg chassis mass (fuel):"), rr = t.find("+1 psi right-rear");
+  ASSERT_NE(mass, std::string::npos) << t;
+  ASSERT_NE(rr, std::string::npos) << t;
+  EXPECT_LT(mass, rr);  // the larger effect first
+  EXPECT_TRUE(test::Contains(t, "+40.670 ms   (+4.067 ms per kg, at 1542 kg)")) << t;
+  EXPECT_TRUE(test::Contains(t, "-0.362 ms   (-0.05255 ms per kPa, at 303.4 kPa)")) << t;
+}
+
 TEST(DiscLimitCostText, SaysWhatTheLimitCosts) {
   const SolvedLap free = testing::MakeExampleSolvedLap("no limit", 30.0);
   SolvedLap limited = testing::MakeExampleSolvedLap("discs <= 500 degC", 30.25, 500.0);

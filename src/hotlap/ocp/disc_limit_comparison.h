@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "hotlap/ocp/lap_sensitivities.h"
 #include "hotlap/ocp/optimal_lap.h"
 #include "hotlap/ocp/optimal_output.h"
 
@@ -30,6 +31,9 @@ struct SolvedLap {
   OptimalLapRun run;
   OptimalLapFigures figures;
   std::vector<TurnApproach> approaches;  ///< lift and brake points into each turn
+  /// Set-up sensitivities of the lap (OptimalRunOptions::sensitivities; empty if not asked or
+  /// the lap did not converge).
+  std::vector<LapSensitivity> sensitivities;
 };
 
 /// Called at every Ipopt iteration of a solve with the lap's label, the iteration, the objective

@@ -58,6 +58,7 @@ class ElementNlp {
                   std::vector<std::vector<Target>> targets);
   /// The objective is divided by this (> 0) before the solver sees it.
   void SetObjectiveScale(double scale) { objective_scale_ = scale; }
+  double objective_scale() const { return objective_scale_; }
   /// ScaledHessian gives each element's weighted Hessian with its negative eigenvalues set to
   /// zero (in the scaled variables) instead of the exact one: a positive semi-definite
   /// Lagrangian Hessian, so that the solver's inertia correction has less to do, at the price of

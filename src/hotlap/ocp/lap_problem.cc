@@ -1142,4 +1142,44 @@ LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& tra
   return out;
 }
 
+LapProgrammeValues EvaluateLapProgramme(const vehicle::Car& car, const track::Track& track,
+                                        const LapProblemOptions& options, const sim::QssLap& guess,
+                                        const std::vector<double>& x) {
+  const VehicleParams& p = vehicle::RequireVehicle(car, "the optimal lap");
+  if (!(options.step_m > 0.0)) throw InputError("optimal lap: the mesh step must be > 0 m");
+  Builder b(car, p, track, options, guess);
+  b.Build();
+  if (!options.start_point.empty()) ApplyStartPoint(options, b);
+  const ElementNlp& nlp = b.nlp;
+  const int n = nlp.variables(), m = nlp.constraints();
+  if (static_cast<int>(x.size()) != n) {
+    throw InputError(
+        fmt::format("optimal lap: a point of {} values for {} variables", x.size(), n));
+  }
+  LapProgrammeValues out;
+  std::vector<double> at = x;
+  for (int i = 0; i < n; ++i) {
+    out.lower.push_back(nlp.lower(i));
+    out.upper.push_back(nlp.upper(i));
+    out.scale.push_back(nlp.scale(i));
+    if (nlp.lower(i) == nlp.upper(i)) at[i] = nlp.lower(i);  // a fixed variable, as Ipopt had it
+  }
+  out.objective = nlp.Objective(at);
+  out.objective_scale = nlp.objective_scale();
+  std::vector<double> lo(m), hi(m), sc(m);
+  for (int r = 0; r < m; ++r)
+    lo[r] = nlp.row_lower(r), hi[r] = nlp.row_upper(r), sc[r] = nlp.row_scale(r);
+  out.rows = b.ToLayoutRows(nlp.Constraints(at));
+  out.row_lower = b.ToLayoutRows(lo);
+  out.row_upper = b.ToLayoutRows(hi);
+  out.row_scale = b.ToLayoutRows(sc);
+  // The rows left out: scale 1.
+  std::vector<double> present(m, 1.0);
+  const std::vector<double> in_layout = b.ToLayoutRows(present);
+  for (size_t r = 0; r < in_layout.size(); ++r) {
+    if (in_layout[r] == 0.0) out.row_scale[r] = 1.0;
+  }
+  return out;
+}
+
 }  // namespace hotlap::ocp

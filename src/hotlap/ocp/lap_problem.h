@@ -37,7 +37,8 @@
 
 namespace hotlap::ocp {
 
-/// How the state equations are imposed between nodes (docs/optimal-control-model.md, "Transcription").
+/// How the state equations are imposed between nodes (docs/optimal-control-model.md,
+/// "Transcription").
 enum class Collocation {
   /// x_{k+1} - x_k = ds/2 (f_k + f_{k+1}) on every interval of the mesh: second order.
   kTrapezoid,
@@ -82,10 +83,11 @@ struct LapProblemOptions {
   /// after the solve by the same collocation over the solved channels: a lap's wear changes h by
   /// about 0.01 at the right rear of the Gen-7-like car (its tuned wear, docs/race.md); frozen at
   /// the coarse solve's, h is within 1e-3 of the solution's in the main job
-  /// (LapSolution::frozen_wear_grip_difference reports it). Four states fewer per node: a fine solve
-  /// from a coarse one about 15% faster an iteration, in fewer iterations. RunOptimalLap leaves
-  /// it out of solves that start from a solution only (from the QSS guess it made the solve less
-  /// robust); a stint keeps it (its wear grows lap after lap). docs/validation/optimal-control.md, "Speed".
+  /// (LapSolution::frozen_wear_grip_difference reports it). Four states fewer per node: a fine
+  /// solve from a coarse one about 15% faster an iteration, in fewer iterations. RunOptimalLap
+  /// leaves it out of solves that start from a solution only (from the QSS guess it made the solve
+  /// less robust); a stint keeps it (its wear grows lap after lap).
+  /// docs/validation/optimal-control.md, "Speed".
   bool wear_in_programme = true;
   /// Each element's Hessian with its negative curvature clipped (ElementNlp::
   /// SetConvexElementHessians) instead of the exact Lagrangian Hessian.
@@ -228,6 +230,25 @@ LapMultipliers ResampleLapMultipliers(const SolveResult& solve, const LapLayout&
 void StartFromSolution(const SolveResult& solve, const LapLayout& from, int to_nodes,
                        Collocation to_collocation, bool with_multipliers,
                        std::vector<double>& start_point, IpoptOptions& ipopt);
+
+/// A lap problem's programme evaluated at a point, in physical units, row by row in the layout's
+/// rows (LapLayout: a row left out of the programme, a brake's or the frozen wear's defect, has
+/// value, bounds 0 and scale 1): what a parametric sensitivity (ocp/lap_sensitivities.h) needs of
+/// the programme posed for a perturbed car at a fixed solution.
+struct LapProgrammeValues {
+  double objective = 0.0;        ///< f(x): the lap time and the smoothness penalty, s
+  double objective_scale = 1.0;  ///< the solver sees f / objective_scale
+  std::vector<double> rows, row_lower, row_upper, row_scale;  ///< g(x), its bounds and scales
+  std::vector<double> lower, upper, scale;                    ///< the variables' bounds and scales
+};
+
+/// The programme SolveMinimumTimeLap poses for `car`, `options` and `guess` (options.start_point
+/// and wear_in_programme as the solve had them: they fix the frozen wear), evaluated at `x` (a
+/// SolveResult::x of it) with every fixed variable at its fixed value, as the solver saw it: no
+/// solve. InputError as SolveMinimumTimeLap, or if x is not the programme's size.
+LapProgrammeValues EvaluateLapProgramme(const vehicle::Car& car, const track::Track& track,
+                                        const LapProblemOptions& options, const sim::QssLap& guess,
+                                        const std::vector<double>& x);
 
 /// Builds and solves the lap. `guess` (a QSS lap of the same car and track, e.g. from
 /// sim::RunQssLap) gives the starting point. InputError if the car has no vehicle sections;

@@ -286,9 +286,24 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& any_car, const track::Track& tra
   }
   run.solution = SolveMinimumTimeLap(hot_car, track, lap, w.guess, fine_ipopt,
                                      options.presolved ? &options.presolved->fine : nullptr);
+  run.posed = std::make_shared<const PosedLap>(PosedLap{lap, w.guess});
   QssOnOptimalLine(car, track, qss, run);
   ReplayExact(car, track, options, lap.periodic_thermal, run);
   return run;
+}
+
+LapProgrammeValues EvaluateRunProgramme(const vehicle::Car& any_car, const track::Track& track,
+                                        const OptimalLapOptions& options,
+                                        const OptimalLapRun& run) {
+  if (!run.posed || run.solution.solve.x.empty()) {
+    throw InputError("optimal lap: the run has no solution to evaluate its programme at");
+  }
+  const vehicle::Car car = ProgrammeCar(any_car, options);
+  vehicle::RequireVehicle(car, "the optimal lap");
+  const vehicle::Car hot_car =
+      sim::WithHotPressures(car, sim::MeanHotPressures(car, run.posed->guess.thermal));
+  return EvaluateLapProgramme(hot_car, track, run.posed->problem, run.posed->guess,
+                              run.solution.solve.x);
 }
 
 std::vector<TurnApproach> FindTurnApproaches(const LapSolution& solution, const track::Track& track,

@@ -6,6 +6,7 @@
 /// (the optimiser uses a smooth |x|; the replay says how much that changed the temperatures).
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -83,7 +84,8 @@ struct OptimalLapOptions {
   Collocation collocation = Collocation::kTrapezoid;
   Collocation coarse_collocation = Collocation::kTrapezoid;
   /// Coarse to fine with the coarse solve's multipliers too (ResampleLapMultipliers): the fine
-  /// solve is then an Ipopt warm start from mu = ipopt.warm_mu (docs/validation/optimal-control.md, "Speed").
+  /// solve is then an Ipopt warm start from mu = ipopt.warm_mu (docs/validation/optimal-control.md,
+  /// "Speed").
   bool coarse_multipliers = true;
   /// CompareDiscLimit with coarse to fine: solve the limited lap in a child process beside the
   /// free one (two cores; Ipopt with MUMPS is not thread-safe, so not a thread). Off, or if the
@@ -127,8 +129,18 @@ struct OptimalLapOptions {
   IpoptOptions ipopt = LapIpoptOptions();
 };
 
+/// The programme of a run's last (fine) solve as it was posed: its problem options (the start
+/// point that froze the wear, the thermal start) and the QSS guess (the hot pressures, the fixed
+/// values of the states left out). EvaluateRunProgramme poses it again for another set-up.
+struct PosedLap {
+  LapProblemOptions problem;
+  sim::QssLap guess;
+};
+
 struct OptimalLapRun {
   LapSolution solution;
+  /// The fine solve's programme as posed (shared: runs are copied whole).
+  std::shared_ptr<const PosedLap> posed;
   double qss_lap_time = 0.0;  ///< the QSS flying lap (the guess), s
   /// The coarse solve of coarse-to-fine (OptimalLapOptions::coarse_step_m; iterations 0 if none).
   SolveResult coarse;
@@ -166,6 +178,14 @@ LapWarmUp RunLapWarmUp(const vehicle::Car& car, const track::Track& track,
 /// in solution.solve, never thrown.
 OptimalLapRun RunOptimalLap(const vehicle::Car& car, const track::Track& track,
                             const OptimalLapOptions& options, const LapWarmUp* warm_up = nullptr);
+
+/// The programme of `run`'s fine solve posed again for `car` (the run's car with other set-up
+/// values: the same options, thermal start, guess, start point and frozen wear; the tyres at
+/// `car`'s hot pressures over the guess lap, as RunOptimalLap sets them) and evaluated at the
+/// run's solution, without solving (EvaluateLapProgramme). InputError if the run has no
+/// solution or no posed programme.
+LapProgrammeValues EvaluateRunProgramme(const vehicle::Car& car, const track::Track& track,
+                                        const OptimalLapOptions& options, const OptimalLapRun& run);
 
 /// A lift or brake point into a turn.
 struct TurnApproach {

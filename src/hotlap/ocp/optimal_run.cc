@@ -1,6 +1,7 @@
 #include "hotlap/ocp/optimal_run.h"
 
 #include <algorithm>
+#include <chrono>
 #include <thread>
 
 #include <fmt/format.h>
@@ -47,9 +48,33 @@ OptimalLapOptions MakeOptimalLapOptions(const OptimalRunOptions& a) {
   return o;
 }
 
-OptimalRuns SolveOptimalRuns(const vehicle::Car& car, const track::Track& track,
-                             const OptimalRunOptions& a, const LapStart* warm_start,
-                             const LapProgress& progress, const LapLog& log) {
+namespace {
+
+// Each converged lap's set-up sensitivities (no solve: the programme evaluated at the solution).
+void AddSensitivities(const vehicle::Car& car, const track::Track& track,
+                      const OptimalRunOptions& a, const LapLog& log, OptimalRuns& runs) {
+  const OptimalLapOptions o = MakeOptimalLapOptions(a);
+  for (SolvedLap& lap : runs.laps) {
+    if (!lap.run.solution.solve.ok()) {
+      if (log)
+        log(fmt::format("{}: no set-up sensitivities (the lap did not converge)", lap.label));
+      continue;
+    }
+    if (log) log(fmt::format("{}: set-up sensitivities...", lap.label));
+    const auto started = std::chrono::steady_clock::now();
+    lap.sensitivities = ComputeLapSensitivities(car, track, o, lap.run);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    if (log) {
+      log(fmt::format("{}: {} set-up sensitivities in {:.1f} s (no solve)", lap.label,
+                      lap.sensitivities.size(), seconds));
+    }
+  }
+}
+
+OptimalRuns SolveLaps(const vehicle::Car& car, const track::Track& track,
+                      const OptimalRunOptions& a, const LapStart* warm_start,
+                      const LapProgress& progress, const LapLog& log) {
   OptimalRuns runs;
   if (a.compare_disc_limit_C) {
     DiscLimitComparison c =
@@ -67,6 +92,16 @@ OptimalRuns SolveOptimalRuns(const vehicle::Car& car, const track::Track& track,
       SolveLap(car, track, o,
                a.disc_limit_C ? fmt::format("discs <= {:g} degC", *a.disc_limit_C) : "optimal lap",
                nullptr, progress, log));
+  return runs;
+}
+
+}  // namespace
+
+OptimalRuns SolveOptimalRuns(const vehicle::Car& car, const track::Track& track,
+                             const OptimalRunOptions& a, const LapStart* warm_start,
+                             const LapProgress& progress, const LapLog& log) {
+  OptimalRuns runs = SolveLaps(car, track, a, warm_start, progress, log);
+  if (a.sensitivities) AddSensitivities(car, track, a, log, runs);
   return runs;
 }
 

@@ -47,6 +47,9 @@ struct OptimalRunOptions {
   /// Threads evaluating each solve's derivatives (OptimalLapOptions::derivative_threads); 0: one
   /// per core of the machine, at most 8 (the command line's default).
   int threads = 1;
+  /// After the solves, each converged lap's set-up sensitivities (ComputeLapSensitivities, every
+  /// parameter of CrewChiefParameters the car takes) into SolvedLap::sensitivities.
+  bool sensitivities = false;
   std::vector<std::pair<std::string, std::string>> ipopt_options;  ///< passed to Ipopt as they are
 };
 
@@ -61,7 +64,8 @@ struct OptimalRuns {
 
 /// With options.compare_disc_limit_C the comparison (CompareDiscLimit); else one solve labelled
 /// "optimal lap" or, with options.disc_limit_C, "discs <= X degC", started from `warm_start` if
-/// not null (a saved lap, UseLapStart). InputError as those.
+/// not null (a saved lap, UseLapStart); with options.sensitivities, each converged lap's set-up
+/// sensitivities. InputError as those.
 OptimalRuns SolveOptimalRuns(const vehicle::Car& car, const track::Track& track,
                              const OptimalRunOptions& options, const LapStart* warm_start = nullptr,
                              const LapProgress& progress = {}, const LapLog& log = {});

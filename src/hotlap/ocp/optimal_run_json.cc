@@ -92,7 +92,25 @@ nlohmann::json SolvedLapJson(const SolvedLap& s, const std::string& thermal_star
       {"smoothing_effect_disc_K", RoundSignificant(s.run.max_disc_difference_K)},
       {"frozen_wear_grip_difference", RoundSignificant(s.run.solution.frozen_wear_grip_difference)},
       {"variables", s.run.solution.variables},
-      {"constraints", s.run.solution.constraints}};
+      {"constraints", s.run.solution.constraints},
+      {"sensitivities",
+       s.sensitivities.empty() ? nlohmann::json() : SensitivitiesJson(s.sensitivities)}};
+}
+
+nlohmann::json SensitivitiesJson(const std::vector<LapSensitivity>& sensitivities) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const LapSensitivity& s : sensitivities) {
+    list.push_back({{"key", s.parameter.key},
+                    {"label", s.parameter.label},
+                    {"unit", s.parameter.unit},
+                    {"value", RoundSignificant(s.value)},
+                    {"step", RoundSignificant(s.step)},
+                    {"d_lap_time_s_per_unit", RoundSignificant(s.d_lap_time_per_unit)},
+                    {"typical_step", RoundSignificant(s.parameter.typical_step)},
+                    {"typical_step_text", s.parameter.step_text},
+                    {"typical_step_effect_ms", RoundSignificant(1e3 * s.typical_effect_s())}});
+  }
+  return list;
 }
 
 nlohmann::json OptimalRunsJson(const OptimalRuns& runs, const OptimalRunOptions& options,

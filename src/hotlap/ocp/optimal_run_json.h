@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -15,8 +16,13 @@ namespace hotlap::ocp {
 
 /// One lap's object: lap and QSS times, the solve (and the coarse one), the disc limit, speeds,
 /// per corner the peak temperatures and wear, the turns' lift and brake points, the thermal start
-/// (`thermal_start` is its mode's name), brake energy, control rates and the problem's size.
+/// (`thermal_start` is its mode's name), brake energy, control rates, the problem's size and the
+/// set-up sensitivities (null if not computed).
 nlohmann::json SolvedLapJson(const SolvedLap& lap, const std::string& thermal_start);
+
+/// The set-up sensitivities: a list of {key, label, unit, value, step, d_lap_time_s_per_unit,
+/// typical_step, typical_step_text, typical_step_effect_ms} (docs/json-output.md).
+nlohmann::json SensitivitiesJson(const std::vector<LapSensitivity>& sensitivities);
 
 /// The run's summary: one lap's object with "command": "optimise", or for the comparison both
 /// ("unconstrained", "constrained"), "delta_s" and the free lap's headline keys at the top level;

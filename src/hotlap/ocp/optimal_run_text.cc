@@ -94,4 +94,25 @@ std::string DiscLimitCostText(const SolvedLap& free, const SolvedLap& limited) {
   return text;
 }
 
+std::string SensitivitiesText(const SolvedLap& lap) {
+  if (lap.sensitivities.empty()) return "";
+  std::vector<const LapSensitivity*> ranked;
+  for (const LapSensitivity& s : lap.sensitivities) ranked.push_back(&s);
+  std::stable_sort(ranked.begin(), ranked.end(), [](const auto* a, const auto* b) {
+    return std::abs(a->typical_effect_s()) > std::abs(b->typical_effect_s());
+  });
+  std::string out =
+      "  set-up sensitivities (the lap time's first-order change for each step, from the solved "
+      "lap's multipliers):\n";
+  for (const LapSensitivity* s : ranked) {
+    const std::string step = s->parameter.step_text + " " + s->parameter.label + ":";
+    const bool unitless = s->parameter.unit == "1";
+    out += fmt::format("    {:<48} {:+9.3f} ms   ({:+.4g} ms per {}, at {:.4g}{})\n", step,
+                       1e3 * s->typical_effect_s(), 1e3 * s->d_lap_time_per_unit,
+                       unitless ? "unit" : s->parameter.unit, s->value,
+                       unitless ? "" : " " + s->parameter.unit);
+  }
+  return out;
+}
+
 }  // namespace hotlap::ocp
