@@ -95,46 +95,36 @@ void AddCommonOptions(CLI::App* sub, FitArgs& a) {
                   "Logged channels (CSV, MoTeC i2 CSV or MoTeC .ld, docs/telemetry-formats.md)")
       ->required();
   AddTelemetryReadOptions(sub, a.channel_map, a.lap);
-  sub->add_option("--car", a.car, "Built-in car name or path to a car.yaml (the starting values)")
-      ->capture_default_str();
-  sub->add_option("--corners", a.run.corners, "Corners to fit: all, or a list such as fl,rr")
-      ->capture_default_str();
+  AddShownOption(sub, "--car", a.car,
+                 "Built-in car name or path to a car.yaml (the starting values)");
+  AddShownOption(sub, "--corners", a.run.corners, "Corners to fit: all, or a list such as fl,rr");
   sub->add_option("--out", a.run.out, "The fitted car (.yaml; its parts go in a folder beside it)")
       ->required();
   sub->add_option("--report", a.report, "Folder for the HTML report and the channels CSV");
   sub->add_option("--json", a.json, "Write the results as JSON (docs/json-output.md)");
   sub->add_option("--truth", a.run.truth,
                   "Parameter file with the true values (hotlap synth --params), for the report");
-  sub->add_option("--loss", a.run.loss, "Robust loss: huber, cauchy or none")
-      ->capture_default_str();
-  sub->add_option("--loss-scale", solver.loss_scale, "Where the loss starts, in noise levels")
-      ->capture_default_str()
+  AddShownOption(sub, "--loss", a.run.loss, "Robust loss: huber, cauchy or none");
+  AddShownOption(sub, "--loss-scale", solver.loss_scale, "Where the loss starts, in noise levels")
       ->check(kPositive);
-  sub->add_option("--max-relative-ci", solver.max_relative_ci,
-                  "Well determined: 95% half-width at most this fraction of the value")
-      ->capture_default_str()
+  AddShownOption(sub, "--max-relative-ci", solver.max_relative_ci,
+                 "Well determined: 95% half-width at most this fraction of the value")
       ->check(kPositive);
-  sub->add_option("--starts", a.run.numeric.fit.random_starts,
-                  "Seeded random starting points besides the guesses")
-      ->capture_default_str()
+  AddShownOption(sub, "--starts", a.run.numeric.fit.random_starts,
+                 "Seeded random starting points besides the guesses")
       ->check(kNonNegative);
-  sub->add_option("--seed", a.run.numeric.fit.seed, "Seed of the random starts")
-      ->capture_default_str();
-  sub->add_option("--threads", a.run.threads, "Corners fitted at once (0: one per core)")
-      ->capture_default_str()
+  AddShownOption(sub, "--seed", a.run.numeric.fit.seed, "Seed of the random starts");
+  AddShownOption(sub, "--threads", a.run.threads, "Corners fitted at once (0: one per core)")
       ->check(kNonNegative);
 }
 
 void AddThermalOptions(CLI::App* sub, FitArgs& a) {
-  sub->add_option("--sensor-lag-s", a.run.numeric.fit.sensor_lag_s,
-                  "First-order lag of the temperature sensors, modelled in the fit")
-      ->capture_default_str()
+  AddShownOption(sub, "--sensor-lag-s", a.run.numeric.fit.sensor_lag_s,
+                 "First-order lag of the temperature sensors, modelled in the fit")
       ->check(kNonNegative);
-  sub->add_option("--initial-state", a.run.initial_state,
-                  "fitted (initial temperatures fitted too) or measured (first samples)")
-      ->capture_default_str();
-  sub->add_option("--max-step-s", a.run.numeric.fit.max_step_s, "Longest RK4 sub-step, s")
-      ->capture_default_str()
+  AddShownOption(sub, "--initial-state", a.run.initial_state,
+                 "fitted (initial temperatures fitted too) or measured (first samples)");
+  AddShownOption(sub, "--max-step-s", a.run.numeric.fit.max_step_s, "Longest RK4 sub-step, s")
       ->check(kPositive);
   sub->add_option("--ambient-temp-C", a.run.ambient_C, "Air temperature if not logged");
   sub->add_option("--track-temp-C", a.run.track_C, "Track temperature if not logged");

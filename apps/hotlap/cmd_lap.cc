@@ -136,9 +136,8 @@ CommandRunner RegisterLapCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("lap",
                                      "Drive the car round a track with the thermal models: "
                                      "quasi-steady state, or the optimal lap (--method ocp)");
-  sub->add_option("--method", args->method,
-                  "qss (quasi-steady state) or ocp (optimal control, as `hotlap optimise`)")
-      ->capture_default_str()
+  AddShownOption(sub, "--method", args->method,
+                 "qss (quasi-steady state) or ocp (optimal control, as `hotlap optimise`)")
       ->check(CLI::IsMember({"qss", "ocp"}));
   sub->add_option("--compare-disc-limit-C", args->compare_disc_limit_C,
                   "ocp: solve without and with this front-disc limit (degC) and compare");
@@ -152,36 +151,27 @@ CommandRunner RegisterLapCommand(CLI::App& app) {
                 "ocp: after the solves, each lap's set-up sensitivities (the lap time's derivative "
                 "with respect to pressures, cambers, brakes, weight split, aero, mass) from its "
                 "multipliers, without solving again (docs/optimal-control.md)");
-  sub->add_option("--threads", args->threads,
-                  "ocp: threads evaluating the derivatives (0: one per core, at most 8; the "
-                  "comparison's two solves take half each)")
-      ->capture_default_str()
+  AddShownOption(sub, "--threads", args->threads,
+                 "ocp: threads evaluating the derivatives (0: one per core, at most 8; the "
+                 "comparison's two solves take half each)")
       ->check(CLI::Range(0, 256));
-  sub->add_option("--track", args->track, "Built-in track name or a .yaml/.csv/.xml file")
-      ->capture_default_str();
-  sub->add_option("--car", args->car, "Built-in car name or path to a car.yaml")
-      ->capture_default_str();
+  AddShownOption(sub, "--track", args->track, "Built-in track name or a .yaml/.csv/.xml file");
+  AddShownOption(sub, "--car", args->car, "Built-in car name or path to a car.yaml");
   AddSetOption(sub, args->set);
-  sub->add_option("--laps", args->run.laps, "Laps in the stint (thermal state carried over)")
-      ->capture_default_str();
+  AddShownOption(sub, "--laps", args->run.laps, "Laps in the stint (thermal state carried over)");
   sub->add_option("--out", args->out, "Output folder: lap.csv and lap.html")->required();
   sub->add_option("--json", args->json, "Write the summary as JSON (docs/json-output.md)");
-  sub->add_option("--line", args->run.line,
-                  "The path driven: min-curvature (the minimum-curvature racing line), centre, "
-                  "or a CSV file with distance_m and offset_m columns (e.g. hotlap optimise's "
-                  "channels)")
-      ->capture_default_str();
-  sub->add_option("--line-margin-m", args->run.line_margin_m,
-                  "Space the racing line keeps from each edge, m")
-      ->capture_default_str()
+  AddShownOption(sub, "--line", args->run.line,
+                 "The path driven: min-curvature (the minimum-curvature racing line), centre, "
+                 "or a CSV file with distance_m and offset_m columns (e.g. hotlap optimise's "
+                 "channels)");
+  AddShownOption(sub, "--line-margin-m", args->run.line_margin_m,
+                 "Space the racing line keeps from each edge, m")
       ->check(kPositive);
-  sub->add_option("--step-m", args->run.step_m, "Distance between road points, m")
-      ->capture_default_str()
+  AddShownOption(sub, "--step-m", args->run.step_m, "Distance between road points, m")
       ->check(kPositive);
-  sub->add_option("--ambient-temp-C", args->run.ambient_C, "Air temperature")
-      ->capture_default_str();
-  sub->add_option("--track-temp-C", args->run.track_C, "Track surface temperature")
-      ->capture_default_str();
+  AddShownOption(sub, "--ambient-temp-C", args->run.ambient_C, "Air temperature");
+  AddShownOption(sub, "--track-temp-C", args->run.track_C, "Track surface temperature");
   sub->add_option("--tread-temp-C", args->run.tread_C,
                   "Starting tread temperature (else the car's)");
   sub->add_option("--carcass-temp-C", args->run.carcass_C, "Starting carcass temperature");
@@ -192,9 +182,8 @@ CommandRunner RegisterLapCommand(CLI::App& app) {
                   "Starting disc bulk temperature (surface-and-bulk discs)");
   sub->add_option("--caution-laps", args->run.caution_laps,
                   "Laps run behind the pace car, e.g. 11-15,40 (the tyres and brakes cool)");
-  sub->add_option("--caution-speed-kph", args->run.caution_speed_kph,
-                  "The pace car's speed under caution, km/h")
-      ->capture_default_str();
+  AddShownOption(sub, "--caution-speed-kph", args->run.caution_speed_kph,
+                 "The pace car's speed under caution, km/h");
   return [args, sub] {
     for (const char* name :
          {"--laps", "--line", "--line-margin-m", "--step-m", "--tread-temp-C", "--carcass-temp-C",

@@ -66,46 +66,50 @@ CommandRunner RegisterRaceCommand(CLI::App& app) {
       "Plan a race's pit stops (four tyres, right-side tyres where allowed, or fuel only) from "
       "the car's own fall-off: the least race time under the rules, against fixed plans, and the "
       "policy under cautions");
-  // An option with its default shown in --help.
-  const auto shown = [sub](const char* name, auto& value, const char* help) {
-    sub->add_option(name, value, help)->capture_default_str();
-  };
-  shown("--track", args->track, "Track name or file");
-  shown("--car", args->car, "Car name or car.yaml");
+  AddShownOption(sub, "--track", args->track, "Track name or file");
+  AddShownOption(sub, "--car", args->car, "Car name or car.yaml");
   sub->add_option("--set", args->set, "Override a car parameter, KEY=VALUE (docs/overrides.md)");
-  shown("--laps", args->race.run.rules.laps, "Race length, laps");
-  shown("--stages", args->race.stages, "Laps that end a stage, e.g. 115,230 (cheap stops)");
-  shown("--fuel-capacity-kg", args->race.run.rules.fuel_capacity_kg, "The fuel cell, kg");
-  shown("--fuel-per-lap-kg", args->race.run.rules.fuel_per_lap_kg, "Fuel burnt per green lap, kg");
-  shown("--tyre-sets", args->race.run.rules.tyre_sets, "Tyre sets, the starting set included");
-  shown("--pit-loss-s", args->race.run.rules.pit_loss_s, "Time a green stop loses, service aside");
-  shown("--caution-pit-loss-s", args->race.run.rules.caution_pit_loss_s,
-        "Time a stop at a stage end loses, service aside");
+  AddShownOption(sub, "--laps", args->race.run.rules.laps, "Race length, laps");
+  AddShownOption(sub, "--stages", args->race.stages,
+                 "Laps that end a stage, e.g. 115,230 (cheap stops)");
+  AddShownOption(sub, "--fuel-capacity-kg", args->race.run.rules.fuel_capacity_kg,
+                 "The fuel cell, kg");
+  AddShownOption(sub, "--fuel-per-lap-kg", args->race.run.rules.fuel_per_lap_kg,
+                 "Fuel burnt per green lap, kg");
+  AddShownOption(sub, "--tyre-sets", args->race.run.rules.tyre_sets,
+                 "Tyre sets, the starting set included");
+  AddShownOption(sub, "--pit-loss-s", args->race.run.rules.pit_loss_s,
+                 "Time a green stop loses, service aside");
+  AddShownOption(sub, "--caution-pit-loss-s", args->race.run.rules.caution_pit_loss_s,
+                 "Time a stop at a stage end loses, service aside");
   sub->add_flag("--right-side-stops", args->race.run.rules.right_side_stops,
                 "Allow stops for the two right-side tyres (and fuel) beside four-tyre and "
                 "fuel-only stops");
-  shown("--right-tyre-service-s", args->race.run.rules.right_tyre_service_s,
-        "Time the two right-side tyres take to change, s");
-  shown("--fall-off-laps", args->race.run.fall_off_laps, "QSS laps on a set for the fall-off");
-  shown("--reference-fuel-kg", args->race.run.reference_fuel_kg,
-        "Fuel the car's mass includes, kg");
-  shown("--cautions", args->race.cautions,
-        "Caution rate per green lap for the Monte Carlo races, 'record' (the Southern 500's) or "
-        "'off'");
-  shown("--races", args->race.run.races, "Monte Carlo races of each plan (0: none)");
+  AddShownOption(sub, "--right-tyre-service-s", args->race.run.rules.right_tyre_service_s,
+                 "Time the two right-side tyres take to change, s");
+  AddShownOption(sub, "--fall-off-laps", args->race.run.fall_off_laps,
+                 "QSS laps on a set for the fall-off");
+  AddShownOption(sub, "--reference-fuel-kg", args->race.run.reference_fuel_kg,
+                 "Fuel the car's mass includes, kg");
+  AddShownOption(
+      sub, "--cautions", args->race.cautions,
+      "Caution rate per green lap for the Monte Carlo races, 'record' (the Southern 500's) or "
+      "'off'");
+  AddShownOption(sub, "--races", args->race.run.races, "Monte Carlo races of each plan (0: none)");
   sub->add_flag("--policy,!--no-policy", args->race.run.policy,
                 "Also solve the policy: pit or stay out at every lap of every caution (a "
                 "stochastic programme), raced in the same Monte Carlo races")
       ->capture_default_str();
-  shown("--fuel-units-per-lap", args->race.run.policy_options.fuel_units_per_lap,
-        "The policy's fuel count: units of a green lap's burn, 1 to 10 (a caution lap's burn "
-        "rounded up)");
-  shown("--step-m", args->race.step_m, "Road spacing of the QSS laps, m");
+  AddShownOption(
+      sub, "--fuel-units-per-lap", args->race.run.policy_options.fuel_units_per_lap,
+      "The policy's fuel count: units of a green lap's burn, 1 to 10 (a caution lap's burn "
+      "rounded up)");
+  AddShownOption(sub, "--step-m", args->race.step_m, "Road spacing of the QSS laps, m");
   sub->add_option("--spot-checks", args->race.spot_checks,
                   "Ages of the set (laps on it, e.g. 2,30,59) at which to solve the optimal lap "
                   "from the fall-off's state, against its QSS lap");
-  shown("--spot-check-step-m", args->race.spot_check_step_m,
-        "Mesh of the spot checks' optimal laps, m");
+  AddShownOption(sub, "--spot-check-step-m", args->race.spot_check_step_m,
+                 "Mesh of the spot checks' optimal laps, m");
   sub->add_option("--cache-dir", args->cache_dir,
                   "Keep the fall-off here, keyed by the car's files, the track and the settings "
                   "(default: $HOTLAP_CACHE_DIR, else $XDG_CACHE_HOME/hotlap or ~/.cache/hotlap)");

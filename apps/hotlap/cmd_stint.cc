@@ -96,23 +96,17 @@ CommandRunner RegisterStintCommand(CLI::App& app) {
       "stint",
       "N laps as one optimal-control problem (wear, carcass heat and fuel carried lap to lap) "
       "against the greedy driver's lap-by-lap optimal laps");
-  sub->add_option("--track", a->track, "Built-in track name or a track file")
-      ->capture_default_str();
-  sub->add_option("--car", a->car, "Built-in car name or path to a car.yaml")
-      ->capture_default_str();
+  AddShownOption(sub, "--track", a->track, "Built-in track name or a track file");
+  AddShownOption(sub, "--car", a->car, "Built-in car name or path to a car.yaml");
   AddSetOption(sub, a->set);
-  sub->add_option("--laps", a->stint.laps, "Laps in the stint")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 100));
-  sub->add_option("--wear-scale", a->stint.wear_scale,
-                  "Wear rate times this: N laps stand for about N times this many laps of wear "
-                  "(0: no wear)")
-      ->capture_default_str()
+  AddShownOption(sub, "--laps", a->stint.laps, "Laps in the stint")->check(CLI::Range(1, 100));
+  AddShownOption(sub, "--wear-scale", a->stint.wear_scale,
+                 "Wear rate times this: N laps stand for about N times this many laps of wear "
+                 "(0: no wear)")
       ->check(kNonNegative);
-  sub->add_option("--fuel-kg", a->stint.fuel_kg,
-                  "Fuel aboard at the start (in the car's mass), burnt with the engine's work; 0: "
-                  "mass constant")
-      ->capture_default_str()
+  AddShownOption(sub, "--fuel-kg", a->stint.fuel_kg,
+                 "Fuel aboard at the start (in the car's mass), burnt with the engine's work; 0: "
+                 "mass constant")
       ->check(kNonNegative);
   sub->add_option("--bsfc-g-per-kWh", *a->stint.bsfc_g_per_kWh,
                   "Brake-specific fuel consumption (assumed 300 g/kWh)")
@@ -120,36 +114,28 @@ CommandRunner RegisterStintCommand(CLI::App& app) {
       ->check(kPositive);
   sub->add_option("--disc-limit-C", a->stint.disc_limit_C,
                   "Front disc temperatures at most this on every lap, degC");
-  sub->add_option("--step-m", a->stint.run.step_m, "Mesh spacing along the centre line, m")
-      ->capture_default_str()
+  AddShownOption(sub, "--step-m", a->stint.run.step_m, "Mesh spacing along the centre line, m")
       ->check(CLI::Range(0.5, 50.0));
-  sub->add_option("--coarse-step-m", a->stint.run.coarse_step_m,
-                  "The greedy laps coarse to fine from this spacing, m (0: off)")
-      ->capture_default_str()
+  AddShownOption(sub, "--coarse-step-m", a->stint.run.coarse_step_m,
+                 "The greedy laps coarse to fine from this spacing, m (0: off)")
       ->check(CLI::Range(0.0, 100.0));
-  sub->add_option("--thermal-start", a->stint.run.thermal_start,
-                  "Thermal states at the start: racing, warm or car (docs/optimal-control.md)")
-      ->capture_default_str()
+  AddShownOption(sub, "--thermal-start", a->stint.run.thermal_start,
+                 "Thermal states at the start: racing, warm or car (docs/optimal-control.md)")
       ->check(CLI::IsMember({"racing", "warm", "car"}));
-  sub->add_option("--ambient-temp-C", a->stint.run.ambient_C, "Air temperature")
-      ->capture_default_str();
-  sub->add_option("--track-temp-C", a->stint.run.track_C, "Track surface temperature")
-      ->capture_default_str();
-  sub->add_option("--threads", a->stint.run.threads,
-                  "Threads evaluating the derivatives (0: one per core, at most 8)")
-      ->capture_default_str()
+  AddShownOption(sub, "--ambient-temp-C", a->stint.run.ambient_C, "Air temperature");
+  AddShownOption(sub, "--track-temp-C", a->stint.run.track_C, "Track surface temperature");
+  AddShownOption(sub, "--threads", a->stint.run.threads,
+                 "Threads evaluating the derivatives (0: one per core, at most 8)")
       ->check(CLI::Range(0, 256));
-  sub->add_option("--max-iterations", a->stint.run.max_iterations,
-                  "Ipopt's iteration limit per solve")
-      ->capture_default_str()
+  AddShownOption(sub, "--max-iterations", a->stint.run.max_iterations,
+                 "Ipopt's iteration limit per solve")
       ->check(kPositive);
   sub->add_option("--checkpoint", a->checkpoint,
                   "Checkpoint folder: each greedy lap's solves and the stint's iterate saved as "
                   "the run goes; run the same command again to resume from them "
                   "(docs/reliability.md)");
-  sub->add_option("--checkpoint-every", a->stint.checkpoint_every,
-                  "Save the stint solve's iterate every this many Ipopt iterations")
-      ->capture_default_str()
+  AddShownOption(sub, "--checkpoint-every", a->stint.checkpoint_every,
+                 "Save the stint solve's iterate every this many Ipopt iterations")
       ->check(CLI::Range(1, 100000));
   sub->add_option("--out", a->out, "Output folder: stint.csv and stint.html")->required();
   sub->add_option("--json", a->json, "Write the summary as JSON (docs/json-output.md)");

@@ -17,6 +17,13 @@ using CommandRunner = std::function<int()>;
 
 /// `--set KEY=VALUE` (repeatable) on the commands that take `--car`: car parameters overridden by
 /// their dotted keys, read by vehicle::ParseCarOverrides (docs/overrides.md).
+/// An option whose default --help shows (the range, if any, added by the caller: ->check(...)).
+template <typename T>
+CLI::Option* AddShownOption(CLI::App* sub, const std::string& name, T& value,
+                            const std::string& help) {
+  return sub->add_option(name, value, help)->capture_default_str();
+}
+
 inline CLI::Option* AddSetOption(CLI::App* sub, std::vector<std::string>& set) {
   return sub
       ->add_option("--set", set,

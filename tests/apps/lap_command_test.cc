@@ -255,7 +255,7 @@ TEST_F(LapCommandTest, ARunSettlesInTheDocumentedWindows) {
           << c << " " << w.key;
     }
   }
-  for (const std::string& c : {"fl", "fr", "rl", "rr"}) {
+  for (const std::string c : {"fl", "fr", "rl", "rr"}) {
     const double tau_min =
         SettlingOf(cold["laps"], c, "mean_carcass_temp_C").tau_laps * lap_s / 60.0;
     EXPECT_GE(tau_min, 2.0) << c;
@@ -270,7 +270,7 @@ TEST_F(LapCommandTest, ARunSettlesInTheDocumentedWindows) {
   EXPECT_GE(lf, 5.0);
   EXPECT_LE(lf, 9.0);
   for (const nlohmann::json& lap : cold["laps"]) {
-    for (const std::string& c : {"fl", "fr", "rl", "rr"}) {
+    for (const std::string c : {"fl", "fr", "rl", "rr"}) {
       const nlohmann::json& a = lap["corners"][c]["energy_audit"];
       for (const char* closure : {"tyre_closure", "rim_closure", "brake_closure"}) {
         EXPECT_LT(std::abs(a[closure].get<double>()), 0.005) << c << " " << closure;
