@@ -3,8 +3,6 @@
 // sets bind), the plan that takes right sides when the left tyres barely wear, and the Monte
 // Carlo that races such a plan as the plan's own arithmetic does.
 
-#include <functional>
-#include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -17,6 +15,7 @@
 namespace hotlap::race {
 namespace {
 
+using testing::BruteForce;
 using testing::Linear;
 using testing::ShortRace;
 
@@ -40,29 +39,8 @@ RaceRules WithRightSideStops() {
   return r;
 }
 
-// Every plan of up to three stops, each of the three services, that the rules allow: the least
-// time.
-double BruteForce(const RaceRules& r, const FallOff& f) {
-  double best = std::numeric_limits<double>::infinity();
-  std::vector<PitStop> stops;
-  const std::function<void(int)> go = [&](int from) {
-    try {
-      best = std::min(best, EvaluatePlan(r, f, stops, "brute").race_time_s);
-    } catch (const InputError&) {
-    }
-    if (stops.size() == 3) return;
-    for (int lap = from; lap < r.laps; ++lap) {
-      for (Service s :
-           {Service::kFuelOnly, Service::kFourTyresAndFuel, Service::kRightTyresAndFuel}) {
-        stops.push_back({lap, s, 0.0});
-        go(lap + 1);
-        stops.pop_back();
-      }
-    }
-  };
-  go(1);
-  return best;
-}
+constexpr std::initializer_list<Service> kAllServices = {
+    Service::kFuelOnly, Service::kFourTyresAndFuel, Service::kRightTyresAndFuel};
 
 int RightSideStops(const RacePlan& plan) {
   int n = 0;
@@ -93,7 +71,7 @@ TEST(RightSideStopTest, TheProgrammeEqualsBruteForceOnAShortRace) {
     // Ages kept to the race's length, as brute force keeps them (left tyres that cost nothing
     // may run the whole race).
     const RacePlan plan = OptimalPlanWithRightSideStops(r, f, r.laps);
-    EXPECT_NEAR(plan.race_time_s, BruteForce(r, f), 1e-9) << left_per_lap;
+    EXPECT_NEAR(plan.race_time_s, BruteForce(r, f, kAllServices), 1e-9) << left_per_lap;
     EXPECT_EQ(plan.optimality_gap_s, 0.0);
     // By default the ages are kept to two fuel windows (50 laps here): a left set of the whole
     // race is then out of reach, and the plan changes it once.
@@ -124,7 +102,7 @@ TEST(RightSideStopTest, WhereTheSetsBindTheBoundHoldsTheBestPlanWithinThem) {
   r.tyre_sets = free_sets - 1;
   const RacePlan plan = OptimalPlanWithRightSideStops(r, f, r.laps);
   EXPECT_LE(plan.tyre_sets_used, r.tyre_sets);
-  const double best = BruteForce(r, f);
+  const double best = BruteForce(r, f, kAllServices);
   EXPECT_GE(plan.race_time_s, best - 1e-9);
   EXPECT_LE(plan.race_time_s - plan.optimality_gap_s, best + 1e-9);
 }

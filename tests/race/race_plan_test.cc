@@ -4,8 +4,6 @@
 
 #include "hotlap/race/race_plan.h"
 
-#include <functional>
-#include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -16,30 +14,9 @@
 namespace hotlap::race {
 namespace {
 
+using testing::BruteForce;
 using testing::Linear;
 using testing::ShortRace;
-
-// Every plan of up to three stops, each either service, that the rules allow: the least time.
-double BruteForce(const RaceRules& r, const FallOff& f) {
-  double best = std::numeric_limits<double>::infinity();
-  std::vector<PitStop> stops;
-  const std::function<void(int)> go = [&](int from) {
-    try {
-      best = std::min(best, EvaluatePlan(r, f, stops, "brute").race_time_s);
-    } catch (const InputError&) {
-    }
-    if (stops.size() == 3) return;
-    for (int lap = from; lap < r.laps; ++lap) {
-      for (Service s : {Service::kFuelOnly, Service::kFourTyresAndFuel}) {
-        stops.push_back({lap, s, 0.0});
-        go(lap + 1);
-        stops.pop_back();
-      }
-    }
-  };
-  go(1);
-  return best;
-}
 
 TEST(RacePlanTest, TheDynamicProgrammeEqualsBruteForceOnAShortRace) {
   for (double per_lap : {0.0, 0.02, 0.08}) {

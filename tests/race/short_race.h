@@ -1,7 +1,15 @@
 #pragma once
 // A short race and a linear fall-off for the tests of the plan and the policy.
 
+#include <algorithm>
+#include <functional>
+#include <initializer_list>
+#include <limits>
+#include <vector>
+
+#include "hotlap/common/error.h"
 #include "hotlap/race/fall_off.h"
+#include "hotlap/race/race_plan.h"
 #include "hotlap/race/race_rules.h"
 
 namespace hotlap::race::testing {
@@ -28,6 +36,31 @@ inline FallOff Linear(double per_lap, int table = 30) {
   f.fuel_s_per_kg = 0.03;
   for (int a = 0; a < table; ++a) f.lap_time_s.push_back(30.0 + (a == 0 ? 1.2 : 0.0) + per_lap * a);
   return f;
+}
+
+// Every plan of up to three stops, each of the given services, that the rules allow: the least
+// time.
+inline double BruteForce(const RaceRules& r, const FallOff& f,
+                         std::initializer_list<Service> services = {Service::kFuelOnly,
+                                                                    Service::kFourTyresAndFuel}) {
+  double best = std::numeric_limits<double>::infinity();
+  std::vector<PitStop> stops;
+  const std::function<void(int)> go = [&](int from) {
+    try {
+      best = std::min(best, EvaluatePlan(r, f, stops, "brute").race_time_s);
+    } catch (const InputError&) {
+    }
+    if (stops.size() == 3) return;
+    for (int lap = from; lap < r.laps; ++lap) {
+      for (Service s : services) {
+        stops.push_back({lap, s, 0.0});
+        go(lap + 1);
+        stops.pop_back();
+      }
+    }
+  };
+  go(1);
+  return best;
 }
 
 }  // namespace hotlap::race::testing
