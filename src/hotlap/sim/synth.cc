@@ -213,45 +213,49 @@ JoinedLaps JoinLaps(const QssResult& laps, const SynthOptions& o) {
   return out;
 }
 
-// The log's channels at its rate: the inputs as they are, the truth's temperatures and wear as a
-// lagged, noisy sensor reads them, and the rolling radius with its noise (one noise stream from
-// the seed, drawn in the columns' order).
+// `truth` at the samples' times as a sensor reads it: a first-order lag of `lag_s`, then Gaussian
+// noise of `sd` drawn sample by sample from `noise`.
+std::vector<double> Sensed(const std::vector<double>& time, const std::vector<double>& truth,
+                           double lag_s, double sd, GaussianNoise& noise) {
+  FirstOrderLag<double> sensor(lag_s);
+  std::vector<double> out(time.size());
+  for (size_t k = 0; k < time.size(); ++k)
+    out[k] = sensor.Next(time[k], truth[k]) + sd * noise.Next();
+  return out;
+}
+
+// A column of SI values, written in its quantity's canonical unit.
+void AddColumn(SynthLog& log, std::string_view quantity, std::optional<Corner> corner,
+               std::vector<double> si) {
+  for (double& v : si) v = ConvertSiToCanonical(quantity, v);
+  log.columns.push_back(ChannelColumn(quantity, corner, CanonicalUnit(quantity)));
+  log.values.push_back(std::move(si));
+}
+
 // The TPMS channels of the tyres with a gas node, from a noise stream of their own.
 void AddTpmsChannels(const SynthOptions& o, SynthLog& log) {
   if (!o.tpms.enabled) return;
   const std::vector<double>& time = log.inputs.time;
   GaussianNoise noise(TpmsNoiseSeed(o.seed));
-  const auto sensed = [&](const std::vector<double>& truth, double sd) {
-    FirstOrderLag<double> sensor(o.tpms.lag_s);
-    std::vector<double> out(time.size());
-    for (size_t k = 0; k < time.size(); ++k)
-      out[k] = sensor.Next(time[k], truth[k]) + sd * noise.Next();
-    return out;
-  };
   for (Corner c : kAllCorners) {
     const CornerHistory& h = log.truth.corners[CornerIndex(c)];
     if (h.pressure.size() != time.size() || h.gas_temp.size() != time.size()) continue;
-    for (const auto& [quantity, values] :
-         {std::pair{"pressure", sensed(h.pressure, 1e3 * o.tpms.pressure_noise_kPa)},
-          std::pair{"gas_temp", sensed(h.gas_temp, o.tpms.temp_noise_K)}}) {
-      std::vector<double> file = values;
-      for (double& v : file) v = ConvertSiToCanonical(quantity, v);
-      log.columns.push_back(ChannelColumn(quantity, c, CanonicalUnit(quantity)));
-      log.values.push_back(std::move(file));
-    }
+    AddColumn(log, "pressure", c,
+              Sensed(time, h.pressure, o.tpms.lag_s, 1e3 * o.tpms.pressure_noise_kPa, noise));
+    AddColumn(log, "gas_temp", c,
+              Sensed(time, h.gas_temp, o.tpms.lag_s, o.tpms.temp_noise_K, noise));
   }
 }
 
+// The log's channels at its rate: the inputs as they are, the truth's temperatures and wear as a
+// lagged, noisy sensor reads them, and the rolling radius with its noise (one noise stream from
+// the seed, drawn in the columns' order).
 void AddSynthChannels(const vehicle::Car& car, const JoinedLaps& joined, const SynthOptions& o,
                       SynthLog& log) {
   const ReplayInputs& in = log.inputs;
   const size_t n = in.time.size();
   const auto add = [&](std::string_view quantity, std::optional<Corner> corner,
-                       std::vector<double> si) {
-    for (double& v : si) v = ConvertSiToCanonical(quantity, v);
-    log.columns.push_back(ChannelColumn(quantity, corner, CanonicalUnit(quantity)));
-    log.values.push_back(std::move(si));
-  };
+                       std::vector<double> si) { AddColumn(log, quantity, corner, std::move(si)); };
   const auto resample = [&](const std::vector<double>& y) {
     std::vector<double> out(n);
     for (size_t k = 0; k < n; ++k) out[k] = Interpolate(joined.inputs.time, y, in.time[k]);
@@ -259,10 +263,7 @@ void AddSynthChannels(const vehicle::Car& car, const JoinedLaps& joined, const S
   };
   GaussianNoise noise(o.seed);
   const auto sensed = [&](const std::vector<double>& truth, double lag, double sd) {
-    FirstOrderLag<double> sensor(lag);
-    std::vector<double> out(n);
-    for (size_t k = 0; k < n; ++k) out[k] = sensor.Next(in.time[k], truth[k]) + sd * noise.Next();
-    return out;
+    return Sensed(in.time, truth, lag, sd, noise);
   };
   add("time", std::nullopt, in.time);
   add("distance", std::nullopt, resample(joined.distance));
