@@ -12,23 +12,6 @@ namespace hotlap::race {
 
 namespace {
 
-const char* ServiceName(Service s) {
-  switch (s) {
-    case Service::kFuelOnly:
-      return "fuel only";
-    case Service::kRightTyresAndFuel:
-      return "right-side tyres and fuel";
-    case Service::kFourTyresAndFuel:
-      break;
-  }
-  return "four tyres and fuel";
-}
-
-// A stop's mark in the plans' lines: f fuel only, r right-side tyres, none four tyres.
-const char* ServiceMark(Service s) {
-  return s == Service::kFuelOnly ? "f" : s == Service::kRightTyresAndFuel ? "r" : "";
-}
-
 nlohmann::json Rounded(const std::vector<double>& v) {
   nlohmann::json out = nlohmann::json::array();
   for (double x : v) out.push_back(RoundSignificant(x));

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "hotlap/common/enum_names.h"
 #include "hotlap/common/error.h"
 
 namespace hotlap::race {
@@ -17,6 +18,22 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 double FuelMass(const RaceRules& r, int laps_left) { return r.FuelAboard(laps_left); }
 
 }  // namespace
+
+namespace {
+
+constexpr EnumNames<Service, 3> kServiceNames{
+    {{{Service::kFourTyresAndFuel, "four tyres and fuel"},
+      {Service::kRightTyresAndFuel, "right-side tyres and fuel"},
+      {Service::kFuelOnly, "fuel only"}}}};
+constexpr EnumNames<Service, 3> kServiceMarks{{{{Service::kFourTyresAndFuel, ""},
+                                                {Service::kRightTyresAndFuel, "r"},
+                                                {Service::kFuelOnly, "f"}}}};
+
+}  // namespace
+
+const char* ServiceName(Service service) { return kServiceNames.Name(service); }
+
+const char* ServiceMark(Service service) { return kServiceMarks.Name(service); }
 
 double ServiceTime(const RaceRules& r, Service service, double fuel_added_kg) {
   const double fuel = fuel_added_kg / r.fuel_rate_kg_per_s;

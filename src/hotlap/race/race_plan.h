@@ -19,6 +19,12 @@ enum class Service {
   kRightTyresAndFuel,  ///< two new right-side tyres, the cell filled (RaceRules::right_side_stops)
 };
 
+/// The service's name in the summaries ("four tyres and fuel", "right-side tyres and fuel",
+/// "fuel only").
+const char* ServiceName(Service service);
+/// Its mark in a list of stops: "" four tyres, "r" right-side tyres, "f" fuel only.
+const char* ServiceMark(Service service);
+
 struct PitStop {
   int lap = 0;  ///< the stop is made at the end of this lap
   Service service = Service::kFourTyresAndFuel;

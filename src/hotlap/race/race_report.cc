@@ -37,10 +37,6 @@ std::vector<double> SetAges(const RacePlan& plan, bool right = true) {
   return age;
 }
 
-const char* Mark(Service s) {
-  return s == Service::kFuelOnly ? "f" : s == Service::kRightTyresAndFuel ? "r" : "";
-}
-
 // Each tyre's wear and lap-mean tread temperature over the race on the optimal plan, from the
 // fall-off's laps at the tyre's age.
 void AddTyreCharts(report::HtmlReport& page, const RaceRun& run, const std::vector<double>& laps) {
@@ -77,7 +73,7 @@ void AddPlans(report::HtmlReport& page, const RaceRun& run) {
   const auto row = [&](const RacePlan& p, const MonteCarloResult* mc) {
     std::string stops;
     for (const PitStop& s : p.stops) {
-      stops += fmt::format("{}{} ", s.lap, Mark(s.service));
+      stops += fmt::format("{}{} ", s.lap, ServiceMark(s.service));
     }
     rows.push_back({p.name, fmt::format("{:.3f}", p.race_time_s), std::to_string(p.stops.size()),
                     std::to_string(p.tyre_sets_used), stops,
