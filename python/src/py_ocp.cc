@@ -35,7 +35,8 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
                     const std::string& thermal_start, double ambient_C, double track_C,
                     int max_iterations,
                     const std::vector<std::pair<std::string, std::string>>& ipopt_options,
-                    int threads, bool wear_in_programme, const py::object& progress) {
+                    int threads, bool wear_in_programme, bool sensitivities,
+                    const py::object& progress) {
   runs::CheckThreads(threads, runs::NameStyle::kPython);
   ocp::OptimalRunOptions o;
   o.threads = threads;
@@ -51,6 +52,7 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
   o.max_iterations = max_iterations;
   o.ipopt_options = ipopt_options;
   o.wear_in_programme = wear_in_programme;
+  o.sensitivities = sensitivities;
   // One process: a fork beside Python's own threads is not safe (docs/python.md).
   o.second_process = false;
   if (disc_limit_C && compare_disc_limit_C) {
@@ -156,7 +158,8 @@ void BindOcp(py::module_& m) {
         py::arg("max_iterations") = defaults.max_iterations,
         py::arg("ipopt_options") = std::vector<std::pair<std::string, std::string>>{},
         py::arg("threads") = defaults.threads,
-        py::arg("wear_in_programme") = defaults.wear_in_programme, py::arg("progress") = py::none(),
+        py::arg("wear_in_programme") = defaults.wear_in_programme,
+        py::arg("sensitivities") = defaults.sensitivities, py::arg("progress") = py::none(),
         "The minimum-time lap with tyre and brake temperatures and wear as states: one solve "
         "(optionally with a front-disc limit, degC), or with compare_disc_limit_C the free and "
         "the limited lap. Returns {'summary': dict (the keys of `hotlap optimise --json`), "
@@ -168,7 +171,10 @@ void BindOcp(py::module_& m) {
         "suits sweeps of one case per worker; 0: one per core, as the command line). "
         "wear_in_programme: keep the tyres' wear as states of a solve from a solution (by "
         "default frozen for the forces at its start's and integrated after the solve; "
-        "docs/optimal-control.md).");
+        "docs/optimal-control.md). sensitivities: after the solves, each converged lap's set-up "
+        "sensitivities (the lap time's derivative for each parameter a crew chief sets, from the "
+        "solved lap's multipliers) in summary['sensitivities'] (per lap in the comparison, with "
+        "summary['limit_cost_sensitivities']).");
   const ocp::StintOptions stint;
   m.def("stint", &Stint, py::arg("car"), py::arg("track"), py::kw_only(),
         py::arg("laps") = stint.laps, py::arg("wear_scale") = stint.wear_scale,

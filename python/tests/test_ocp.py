@@ -72,6 +72,25 @@ def test_hermite_simpson_equals_the_command_line(cli, tmp_path):
     assert summary["variables"] == expected["variables"]
 
 
+def test_sensitivities_equal_the_command_line(cli, tmp_path):
+    """The set-up sensitivities from Python are the command line's, key for key."""
+    args = ("--step-m", 30, "--coarse-step-m", 0, "--threads", 1)
+    cli("optimise", *args, "--sensitivities", "--out", tmp_path / "o", "--json",
+        tmp_path / "o.json")
+    expected = read_json(tmp_path / "o.json")["sensitivities"]
+    car, track = hotlap.load_car("gen7"), hotlap.load_track("darlington")
+    got = hotlap.optimal_lap(car, track, step_m=30.0, coarse_step_m=0.0,
+                             sensitivities=True)["summary"]
+    assert got["status"] == "converged"
+    assert len(got["sensitivities"]) == len(expected) >= 6
+    for g, e in zip(got["sensitivities"], expected):
+        assert g["key"] == e["key"]
+        assert g["d_lap_time_s_per_unit"] == e["d_lap_time_s_per_unit"]
+    # Not asked: none.
+    assert hotlap.optimal_lap(car, track, step_m=30.0, coarse_step_m=0.0)["summary"][
+        "sensitivities"] is None
+
+
 def test_wear_in_programme_equals_the_command_line(cli, tmp_path):
     # 30 m, then 15 m from it: the fine solve freezes the wear unless asked to keep it.
     args = ("--step-m", 15, "--coarse-step-m", 30, "--threads", 1)

@@ -55,6 +55,20 @@ TEST(SolvedLapJson, HoldsTheSensitivities) {
   EXPECT_NEAR(j[0]["typical_step_effect_ms"].get<double>(), -0.36232, 1e-5);
 }
 
+TEST(OptimalRunsJson, HoldsTheLimitsCostSensitivities) {
+  SolvedLap free = testing::MakeExampleSolvedLap("no limit", 30.0);
+  SolvedLap limited = testing::MakeExampleSolvedLap("discs <= 500 degC", 30.25, 500.0);
+  EXPECT_TRUE(LimitCostSensitivitiesJson(free, limited).is_null());
+  const SetupParameter& mass = CrewChiefParameters().back();
+  free.sensitivities = {{mass, 1542.0, 1.542, 4.0e-3}};
+  limited.sensitivities = {{mass, 1542.0, 1.542, 4.25e-3}};
+  const nlohmann::json j = LimitCostSensitivitiesJson(free, limited);
+  ASSERT_EQ(j.size(), 1u);
+  EXPECT_EQ(j[0]["key"], mass.key);
+  EXPECT_NEAR(j[0]["d_delta_s_per_unit"].get<double>(), 2.5e-4, 1e-12);
+  EXPECT_NEAR(j[0]["typical_step_effect_ms"].get<double>(), 2.5e-4 * mass.typical_step * 1e3, 1e-9);
+}
+
 TEST(OptimalRunsJson, OneSolveAndTheComparison) {
   OptimalRunOptions o;
   o.step_m = 30.0;

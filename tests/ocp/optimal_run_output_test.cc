@@ -68,6 +68,29 @@ TEST(WriteOptimalRunFiles, OneLapOrTheComparison) {
         "discs &lt;= 500 degC", "30.250", "42 / 1.2 s", "Front tread temperature", "Wear"}) {
     EXPECT_TRUE(test::Contains(html, part)) << part;
   }
+  EXPECT_FALSE(test::Contains(html, "Set-up sensitivities"));  // not asked
+}
+
+TEST(WriteOptimalRunFiles, RanksTheSensitivitiesWithTheLimitsCost) {
+  test::TempDir dir;
+  const auto& all = CrewChiefParameters();
+  SolvedLap free = testing::MakeExampleSolvedLap("no limit", 30.0);
+  SolvedLap limited = testing::MakeExampleSolvedLap("discs <= 500 degC", 30.25, 500.0);
+  // +1 psi right rear: -0.362 ms free, -0.300 ms limited; +10 kg: +40.67 and +41.67 ms.
+  free.sensitivities = {{all[3], 303.4, 0.3034, -5.255e-5}, {all.back(), 1542.0, 1.542, 4.067e-3}};
+  limited.sensitivities = {{all[3], 303.4, 0.3034, -0.3e-3 / all[3].typical_step},
+                           {all.back(), 1542.0, 1.542, 4.167e-3}};
+  const auto files = WriteOptimalRunFiles(dir.path(), {free, limited}, ExampleCar(),
+                                          track::LoadTrack("darlington"), 30.0);
+  const std::string html = test::ReadTextFile(files.back());
+  const size_t mass = html.find("chassis mass"), rr = html.find("right-rear cold pressure");
+  ASSERT_NE(mass, std::string::npos);
+  ASSERT_NE(rr, std::string::npos);
+  EXPECT_LT(mass, rr);  // ranked by the free lap's effect
+  for (const char* part : {"Set-up sensitivities", "limit&#39;s cost, ms", "+40.670", "+41.670",
+                           "+1.000", "-0.362", "-0.300", "+0.062", "303.4 kPa"}) {
+    EXPECT_TRUE(test::Contains(html, part)) << part;
+  }
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include "hotlap/common/json_output.h"
 #include "hotlap/common/units.h"
+#include "hotlap/ocp/optimal_run_text.h"
 
 namespace hotlap::ocp {
 
@@ -113,6 +114,21 @@ nlohmann::json SensitivitiesJson(const std::vector<LapSensitivity>& sensitivitie
   return list;
 }
 
+nlohmann::json LimitCostSensitivitiesJson(const SolvedLap& free, const SolvedLap& limited) {
+  const std::vector<LimitCostSensitivity> both = LimitCostSensitivities(free, limited);
+  if (both.empty()) return nullptr;
+  nlohmann::json list = nlohmann::json::array();
+  for (const LimitCostSensitivity& s : both) {
+    list.push_back({{"key", s.free->parameter.key},
+                    {"label", s.free->parameter.label},
+                    {"unit", s.free->parameter.unit},
+                    {"d_delta_s_per_unit", RoundSignificant(s.d_cost_per_unit())},
+                    {"typical_step_text", s.free->parameter.step_text},
+                    {"typical_step_effect_ms", RoundSignificant(1e3 * s.typical_cost_effect_s())}});
+  }
+  return list;
+}
+
 nlohmann::json OptimalRunsJson(const OptimalRuns& runs, const OptimalRunOptions& options,
                                const std::string& track_name, const vehicle::Car& car,
                                double wall_time_s,
@@ -123,7 +139,8 @@ nlohmann::json OptimalRunsJson(const OptimalRuns& runs, const OptimalRunOptions&
     j = {{"command", "lap --method ocp"},
          {"unconstrained", SolvedLapJson(laps[0], options.thermal_start)},
          {"constrained", SolvedLapJson(laps[1], options.thermal_start)},
-         {"delta_s", RoundSignificant(laps[1].figures.lap_time_s - laps[0].figures.lap_time_s)}};
+         {"delta_s", RoundSignificant(laps[1].figures.lap_time_s - laps[0].figures.lap_time_s)},
+         {"limit_cost_sensitivities", LimitCostSensitivitiesJson(laps[0], laps[1])}};
     // The headline keys of the unconstrained run at the top level too.
     for (const char* k : {"lap_time_s", "solve_time_s", "ipopt_iterations", "status",
                           "max_front_disc_temp_C", "top_speed_mps"}) {

@@ -24,6 +24,11 @@ nlohmann::json SolvedLapJson(const SolvedLap& lap, const std::string& thermal_st
 /// typical_step, typical_step_text, typical_step_effect_ms} (docs/json-output.md).
 nlohmann::json SensitivitiesJson(const std::vector<LapSensitivity>& sensitivities);
 
+/// What each set-up step does to the disc limit's cost (LimitCostSensitivities), ranked: a list of
+/// {key, label, unit, d_delta_s_per_unit, typical_step_text, typical_step_effect_ms}; null unless
+/// both laps have sensitivities.
+nlohmann::json LimitCostSensitivitiesJson(const SolvedLap& free, const SolvedLap& limited);
+
 /// The run's summary: one lap's object with "command": "optimise", or for the comparison both
 /// ("unconstrained", "constrained"), "delta_s" and the free lap's headline keys at the top level;
 /// then the track, car (its name and overrides), mesh spacing, `wall_time_s` and, where given, the

@@ -9,6 +9,7 @@
 #include "hotlap/common/csv.h"
 #include "hotlap/common/units.h"
 #include "hotlap/ocp/optimal_lap_charts.h"
+#include "hotlap/ocp/optimal_run_text.h"
 #include "hotlap/report/html_report.h"
 
 namespace hotlap::ocp {
@@ -31,6 +32,45 @@ void WriteSolvedLapCsv(const fs::path& path, const SolvedLap& s, const track::Tr
   metadata.emplace_back("status", s.run.solution.solve.message);
   WriteCsv(path, metadata, columns.names, columns.values);
 }
+
+namespace {
+
+// The set-up sensitivities ranked by the first lap's typical-step effect: each lap's effect and,
+// for the comparison, the limit's cost (LimitCostSensitivities). Nothing without sensitivities.
+void AddSensitivityTable(report::HtmlReport& page, const std::vector<SolvedLap>& runs) {
+  if (runs.empty() || runs[0].sensitivities.empty()) return;
+  const bool comparison = runs.size() == 2 && !runs[1].sensitivities.empty();
+  std::vector<std::string> header = {"step", "parameter", "at"};
+  for (const SolvedLap& s : runs) header.push_back(s.label + ", ms");
+  if (comparison) header.push_back("limit's cost, ms");
+  std::vector<std::vector<std::string>> rows;
+  for (const LapSensitivity* f : RankedSensitivities(runs[0])) {
+    const SetupParameter& p = f->parameter;
+    std::vector<std::string> row = {
+        p.step_text, p.label, fmt::format("{:.4g}{}", f->value, p.unit == "1" ? "" : " " + p.unit),
+        fmt::format("{:+.3f}", 1e3 * f->typical_effect_s())};
+    if (runs.size() == 2) {
+      const LapSensitivity* l = nullptr;
+      for (const LapSensitivity& x : runs[1].sensitivities) {
+        if (x.parameter.key == p.key) l = &x;
+      }
+      row.push_back(l ? fmt::format("{:+.3f}", 1e3 * l->typical_effect_s()) : "-");
+      if (comparison) {
+        row.push_back(
+            l ? fmt::format("{:+.3f}", 1e3 * (l->typical_effect_s() - f->typical_effect_s()))
+              : "-");
+      }
+    }
+    rows.push_back(std::move(row));
+  }
+  page.AddHeading("Set-up sensitivities");
+  page.AddText(
+      "The lap time's first-order change for a typical step of each parameter a crew chief sets, "
+      "from the solved lap's multipliers (no solve again), largest first.");
+  page.AddTable({.title = "Set-up sensitivities", .header = header, .rows = rows});
+}
+
+}  // namespace
 
 std::vector<fs::path> WriteOptimalRunFiles(const fs::path& out, const std::vector<SolvedLap>& runs,
                                            const vehicle::Car& car, const track::Track& track,
@@ -66,6 +106,7 @@ std::vector<fs::path> WriteOptimalRunFiles(const fs::path& out, const std::vecto
       {.title = "Runs",
        .header = {"run", "lap s", "top m/s", "front disc pk \u00b0C", "Ipopt", "iterations / time"},
        .rows = rows});
+  AddSensitivityTable(page, runs);
   std::vector<const OptimalLapRun*> ptrs;
   std::vector<std::string> labels;
   for (const SolvedLap& s : runs) {

@@ -91,26 +91,60 @@ std::string DiscLimitCostText(const SolvedLap& free, const SolvedLap& limited) {
                    OptionalText(x.lift_m, "{:.0f}"), OptionalText(y.lift_m, "{:.0f}"),
                    OptionalText(x.brake_m, "{:.0f}"), OptionalText(y.brake_m, "{:.0f}"));
   }
-  return text;
+  return text + LimitCostSensitivitiesText(free, limited);
 }
 
-std::string SensitivitiesText(const SolvedLap& lap) {
-  if (lap.sensitivities.empty()) return "";
+std::vector<const LapSensitivity*> RankedSensitivities(const SolvedLap& lap) {
   std::vector<const LapSensitivity*> ranked;
   for (const LapSensitivity& s : lap.sensitivities) ranked.push_back(&s);
   std::stable_sort(ranked.begin(), ranked.end(), [](const auto* a, const auto* b) {
     return std::abs(a->typical_effect_s()) > std::abs(b->typical_effect_s());
   });
+  return ranked;
+}
+
+std::string SensitivitiesText(const SolvedLap& lap) {
+  if (lap.sensitivities.empty()) return "";
   std::string out =
       "  set-up sensitivities (the lap time's first-order change for each step, from the solved "
       "lap's multipliers):\n";
-  for (const LapSensitivity* s : ranked) {
+  for (const LapSensitivity* s : RankedSensitivities(lap)) {
     const std::string step = s->parameter.step_text + " " + s->parameter.label + ":";
     const bool unitless = s->parameter.unit == "1";
     out += fmt::format("    {:<48} {:+9.3f} ms   ({:+.4g} ms per {}, at {:.4g}{})\n", step,
                        1e3 * s->typical_effect_s(), 1e3 * s->d_lap_time_per_unit,
                        unitless ? "unit" : s->parameter.unit, s->value,
                        unitless ? "" : " " + s->parameter.unit);
+  }
+  return out;
+}
+
+std::vector<LimitCostSensitivity> LimitCostSensitivities(const SolvedLap& free,
+                                                         const SolvedLap& limited) {
+  std::vector<LimitCostSensitivity> both;
+  for (const LapSensitivity& f : free.sensitivities) {
+    for (const LapSensitivity& l : limited.sensitivities) {
+      if (l.parameter.key == f.parameter.key) both.push_back({&f, &l});
+    }
+  }
+  std::stable_sort(both.begin(), both.end(), [](const auto& a, const auto& b) {
+    return std::abs(a.typical_cost_effect_s()) > std::abs(b.typical_cost_effect_s());
+  });
+  return both;
+}
+
+std::string LimitCostSensitivitiesText(const SolvedLap& free, const SolvedLap& limited) {
+  const std::vector<LimitCostSensitivity> both = LimitCostSensitivities(free, limited);
+  if (both.empty()) return "";
+  std::string out = fmt::format(
+      "  what each step does to the {} limit's cost (the limited lap's change minus the free "
+      "lap's):\n",
+      limited.label);
+  for (const LimitCostSensitivity& s : both) {
+    const SetupParameter& p = s.free->parameter;
+    out += fmt::format("    {:<48} {:+9.3f} ms   (free {:+.3f}, limited {:+.3f} ms)\n",
+                       p.step_text + " " + p.label + ":", 1e3 * s.typical_cost_effect_s(),
+                       1e3 * s.free->typical_effect_s(), 1e3 * s.limited->typical_effect_s());
   }
   return out;
 }
