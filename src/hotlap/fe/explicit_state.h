@@ -163,81 +163,20 @@ void AddRimTranslationalMass(double mass_kg, ExplicitState& state);
 
 // The fields of each struct, in checkpoint order: visit(name, member) for every member.
 
-template <SameOrConst<Energies> S, typename Visitor>
-void VisitFields(S& e, Visitor&& visit) {
-  visit("kinetic", e.kinetic);
-  visit("internal", e.internal);
-  visit("hourglass_stored", e.hourglass_stored);
-  visit("hourglass_dissipated", e.hourglass_dissipated);
-  visit("bulk_viscous", e.bulk_viscous);
-  visit("damping", e.damping);
-  visit("contact_stored", e.contact_stored);
-  visit("friction", e.friction);
-  visit("external_work", e.external_work);
-  visit("initial_kinetic", e.initial_kinetic);
-}
+HOTLAP_VISIT_FIELDS(Energies, kinetic, internal, hourglass_stored, hourglass_dissipated,
+                    bulk_viscous, damping, contact_stored, friction, external_work, initial_kinetic)
 
-template <SameOrConst<RimSettings> S, typename Visitor>
-void VisitFields(S& r, Visitor&& visit) {
-  visit("centre", r.centre);
-  visit("mass_kg", r.mass_kg);
-  visit("inertia_kgm2", r.inertia_kgm2);
-  visit("x_mode", r.x_mode);
-  visit("z_mode", r.z_mode);
-  visit("spin_mode", r.spin_mode);
-}
+HOTLAP_VISIT_FIELDS(RimSettings, centre, mass_kg, inertia_kgm2, x_mode, z_mode, spin_mode)
 
-template <SameOrConst<RimState> S, typename Visitor>
-void VisitFields(S& r, Visitor&& visit) {
-  visit("centre", r.centre);
-  visit("velocity", r.velocity);
-  visit("angle_rad", r.angle_rad);
-  visit("spin_rad_per_s", r.spin_rad_per_s);
-}
+HOTLAP_VISIT_FIELDS(RimState, centre, velocity, angle_rad, spin_rad_per_s)
 
-template <SameOrConst<RimLoads> S, typename Visitor>
-void VisitFields(S& r, Visitor&& visit) {
-  visit("force_x_N", r.force_x_N);
-  visit("force_z_N", r.force_z_N);
-  visit("torque_Nm", r.torque_Nm);
-}
+HOTLAP_VISIT_FIELDS(RimLoads, force_x_N, force_z_N, torque_Nm)
 
-template <SameOrConst<ExplicitState> S, typename Visitor>
-void VisitFields(S& s, Visitor&& visit) {
-  visit("time_s", s.time_s);
-  visit("steps", s.steps);
-  visit("pressure_Pa", s.pressure_Pa);
-  visit("mass_damping_per_s", s.mass_damping_per_s);
-  visit("x", s.x);
-  visit("v", s.v);
-  visit("applied", s.applied);
-  visit("reaction", s.reaction);
-  visit("fixed", s.fixed);
-  visit("fixed_velocity", s.fixed_velocity);
-  visit("f_stored", s.f_stored);
-  visit("f_dissip_bv", s.f_dissip_bv);
-  visit("f_dissip_hg", s.f_dissip_hg);
-  visit("f_damp", s.f_damp);
-  visit("f_contact", s.f_contact);
-  visit("f_friction", s.f_friction);
-  visit("f_external", s.f_external);
-  visit("contact_normal", s.contact_normal);
-  visit("road", s.road);
-  visit("stick_extension", s.stick_extension);
-  visit("on_road", s.on_road);
-  visit("rim_settings", s.rim_settings);
-  visit("rim", s.rim);
-  visit("rim_loads", s.rim_loads);
-  visit("rim_reaction", s.rim_reaction);
-  visit("rim_target", s.rim_target);
-  visit("rim_mass_kg", s.rim_mass_kg);
-  visit("rim_inertia_kgm2", s.rim_inertia_kgm2);
-  visit("energies", s.energies);
-  visit("stored_internal", s.stored_internal);
-  visit("stored_hourglass", s.stored_hourglass);
-  visit("stored_contact", s.stored_contact);
-  visit("work_to_midstep", s.work_to_midstep);
-  visit("slip_dissipation", s.slip_dissipation);
-}
+HOTLAP_VISIT_FIELDS(ExplicitState, time_s, steps, pressure_Pa, mass_damping_per_s, x, v, applied,
+                    reaction, fixed, fixed_velocity, f_stored, f_dissip_bv, f_dissip_hg, f_damp,
+                    f_contact, f_friction, f_external, contact_normal, road, stick_extension,
+                    on_road, rim_settings, rim, rim_loads, rim_reaction, rim_target, rim_mass_kg,
+                    rim_inertia_kgm2, energies, stored_internal, stored_hourglass, stored_contact,
+                    work_to_midstep, slip_dissipation)
 
 }  // namespace hotlap::fe

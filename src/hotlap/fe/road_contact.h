@@ -94,23 +94,10 @@ struct RoadContact {
 };
 
 /// The fields of a FrictionLaw (visit_fields.h; the FE checkpoint saves them).
-template <SameOrConst<FrictionLaw> S, typename Visitor>
-void VisitFields(S& f, Visitor&& visit) {
-  visit("static_coefficient", f.static_coefficient);
-  visit("kinetic_coefficient", f.kinetic_coefficient);
-  visit("decay_s_per_m", f.decay_s_per_m);
-}
+HOTLAP_VISIT_FIELDS(FrictionLaw, static_coefficient, kinetic_coefficient, decay_s_per_m)
 
 /// The fields of a RoadContact (visit_fields.h; the FE checkpoint saves them).
-template <SameOrConst<RoadContact> S, typename Visitor>
-void VisitFields(S& r, Visitor&& visit) {
-  visit("enabled", r.enabled);
-  visit("height_m", r.height_m);
-  visit("penalty_factor", r.penalty_factor);
-  visit("tangential_penalty_factor", r.tangential_penalty_factor);
-  visit("road_speed_x_mps", r.road_speed_x_mps);
-  visit("stick", r.stick);
-  visit("friction", r.friction);
-}
+HOTLAP_VISIT_FIELDS(RoadContact, enabled, height_m, penalty_factor, tangential_penalty_factor,
+                    road_speed_x_mps, stick, friction)
 
 }  // namespace hotlap::fe

@@ -150,47 +150,15 @@ struct TyreRunState {
 
 // The fields of each struct, in checkpoint order (visit_fields.h).
 
-template <SameOrConst<HistoryRow> S, typename Visitor>
-void VisitFields(S& h, Visitor&& visit) {
-  visit("time_s", h.time_s);
-  visit("rim_x_m", h.rim_x_m);
-  visit("rim_z_m", h.rim_z_m);
-  visit("rim_vx_mps", h.rim_vx_mps);
-  visit("spin_rad_per_s", h.spin_rad_per_s);
-  visit("brake_torque_Nm", h.brake_torque_Nm);
-  visit("road_fx_N", h.road_fx_N);
-  visit("road_fz_N", h.road_fz_N);
-  visit("slip", h.slip);
-  visit("energies", h.energies);
-}
+HOTLAP_VISIT_FIELDS(HistoryRow, time_s, rim_x_m, rim_z_m, rim_vx_mps, spin_rad_per_s,
+                    brake_torque_Nm, road_fx_N, road_fz_N, slip, energies)
 
-template <SameOrConst<StepCursor> S, typename Visitor>
-void VisitFields(S& c, Visitor&& visit) {
-  visit("t0", c.t0);
-  visit("next_history", c.next_history);
-  visit("next_frame", c.next_frame);
-  visit("calls", c.calls);
-  visit("max_cord_strain", c.max_cord_strain);
-}
+HOTLAP_VISIT_FIELDS(StepCursor, t0, next_history, next_frame, calls, max_cord_strain)
 
-template <SameOrConst<BrakeStep> S, typename Visitor>
-void VisitFields(S& b, Visitor&& visit) {
-  visit("active", b.active);
-  visit("t0", b.t0);
-  visit("x0", b.x0);
-  visit("applied", b.applied);
-  visit("history", b.history);
-}
+HOTLAP_VISIT_FIELDS(BrakeStep, active, t0, x0, applied, history)
 
-template <SameOrConst<TyreRunState> S, typename Visitor>
-void VisitFields(S& s, Visitor&& visit) {
-  visit("road_z_m", s.road_z_m);
-  visit("inflated_radius_m", s.inflated_radius_m);
-  visit("loaded_radius_m", s.loaded_radius_m);
-  visit("rolling_radius_m", s.rolling_radius_m);
-  visit("cursor", s.cursor);
-  visit("brake", s.brake);
-}
+HOTLAP_VISIT_FIELDS(TyreRunState, road_z_m, inflated_radius_m, loaded_radius_m, rolling_radius_m,
+                    cursor, brake)
 
 /// The tyre model and its state across the steps.
 class TyreRun {
