@@ -12,8 +12,6 @@
 #include "hotlap/common/json_output.h"
 #include "hotlap/common/output_folder.h"
 #include "hotlap/runs/synth_run.h"
-#include "hotlap/sim/synth.h"
-#include "hotlap/sim/synth_json.h"
 #include "hotlap/track/track_io.h"
 
 namespace hotlap::app {
@@ -32,17 +30,11 @@ int RunSynth(const SynthArgs& a) {
   vehicle::Car car = vehicle::LoadCar(ResolveCarFile(a.car), vehicle::ParseCarOverrides(a.set));
   const track::Track track = track::LoadTrack(a.track);
   const runs::SynthRun run = runs::RunSynth(car, track, a.run);
-  const std::string& params = a.run.params;
-  sim::WriteSynthLog(
-      a.out, run.log,
-      {{"track", track.name()}, {"params", params.empty() ? std::string("(car file)") : params}});
+  runs::WriteSynthRunLog(a.out, run, track, a.run);
   fmt::print("{}", runs::SynthRunText(run, car, track));
   fmt::print("wrote {}\n", a.out);
-  if (!a.json.empty()) {
-    WriteJsonFileAndSay(a.json,
-                        sim::SynthJson(run.log, run.options, car,
-                                       {track.name(), params, a.out, run.process_noise_file}));
-  }
+  if (!a.json.empty())
+    WriteJsonFileAndSay(a.json, runs::SynthRunJson(run, car, track, a.run, a.out));
   return 0;
 }
 

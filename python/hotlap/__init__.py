@@ -39,6 +39,7 @@ from ._hotlap import (  # noqa: F401  (the public API)
     read_log,
     replay,
     stint,
+    synth,
 )
 from . import _hotlap
 
@@ -64,6 +65,7 @@ __all__ = [
     "read_log",
     "replay",
     "stint",
+    "synth",
     "tyre_forces",
 ]
 

@@ -18,6 +18,7 @@ void BindReport(py::module_& m);
 void BindLog(py::module_& m);
 void BindRace(py::module_& m);
 void BindFe(py::module_& m);
+void BindSynth(py::module_& m);
 }  // namespace hotlap::python
 
 PYBIND11_MODULE(_hotlap, m) {
@@ -45,4 +46,5 @@ PYBIND11_MODULE(_hotlap, m) {
   hotlap::python::BindLog(m);
   hotlap::python::BindRace(m);
   hotlap::python::BindFe(m);
+  hotlap::python::BindSynth(m);
 }

@@ -148,3 +148,31 @@ def test_paths_may_be_pathlib_paths():
     track_file = REPO / "data" / "tracks" / "darlington.yaml"
     assert hotlap.load_track(track_file).length_m == hotlap.load_track("darlington").length_m
     assert hotlap.load_tyre(LEFT_TIR).kind == "mf"
+
+
+def test_synth_with_tpms_equals_the_command_line(cli, tmp_path):
+    """hotlap.synth makes the command line's log (TPMS channels and all) and summary, and leaves
+    the car it was given as it was."""
+    args = dict(truth="car", tpms_noise_kPa=0.5, tpms_temp_noise_C=0.25, tpms_lag_s=1.5, seed=7,
+                rate_hz=20.0)
+    cli("synth", "--truth", "car", "--tpms-noise-kPa", 0.5, "--tpms-temp-noise-C", 0.25,
+        "--tpms-lag-s", 1.5, "--seed", 7, "--rate-hz", 20, "--out", tmp_path / "cli.csv",
+        "--json", tmp_path / "cli.json")
+    car, track = hotlap.load_car("gen7"), hotlap.load_track("darlington")
+    got = hotlap.synth(car, track, tmp_path / "py.csv", **args)
+    expected = read_csv(tmp_path / "cli.csv")
+    assert set(got["channels"]) == set(expected)
+    for c in ("pressure_fl_kPa", "gas_temp_rr_C", "tread_temp_fl_C"):
+        np.testing.assert_array_equal(got["channels"][c], expected[c])
+    # The file written from Python is the command line's, line for line.
+    assert (tmp_path / "py.csv").read_text() == (tmp_path / "cli.csv").read_text()
+    summary, cli_summary = got["summary"], read_json(tmp_path / "cli.json")
+    for key in ("laps", "samples", "lap_time_s", "corners"):
+        assert summary[key] == cli_summary[key]
+    # Without TPMS: the same log less those channels; and the caller's car is unchanged.
+    bare = hotlap.synth(car, track, tpms=False, **args)
+    assert "pressure_fl_kPa" not in bare["channels"]
+    np.testing.assert_array_equal(bare["channels"]["tread_temp_fl_C"],
+                                  got["channels"]["tread_temp_fl_C"])
+    with pytest.raises(ValueError, match="laps must be >= 1"):
+        hotlap.synth(car, track, laps=0)

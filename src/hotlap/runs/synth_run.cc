@@ -61,6 +61,20 @@ SynthRun RunSynth(vehicle::Car& car, const track::Track& track, const SynthRunOp
   return run;
 }
 
+void WriteSynthRunLog(const std::filesystem::path& out, const SynthRun& run,
+                      const track::Track& track, const SynthRunOptions& options) {
+  const std::string& params = options.params;
+  sim::WriteSynthLog(
+      out, run.log,
+      {{"track", track.name()}, {"params", params.empty() ? std::string("(car file)") : params}});
+}
+
+nlohmann::json SynthRunJson(const SynthRun& run, const vehicle::Car& car, const track::Track& track,
+                            const SynthRunOptions& options, const std::string& out) {
+  return sim::SynthJson(run.log, run.options, car,
+                        {track.name(), options.params, out, run.process_noise_file});
+}
+
 std::string SynthRunText(const SynthRun& run, const vehicle::Car& car, const track::Track& track) {
   const sim::SynthOptions& o = run.options;
   std::string out =

@@ -5,7 +5,10 @@
 /// process noise makes the truth stochastic, the log, and the text the command prints.
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "hotlap/sim/synth.h"
 #include "hotlap/track/track.h"
@@ -36,6 +39,15 @@ struct SynthRun {
 
 /// Applies the true parameters to `car` and synthesizes the log round `track`'s centre line.
 SynthRun RunSynth(vehicle::Car& car, const track::Track& track, const SynthRunOptions& options);
+
+/// Writes the run's log to `out` (WriteSynthLog, atomically) with the track and the parameter
+/// file as metadata.
+void WriteSynthRunLog(const std::filesystem::path& out, const SynthRun& run,
+                      const track::Track& track, const SynthRunOptions& options);
+
+/// The run's summary (sim::SynthJson) for the log written to `out` ("" if none).
+nlohmann::json SynthRunJson(const SynthRun& run, const vehicle::Car& car, const track::Track& track,
+                            const SynthRunOptions& options, const std::string& out);
 
 /// What `hotlap synth` prints of a run (before the files it wrote).
 std::string SynthRunText(const SynthRun& run, const vehicle::Car& car, const track::Track& track);
