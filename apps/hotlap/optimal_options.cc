@@ -52,6 +52,10 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
       "--wear-in-programme", a.run.wear_in_programme,
       "Keep the tyres' wear as states of the programme (by default the lap freezes "
       "it for the forces and integrates it after the solve; docs/optimal-control.md)"));
+  a.stock_car_only.push_back(sub->add_flag(
+      "--paper-models", a.run.paper_models,
+      "Run the lap on the paper's models (two-mass tyres, lumped discs) instead of the car's own "
+      "gas-and-rim tyres and surface-and-bulk discs (docs/optimal-control.md)"));
   a.stock_car_only.push_back(
       sub->add_option("--controls", a.controls,
                       "pedal (one signed pedal: drive or brake, never both) or independent (the "
@@ -62,7 +66,7 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
   a.stock_car_only.push_back(
       sub->add_option("--thermal-start", a.run.thermal_start,
                       "Thermal states at the start: racing (QSS laps until no carcass rises over "
-                      "15 degC a lap), "
+                      "5 degC a lap), "
                       "warm (after one QSS out-lap), car (the car file's initial_state) or "
                       "periodic (temperatures end where they start)")
           ->capture_default_str()

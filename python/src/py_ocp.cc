@@ -35,7 +35,7 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
                     const std::string& thermal_start, double ambient_C, double track_C,
                     int max_iterations,
                     const std::vector<std::pair<std::string, std::string>>& ipopt_options,
-                    int threads, bool wear_in_programme, bool sensitivities,
+                    int threads, bool wear_in_programme, bool paper_models, bool sensitivities,
                     const py::object& progress) {
   runs::CheckThreads(threads, runs::NameStyle::kPython);
   ocp::OptimalRunOptions o;
@@ -53,6 +53,7 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
   o.ipopt_options = ipopt_options;
   o.wear_in_programme = wear_in_programme;
   o.sensitivities = sensitivities;
+  o.paper_models = paper_models;
   // One process: a fork beside Python's own threads is not safe (docs/python.md).
   o.second_process = false;
   if (disc_limit_C && compare_disc_limit_C) {
@@ -159,6 +160,7 @@ void BindOcp(py::module_& m) {
         py::arg("ipopt_options") = std::vector<std::pair<std::string, std::string>>{},
         py::arg("threads") = defaults.threads,
         py::arg("wear_in_programme") = defaults.wear_in_programme,
+        py::arg("paper_models") = defaults.paper_models,
         py::arg("sensitivities") = defaults.sensitivities, py::arg("progress") = py::none(),
         "The minimum-time lap with tyre and brake temperatures and wear as states: one solve "
         "(optionally with a front-disc limit, degC), or with compare_disc_limit_C the free and "
@@ -171,7 +173,9 @@ void BindOcp(py::module_& m) {
         "suits sweeps of one case per worker; 0: one per core, as the command line). "
         "wear_in_programme: keep the tyres' wear as states of a solve from a solution (by "
         "default frozen for the forces at its start's and integrated after the solve; "
-        "docs/optimal-control.md). sensitivities: after the solves, each converged lap's set-up "
+        "docs/optimal-control.md). paper_models: the lap on the paper's models (two-mass tyres, "
+        "lumped discs) in place of the car's own. sensitivities: after the solves, each converged "
+        "lap's set-up "
         "sensitivities (the lap time's derivative for each parameter a crew chief sets, from the "
         "solved lap's multipliers) in summary['sensitivities'] (per lap in the comparison, with "
         "summary['limit_cost_sensitivities']).");

@@ -9,9 +9,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
-#include "hotlap/common/error.h"
 #include "hotlap/common/output_folder.h"
-#include "hotlap/common/units.h"
 #include "hotlap/runs/synth_run.h"
 #include "hotlap/track/track.h"
 #include "hotlap/vehicle/car.h"

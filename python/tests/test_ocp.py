@@ -91,6 +91,26 @@ def test_sensitivities_equal_the_command_line(cli, tmp_path):
         "sensitivities"] is None
 
 
+def test_paper_models_equal_the_command_line(cli, tmp_path):
+    """--paper-models and paper_models=True run the paper's two-mass tyres and lumped discs: no
+    gas in the corners' figures, another lap than the car's own models."""
+    args = ("--step-m", 30, "--coarse-step-m", 0, "--threads", 1)
+    cli("optimise", *args, "--paper-models", "--out", tmp_path / "o", "--json",
+        tmp_path / "o.json")
+    expected = read_json(tmp_path / "o.json")
+    car, track = hotlap.load_car("gen7"), hotlap.load_track("darlington")
+    paper = hotlap.optimal_lap(car, track, step_m=30.0, coarse_step_m=0.0,
+                               paper_models=True)["summary"]
+    own = hotlap.optimal_lap(car, track, step_m=30.0, coarse_step_m=0.0)["summary"]
+    assert expected["paper_models"] is paper["paper_models"] is True
+    assert own["paper_models"] is False
+    assert paper["status"] == own["status"] == "converged"
+    assert paper["lap_time_s"] == expected["lap_time_s"]
+    assert "peak_gas_temp_C" not in paper["corners"]["fl"]
+    assert "peak_gas_temp_C" in own["corners"]["fl"]
+    assert abs(paper["lap_time_s"] - own["lap_time_s"]) > 1e-3
+
+
 def test_wear_in_programme_equals_the_command_line(cli, tmp_path):
     # 30 m, then 15 m from it: the fine solve freezes the wear unless asked to keep it.
     args = ("--step-m", 15, "--coarse-step-m", 30, "--threads", 1)

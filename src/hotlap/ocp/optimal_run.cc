@@ -32,6 +32,7 @@ OptimalLapOptions MakeOptimalLapOptions(const OptimalRunOptions& a) {
   o.pedal_smoothing_weight = a.pedal_smoothing;
   o.convex_element_hessians = a.convex_element_hessians;
   o.wear_in_programme = a.wear_in_programme;
+  o.paper_models = a.paper_models;
   o.independent_drive_and_brake = a.independent_drive_and_brake;
   o.thermal_start = ParseThermalStart(a.thermal_start);
   o.ambient_temp = CelsiusToKelvin(a.ambient_C);

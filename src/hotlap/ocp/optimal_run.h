@@ -34,6 +34,8 @@ struct OptimalRunOptions {
   /// The tyres' wear as states of the programme (OptimalLapOptions::wear_in_programme) instead
   /// of frozen for the forces and integrated after the solve.
   bool wear_in_programme = false;
+  /// The paper's models in place of the car's own (OptimalLapOptions::paper_models).
+  bool paper_models = false;
   /// The old two controls (drive power and brake force) instead of the one pedal.
   bool independent_drive_and_brake = false;
   std::optional<double> disc_limit_C;          ///< one solve with this front-disc limit, degC

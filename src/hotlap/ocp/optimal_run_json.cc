@@ -159,6 +159,7 @@ nlohmann::json OptimalRunsJson(const OptimalRuns& runs, const OptimalRunOptions&
   j["coarse_mesh_step_m"] = options.coarse_step_m;
   j["coarse_collocation"] = options.coarse_collocation;
   j["wear_in_programme"] = options.wear_in_programme;
+  j["paper_models"] = options.paper_models;
   j["controls"] = options.independent_drive_and_brake ? "independent" : "pedal";
   j["wall_time_s"] = RoundSignificant(wall_time_s);
   if (mesh_check_delta_s) j["mesh_check_delta_s"] = RoundSignificant(*mesh_check_delta_s);
