@@ -97,6 +97,12 @@ CommandRunner RegisterObserveCommand(CLI::App& app) {
                   "Noise model (YAML, model: observer_noise); default data/observer/default.yaml");
   sub->add_option("--noise-from-fit", a->run.noise_from_fit,
                   "Sensor noise from a fit's residuals (hotlap fit ... --json FIT.json)");
+  sub->add_option("--models", a->run.models,
+                  "paper (the paper's two-mass tyres and lumped discs, as the fits identify "
+                  "them) or car (the car's own gas-and-rim tyres, their rims and TPMS readings, "
+                  "and surface-and-bulk discs: gas temperature and hot pressure estimated)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"paper", "car"}));
   sub->add_flag("--p5-scale", a->run.p5_scale,
                 "Also estimate a slowly drifting factor on p5 (tread-carcass conductance)");
   sub->add_option("--sensor-lag-s", a->run.sensor_lag_s,

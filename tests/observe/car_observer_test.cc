@@ -347,13 +347,23 @@ TEST(CarObserverTest, TheP5StateFindsAConductanceTheCarFileHasWrong) {
 }
 
 TEST(CarObserverTest, EstimateColumnsAndRowAgree) {
-  const std::vector<std::string> names = EstimateColumns(false);
+  CarObserver observer(Gen7(), DefaultConfig());
+  const std::vector<std::string> names = EstimateColumns(observer);
   EXPECT_EQ(names.size(), 1u + 4u * 10u);
   EXPECT_EQ(names[0], "time_s");
   EXPECT_EQ(names[3], "carcass_temp_fl_C");
   EXPECT_EQ(names[4], "carcass_temp_fl_sd_C");
-  EXPECT_EQ(EstimateColumns(true).size(), 1u + 4u * 12u);
-  CarObserver observer(Gen7(), DefaultConfig());
+  ObserverConfig with_p5 = DefaultConfig();
+  with_p5.p5_scale.estimate = true;
+  EXPECT_EQ(EstimateColumns(CarObserver(Gen7(), with_p5)).size(), 1u + 4u * 12u);
+  // The car's own models: rim, disc bulk, gas and pressure with their bands at every corner.
+  CarObserver car(Gen7(), DefaultConfig(), {}, ObservedModels::kCar);
+  const std::vector<std::string> car_names = EstimateColumns(car);
+  EXPECT_EQ(car_names.size(), 1u + 4u * 18u);
+  EXPECT_EQ(car_names[17], "pressure_fl_kPa");
+  EXPECT_EQ(car_names[18], "pressure_fl_sd_kPa");
+  car.Step(Samples(TwoLaps())[0]);
+  EXPECT_EQ(EstimateRow(car).size(), car_names.size());
   observer.Step(Samples(TwoLaps())[0]);
   const std::vector<double> row = EstimateRow(observer);
   ASSERT_EQ(row.size(), names.size());

@@ -14,6 +14,10 @@ std::string_view SensorQuantity(Sensor s) {
       return "disc_temp";
     case Sensor::kCalliper:
       return "calliper_temp";
+    case Sensor::kPressure:
+      return "pressure";
+    case Sensor::kGasTemp:
+      return "gas_temp";
   }
   return "";
 }

@@ -18,10 +18,12 @@
 namespace hotlap::observe {
 
 /// The measured channels the observer reads.
-enum class Sensor { kTread, kDisc, kCalliper };
-inline constexpr std::array<Sensor, 3> kAllSensors = {Sensor::kTread, Sensor::kDisc,
-                                                      Sensor::kCalliper};
-/// "tread_temp", "disc_temp", "calliper_temp": the telemetry quantity of the sensor.
+/// The temperature sensors, then the TPMS's (read where the car's own models are observed).
+enum class Sensor { kTread, kDisc, kCalliper, kPressure, kGasTemp };
+inline constexpr std::array<Sensor, 5> kAllSensors = {
+    Sensor::kTread, Sensor::kDisc, Sensor::kCalliper, Sensor::kPressure, Sensor::kGasTemp};
+/// "tread_temp", "disc_temp", "calliper_temp", "pressure", "gas_temp": the telemetry quantity
+/// of the sensor.
 std::string_view SensorQuantity(Sensor s);
 
 /// The two-sided 95% bounds of the mean of n independent chi-square(1) values, i.e. of

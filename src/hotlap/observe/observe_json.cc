@@ -30,6 +30,16 @@ nlohmann::json CornerJson(const CarObserver& observer, Corner c) {
     j["p5_scale"] = Num(e.p5_scale);
     j["p5_scale_sd"] = Num(e.p5_scale_sd);
   }
+  if (e.has_gas) {
+    j["rim_temp_C"] = Num(KelvinToCelsius(e.rim_temp));
+    j["rim_temp_sd_C"] = Num(e.rim_temp_sd);
+    j["disc_bulk_temp_C"] = Num(KelvinToCelsius(e.disc_bulk_temp));
+    j["disc_bulk_temp_sd_C"] = Num(e.disc_bulk_temp_sd);
+    j["gas_temp_C"] = Num(KelvinToCelsius(e.gas_temp));
+    j["gas_temp_sd_C"] = Num(e.gas_temp_sd);
+    j["pressure_kPa"] = Num(1e-3 * e.pressure);
+    j["pressure_sd_kPa"] = Num(1e-3 * e.pressure_sd);
+  }
   j["sensors"] = SensorsJson(observer, c);
   return j;
 }
@@ -88,6 +98,7 @@ nlohmann::json ObserveJson(const CarObserver& observer, const vehicle::Car& car,
           {"car", car.name},
           {"overrides", vehicle::OverridesJson(car.overrides)},
           {"noise", config.source},
+          {"models", observer.models() == ObservedModels::kCar ? "car" : "paper"},
           {"p5_scale_estimated", config.p5_scale.estimate},
           {"sensor_lag_s",
            {{"tread_temp", config.sensor_lag.tread_temp},

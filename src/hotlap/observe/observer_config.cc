@@ -61,6 +61,20 @@ ObserverConfig LoadObserverConfig(const std::filesystem::path& path) {
       k.Number("random_walk_per_sqrt_s", Range::Closed(0.0, 1.0, "1/sqrt(s)"));
   k.Finish();
 
+  if (y.Has("car_models")) {
+    YamlReader m = y.Map("car_models");
+    CarModelsNoise n;
+    n.rim_temp = m.Number("rim_temp_K2_per_s", Range::NonNegative("K^2/s"));
+    n.disc_bulk_temp = m.Number("disc_bulk_temp_K2_per_s", Range::NonNegative("K^2/s"));
+    n.rim_temp_sd = m.Number("rim_temp_sd_C", Range::Positive("C"));
+    n.disc_bulk_temp_sd = m.Number("disc_bulk_temp_sd_C", Range::Positive("C"));
+    n.pressure_sd = 1e3 * m.Number("tpms_pressure_sd_kPa", Range::Positive("kPa"));
+    n.gas_temp_sd = m.Number("tpms_gas_temp_sd_C", Range::Positive("C"));
+    n.tpms_lag_s = m.Number("tpms_tau_s", Range::Closed(1e-3, 60.0, "s"));
+    m.Finish();
+    c.car_models = n;
+  }
+
   YamlReader g = y.Map("gate");
   c.gate_sigma = g.Number("innovation_sigma", Range::Closed(1.0, 1e3, "sigma"));
   g.Finish();

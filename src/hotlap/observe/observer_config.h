@@ -7,6 +7,7 @@
 
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace hotlap::observe {
@@ -54,6 +55,19 @@ struct SensorLag {
   double calliper_temp = 0.0;
 };
 
+/// What observing the car's own models needs beyond the paper's (`hotlap observe --models car`:
+/// the gas-and-rim tyre with its rim and the surface-and-bulk disc, wheel_filter.h): the rim's and
+/// the disc bulk's process noise and starting uncertainty, and the TPMS sensors' noise and lag.
+struct CarModelsNoise {
+  double rim_temp = 0.0;           ///< process noise, K^2/s
+  double disc_bulk_temp = 0.0;     ///< process noise, K^2/s
+  double rim_temp_sd = 0.0;        ///< starting sd, K
+  double disc_bulk_temp_sd = 0.0;  ///< starting sd, K
+  double pressure_sd = 0.0;        ///< TPMS pressure sd, Pa
+  double gas_temp_sd = 0.0;        ///< TPMS gas temperature sd, K
+  double tpms_lag_s = 0.0;         ///< the TPMS sensors' first-order time constant, s (> 0)
+};
+
 struct ObserverConfig {
   std::string name;
   std::filesystem::path path;  ///< the file it was read from (empty if built in code)
@@ -62,6 +76,8 @@ struct ObserverConfig {
   InitialSd initial_sd;
   SensorLag sensor_lag;  ///< optional `sensor_lag` section; zero without it
   P5Scale p5_scale;
+  /// The optional `car_models` section (needed to observe the car's own models).
+  std::optional<CarModelsNoise> car_models;
   double gate_sigma = 5.0;        ///< readings with |innovation| > gate_sigma sqrt(S) are rejected
   double window_s = 2.0;          ///< time constant of the monitor's running mean NIS, s
   double disagree_nis = 9.0;      ///< running mean NIS above which model and car disagree

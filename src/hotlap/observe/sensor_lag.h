@@ -24,6 +24,31 @@
 
 namespace hotlap::observe {
 
+/// The joint Kalman update of states `x` and lagging sensors (means y, cross-covariance X with
+/// the states, covariance Y) with a reading `z` of sensor j of variance r: rejected (nothing
+/// changed) beyond the gate. Returns as UpdateScalar.
+template <class Outcome, class G, class Y, class X, class C>
+Outcome LaggedUpdate(G& x, Y& y, X& cross, C& cov, int j, double z, double r, double gate_nis) {
+  Outcome out;
+  const double s = cov(j, j) + r;
+  out.innovation = z - y(j);
+  out.nis = out.innovation * out.innovation / s;
+  if (!(out.nis <= gate_nis)) {
+    out.rejected = true;
+    return out;
+  }
+  const auto kx = (cross.col(j) / s).eval();
+  const auto ky = (cov.col(j) / s).eval();
+  x.mean += kx * out.innovation;
+  y += ky * out.innovation;
+  x.cov.noalias() -= (s * kx) * kx.transpose();
+  cross.noalias() -= (s * kx) * ky.transpose();
+  cov.noalias() -= (s * ky) * ky.transpose();
+  cov(j, j) = std::max(cov(j, j), 0.0);
+  out.used = true;
+  return out;
+}
+
 template <int N, int M>
 class SensorLags {
  public:
@@ -92,24 +117,7 @@ class SensorLags {
   /// sensors; rejected (nothing changed) beyond the gate. Returns as UpdateScalar.
   template <class Outcome, class G>
   Outcome Update(G& x, int j, double z, double r, double gate_nis) {
-    Outcome out;
-    const double s = cov_(j, j) + r;
-    out.innovation = z - mean_(j);
-    out.nis = out.innovation * out.innovation / s;
-    if (!(out.nis <= gate_nis)) {
-      out.rejected = true;
-      return out;
-    }
-    const Eigen::Matrix<double, N, 1> kx = cross_.col(j) / s;
-    const Eigen::Matrix<double, M, 1> ky = cov_.col(j) / s;
-    x.mean += kx * out.innovation;
-    mean_ += ky * out.innovation;
-    x.cov.noalias() -= (s * kx) * kx.transpose();
-    cross_.noalias() -= (s * kx) * ky.transpose();
-    cov_.noalias() -= (s * ky) * ky.transpose();
-    cov_(j, j) = std::max(cov_(j, j), 0.0);
-    out.used = true;
-    return out;
+    return LaggedUpdate<Outcome>(x, mean_, cross_, cov_, j, z, r, gate_nis);
   }
 
   /// What sensor j should read now, and that reading's variance without the sensor's noise.

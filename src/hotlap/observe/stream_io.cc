@@ -95,6 +95,8 @@ ObserverSample SampleFromRow(const Telemetry& t, size_t row, const ObserverSampl
     if (t.Has("tread_temp", c)) r.tread_temp = Cell("tread_temp", c);
     if (t.Has("disc_temp", c)) r.disc_temp = Cell("disc_temp", c);
     if (t.Has("calliper_temp", c)) r.calliper_temp = Cell("calliper_temp", c);
+    if (t.Has("pressure", c)) r.pressure = Cell("pressure", c);
+    if (t.Has("gas_temp", c)) r.gas_temp = Cell("gas_temp", c);
   }
   const auto whole_car = [&](const char* quantity, double fallback, double previous) {
     if (!t.Has(quantity)) return fallback;

@@ -55,7 +55,7 @@ struct SynthCheck {
   Coverage nees;
   double disc_missing_fraction = 0.0;  ///< of the disc readings withheld
   /// Mean NIS per corner and sensor (NaN where unread) and whether all lie in their 95% bounds.
-  std::array<std::array<double, 3>, 4> mean_nis{};
+  std::array<std::array<double, kAllSensors.size()>, 4> mean_nis{};
   bool nis_consistent = true;
   int sensors = 0, sensors_consistent = 0;  ///< sensors read, and those within their bounds
   /// The mean NIS of every used reading of every sensor, and its 95% bounds.

@@ -16,6 +16,12 @@ namespace hotlap::runs {
 
 namespace {
 
+observe::ObservedModels ModelsOf(const std::string& models) {
+  if (models == "paper") return observe::ObservedModels::kPaper;
+  if (models == "car") return observe::ObservedModels::kCar;
+  throw InputError(fmt::format("models '{}': 'paper' or 'car'", models));
+}
+
 // Steps the observer through every sample from `first` on, writing each estimate row.
 void ObserveAll(observe::CarObserver& observer, observe::SampleSource& source,
                 std::optional<observe::ObserverSample> sample, observe::LineCsvWriter& writer,
@@ -86,9 +92,9 @@ ObserveRun RunObserve(const vehicle::Car& car, const ObserveRunOptions& o,
   ObserveRun run;
   run.summary.sensor_lag_from =
       ResolveSensorLag(o.sensor_lag_s, source.metadata(), source.name(), config);
-  run.observer = std::make_unique<observe::CarObserver>(car, config, start);
+  run.observer = std::make_unique<observe::CarObserver>(car, config, start, ModelsOf(o.models));
   observe::LineCsvWriter writer(o.out);
-  const std::vector<std::string> columns = observe::EstimateColumns(config.p5_scale.estimate);
+  const std::vector<std::string> columns = observe::EstimateColumns(*run.observer);
   writer.WriteHeader(columns);
   if (hooks.started) hooks.started(columns);
   ObserveAll(*run.observer, source, std::move(first), writer, hooks, run.summary.warnings);

@@ -29,6 +29,9 @@ struct ObserveRunOptions {
   std::string config;          ///< the noise file; "": data/observer/default.yaml
   std::string noise_from_fit;  ///< a fit's JSON summary whose residuals give the sensor noise
   bool p5_scale = false;       ///< also estimate a drifting factor on p5
+  /// "paper" (the paper's two-mass tyres and lumped discs) or "car" (the car's own gas-and-rim
+  /// tyres with their TPMS and surface-and-bulk discs; observe::ObservedModels).
+  std::string models = "paper";
   /// Starting temperatures where the log has none, degC.
   std::optional<double> tread_C, carcass_C, disc_C, calliper_C;
   std::optional<double> sensor_lag_s;       ///< every sensor's time constant, s

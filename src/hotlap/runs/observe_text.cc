@@ -26,6 +26,27 @@ void AppendEstimates(std::string& out, const observe::CarObserver& observer) {
   }
 }
 
+// The car's own models' further states and the gas, where a corner runs them.
+void AppendGas(std::string& out, const observe::CarObserver& observer) {
+  auto it = std::back_inserter(out);
+  bool header = false;
+  for (Corner c : kAllCorners) {
+    if (!observer.observes_gas(c)) continue;
+    if (!header) {
+      fmt::format_to(it, "{:<6} {:>16} {:>18} {:>16} {:>16}\n", "corner", "gas degC",
+                     "hot pressure kPa", "rim degC", "disc bulk degC");
+      header = true;
+    }
+    const observe::CornerEstimate e = observer.Estimate(c);
+    fmt::format_to(
+        it, "{:<6} {:>16} {:>18} {:>16} {:>16}\n", CornerName(c),
+        fmt::format("{:.2f} +- {:.2f}", KelvinToCelsius(e.gas_temp), e.gas_temp_sd),
+        fmt::format("{:.2f} +- {:.2f}", 1e-3 * e.pressure, 1e-3 * e.pressure_sd),
+        fmt::format("{:.2f} +- {:.2f}", KelvinToCelsius(e.rim_temp), e.rim_temp_sd),
+        fmt::format("{:.1f} +- {:.1f}", KelvinToCelsius(e.disc_bulk_temp), e.disc_bulk_temp_sd));
+  }
+}
+
 void AppendConsistency(std::string& out, const observe::CarObserver& observer) {
   auto it = std::back_inserter(out);
   fmt::format_to(it, "{:<6} {:<14} {:>8} {:>8} {:>8} {:>8} {:>9} {:>19} {}\n", "corner", "sensor",
@@ -59,6 +80,7 @@ std::string ObserveRunText(const ObserveRun& run, const vehicle::Car& car) {
                  config.sensor_lag.tread_temp, config.sensor_lag.disc_temp,
                  config.sensor_lag.calliper_temp, s.sensor_lag_from);
   AppendEstimates(out, observer);
+  AppendGas(out, observer);
   AppendConsistency(out, observer);
   fmt::format_to(std::back_inserter(out),
                  "{} disagreement warning(s); wrote {} in {:.3f} s ({:.0f} times real time)\n",
