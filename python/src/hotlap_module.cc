@@ -19,6 +19,7 @@ void BindLog(py::module_& m);
 void BindRace(py::module_& m);
 void BindFe(py::module_& m);
 void BindSynth(py::module_& m);
+void BindObserve(py::module_& m);
 }  // namespace hotlap::python
 
 PYBIND11_MODULE(_hotlap, m) {
@@ -47,4 +48,5 @@ PYBIND11_MODULE(_hotlap, m) {
   hotlap::python::BindRace(m);
   hotlap::python::BindFe(m);
   hotlap::python::BindSynth(m);
+  hotlap::python::BindObserve(m);
 }

@@ -176,3 +176,28 @@ def test_synth_with_tpms_equals_the_command_line(cli, tmp_path):
                                   got["channels"]["tread_temp_fl_C"])
     with pytest.raises(ValueError, match="laps must be >= 1"):
         hotlap.synth(car, track, laps=0)
+
+
+def test_observe_on_the_cars_models_equals_the_command_line(cli, tmp_path):
+    """hotlap.observe writes the command line's estimates and returns them with its summary; on
+    a log whose truth is the car's own models with TPMS, models="car" estimates the gas and the
+    hot pressure and reads the TPMS consistently."""
+    log = tmp_path / "car.csv"
+    cli("synth", "--truth", "car", "--laps", 1, "--rate-hz", 20, "--out", log)
+    cli("observe", "--telemetry", log, "--models", "car", "--out", tmp_path / "cli.csv",
+        "--json", tmp_path / "cli.json")
+    car = hotlap.load_car("gen7")
+    got = hotlap.observe(car, log, tmp_path / "py.csv", models="car")
+    assert (tmp_path / "py.csv").read_text() == (tmp_path / "cli.csv").read_text()
+    expected = read_csv(tmp_path / "cli.csv")
+    for c in ("gas_temp_fl_C", "pressure_rr_kPa", "pressure_rr_sd_kPa", "carcass_temp_fr_C"):
+        # The file holds each value to six significant digits; the arrays hold them whole.
+        np.testing.assert_allclose(got["estimates"][c], expected[c], rtol=1e-5)
+    summary, cli_summary = got["summary"], read_json(tmp_path / "cli.json")
+    assert summary["models"] == cli_summary["models"] == "car"
+    assert summary["corners"]["fr"]["pressure_kPa"] == cli_summary["corners"]["fr"]["pressure_kPa"]
+    assert summary["corners"]["fr"]["sensors"]["pressure"]["consistent"]
+    paper = hotlap.observe(car, log, tmp_path / "paper.csv")["summary"]
+    assert paper["models"] == "paper" and "pressure_kPa" not in paper["corners"]["fr"]
+    with pytest.raises(ValueError, match="'paper' or 'car'"):
+        hotlap.observe(car, log, tmp_path / "x.csv", models="tyre")
