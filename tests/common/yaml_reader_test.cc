@@ -196,6 +196,37 @@ TEST_F(YamlReaderTest, OverridesReplaceNumbersBeforeReading) {
             path.string() + ": field 'mass_kg': x");
 }
 
+// Within a YamlParseCache a file is parsed once: a second read takes the first tree (the file
+// changed on disk in between is not read again), and a read with overrides leaves that tree as
+// the file has it for the next reader.
+TEST_F(YamlReaderTest, ACacheParsesEachFileOnceAndOverridesLeaveItsTreeAlone) {
+  const auto path = Write("mass_kg: 2.5\nouter: {depth_mm: 4}\n");
+  {
+    const YamlParseCache cache;
+    YamlReader first = YamlReader::Load(
+        path, {{"mass_kg", 7.25, "override 'm'"}, {"outer.width_mm", 3.0, "override 'w'", true}});
+    EXPECT_EQ(first.Number("mass_kg", Range::Positive("kg")), 7.25);
+    EXPECT_EQ(first.Map("outer").OptionalNumber("width_mm", Range::Positive("mm")), 3.0);
+    Write("mass_kg: 9\nouter: {depth_mm: 4}\n");  // not read again inside the cache
+    YamlReader second = YamlReader::Load(path);
+    EXPECT_EQ(second.Number("mass_kg", Range::Positive("kg")), 2.5);
+    YamlReader outer = second.Map("outer");
+    EXPECT_FALSE(outer.Has("width_mm"));  // the override did not add it to the tree
+    EXPECT_EQ(outer.Number("depth_mm", Range::Positive("mm")), 4.0);
+    outer.Finish();
+    second.Finish();
+    {
+      const YamlParseCache inner;  // nested: the outer one holds
+      EXPECT_EQ(YamlParseCache::Current(), &cache);
+      EXPECT_EQ(YamlReader::Load(path).Number("mass_kg", Range::Positive("kg")), 2.5);
+    }
+    ASSERT_EQ(cache.parsed().size(), 1u);
+    EXPECT_EQ(cache.parsed()[0], path.lexically_normal());
+  }
+  EXPECT_EQ(YamlParseCache::Current(), nullptr);
+  EXPECT_EQ(YamlReader::Load(path).Number("mass_kg", Range::Positive("kg")), 9.0);
+}
+
 // An optional number the file leaves out: a probe finds it where the reader asks for it, and an
 // override marked add_if_absent puts it into its mapping (which must be there).
 TEST_F(YamlReaderTest, OptionalNumbersLeftOutAreProbedAndCanBeAdded) {

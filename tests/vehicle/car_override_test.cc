@@ -16,6 +16,7 @@
 #include "hotlap/brake/brake_thermal_fields.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
+#include "hotlap/common/yaml_reader.h"
 #include "hotlap/tyre/tyre_thermal_fields.h"
 #include "hotlap/vehicle/car.h"
 #include "test_util.h"
@@ -142,6 +143,35 @@ TEST(CarOverride, CornersSharingAFileGetTheirOwnValues) {
             (std::set<std::string>{"brakes.rl.heat_partition",
                                    "brakes.rl.disc_convection_cholesky_sqrtW_per_K.l11"}));
   EXPECT_EQ(car.brake(Corner::kRearRight).params.heat_partition, 0.95);  // the file's
+}
+
+// Loading a car parses each of its YAML files once, however many corners name one and though
+// the override plan, its optional-number probe and the readers each read them all: every file
+// the load reads is in the cache's list once (it holds each path once, by construction), and the
+// list is the same with overrides that need the probe as without any.
+TEST(CarOverride, LoadingTheCarParsesEachFileOnce) {
+  std::vector<fs::path> plain, overridden;
+  {
+    const YamlParseCache cache;
+    (void)LoadCar(Gen7());
+    plain = cache.parsed();
+  }
+  {
+    const YamlParseCache cache;
+    const Car car = LoadCar(Gen7(), {{"chassis.mass_kg", 1600},
+                                     {"brakes.rl.heat_partition", 0.5},
+                                     {"tyre_forces.rl.rolling_radius_m", 0.36}});
+    EXPECT_EQ(car.brake(Corner::kRearLeft).params.heat_partition, 0.5);
+    EXPECT_EQ(car.brake(Corner::kRearRight).params.heat_partition, 0.95);
+    overridden = cache.parsed();
+  }
+  // The same files (in another order: the plan lists the corners' files before the readers read
+  // the compound), the car file first.
+  const std::set<fs::path> distinct(plain.begin(), plain.end());
+  EXPECT_EQ(distinct, std::set<fs::path>(overridden.begin(), overridden.end()));
+  EXPECT_EQ(plain.front(), Gen7().lexically_normal());
+  EXPECT_EQ(distinct.size(), plain.size());
+  EXPECT_GE(plain.size(), 8u);
 }
 
 // hA = z' L L' z: a factor of 0.5 halves it at every speed and temperature, for the disc and the

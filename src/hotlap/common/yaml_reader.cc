@@ -86,9 +86,11 @@ void CheckYamlKeys(const YAML::Node& root, const fs::path& path) {
 
 namespace {
 
+thread_local YamlParseCache* current_cache = nullptr;
+
 // The file's top-level mapping; InputError if it cannot be read or parsed, or is not a mapping,
 // or has a key that is not a name (CheckYamlKeys).
-YAML::Node ParseFile(const fs::path& path) {
+YAML::Node ParseFileUncached(const fs::path& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) {
     throw InputError(fmt::format("cannot read '{}': no such file", path.string()));
@@ -116,6 +118,38 @@ YAML::Node ParseFile(const fs::path& path) {
   return root;
 }
 
+}  // namespace
+
+struct YamlParseCacheAccess {
+  // The file's tree: the cache's where one is open (parsed on its first read), else parsed now.
+  static YAML::Node Parse(const fs::path& path) {
+    YamlParseCache* cache = current_cache;
+    if (cache == nullptr) return ParseFileUncached(path);
+    const fs::path key = path.lexically_normal();
+    for (size_t i = 0; i < cache->parsed_.size(); ++i) {
+      if (cache->parsed_[i] == key) return cache->trees_[i];
+    }
+    YAML::Node root = ParseFileUncached(path);
+    cache->parsed_.push_back(key);
+    cache->trees_.push_back(root);
+    return root;
+  }
+};
+
+YamlParseCache::YamlParseCache() : outer_(current_cache) {
+  if (current_cache == nullptr) current_cache = this;
+}
+
+YamlParseCache::~YamlParseCache() {
+  if (current_cache == this) current_cache = outer_;
+}
+
+YamlParseCache* YamlParseCache::Current() { return current_cache; }
+
+namespace {
+
+YAML::Node ParseFile(const fs::path& path) { return YamlParseCacheAccess::Parse(path); }
+
 void ListScalars(const YAML::Node& map, const std::string& prefix,
                  std::vector<YamlScalarField>& out) {
   for (const auto& kv : map) {
@@ -139,9 +173,10 @@ std::vector<std::string> Split(const std::string& dotted) {
   }
 }
 
-// Sets the number `o` names in `root` (the file's top-level mapping) to its value, as text the
-// reader parses back to the same double.
-void ApplyOverride(YAML::Node root, const fs::path& path, const YamlOverride& o) {
+// Checks that `o` names a number of `root` (the file's top-level mapping), or an absent one it may
+// add to an existing mapping; the reader reads its value in place of the file's (the tree is not
+// changed: it may be shared, YamlParseCache).
+void CheckOverride(const YAML::Node& root, const fs::path& path, const YamlOverride& o) {
   const std::vector<std::string> parts = Split(o.field);
   YAML::Node node = root;
   std::string walked;
@@ -151,8 +186,7 @@ void ApplyOverride(YAML::Node root, const fs::path& path, const YamlOverride& o)
     const YAML::Node& parent = node;
     const YAML::Node child = parent[part];
     if (!child.IsDefined() && o.add_if_absent && i + 1 == parts.size() && parent.IsMap()) {
-      node[part] = fmt::format("{}", o.value);  // an optional number the file leaves out
-      return;
+      return;  // an optional number the file leaves out
     }
     if (!child.IsDefined()) {
       std::vector<std::string> keys;
@@ -184,7 +218,6 @@ void ApplyOverride(YAML::Node root, const fs::path& path, const YamlOverride& o)
           fmt::format("{}: {}: field '{}' holds '{}', not a number: only numbers can be overridden",
                       o.label, path.string(), here, child.Scalar()));
     }
-    node[part] = fmt::format("{}", o.value);  // shortest text that reads back as this double
   }
 }
 
@@ -217,7 +250,7 @@ YamlReader YamlReader::Load(const fs::path& path, std::vector<YamlOverride> over
                                      path.string(), overrides[i].field, overrides[k].label));
       }
     }
-    ApplyOverride(root, path, overrides[i]);
+    CheckOverride(root, path, overrides[i]);
   }
   return YamlReader(root, path, "",
                     std::make_shared<const std::vector<YamlOverride>>(std::move(overrides)));
@@ -241,7 +274,18 @@ void YamlReader::Fail(std::string_view key, const std::string& message) const {
   throw InputError(OverridePrefix(prefix_ + std::string(key)) + Where(key) + ": " + message);
 }
 
-bool YamlReader::Has(std::string_view key) const { return node_[std::string(key)].IsDefined(); }
+const YamlOverride* YamlReader::OverrideOf(std::string_view key) const {
+  if (!overrides_) return nullptr;
+  const std::string path = prefix_ + std::string(key);
+  for (const YamlOverride& o : *overrides_) {
+    if (o.field == path) return &o;
+  }
+  return nullptr;
+}
+
+bool YamlReader::Has(std::string_view key) const {
+  return node_[std::string(key)].IsDefined() || OverrideOf(key) != nullptr;
+}
 
 void YamlReader::FailMissing(std::string_view key, const std::string& expected) const {
   std::vector<std::string> unread;
@@ -262,7 +306,12 @@ void YamlReader::FailMissing(std::string_view key, const std::string& expected) 
 }
 
 YAML::Node YamlReader::Get(std::string_view key) {
-  YAML::Node value = node_[std::string(key)];
+  if (const YamlOverride* o = OverrideOf(key)) {
+    read_keys_.emplace_back(key);
+    return YAML::Node(fmt::format("{}", o->value));  // shortest text that reads back as the value
+  }
+  const YAML::Node& node = node_;  // const: a read never adds to the (perhaps shared) tree
+  YAML::Node value = node[std::string(key)];
   if (!value.IsDefined()) FailMissing(key, "required");
   read_keys_.emplace_back(key);
   return value;
@@ -377,6 +426,18 @@ void YamlReader::Finish() const {
     const std::string k = kv.first.as<std::string>();
     if (std::find(read_keys_.begin(), read_keys_.end(), k) == read_keys_.end())
       unknown.push_back(k);
+  }
+  // An override that adds a field this mapping's reader never took is unknown too.
+  if (overrides_) {
+    for (const YamlOverride& o : *overrides_) {
+      if (!o.field.starts_with(prefix_)) continue;
+      const std::string k = o.field.substr(prefix_.size());
+      if (k.find('.') != std::string::npos) continue;
+      const auto known = [&](const std::vector<std::string>& keys) {
+        return std::find(keys.begin(), keys.end(), k) != keys.end();
+      };
+      if (!known(read_keys_) && !known(unknown)) unknown.push_back(k);
+    }
   }
   if (unknown.empty()) return;
   std::string message =

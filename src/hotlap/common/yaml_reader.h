@@ -86,6 +86,30 @@ class YamlOptionalNumberProbe {
   YamlOptionalNumberProbe* outer_;
 };
 
+/// While one lives on a thread, every YAML file read on that thread (YamlReader::Load,
+/// ListYamlScalars) is parsed once: a second read of the same path takes the tree parsed first.
+/// Nothing changes a parsed tree (overrides are applied as the reader reads, not written into
+/// it), so one tree serves every reader of its file, with or without overrides. Caches nest (the
+/// outermost one holds the trees). Loading a car opens one (vehicle::LoadCar), so its files, which
+/// the override keys, the optional-number probe and the readers all read, are each parsed once.
+class YamlParseCache {
+ public:
+  YamlParseCache();
+  ~YamlParseCache();
+  YamlParseCache(const YamlParseCache&) = delete;
+  YamlParseCache& operator=(const YamlParseCache&) = delete;
+  /// The outermost cache of this thread, or null.
+  static YamlParseCache* Current();
+  /// The files parsed through this cache so far, each once, in the order first read.
+  const std::vector<std::filesystem::path>& parsed() const { return parsed_; }
+
+ private:
+  friend struct YamlParseCacheAccess;
+  std::vector<std::filesystem::path> parsed_;
+  std::vector<YAML::Node> trees_;  // by parsed_'s index
+  YamlParseCache* outer_;
+};
+
 /// One scalar of a YAML file: its dotted path through the file's mappings (lists are not
 /// entered), its text, and whether that text reads as a number (as YamlReader reads numbers).
 struct YamlScalarField {
@@ -113,12 +137,13 @@ class YamlReader {
  public:
   /// Parses `path`; InputError if it cannot be read or parsed, or is not a mapping.
   static YamlReader Load(const std::filesystem::path& path);
-  /// Parses `path` and replaces the numbers `overrides` name, each of which must be a number in
-  /// the file (InputError starting with its label otherwise: a field the file does not have, with
-  /// the closest ones it has; a text value; a mapping; a field given twice). The getters then
-  /// check the new values as the file's own, and every message about an overridden field starts
-  /// with that override's label (about another field of a file with overrides: with all their
-  /// labels, as a check across fields may fail because of one).
+  /// Parses `path` and reads the numbers `overrides` name in place of the file's, each of which
+  /// must be a number in the file (InputError starting with its label otherwise: a field the file
+  /// does not have, with the closest ones it has; a text value; a mapping; a field given twice)
+  /// or an absent one it may add (YamlOverride::add_if_absent). The getters then check the new
+  /// values as the file's own (the parsed tree itself is not changed), and every message about an
+  /// overridden field starts with that override's label (about another field of a file with
+  /// overrides: with all their labels, as a check across fields may fail because of one).
   static YamlReader Load(const std::filesystem::path& path, std::vector<YamlOverride> overrides);
 
   /// Required number within `range`.
@@ -156,6 +181,8 @@ class YamlReader {
   // were applied; "" otherwise.
   std::string OverridePrefix(const std::string& path) const;
   YAML::Node Get(std::string_view key);  // marks as read; fails if missing
+  // The override of the field `key` of this mapping, or null.
+  const YamlOverride* OverrideOf(std::string_view key) const;
   [[noreturn]] void FailMissing(std::string_view key, const std::string& expected) const;
   double ToNumber(const YAML::Node& node, std::string_view key) const;
   void CheckRange(double value, std::string_view key, const Range& range) const;

@@ -59,6 +59,9 @@ void CoupleCorners(const YamlReader& y, Car& car) {
 Car LoadCar(const std::filesystem::path& path) { return LoadCar(path, {}); }
 
 Car LoadCar(const std::filesystem::path& path, const std::vector<CarOverride>& overrides) {
+  // Each file parsed once: the override plan, its optional-number probe and the readers below
+  // all read the same trees.
+  const YamlParseCache cache;
   const CarOverridePlan plan = PlanCarOverrides(path, overrides);
   YamlReader y = YamlReader::Load(path, plan.car);
   Car car;

@@ -207,6 +207,7 @@ std::vector<CarOverride> ParseCarOverrides(const std::vector<std::string>& texts
 std::string OverrideText(const CarOverride& o) { return fmt::format("{}={}", o.key, o.value); }
 
 std::vector<std::string> OverrideKeys(const fs::path& path) {
+  const YamlParseCache cache;  // each file parsed once (the probe reads them all again)
   std::vector<Target> targets = CarTargets(path);
   const std::vector<Target> optional = AbsentOptionalTargets(path, targets);
   targets.insert(targets.end(), optional.begin(), optional.end());
