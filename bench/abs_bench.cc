@@ -9,10 +9,10 @@
 
 #include <filesystem>
 
-#include "hotlap/sim/abs_config.h"
-#include "hotlap/sim/abs_metrics.h"
-#include "hotlap/sim/abs_plant.h"
-#include "hotlap/sim/abs_run.h"
+#include "hotlap/abs/abs_config.h"
+#include "hotlap/abs/abs_metrics.h"
+#include "hotlap/abs/abs_plant.h"
+#include "hotlap/abs/abs_run.h"
 
 namespace {
 

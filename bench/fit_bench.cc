@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "hotlap/common/data_path.h"
-#include "hotlap/common/telemetry.h"
 #include "hotlap/ident/tyre_thermal_fit.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/sim/replay_io.h"
 #include "hotlap/sim/road.h"
 #include "hotlap/sim/synth.h"

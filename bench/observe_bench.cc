@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/observe/car_observer.h"
 #include "hotlap/observe/observer_config.h"
 #include "hotlap/observe/synth_check.h"

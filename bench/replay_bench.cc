@@ -9,7 +9,7 @@
 
 #include <filesystem>
 
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/sim/replay.h"
 #include "hotlap/sim/replay_io.h"
 #include "hotlap/tyre/tyre_thermal.h"

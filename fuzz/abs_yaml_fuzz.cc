@@ -5,8 +5,8 @@
 #include <cstdint>
 
 #include "fuzz_input.h"
+#include "hotlap/abs/abs_config.h"
 #include "hotlap/common/error.h"
-#include "hotlap/sim/abs_config.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   namespace fuzz = hotlap::fuzz;

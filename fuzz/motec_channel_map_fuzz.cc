@@ -6,7 +6,7 @@
 
 #include "fuzz_input.h"
 #include "hotlap/common/error.h"
-#include "hotlap/common/motec_channel_map.h"
+#include "hotlap/logs/motec_channel_map.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   namespace fuzz = hotlap::fuzz;

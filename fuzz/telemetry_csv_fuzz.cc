@@ -7,7 +7,7 @@
 
 #include "fuzz_input.h"
 #include "hotlap/common/error.h"
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   namespace fuzz = hotlap::fuzz;

@@ -139,7 +139,7 @@ fi
 configure() {
   cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only" -DCMAKE_CXX_COMPILER=clang++ \
-    -DHOTLAP_FUZZ=ON -DHOTLAP_BUILD_TESTS=ON "-DHOTLAP_TEST_AREAS=common;tyre;brake;track;vehicle" \
+    -DHOTLAP_FUZZ=ON -DHOTLAP_BUILD_TESTS=ON "-DHOTLAP_TEST_AREAS=common;logs;tyre;brake;track;vehicle" \
     -DHOTLAP_BUILD_BENCH=OFF -DHOTLAP_BUILD_PYTHON=OFF >/dev/null
 }
 if [ "$which" = "--configure" ]; then

@@ -2,7 +2,7 @@
 # The AddressSanitizer + UndefinedBehaviorSanitizer build and its tests (docs/reliability.md).
 #
 #   bash scripts/sanitize.sh --fast   # CI's part (scripts/test.sh --sanitize-fast, after the tests):
-#                                     # Clang build in build-fuzz of the reader areas (common, tyre,
+#                                     # Clang build in build-fuzz of the reader areas (common, logs, tyre,
 #                                     # brake, track, vehicle) and their unit tests, those tests,
 #                                     # then a smoke of 10 CPU seconds of every fuzz target
 #   bash scripts/sanitize.sh --full   # every test (ctest) of an ASan + UBSan build of everything,

@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "hotlap/common/motec_channel_map.h"
-#include "hotlap/common/motec_csv.h"
-#include "hotlap/common/motec_ld_writer.h"
+#include "hotlap/logs/motec_channel_map.h"
+#include "hotlap/logs/motec_csv.h"
+#include "hotlap/logs/motec_ld_writer.h"
 #include "test_util.h"
 
 namespace hotlap::test {

@@ -11,17 +11,17 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "hotlap/abs/abs_config.h"
+#include "hotlap/abs/abs_json.h"
+#include "hotlap/abs/abs_metrics.h"
+#include "hotlap/abs/abs_output.h"
+#include "hotlap/abs/abs_report.h"
+#include "hotlap/abs/abs_run.h"
+#include "hotlap/abs/abs_scenarios.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/json_output.h"
 #include "hotlap/common/output_folder.h"
 #include "hotlap/common/units.h"
-#include "hotlap/sim/abs_config.h"
-#include "hotlap/sim/abs_json.h"
-#include "hotlap/sim/abs_metrics.h"
-#include "hotlap/sim/abs_output.h"
-#include "hotlap/sim/abs_report.h"
-#include "hotlap/sim/abs_run.h"
-#include "hotlap/sim/abs_scenarios.h"
 
 namespace hotlap::app {
 

@@ -15,11 +15,11 @@
 #include "hotlap/common/error.h"
 #include "hotlap/common/json_output.h"
 #include "hotlap/common/output_folder.h"
-#include "hotlap/common/telemetry.h"
 #include "hotlap/ident/fit_log.h"
 #include "hotlap/ident/fit_run.h"
 #include "hotlap/ident/fit_run_json.h"
 #include "hotlap/ident/fit_run_report.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/runs/fit_run.h"
 
 namespace hotlap::app {

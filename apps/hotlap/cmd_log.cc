@@ -10,10 +10,10 @@
 
 #include "commands.h"
 #include "hotlap/common/json_output.h"
-#include "hotlap/common/log_info.h"
-#include "hotlap/common/log_table.h"
 #include "hotlap/common/output_folder.h"
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/log_info.h"
+#include "hotlap/logs/log_table.h"
+#include "hotlap/logs/telemetry.h"
 
 namespace hotlap::app {
 

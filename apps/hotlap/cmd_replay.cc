@@ -13,7 +13,7 @@
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/json_output.h"
 #include "hotlap/common/output_folder.h"
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/runs/replay_run.h"
 #include "hotlap/sim/replay_report.h"
 

@@ -6,7 +6,7 @@
 
 #include "hotlap/common/csv.h"
 #include "hotlap/common/error.h"
-#include "hotlap/common/lap_select.h"
+#include "hotlap/logs/lap_select.h"
 
 namespace hotlap::python {
 

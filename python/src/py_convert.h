@@ -12,7 +12,7 @@
 #include <pybind11/pybind11.h>
 #include <nlohmann/json.hpp>
 
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 
 namespace hotlap::python {
 

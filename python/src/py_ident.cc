@@ -15,11 +15,11 @@
 
 #include "hotlap/common/corner.h"
 #include "hotlap/common/error.h"
-#include "hotlap/common/telemetry.h"
 #include "hotlap/ident/car_log_fit.h"
 #include "hotlap/ident/channel_fit.h"
 #include "hotlap/ident/fit_run.h"
 #include "hotlap/ident/fit_run_json.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/runs/fit_run.h"
 #include "hotlap/vehicle/car.h"
 #include "py_convert.h"

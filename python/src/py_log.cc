@@ -9,9 +9,9 @@
 #include <pybind11/stl.h>
 
 #include "hotlap/common/error.h"
-#include "hotlap/common/log_info.h"
-#include "hotlap/common/log_table.h"
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/log_info.h"
+#include "hotlap/logs/log_table.h"
+#include "hotlap/logs/telemetry.h"
 #include "py_convert.h"
 
 namespace hotlap::python {

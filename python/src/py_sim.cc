@@ -12,7 +12,7 @@
 
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/error.h"
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/runs/lap_run.h"
 #include "hotlap/runs/replay_run.h"
 #include "hotlap/sim/lap_json.h"

@@ -11,7 +11,7 @@
 
 #include "apps/run_hotlap.h"
 #include "hotlap/common/csv.h"
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 #include "motec_ld_fixture.h"
 #include "test_util.h"
 

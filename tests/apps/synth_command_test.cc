@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 #include "test_util.h"
 
 namespace {

@@ -13,8 +13,8 @@
 
 #include "apps/run_hotlap.h"
 #include "hotlap/common/csv.h"
-#include "hotlap/common/telemetry.h"
 #include "hotlap/common/units.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/track/track_io.h"
 #include "test_util.h"
 

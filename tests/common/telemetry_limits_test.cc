@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "hotlap/common/error.h"
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 #include "test_util.h"
 
 namespace hotlap {

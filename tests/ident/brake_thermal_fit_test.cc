@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "fit_test_util.h"
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/sim/replay_io.h"
 
 namespace hotlap::ident {

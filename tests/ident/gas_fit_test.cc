@@ -13,10 +13,10 @@
 #include <gtest/gtest.h>
 
 #include "fit_test_util.h"
-#include "hotlap/common/telemetry.h"
 #include "hotlap/ident/car_log_fit.h"
 #include "hotlap/ident/fitted_car.h"
 #include "hotlap/ident/tyre_thermal_fit.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/tyre/tyre_thermal_fields.h"
 
 namespace hotlap::ident {

@@ -14,10 +14,10 @@
 #include <gtest/gtest.h>
 
 #include "fit_test_util.h"
-#include "hotlap/common/telemetry.h"
 #include "hotlap/ident/brake_thermal_fit.h"
 #include "hotlap/ident/contact_length_fit.h"
 #include "hotlap/ident/tyre_thermal_fit.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/sim/replay_io.h"
 
 namespace hotlap::ident {

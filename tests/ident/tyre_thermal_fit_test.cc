@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "fit_test_util.h"
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/sim/replay_io.h"
 #include "hotlap/sim/synth_sensor.h"
 

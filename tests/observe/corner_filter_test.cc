@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/observe/car_observer.h"
 #include "hotlap/observe/observer_config.h"
 #include "hotlap/sim/replay.h"

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "hotlap/common/data_path.h"
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/sim/replay.h"
 #include "hotlap/sim/replay_io.h"
 #include "hotlap/vehicle/car.h"

@@ -15,8 +15,8 @@
 
 #include "hotlap/common/data_path.h"
 #include "hotlap/common/error.h"
-#include "hotlap/common/telemetry.h"
 #include "hotlap/common/units.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/sim/replay_io.h"
 #include "test_util.h"
 

@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "hotlap/common/error.h"
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/sim/replay_io.h"
 #include "hotlap/sim/synth_sensor.h"
 #include "ident/fit_test_util.h"

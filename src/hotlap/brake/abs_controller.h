@@ -8,7 +8,7 @@
 /// the sensors read; apply the returned pressure target through the hydraulics
 /// (brake_hydraulics.h). The controller knows nothing of the tyre, the wheel or the road: it sees
 /// the vehicle speed, the wheel speed and the driver's pressure, and commands a wheel-cylinder
-/// pressure. The same controller therefore drives the quarter-car plant (sim/abs_plant.h) and,
+/// pressure. The same controller therefore drives the quarter-car plant (abs/abs_plant.h) and,
 /// later, the finite-element tyre.
 ///
 ///   brake::AbsController abs(params);

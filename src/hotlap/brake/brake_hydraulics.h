@@ -8,7 +8,7 @@
 ///   T_brake = k_T max(p, 0)
 ///
 /// T_brake is the brake's friction-torque capacity: it opposes the wheel's spin, and on a stopped
-/// wheel holds it up to that torque (sim/abs_plant.h).
+/// wheel holds it up to that torque (abs/abs_plant.h).
 ///
 /// How to use: the delay lives in PressureDelayLine (one entry per controller tick, so the delay
 /// is a whole number of controller periods); CalcPressureRate is the right-hand side an

@@ -6,7 +6,7 @@
 /// How to use: ReadCsv() gives a column-major table of doubles in which NaN marks an empty cell
 /// ("not measured"); every other problem (a ragged row, `nan`, `inf`, text that is not a number,
 /// a duplicate header name) is an InputError naming the file, the line and the column. This layer
-/// knows nothing about column names or units; hotlap/common/telemetry.h adds those.
+/// knows nothing about column names or units; hotlap/logs/telemetry.h adds those.
 ///
 /// Pitfalls: the values are stored as `values[column][row]`, not row-major; NaN in a read table
 /// always means an empty cell, never a `nan` in the file (that is rejected).

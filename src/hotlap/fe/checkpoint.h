@@ -41,7 +41,7 @@ namespace hotlap::fe {
 /// 3: the braking step's largest cord strain so far (and the stable step of the directional cord
 /// bound, so a version-2 file's time step would not match anyway). 4: the solver's state and the
 /// TyreRun's whole, each field behind its name (field_io.h), the rim's settings with them.
-/// 5: the ABS wheel-speed sensor's sums over the controller period (sim/fe_abs_torque.h).
+/// 5: the ABS wheel-speed sensor's sums over the controller period (abs/fe_abs_torque.h).
 /// 6: the ABS wheel-speed filter's state (brake/wheel_speed_filter.h).
 inline constexpr std::uint32_t kCheckpointVersion = 6;
 

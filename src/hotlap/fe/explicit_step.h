@@ -59,7 +59,7 @@ struct StepOptions {
   ElementKernel kernel = BestElementKernel();
   /// The rim's force and torque are summed over its nodes starting at this index of
   /// mesh.rim_nodes (modulo their count) and wrapping round: another summation order, the same
-  /// sum to round-off (an ensemble's perturbation, sim/fe_perturbation.h; 0 is the plain order).
+  /// sum to round-off (an ensemble's perturbation, abs/fe_perturbation.h; 0 is the plain order).
   int rim_sum_rotation = 0;
 
   static constexpr int kElementsPerThread = 1000;

@@ -2,7 +2,7 @@
 /// @file
 /// The FE/ABS paper's steps on the generated tyre (002 §2.1): inflation, the static footprint,
 /// free rolling and a braking event whose torque a callback sets (the ABS controller lives above
-/// this layer, in sim/fe_abs_stop.h). One TyreRun carries the state from each step into the next.
+/// this layer, in abs/fe_abs_stop.h). One TyreRun carries the state from each step into the next.
 ///
 ///   fe::TyreRun run(config);
 ///   const fe::InflateResult inf = run.Inflate(hooks);

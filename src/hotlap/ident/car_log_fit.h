@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "hotlap/common/corner.h"
-#include "hotlap/common/telemetry.h"
 #include "hotlap/ident/channel_fit.h"
 #include "hotlap/ident/fitted_car.h"
 #include "hotlap/ident/log_fit.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/sim/replay_io.h"
 #include "hotlap/vehicle/car.h"
 

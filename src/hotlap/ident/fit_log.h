@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "hotlap/common/corner.h"
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/sim/replay.h"
 #include "hotlap/sim/sampled_inputs.h"
 

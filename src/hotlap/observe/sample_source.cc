@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
-#include "hotlap/common/log_table.h"
+#include "hotlap/logs/log_table.h"
 
 namespace hotlap::observe {
 

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/observe/stream_io.h"
 
 namespace hotlap::observe {

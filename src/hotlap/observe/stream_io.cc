@@ -14,8 +14,8 @@
 #include "hotlap/common/csv.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/json_output.h"
-#include "hotlap/common/telemetry.h"
 #include "hotlap/common/yaml_reader.h"
+#include "hotlap/logs/telemetry.h"
 
 namespace hotlap::observe {
 

@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/observe/car_observer.h"
 
 namespace hotlap::observe {

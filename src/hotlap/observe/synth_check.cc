@@ -5,8 +5,8 @@
 #include <string>
 
 #include "hotlap/common/error.h"
-#include "hotlap/common/telemetry.h"
 #include "hotlap/common/units.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/sim/synth_sensor.h"
 
 namespace hotlap::observe {

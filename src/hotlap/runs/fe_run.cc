@@ -6,6 +6,14 @@
 
 #include <fmt/format.h>
 
+#include "hotlap/abs/abs_config.h"
+#include "hotlap/abs/abs_metrics.h"
+#include "hotlap/abs/abs_run.h"
+#include "hotlap/abs/fe_abs_ensemble.h"
+#include "hotlap/abs/fe_abs_ensemble_report.h"
+#include "hotlap/abs/fe_abs_json.h"
+#include "hotlap/abs/fe_abs_report.h"
+#include "hotlap/abs/fe_abs_stop.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/json_output.h"
 #include "hotlap/common/output_folder.h"
@@ -15,14 +23,6 @@
 #include "hotlap/fe/step_output.h"
 #include "hotlap/fe/tyre_steps.h"
 #include "hotlap/fe/vtu_writer.h"
-#include "hotlap/sim/abs_config.h"
-#include "hotlap/sim/abs_metrics.h"
-#include "hotlap/sim/abs_run.h"
-#include "hotlap/sim/fe_abs_ensemble.h"
-#include "hotlap/sim/fe_abs_ensemble_report.h"
-#include "hotlap/sim/fe_abs_json.h"
-#include "hotlap/sim/fe_abs_report.h"
-#include "hotlap/sim/fe_abs_stop.h"
 
 namespace hotlap::runs {
 

@@ -17,8 +17,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hotlap/abs/fe_perturbation.h"
 #include "hotlap/fe/element_kernel.h"
-#include "hotlap/sim/fe_perturbation.h"
 
 namespace hotlap::runs {
 

@@ -10,9 +10,9 @@
 #include <string>
 
 #include "hotlap/common/corner.h"
-#include "hotlap/common/telemetry.h"
 #include "hotlap/ident/car_log_fit.h"
 #include "hotlap/ident/fit_run.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/runs/option_name.h"
 #include "hotlap/vehicle/car.h"
 

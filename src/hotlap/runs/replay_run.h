@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/runs/option_name.h"
 #include "hotlap/sim/replay.h"
 #include "hotlap/sim/replay_io.h"

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/sim/replay.h"
 
 namespace hotlap::sim {

@@ -8,7 +8,7 @@
 
 #include "hotlap/common/csv.h"
 #include "hotlap/common/error.h"
-#include "hotlap/common/telemetry.h"
+#include "hotlap/logs/telemetry.h"
 #include "hotlap/sim/sampled_inputs.h"
 #include "hotlap/sim/synth_sensor.h"
 

@@ -1,4 +1,4 @@
-"""Writes the MoTeC i2 CSV fixture and the hotlap CSV of the same numbers (tests/common/motec_csv_test.cc).
+"""Writes the MoTeC i2 CSV fixture and the hotlap CSV of the same numbers (tests/logs/motec_csv_test.cc).
 
 From data/telemetry/darlington_example.csv, every fifth row (10 Hz), rounded as i2 writes them.
 Run from the repository root: /usr/bin/python3 tests/data/motec/make_fixture.py

@@ -1,0 +1,195 @@
+#include "hotlap/abs/fe_abs_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "hotlap/report/html_report.h"
+
+namespace hotlap::sim {
+
+namespace {
+
+report::LineChart TimeChart(const std::string& title, const std::string& label,
+                            const std::string& unit) {
+  return report::LineChart{.title = title,
+                           .x_axis = {.label = "time", .unit = "s"},
+                           .y_axis = {.label = label, .unit = unit},
+                           .x_link = "time"};
+}
+
+// The FE run's channels, sample by sample.
+struct FeChannels {
+  std::vector<double> t, torque, vx, omega_r, slip, fx, balance;
+  std::vector<double> kinetic, internal, friction, external;
+};
+
+FeChannels FeChannelsOf(const std::vector<fe::HistoryRow>& history, double loaded_radius_m) {
+  const size_t n = history.size();
+  FeChannels ch;
+  for (auto* v : {&ch.t, &ch.torque, &ch.vx, &ch.omega_r, &ch.slip, &ch.fx, &ch.balance,
+                  &ch.kinetic, &ch.internal, &ch.friction, &ch.external}) {
+    v->resize(n);
+  }
+  for (size_t k = 0; k < n; ++k) {
+    const fe::HistoryRow& r = history[k];
+    ch.t[k] = r.time_s;
+    ch.torque[k] = r.brake_torque_Nm;
+    ch.vx[k] = r.rim_vx_mps;
+    ch.omega_r[k] = r.spin_rad_per_s * loaded_radius_m;
+    ch.slip[k] = r.slip;
+    ch.fx[k] = r.road_fx_N;
+    ch.kinetic[k] = r.energies.kinetic;
+    ch.internal[k] = r.energies.internal;
+    ch.friction[k] = r.energies.friction;
+    ch.external[k] = r.energies.external_work;
+    ch.balance[k] = r.energies.BalanceError();
+  }
+  return ch;
+}
+
+// The lumped run's channels on the FE histories' clock (its t = 0 is the braking step's start,
+// t0 on the FE clock); empty without a lumped history.
+struct LumpedChannels {
+  std::vector<double> t, torque, vx, omega_r, slip, fx;
+};
+
+LumpedChannels LumpedChannelsOf(const FeAbsLumpedRun* lumped, double t0) {
+  LumpedChannels l;
+  if (lumped == nullptr || lumped->history == nullptr) return l;
+  const AbsHistory& h = *lumped->history;
+  for (size_t k = 0; k < h.size(); ++k) {
+    l.t.push_back(t0 + h.time[k]);
+    l.torque.push_back(-h.brake_torque[k]);
+    l.vx.push_back(h.speed[k]);
+    l.omega_r.push_back(h.wheel_speed[k] * lumped->loaded_radius_m);
+    l.slip.push_back(h.lambda[k]);
+    l.fx.push_back(h.fx[k]);
+  }
+  return l;
+}
+
+// The event and its control cycles in words.
+void AddEventText(report::HtmlReport& page, const FeChannels& ch, const CycleWindow& cycles) {
+  page.AddText(fmt::format("{:.3f} s of braking from {:.3f} m/s to {:.3f} m/s; peak slip {:.3f}.",
+                           ch.t.back() - ch.t.front(), ch.vx.front(), ch.vx.back(),
+                           *std::max_element(ch.slip.begin(), ch.slip.end())));
+  if (cycles.second_cycle_start_s && cycles.fraction_time_lambda_below_0_135) {
+    page.AddText(fmt::format(
+        "{} control cycles ({:.2f} per second from the first). After the first cycle (it ends at "
+        "{:.3f} s, where the controller begins the second) the slip stays below {:.3f} for "
+        "{:.1f}% of the time, at most {:.3f}.",
+        cycles.cycles, cycles.cycles_per_s, *cycles.second_cycle_start_s, kPaperSlipLimit,
+        100.0 * *cycles.fraction_time_lambda_below_0_135,
+        cycles.max_lambda_after_first_cycle.value_or(0.0)));
+  } else {
+    page.AddText(
+        fmt::format("{} control cycle(s): no window after the first cycle.", cycles.cycles));
+  }
+  page.AddText(
+      "The charts follow the FE/ABS paper's Figures 8 to 11 (the paper's Figure 11 draws the "
+      "force and the slip together; here they are the two charts above it and beside it). "
+      "docs/validation/fe-tyre.md says what was compared.");
+}
+
+// The FE run's cycles beside the lumped run's, in time from the braking step's start (t0).
+void AddLumpedText(report::HtmlReport& page, const CycleWindow& cycles,
+                   const FeAbsLumpedRun& lumped, double t0) {
+  const auto opt = [](const std::optional<double>& v, double offset) {
+    return v ? fmt::format("{:.3f}", *v + offset) : std::string("-");
+  };
+  const CycleWindow& c = lumped.cycles;
+  page.AddText(fmt::format(
+      "Beside the lumped `hotlap abs` run of the same event (same controller and hydraulics, "
+      "rigid wheel, brush tyre), time from the braking step's start: first pressure release "
+      "FE {} s, lumped {} s; second cycle FE {} s, lumped {} s; cycles FE {}, lumped {}; slip "
+      "below {:.3f} after the first cycle FE {}, lumped {}; at most FE {}, lumped {}.",
+      opt(cycles.first_cycle_start_s, -t0), opt(c.first_cycle_start_s, 0.0),
+      opt(cycles.second_cycle_start_s, -t0), opt(c.second_cycle_start_s, 0.0), cycles.cycles,
+      c.cycles, kPaperSlipLimit, opt(cycles.fraction_time_lambda_below_0_135, 0.0),
+      opt(c.fraction_time_lambda_below_0_135, 0.0), opt(cycles.max_lambda_after_first_cycle, 0.0),
+      opt(c.max_lambda_after_first_cycle, 0.0)));
+}
+
+// 002's Figures 8 to 11, with the lumped run dotted where there is one.
+void AddBrakingCharts(report::HtmlReport& page, const FeChannels& ch, const LumpedChannels& l) {
+  const std::vector<double>& t = ch.t;
+  const auto add_lumped = [&](report::LineChart& chart, const std::string& label,
+                              const std::vector<double>& y) {
+    if (l.t.empty()) return;
+    chart.series.push_back({.label = label,
+                            .x = l.t,
+                            .y = y,
+                            .colour = "#9c755f",
+                            .style = report::LineStyle::kDotted});
+  };
+  page.AddHeading("Braking event (002 Figures 8 to 11)");
+  report::LineChart fig8 = TimeChart("Brake torque (cf. 002 Fig. 8)", "torque", "N m");
+  fig8.series.push_back({.label = "ABS brake torque", .x = t, .y = ch.torque});
+  add_lumped(fig8, "lumped hotlap abs", l.torque);
+  page.AddLineChart(fig8);
+
+  report::LineChart fig9 =
+      TimeChart("Forward and circumferential speeds (cf. 002 Fig. 9)", "speed", "m/s");
+  fig9.series.push_back({.label = "Vx (rim)", .x = t, .y = ch.vx});
+  fig9.series.push_back(
+      {.label = "omega R_l", .x = t, .y = ch.omega_r, .style = report::LineStyle::kDashed});
+  add_lumped(fig9, "Vx (lumped)", l.vx);
+  add_lumped(fig9, "omega R_l (lumped)", l.omega_r);
+  page.AddLineChart(fig9);
+
+  report::LineChart fig10 = TimeChart("Slip ratio (cf. 002 Fig. 10)", "slip", "");
+  fig10.series.push_back({.label = "slip", .x = t, .y = ch.slip});
+  add_lumped(fig10, "slip (lumped)", l.slip);
+  fig10.series.push_back({.label = "0.135 (002 Fig. 10)",
+                          .x = {t.front(), t.back()},
+                          .y = {kPaperSlipLimit, kPaperSlipLimit},
+                          .colour = "#e15759",
+                          .style = report::LineStyle::kDashed});
+  page.AddLineChart(fig10);
+
+  report::LineChart fig11 =
+      TimeChart("Road longitudinal force (cf. 002 Fig. 11)", "road force Fx", "N");
+  fig11.series.push_back({.label = "road Fx on the tyre", .x = t, .y = ch.fx});
+  add_lumped(fig11, "Fx (lumped)", l.fx);
+  page.AddLineChart(fig11);
+}
+
+void AddEnergyCharts(report::HtmlReport& page, const FeChannels& ch) {
+  const std::vector<double>& t = ch.t;
+  page.AddHeading("Energies");
+  report::LineChart energy = TimeChart("Energies of the braking step", "energy", "J");
+  energy.series.push_back({.label = "kinetic", .x = t, .y = ch.kinetic});
+  energy.series.push_back({.label = "internal (strain)", .x = t, .y = ch.internal});
+  energy.series.push_back({.label = "friction dissipated", .x = t, .y = ch.friction});
+  energy.series.push_back(
+      {.label = "external work", .x = t, .y = ch.external, .style = report::LineStyle::kDashed});
+  page.AddLineChart(energy);
+  report::LineChart error = TimeChart("Energy balance error", "balance error", "J");
+  error.series.push_back({.label = "balance error", .x = t, .y = ch.balance});
+  page.AddLineChart(error);
+}
+
+}  // namespace
+
+void WriteFeAbsReport(const std::filesystem::path& path, const std::vector<fe::HistoryRow>& history,
+                      const CycleWindow& cycles, double loaded_radius_m,
+                      const std::vector<std::pair<std::string, std::string>>& metadata,
+                      const FeAbsLumpedRun* lumped) {
+  if (history.empty()) throw std::invalid_argument("WriteFeAbsReport: empty history");
+  const FeChannels ch = FeChannelsOf(history, loaded_radius_m);
+  report::HtmlReport page("hotlap fe abs: finite-element tyre braking event");
+  for (const auto& [key, value] : metadata) page.AddMetadata(key, value);
+  AddEventText(page, ch, cycles);
+  const LumpedChannels l = LumpedChannelsOf(lumped, ch.t.front());
+  if (lumped != nullptr && lumped->history != nullptr) {
+    AddLumpedText(page, cycles, *lumped, ch.t.front());
+  }
+  AddBrakingCharts(page, ch, l);
+  AddEnergyCharts(page, ch);
+  page.Write(path);
+}
+
+}  // namespace hotlap::sim
