@@ -9,6 +9,7 @@
 #include "hotlap/common/error.h"
 #include "hotlap/sim/hot_pressure.h"
 #include "hotlap/sim/qss_profile.h"
+#include "hotlap/sim/qss_slips.h"
 #include "hotlap/vehicle/slip_inversion.h"
 
 namespace hotlap::sim {
@@ -16,6 +17,15 @@ namespace hotlap::sim {
 namespace {
 
 using vehicle::VehicleParams;
+
+// The cornering drag's fixed point is taken as settled when a profile moves the speeds by less
+// than kSettledSpeed on average, m/s, or the lap time by less than kSettledLapTime, s: each
+// profile moves the lap by about a sixth of the last one's move, the other way, so that the lap
+// time is then within a few tenths of a millisecond of the fixed point's (which the slip solves'
+// 1 N tolerance blurs by about a millisecond). A few points where a braking point moves by a
+// sample keep moving by 0.02-0.04 m/s while the rest settle.
+constexpr double kSettledSpeed = 1e-3;
+constexpr double kSettledLapTime = 1e-3;
 
 void CheckRoad(std::span<const RoadPoint> road) {
   if (road.size() < 16) {
@@ -82,49 +92,6 @@ QssLap SizedLap(size_t n) {
   return lap;
 }
 
-// The last slips solved, each point's first guess at the next.
-struct SlipGuesses {
-  std::array<vehicle::WheelSlips, 2> front{};
-  vehicle::SpoolAxleSolution rear;
-};
-
-// The four wheels' slips that give the demanded forces at one point: the front wheels roll or
-// brake independently, the rear wheels turn together on the spool. Counts a point where they
-// are not reached and keeps the largest force deficit in `lap`.
-std::array<vehicle::WheelSlips, 4> SolvePointSlips(
-    const Prepared& prep, const std::array<vehicle::TyreConditions, 4>& cond,
-    const ForceDemand& demand, SlipGuesses& guess, QssLap& lap) {
-  std::array<vehicle::WheelSlips, 4> slips;
-  bool reached = true;
-  for (Corner c : {Corner::kFrontLeft, Corner::kFrontRight}) {
-    const int k = CornerIndex(c);
-    const vehicle::FreeWheelSolution s = vehicle::SolveFreeWheelSlips(
-        prep.tyres[k], cond[k], demand.fx[k], demand.fy[k], guess.front[k]);
-    slips[k] = s.wheel;
-    guess.front[k] = s.wheel;
-    reached = reached && s.reached;
-    lap.max_force_deficit = std::max({lap.max_force_deficit, std::abs(s.wheel.fx - demand.fx[k]),
-                                      std::abs(s.wheel.fy - demand.fy[k])});
-  }
-  {
-    const int l = CornerIndex(Corner::kRearLeft), r = CornerIndex(Corner::kRearRight);
-    const double fx_total = demand.fx[l] + demand.fx[r];
-    const vehicle::SpoolAxleSolution s =
-        vehicle::SolveSpoolAxleSlips(prep.tyres[l], prep.tyres[r], cond[l], cond[r], demand.fy[l],
-                                     demand.fy[r], fx_total, guess.rear);
-    slips[l] = s.wheels[0];
-    slips[r] = s.wheels[1];
-    guess.rear = s;
-    reached = reached && s.reached;
-    lap.max_force_deficit =
-        std::max({lap.max_force_deficit, std::abs(s.wheels[0].fy - demand.fy[l]),
-                  std::abs(s.wheels[1].fy - demand.fy[r]),
-                  std::abs(s.wheels[0].fx + s.wheels[1].fx - fx_total)});
-  }
-  if (!reached) ++lap.slip_points_not_reached;
-  return slips;
-}
-
 // Close the lap at the start line (point n) with the first sample's channels.
 void CloseLap(QssLap& lap, size_t n, double ds, double track_length, double time) {
   lap.distance[n] = n * ds;
@@ -149,18 +116,22 @@ void CloseLap(QssLap& lap, size_t n, double ds, double track_length, double time
 
 // Channels of one lap from its speed profile: forces, loads, slips (step 3 of qss_lap.h).
 // `cornering_drag`: the profile's coefficients (CalcResistance), one per point; `solved_drag`
-// gets those that the lap's own forces and slip angles give.
+// gets those that the lap's own forces and slip angles give. `slips`: each point's slips, solved
+// along the lap where it comes empty, else updated from what it holds (the last profile's solve,
+// UpdatePointSlips), a point solved afresh kept there.
 QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, double track_length,
                 const SpeedProfile& profile, const std::array<std::vector<double>, 4>& grip,
                 const std::array<std::vector<double>, 4>& tread_temp,
                 std::span<const double> cornering_drag, std::span<const double> rolling,
-                std::vector<double>* solved_drag) {
+                std::vector<double>* solved_drag, std::vector<PointSlips>* slips) {
+  const bool update = slips->size() == road.size();
+  slips->resize(road.size());
   const VehicleParams& p = *prep.params;
   const size_t n = road.size();
   const double ds = road[1].distance - road[0].distance;
   const double m = p.chassis.mass;
   QssLap lap = SizedLap(n);
-  SlipGuesses guess;
+  PointSlips last;  // the last point's, the next one's guess
   double time = 0.0;
   solved_drag->assign(n, 0.0);
   for (size_t i = 0; i < n; ++i) {
@@ -175,15 +146,26 @@ QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, double tr
     const double kappa_g = point.curvature * std::cos(point.bank);
     const double yaw_rate = v * kappa_g;
 
-    std::array<vehicle::TyreConditions, 4> cond;
+    PointTargets targets;
     for (Corner c : kAllCorners) {
       const int k = CornerIndex(c);
       const double y = p.CornerPosition(c)[1];
-      cond[k] = {std::max(demand.fz[k], 1.0), std::max(v - yaw_rate * y, 0.5), tread_temp[k][i],
-                 g[k]};
+      targets.conditions[k] = {std::max(demand.fz[k], 1.0), std::max(v - yaw_rate * y, 0.5),
+                               tread_temp[k][i], g[k]};
+      targets.fx[k] = demand.fx[k];
+      targets.fy[k] = demand.fy[k];
     }
-    const std::array<vehicle::WheelSlips, 4> slips =
-        SolvePointSlips(prep, cond, demand, guess, lap);
+    const std::array<vehicle::TyreConditions, 4>& cond = targets.conditions;
+    PointSlips& point_slips = (*slips)[i];
+    if (update) {
+      last = UpdatePointSlips(prep.tyres, targets, point_slips);
+    } else {
+      last = SolvePointSlips(prep.tyres, targets, last);
+      point_slips = last;
+    }
+    const std::array<vehicle::WheelSlips, 4>& slips_now = last.wheels;
+    lap.max_force_deficit = std::max(lap.max_force_deficit, last.force_deficit);
+    if (!last.Reached()) ++lap.slip_points_not_reached;
 
     lap.distance[i] = point.distance - road[0].distance;
     lap.centre_distance[i] = point.centre_distance;
@@ -194,21 +176,22 @@ QssLap BuildLap(const Prepared& prep, std::span<const RoadPoint> road, double tr
     lap.accel_lat[i] = v * v * kappa_g;
     lap.limit[i] = profile.limit[i];
     // Steady-state kinematics: delta = L kappa + alpha_rear - alpha_front (ISO slip angles).
-    const double alpha_front = 0.5 * (slips[0].slip_angle + slips[1].slip_angle);
-    const double alpha_rear = 0.5 * (slips[2].slip_angle + slips[3].slip_angle);
+    const double alpha_front = 0.5 * (slips_now[0].slip_angle + slips_now[1].slip_angle);
+    const double alpha_rear = 0.5 * (slips_now[2].slip_angle + slips_now[3].slip_angle);
     lap.steer[i] = p.chassis.wheelbase * kappa_g + alpha_rear - alpha_front;
     (*solved_drag)[i] = CalcCorneringDragCoefficient(
-        {slips[0].fy, slips[1].fy, slips[2].fy, slips[3].fy},
-        {slips[0].slip_angle, slips[1].slip_angle, slips[2].slip_angle, slips[3].slip_angle});
+        {slips_now[0].fy, slips_now[1].fy, slips_now[2].fy, slips_now[3].fy},
+        {slips_now[0].slip_angle, slips_now[1].slip_angle, slips_now[2].slip_angle,
+         slips_now[3].slip_angle});
     for (Corner c : kAllCorners) {
       const int k = CornerIndex(c);
       CornerChannels& ch = lap.corners[k];
       ch.speed[i] = cond[k].vx;
-      ch.fx[i] = slips[k].fx;
-      ch.fy[i] = slips[k].fy;
+      ch.fx[i] = slips_now[k].fx;
+      ch.fy[i] = slips_now[k].fy;
       ch.fz[i] = demand.fz[k];
-      ch.slip_angle[i] = slips[k].slip_angle;
-      ch.slip_ratio[i] = slips[k].slip_ratio;
+      ch.slip_angle[i] = slips_now[k].slip_angle;
+      ch.slip_ratio[i] = slips_now[k].slip_ratio;
       // Brakes: each front wheel has its own; the rear wheels share one axle torque on the spool,
       // so each rear disc takes half the axle's braking (the tyres' split is the spool's).
       if (IsFront(c)) {
@@ -329,18 +312,27 @@ QssLap RunPass(const PassContext& x, std::span<const RoadPoint> r,
   if (max_passes <= 1) std::fill(drag.begin(), drag.end(), 0.0);
   SpeedProfile profile = CalcSpeedProfile(prep.qss, r, g, drag, rolling);
   std::vector<double> solved;
-  QssLap lap = BuildLap(prep, r, x.track_length, profile, g, t, drag, rolling, &solved);
+  std::vector<PointSlips> slips;
+  QssLap lap = BuildLap(prep, r, x.track_length, profile, g, t, drag, rolling, &solved, &slips);
+  double last_change = 0.0;  // of the lap time, s
   for (int pass = 1; pass < max_passes; ++pass) {
     drag = solved;
-    SpeedProfile next = CalcSpeedProfile(prep.qss, r, g, drag, rolling);
+    SpeedProfile next = CalcSpeedProfile(prep.qss, r, g, drag, rolling, &profile);
     // The mean change: a few points where the limit switches (a braking point moving by a
     // point) keep moving by 0.02-0.04 m/s while the rest settle.
     double moved = 0.0;
     for (size_t i = 0; i < r.size(); ++i) moved += std::abs(next.speed[i] - profile.speed[i]);
     moved /= static_cast<double>(r.size());
     profile = std::move(next);
-    lap = BuildLap(prep, r, x.track_length, profile, g, t, drag, rolling, &solved);
-    if (moved < 1e-3) break;
+    const double last_time = lap.lap_time;
+    lap = BuildLap(prep, r, x.track_length, profile, g, t, drag, rolling, &solved, &slips);
+    // Settled, or near enough that the moves left (each this one's share of the last, summed)
+    // come to less than half the tolerance.
+    const double change = std::abs(lap.lap_time - last_time);
+    const double share = last_change > 0.0 ? change / last_change : 1.0;
+    const double left = share < 1.0 ? change * share / (1.0 - share) : change;
+    if (moved < kSettledSpeed || change < kSettledLapTime || left < 0.5 * kSettledLapTime) break;
+    last_change = change;
   }
   drag = std::move(solved);
   ReplayInputs inputs;

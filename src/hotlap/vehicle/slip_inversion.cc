@@ -32,6 +32,27 @@ TyreEval Evaluate(const InvertibleTyre& tyre, const TyreConditions& c, double ka
   return {g * f.fx.a, g * f.fy.a, g * f.fx.v[0], g * f.fx.v[1], g * f.fy.v[0], g * f.fy.v[1]};
 }
 
+// Forces only, in double precision (grip factor applied).
+std::array<double, 2> EvaluateForces(const InvertibleTyre& tyre, const TyreConditions& c,
+                                     double kappa, double alpha) {
+  tyre::TyreOperatingPoint<double> op;
+  op.fz = c.fz;
+  op.slip_ratio = kappa;
+  op.slip_angle = alpha;
+  op.camber = tyre.setup->camber;
+  op.speed = c.vx;
+  op.pressure = tyre.setup->pressure;
+  op.tread_temp = c.tread_temp;
+  const tyre::TyreForces<double> f = tyre::CalcTyreForces(tyre.setup->forces, op);
+  return {c.grip_factor * f.fx, c.grip_factor * f.fy};
+}
+
+double FreeWheelTolerance(const TyreConditions& c) { return std::max(1.0, 1e-4 * c.fz); }
+
+double SpoolTolerance(const TyreConditions& l, const TyreConditions& r) {
+  return std::max(1.0, 1e-4 * (l.fz + r.fz));
+}
+
 // Levenberg-Marquardt on n unknowns with bounds (clamped steps). `residual(x, J, extra)` returns
 // r, fills J and whatever the caller keeps per evaluation in `extra`. Returns the number of
 // iterations; x and extra hold the best point's.
@@ -101,7 +122,7 @@ InvertibleTyre::InvertibleTyre(const CornerSetup& corner)
 FreeWheelSolution SolveFreeWheelSlips(const InvertibleTyre& tyre, const TyreConditions& c,
                                       double fx_target, double fy_target, const WheelSlips& guess) {
   using Vec = Eigen::Vector2d;
-  const double tolerance = std::max(1.0, 1e-4 * c.fz);
+  const double tolerance = FreeWheelTolerance(c);
   const auto residual = [&](const Vec& v, Eigen::Matrix2d& jac, TyreEval& e) {
     e = Evaluate(tyre, c, v[0], v[1]);
     jac << e.dfx_dk, e.dfx_da, e.dfy_dk, e.dfy_da;
@@ -116,6 +137,7 @@ FreeWheelSolution SolveFreeWheelSlips(const InvertibleTyre& tyre, const TyreCond
     out.iterations = SolveBounded<2>(x, Vec(-kMaxSlipRatio, -kMaxSlipAngle),
                                      Vec(kMaxSlipRatio, kMaxSlipAngle), tolerance, e, residual);
     out.wheel = {x[0], x[1], e.fx, e.fy};
+    out.jacobian = {e.dfx_dk, e.dfx_da, e.dfy_dk, e.dfy_da};
     out.reached =
         std::abs(e.fx - fx_target) <= tolerance && std::abs(e.fy - fy_target) <= tolerance;
     stable = OnRisingBranch(e);
@@ -152,10 +174,21 @@ SpoolAxleSolution SolveSpoolAxleSlips(const InvertibleTyre& left, const Invertib
   const auto omega_of = [&](double s) { return (1.0 + s) * v_mean / r_mean; };
   double s0 = 0.0;
   if (guess.wheel_speed > 0.0) s0 = guess.wheel_speed * r_mean / v_mean - 1.0;
-  const double tolerance = std::max(1.0, 1e-4 * (cl.fz + cr.fz));
+  const double tolerance = SpoolTolerance(cl, cr);
   const auto kappas = [&](double s) {
     const double omega = omega_of(s);
     return std::array<double, 2>{omega * rl / cl.vx - 1.0, omega * rr / cr.vx - 1.0};
+  };
+  // d kappa_i / d s = (v_mean / r_mean) R_i / vx_i.
+  const double dkl = v_mean / r_mean * rl / cl.vx, dkr = v_mean / r_mean * rr / cr.vx;
+  // Rows: fy_left, fy_right, fx_left, fx_right; columns: s, alpha_left, alpha_right.
+  const auto jacobian = [&](const TyreEval& a, const TyreEval& b) {
+    Eigen::Matrix<double, 4, 3, Eigen::RowMajor> jac;
+    jac << a.dfy_dk * dkl, a.dfy_da, 0.0,  //
+        b.dfy_dk * dkr, 0.0, b.dfy_da,     //
+        a.dfx_dk * dkl, a.dfx_da, 0.0,     //
+        b.dfx_dk * dkr, 0.0, b.dfx_da;
+    return jac;
   };
   const auto residual = [&](const Vec& v, Eigen::Matrix3d& jac, std::array<TyreEval, 2>& ab) {
     const auto k = kappas(v[0]);
@@ -163,11 +196,8 @@ SpoolAxleSolution SolveSpoolAxleSlips(const InvertibleTyre& left, const Invertib
     ab[1] = Evaluate(right, cr, std::clamp(k[1], -0.99, 2.0), v[2]);
     const TyreEval& a = ab[0];
     const TyreEval& b = ab[1];
-    // d kappa_i / d s = (v_mean / r_mean) R_i / vx_i.
-    const double dkl = v_mean / r_mean * rl / cl.vx, dkr = v_mean / r_mean * rr / cr.vx;
-    jac << a.dfy_dk * dkl, a.dfy_da, 0.0,  //
-        b.dfy_dk * dkr, 0.0, b.dfy_da,     //
-        a.dfx_dk * dkl + b.dfx_dk * dkr, a.dfx_da, b.dfx_da;
+    const Eigen::Matrix<double, 4, 3, Eigen::RowMajor> wheels = jacobian(a, b);
+    jac << wheels.row(0), wheels.row(1), wheels.row(2) + wheels.row(3);
     return Vec(a.fy - fy_left, b.fy - fy_right, a.fx + b.fx - fx_total);
   };
   bool stable = true;  // of the last solve_from
@@ -179,6 +209,8 @@ SpoolAxleSolution SolveSpoolAxleSlips(const InvertibleTyre& left, const Invertib
     out.iterations =
         SolveBounded<3>(x, Vec(-kMaxSlipRatio, -kMaxSlipAngle, -kMaxSlipAngle),
                         Vec(kMaxSlipRatio, kMaxSlipAngle, kMaxSlipAngle), tolerance, ab, residual);
+    Eigen::Map<Eigen::Matrix<double, 4, 3, Eigen::RowMajor>>(out.jacobian.data()) =
+        jacobian(ab[0], ab[1]);
     const auto k = kappas(x[0]);
     const TyreEval& a = ab[0];
     const TyreEval& b = ab[1];
@@ -207,6 +239,67 @@ SpoolAxleSolution SolveSpoolAxleSlips(const InvertibleTyre& left, const Invertib
     }
   }
   return best;
+}
+
+bool RefineFreeWheelSlips(const InvertibleTyre& tyre, const TyreConditions& c, double fx_target,
+                          double fy_target, const std::array<double, 4>& jacobian,
+                          WheelSlips* slips, int max_steps) {
+  const double tolerance = 0.1 * FreeWheelTolerance(c);
+  const double det = jacobian[0] * jacobian[3] - jacobian[1] * jacobian[2];
+  for (int step = 0; step <= max_steps; ++step) {
+    const std::array<double, 2> f = EvaluateForces(tyre, c, slips->slip_ratio, slips->slip_angle);
+    slips->fx = f[0];
+    slips->fy = f[1];
+    const double rx = fx_target - f[0], ry = fy_target - f[1];
+    if (std::abs(rx) <= tolerance && std::abs(ry) <= tolerance) return true;
+    if (step == max_steps || !(det != 0.0)) break;
+    slips->slip_ratio = std::clamp(slips->slip_ratio + (jacobian[3] * rx - jacobian[1] * ry) / det,
+                                   -kMaxSlipRatio, kMaxSlipRatio);
+    slips->slip_angle = std::clamp(slips->slip_angle + (jacobian[0] * ry - jacobian[2] * rx) / det,
+                                   -kMaxSlipAngle, kMaxSlipAngle);
+  }
+  return false;
+}
+
+bool RefineSpoolAxleSlips(const InvertibleTyre& left, const InvertibleTyre& right,
+                          const TyreConditions& cl, const TyreConditions& cr, double fy_left,
+                          double fy_right, double fx_total, const std::array<double, 12>& jacobian,
+                          SpoolAxleSolution* axle, int max_steps) {
+  const double rl = left.setup->rolling_radius, rr = right.setup->rolling_radius;
+  const double r_mean = 0.5 * (rl + rr), v_mean = 0.5 * (cl.vx + cr.vx);
+  const double tolerance = 0.1 * SpoolTolerance(cl, cr);
+  const Eigen::Map<const Eigen::Matrix<double, 4, 3, Eigen::RowMajor>> wheels(jacobian.data());
+  Eigen::Matrix3d jac;
+  jac << wheels.row(0), wheels.row(1), wheels.row(2) + wheels.row(3);
+  Eigen::Vector3d x(axle->wheel_speed * r_mean / v_mean - 1.0, axle->wheels[0].slip_angle,
+                    axle->wheels[1].slip_angle);
+  Eigen::Vector3d x_last = Eigen::Vector3d::Zero(), f_last = Eigen::Vector3d::Zero();
+  for (int step = 0; step <= max_steps; ++step) {
+    const double omega = (1.0 + x[0]) * v_mean / r_mean;
+    const double kl = omega * rl / cl.vx - 1.0, kr = omega * rr / cr.vx - 1.0;
+    const std::array<double, 2> a = EvaluateForces(left, cl, std::clamp(kl, -0.99, 2.0), x[1]);
+    const std::array<double, 2> b = EvaluateForces(right, cr, std::clamp(kr, -0.99, 2.0), x[2]);
+    axle->wheel_speed = omega;
+    axle->wheels[0] = {kl, x[1], a[0], a[1]};
+    axle->wheels[1] = {kr, x[2], b[0], b[1]};
+    const Eigen::Vector3d forces(a[1], b[1], a[0] + b[0]);
+    const Eigen::Vector3d r = Eigen::Vector3d(fy_left, fy_right, fx_total) - forces;
+    // Met, and (by the Jacobian as updated) still below both wheels' force peaks.
+    if (r.cwiseAbs().maxCoeff() <= tolerance) return jac(0, 1) < 0.0 && jac(1, 2) < 0.0;
+    if (step == max_steps) break;
+    if (step > 0) {  // Broyden's update, as for a free wheel
+      const Eigen::Vector3d dx = x - x_last;
+      jac += (forces - f_last - jac * dx) * dx.transpose() / dx.squaredNorm();
+    }
+    const Eigen::Vector3d dx = jac.partialPivLu().solve(r);
+    if (!dx.allFinite() || dx.squaredNorm() == 0.0) break;
+    x_last = x;
+    f_last = forces;
+    x = (x + dx)
+            .cwiseMax(Eigen::Vector3d(-kMaxSlipRatio, -kMaxSlipAngle, -kMaxSlipAngle))
+            .cwiseMin(Eigen::Vector3d(kMaxSlipRatio, kMaxSlipAngle, kMaxSlipAngle));
+  }
+  return false;
 }
 
 }  // namespace hotlap::vehicle

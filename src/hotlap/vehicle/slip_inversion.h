@@ -49,6 +49,8 @@ struct FreeWheelSolution {
   WheelSlips wheel;
   bool reached = false;  ///< both targets met within 1 N (or 1e-4 of the load)
   int iterations = 0;
+  /// d(fx, fy) / d(slip ratio, slip angle) at the solution, row-major, N (grip factor applied).
+  std::array<double, 4> jacobian{};
 };
 
 /// Slips of a free-rolling or independently braked wheel for targets (fx, fy), from the guess.
@@ -60,6 +62,11 @@ struct SpoolAxleSolution {
   double wheel_speed = 0.0;          ///< common angular speed, rad/s
   bool reached = false;
   int iterations = 0;
+  /// d(fy_left, fy_right, fx_left, fx_right) / d(s, alpha_left, alpha_right) at the solution,
+  /// row-major (4 x 3), N; s = omega R_mean / vx_mean - 1 (R_mean, vx_mean: the two wheels'
+  /// means), the slip of the mean wheel: at a given s each wheel's slip ratio depends only on the
+  /// ratio of the wheels' speeds, not on the car's.
+  std::array<double, 12> jacobian{};
 };
 
 /// Slips of two wheels on a spool: targets fy_left, fy_right and fx_total (sum of both Fx).
@@ -69,5 +76,28 @@ SpoolAxleSolution SolveSpoolAxleSlips(const InvertibleTyre& left, const Invertib
                                       const TyreConditions& right_conditions, double fy_left,
                                       double fy_right, double fx_total,
                                       const SpoolAxleSolution& guess);
+
+/// Free-wheel slips for targets (fx, fy) from `slips` near them, by chord steps with the Jacobian
+/// of a solve nearby (FreeWheelSolution::jacobian; a fixed one, whose steps stay on its side of the
+/// force peak where an updated one can cross it), each step one evaluation of the force model in
+/// double precision, at most `max_steps`. True, with `slips` and its forces those that meet the
+/// targets within a tenth of SolveFreeWheelSlips' tolerance (near a force peak a slip angle is only
+/// loosely held by a force, and the first iterate inside a tolerance lies to one side of the
+/// solution: a looser check moves a lap by milliseconds); false otherwise (`slips` then the last
+/// step's, a solve's starting point). A check of a predicted solution, not a solve: it does not
+/// look for the branch below the force peak.
+bool RefineFreeWheelSlips(const InvertibleTyre& tyre, const TyreConditions& conditions,
+                          double fx_target, double fy_target, const std::array<double, 4>& jacobian,
+                          WheelSlips* slips, int max_steps = 6);
+
+/// The same for two wheels on a spool (SolveSpoolAxleSlips' targets, a tenth of its tolerance),
+/// from `axle`'s wheel speed and slip angles, with a SpoolAxleSolution::jacobian nearby updated
+/// by Broyden's rule (the fixed one converges too slowly here), and false where the updated one
+/// puts a wheel past its side-force peak.
+bool RefineSpoolAxleSlips(const InvertibleTyre& left, const InvertibleTyre& right,
+                          const TyreConditions& left_conditions,
+                          const TyreConditions& right_conditions, double fy_left, double fy_right,
+                          double fx_total, const std::array<double, 12>& jacobian,
+                          SpoolAxleSolution* axle, int max_steps = 6);
 
 }  // namespace hotlap::vehicle
