@@ -123,5 +123,61 @@ TEST(SlipInversionTest, SpoolAxleRecoversOneWheelSpeedAndBothSlipAngles) {
   EXPECT_NEAR(s.wheels[1].fx, fxr, 2.0);
 }
 
+// A check from a solve's Jacobian: from the solve at nearby targets, chord steps meet the new
+// targets to a tenth of the solve's tolerance, on the branch below the peak, and agree with a
+// solve.
+TEST(SlipInversionTest, FreeWheelRefineMeetsNearbyTargetsFromASolvesJacobian) {
+  const CornerSetup& fl = Gen7().corner(Corner::kFrontLeft);
+  const InvertibleTyre tyre(fl);
+  const TyreConditions c = Conditions();
+  const auto [fx0, fy0] = Forces(fl, c, -0.02, -0.04);
+  const FreeWheelSolution base = SolveFreeWheelSlips(tyre, c, fx0, fy0, {});
+  ASSERT_TRUE(base.reached);
+  const double fx = fx0 - 150.0, fy = 1.02 * fy0;  // a step of about 2e-3 rad
+  WheelSlips refined = base.wheel;
+  ASSERT_TRUE(RefineFreeWheelSlips(tyre, c, fx, fy, base.jacobian, &refined));
+  EXPECT_NEAR(refined.fx, fx, 0.1);
+  EXPECT_NEAR(refined.fy, fy, 0.1);
+  const auto [check_fx, check_fy] = Forces(fl, c, refined.slip_ratio, refined.slip_angle);
+  EXPECT_NEAR(check_fx, refined.fx, 1e-9 * std::abs(fx));  // the forces it reports are its slips'
+  EXPECT_NEAR(check_fy, refined.fy, 1e-9 * std::abs(fy));
+  const FreeWheelSolution solved = SolveFreeWheelSlips(tyre, c, fx, fy, base.wheel);
+  EXPECT_NEAR(refined.slip_angle, solved.wheel.slip_angle, 1e-4);
+  EXPECT_NEAR(refined.slip_ratio, solved.wheel.slip_ratio, 1e-4);
+  // Beyond the envelope no check passes: the caller solves.
+  const double peak_fy = Forces(fl, c, 0.0, PeakSlipAngle(fl, c)).second;
+  WheelSlips beyond = base.wheel;
+  EXPECT_FALSE(RefineFreeWheelSlips(tyre, c, 0.0, 1.3 * peak_fy, base.jacobian, &beyond));
+}
+
+TEST(SlipInversionTest, SpoolAxleRefineMeetsNearbyTargetsFromASolvesJacobian) {
+  const CornerSetup& rl = Gen7().corner(Corner::kRearLeft);
+  const CornerSetup& rr = Gen7().corner(Corner::kRearRight);
+  const InvertibleTyre left(rl), right(rr);
+  TyreConditions cl = Conditions(), cr = Conditions();
+  cl.fz = 6500.0;
+  cr.fz = 11000.0;
+  cl.vx = 69.0;
+  cr.vx = 69.6;
+  const double omega = 1.02 * 69.3 / (0.5 * (rl.rolling_radius + rr.rolling_radius));
+  const auto [fxl, fyl] = Forces(rl, cl, omega * rl.rolling_radius / cl.vx - 1.0, -0.035);
+  const auto [fxr, fyr] = Forces(rr, cr, omega * rr.rolling_radius / cr.vx - 1.0, -0.03);
+  const SpoolAxleSolution base = SolveSpoolAxleSlips(left, right, cl, cr, fyl, fyr, fxl + fxr, {});
+  ASSERT_TRUE(base.reached);
+  const double fy_left = 1.02 * fyl, fy_right = 1.015 * fyr, fx_total = fxl + fxr + 200.0;
+  SpoolAxleSolution refined = base;
+  ASSERT_TRUE(RefineSpoolAxleSlips(left, right, cl, cr, fy_left, fy_right, fx_total, base.jacobian,
+                                   &refined));
+  EXPECT_NEAR(refined.wheels[0].fy, fy_left, 0.2);
+  EXPECT_NEAR(refined.wheels[1].fy, fy_right, 0.2);
+  EXPECT_NEAR(refined.wheels[0].fx + refined.wheels[1].fx, fx_total, 0.2);
+  const SpoolAxleSolution solved =
+      SolveSpoolAxleSlips(left, right, cl, cr, fy_left, fy_right, fx_total, base);
+  ASSERT_TRUE(solved.reached);
+  EXPECT_NEAR(refined.wheel_speed, solved.wheel_speed, 1e-4 * omega);
+  EXPECT_NEAR(refined.wheels[0].slip_angle, solved.wheels[0].slip_angle, 1e-4);
+  EXPECT_NEAR(refined.wheels[1].slip_angle, solved.wheels[1].slip_angle, 1e-4);
+}
+
 }  // namespace
 }  // namespace hotlap::vehicle

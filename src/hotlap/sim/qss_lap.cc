@@ -19,13 +19,10 @@ namespace {
 using vehicle::VehicleParams;
 
 // The cornering drag's fixed point is taken as settled when a profile moves the speeds by less
-// than kSettledSpeed on average, m/s, or the lap time by less than kSettledLapTime, s: each
-// profile moves the lap by about a sixth of the last one's move, the other way, so that the lap
-// time is then within a few tenths of a millisecond of the fixed point's (which the slip solves'
-// 1 N tolerance blurs by about a millisecond). A few points where a braking point moves by a
-// sample keep moving by 0.02-0.04 m/s while the rest settle.
+// than this on average, m/s (or the lap time as QssOptions::drag_settled_lap_time says). A few
+// points where a braking point moves by a sample keep moving by 0.02-0.04 m/s while the rest
+// settle.
 constexpr double kSettledSpeed = 1e-3;
-constexpr double kSettledLapTime = 1e-3;
 
 void CheckRoad(std::span<const RoadPoint> road) {
   if (road.size() < 16) {
@@ -301,9 +298,10 @@ struct PassContext {
 };
 
 // One pass: speed profile, forces and slips, thermal replay from `from`. The profile and the
-// forces are solved again with the cornering drag the last forces and slip angles gave, until
-// the speeds move by less than 1 mm/s on average (each coefficient is then its point's own to
-// that; the lap time settles to about 0.2 ms in 3-4 profiles).
+// forces are solved again with the cornering drag the last forces and slip angles gave, each
+// profile's searches from the last one's and its slips updated from the last solve's, until
+// the drag is settled (QssOptions::drag_settled_lap_time): from a lap's own first guess one or
+// two profiles more, each moving the lap by about a sixth of the last one's move.
 QssLap RunPass(const PassContext& x, std::span<const RoadPoint> r,
                const std::array<std::vector<double>, 4>& g,
                const std::array<std::vector<double>, 4>& t, const ReplayInitialState& from,
@@ -331,7 +329,8 @@ QssLap RunPass(const PassContext& x, std::span<const RoadPoint> r,
     const double change = std::abs(lap.lap_time - last_time);
     const double share = last_change > 0.0 ? change / last_change : 1.0;
     const double left = share < 1.0 ? change * share / (1.0 - share) : change;
-    if (moved < kSettledSpeed || change < kSettledLapTime || left < 0.5 * kSettledLapTime) break;
+    const double tolerance = x.options.drag_settled_lap_time;
+    if (moved < kSettledSpeed || change < tolerance || left < 0.5 * tolerance) break;
     last_change = change;
   }
   drag = std::move(solved);

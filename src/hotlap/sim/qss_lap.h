@@ -75,9 +75,14 @@ struct QssOptions {
   double track_length = 0.0;
   /// Most speed profiles a pass solves for the tyres' cornering drag (sim/qss_profile.h,
   /// CalcResistance): 1 leaves it out (the profile and forces without it); each further profile
-  /// takes the coefficients the last forces and slip angles gave, until the speeds move by less
-  /// than 1 mm/s on average.
+  /// takes the coefficients the last forces and slip angles gave (its searches started from the
+  /// last profile's, its slips updated from the last solve's: sim/qss_slips.h), until the drag is
+  /// settled (drag_settled_lap_time).
   int max_drag_passes = 6;
+  /// The cornering drag is settled when a profile moves the lap time by less than this, s, or the
+  /// speeds by less than 1 mm/s on average, or when the moves still to come (each about the last
+  /// one's share of the one before, summed) come to less than half of it.
+  double drag_settled_lap_time = 5e-4;
   /// Laps run behind the pace car (0-based indices, increasing): every point of those laps at
   /// most `caution_speed`; the temperatures and pressures fall as they do under a caution.
   std::vector<int> caution_laps;

@@ -201,11 +201,12 @@ double LargestFeasible(double lo, double f_lo, double hi, double f_hi, double to
 }
 
 // LargestFeasible over [lo, hi] searched from `search` (what a search at nearby inputs found).
-// With the excess's slope known: a Newton step from the last answer, then the points half a
-// tolerance below and above the step's root, which bracket the answer when the step was good
-// (three evaluations). Otherwise (or where they do not bracket it) the bracket is grown from the
-// last point in steps that double from `step`, then narrowed by LargestFeasible. Returns hi where
-// hi is feasible and lo - 1 where even lo is not; `search` gets the answer and its slope.
+// With the excess's slope known: a Newton step from the last answer, then the points a tenth of a
+// tolerance below the step's root and a tolerance above that, which bracket the answer when the
+// step was good (three evaluations). Otherwise (or
+// where they do not bracket it) the bracket is grown from the last point in steps that double from
+// `step`, then narrowed by LargestFeasible. Returns hi where hi is feasible and lo - 1 where even
+// lo is not; `search` gets the answer and its slope.
 template <class Excess>
 double LargestFeasibleFrom(LimitSearch* search, double step, double lo, double hi, double tolerance,
                            Excess excess) {
@@ -217,26 +218,16 @@ double LargestFeasibleFrom(LimitSearch* search, double step, double lo, double h
     return x;
   };
   if (search->slope > 0.0 && std::isfinite(search->slope)) {
+    // The step's root less a tenth of the tolerance (the Newton step is good to far better than
+    // that), then a tolerance above: the answer lies at most a tenth of the tolerance below the
+    // limit, as close as a search from scratch comes.
     const double root = a - f_a / search->slope;
-    // The answer within a tolerance of the last: one more evaluation closes the bracket.
-    if (f_a <= 0.0 && root < a + 0.5 * tolerance) {
-      const double above = std::min(a + tolerance, hi);
-      if (above <= a) return found(hi, 0.0);
-      const double f_above = excess(above);
-      if (f_above > 0.0) return found(a, (f_above - f_a) / (above - a));
-    } else if (f_a > 0.0 && root > a - 0.5 * tolerance) {
-      const double below = std::max(a - tolerance, lo);
-      const double f_below = excess(below);
-      if (f_below <= 0.0) return found(below, (f_a - f_below) / (a - below));
-    }
     if (std::isfinite(root)) {
-      const double below = std::clamp(root - 0.5 * tolerance, lo, hi);
-      const double above = std::min(below + tolerance, hi);
+      const double below = std::clamp(root - 0.1 * tolerance, lo, hi);
       const double f_below = excess(below);
       if (f_below <= 0.0) {
-        a = below;
-        f_a = f_below;
-        if (a >= hi) return found(hi, 0.0);
+        if (below >= hi) return found(hi, 0.0);
+        const double above = std::min(below + tolerance, hi);
         const double f_above = excess(above);
         if (f_above > 0.0) return found(below, (f_above - f_below) / (above - below));
         a = above;
@@ -245,6 +236,7 @@ double LargestFeasibleFrom(LimitSearch* search, double step, double lo, double h
         a = below;
         f_a = f_below;
       }
+      step = tolerance;  // the answer is near: grow the bracket from a tolerance
     }
   }
   double b = a, f_b = f_a;
