@@ -40,8 +40,8 @@ const Setup& Shared() {
 }
 
 // Argument: the most speed profiles a pass solves for the tyres' cornering drag (QssOptions::
-// max_drag_passes): 0 the default (until the speeds settle), 1 leaves the drag out (the way
-// before 2026-11-27), 3 a fixed three.
+// max_drag_passes): 0 the default (until the drag settles), 1 leaves the drag out (the way
+// before 2026-11-27), 3 at most three. Issue 45's goal: /0 at most 1.15 times /1 in the same run.
 void BM_QssDarlingtonLap1m(benchmark::State& state) {
   const Setup& s = Shared();
   sim::QssOptions options = s.options;

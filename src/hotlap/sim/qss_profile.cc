@@ -203,7 +203,7 @@ double LargestFeasible(double lo, double f_lo, double hi, double f_hi, double to
 // LargestFeasible over [lo, hi] searched from `search` (what a search at nearby inputs found).
 // With the excess's slope known: a Newton step from the last answer, then the points a tenth of a
 // tolerance below the step's root and a tolerance above that, which bracket the answer when the
-// step was good (three evaluations). Otherwise (or
+// step was good (three evaluations; two where the last answer is such a point). Otherwise (or
 // where they do not bracket it) the bracket is grown from the last point in steps that double from
 // `step`, then narrowed by LargestFeasible. Returns hi where hi is feasible and lo - 1 where even
 // lo is not; `search` gets the answer and its slope.
@@ -223,8 +223,12 @@ double LargestFeasibleFrom(LimitSearch* search, double step, double lo, double h
     // limit, as close as a search from scratch comes.
     const double root = a - f_a / search->slope;
     if (std::isfinite(root)) {
-      const double below = std::clamp(root - 0.1 * tolerance, lo, hi);
-      const double f_below = excess(below);
+      double below = std::clamp(root - 0.1 * tolerance, lo, hi), f_below = f_a;
+      if (f_a <= 0.0 && a >= below && a <= root) {
+        below = a;  // the last answer is such a point already
+      } else {
+        f_below = excess(below);
+      }
       if (f_below <= 0.0) {
         if (below >= hi) return found(hi, 0.0);
         const double above = std::min(below + tolerance, hi);
