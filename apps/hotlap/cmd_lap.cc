@@ -41,6 +41,7 @@ struct LapArgs {
   std::string json;
   std::optional<double> compare_disc_limit_C;  // --method ocp
   std::optional<double> ocp_step_m;            // --method ocp
+  std::optional<double> tolerance_s;           // --method ocp: the adaptive mesh
   bool single_process = false;                 // --method ocp with a comparison
   bool wear_in_programme = false;              // --method ocp
   bool sensitivities = false;                  // --method ocp
@@ -76,6 +77,7 @@ void RefuseOtherMethodsOptions(const LapArgs& a) {
   for (const auto& [given, name] :
        {std::pair{a.compare_disc_limit_C.has_value(), "--compare-disc-limit-C"},
         std::pair{a.ocp_step_m.has_value(), "--ocp-step-m"},
+        std::pair{a.tolerance_s.has_value(), "--tolerance"},
         std::pair{a.single_process, "--single-process"},
         std::pair{a.wear_in_programme, "--wear-in-programme"},
         std::pair{a.sensitivities, "--sensitivities"},
@@ -98,6 +100,10 @@ int RunLap(const LapArgs& a) {
     o.run.ambient_C = a.run.ambient_C;
     o.run.track_C = a.run.track_C;
     if (a.ocp_step_m) o.run.step_m = *a.ocp_step_m;
+    if (a.tolerance_s && a.ocp_step_m) {
+      throw InputError("give either --ocp-step-m (a fixed mesh) or --tolerance (an adaptive one)");
+    }
+    if (a.tolerance_s) o.run.tolerance_s = *a.tolerance_s;
     o.single_process = a.single_process;
     o.run.wear_in_programme = a.wear_in_programme;
     o.run.sensitivities = a.sensitivities;
@@ -142,6 +148,10 @@ CommandRunner RegisterLapCommand(CLI::App& app) {
   sub->add_option("--compare-disc-limit-C", args->compare_disc_limit_C,
                   "ocp: solve without and with this front-disc limit (degC) and compare");
   sub->add_option("--ocp-step-m", args->ocp_step_m, "ocp: mesh spacing, m (default 3)");
+  sub->add_option("--tolerance", args->tolerance_s,
+                  "ocp: adaptive mesh to this estimated lap-time error, s (e.g. 2e-4; default: "
+                  "the fixed --ocp-step-m mesh; docs/optimal-control.md)")
+      ->check(CLI::Range(0.0, 1.0));
   sub->add_flag("--single-process", args->single_process,
                 "ocp: solve the limited lap after the free one, not beside it in a second process");
   sub->add_flag("--wear-in-programme", args->wear_in_programme,

@@ -20,6 +20,12 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
           ->capture_default_str()
           ->check(CLI::Range(0.5, 50.0)));
   a.stock_car_only.push_back(
+      sub->add_option("--tolerance", a.run.tolerance_s,
+                      "Adaptive mesh: the estimated lap-time error asked for, s (e.g. 2e-4; 0: "
+                      "the fixed --step-m mesh; docs/optimal-control.md)")
+          ->capture_default_str()
+          ->check(CLI::Range(0.0, 1.0)));
+  a.stock_car_only.push_back(
       sub->add_option("--coarse-step-m", a.run.coarse_step_m,
                       "Coarse to fine: solve first on a mesh of this spacing, m, and start the "
                       "--step-m solve from it (0: off; docs/optimal-control.md)")

@@ -12,6 +12,36 @@
 
 namespace hotlap::ocp {
 
+namespace {
+
+// The child's adaptive mesh and its rounds as one more SolveResult for the pipe (x the mesh,
+// z_lower the rounds, seven numbers each), and back.
+constexpr int kRoundNumbers = 7;
+
+SolveResult EncodeMesh(const std::vector<double>& mesh_m, const std::vector<MeshRound>& rounds) {
+  SolveResult r;
+  r.x = mesh_m;
+  for (const MeshRound& m : rounds) {
+    r.z_lower.insert(r.z_lower.end(),
+                     {static_cast<double>(m.nodes), static_cast<double>(m.iterations),
+                      m.solve_seconds, m.lap_time_s, m.estimated_error_s, m.abs_error_s,
+                      m.converged ? 1.0 : 0.0});
+  }
+  return r;
+}
+
+std::vector<MeshRound> DecodeRounds(const SolveResult& r) {
+  std::vector<MeshRound> out;
+  for (size_t i = 0; i + kRoundNumbers <= r.z_lower.size(); i += kRoundNumbers) {
+    const double* v = r.z_lower.data() + i;
+    out.push_back({static_cast<int>(v[0]), static_cast<int>(v[1]), v[2], v[3], v[4], v[5],
+                   v[6] != 0.0});
+  }
+  return out;
+}
+
+}  // namespace
+
 SolvedLap SolveLap(const vehicle::Car& car, const track::Track& track, OptimalLapOptions options,
                    const std::string& label, const SolveResult* from, const LapProgress& progress,
                    const LapLog& log, const LapWarmUp* warm_up) {
@@ -27,9 +57,13 @@ SolvedLap SolveLap(const vehicle::Car& car, const track::Track& track, OptimalLa
       return progress(label, it, obj, pr, du);
     };
   }
+  const bool adaptive =
+      options.tolerance_s > 0.0 && options.collocation == Collocation::kTrapezoid;
   if (log && !options.presolved) {
     log(fmt::format(
-        "{}: solving ({:.1f} m mesh{}{}{})...", label, options.step_m,
+        "{}: solving ({}{}{}{})...", label,
+        adaptive ? fmt::format("adaptive mesh to {:g} ms", 1e3 * options.tolerance_s)
+                 : fmt::format("{:.1f} m mesh", options.step_m),
         options.collocation == Collocation::kHermiteSimpson ? ", Hermite-Simpson" : "",
         options.front_disc_limit
             ? fmt::format(", front discs <= {:g} degC", KelvinToCelsius(*options.front_disc_limit))
@@ -50,9 +84,18 @@ SolvedLap SolveLap(const vehicle::Car& car, const track::Track& track, OptimalLa
     if (s.run.coarse.iterations > 0) {
       log(
           fmt::format("{}: coarse solve ({:g} m mesh) {} after {} iterations in {:.1f} s: lap "
-                      "{:.3f} s; the fine solve starts from it",
+                      "{:.3f} s; the {} starts from it",
                       label, options.coarse_step_m, s.run.coarse.message, s.run.coarse.iterations,
-                      s.run.coarse.solve_seconds, s.run.coarse_lap_time));
+                      s.run.coarse.solve_seconds, s.run.coarse_lap_time,
+                      adaptive ? "refinement" : "fine solve"));
+    }
+    for (size_t i = 1; i < s.run.mesh_rounds.size(); ++i) {
+      const MeshRound& m = s.run.mesh_rounds[i];
+      log(fmt::format("{}: mesh round {}: {} nodes, {} iterations in {:.1f} s, lap {:.4f} s, "
+                      "estimated mesh error {:+.3f} ms (sum of |e| {:.3f} ms){}",
+                      label, i, m.nodes, m.iterations, m.solve_seconds, m.lap_time_s,
+                      1e3 * m.estimated_error_s, 1e3 * m.abs_error_s,
+                      m.converged ? "" : ", not converged: the mesh before is kept"));
     }
     log(
         fmt::format("{}: {} after {} iterations in {:.1f} s: lap {:.3f} s (QSS {:.3f} s on the "
@@ -94,7 +137,10 @@ DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track
   // solve starts from the free one's (52 iterations against 324 from the QSS guess, the same
   // lap; docs/validation/optimal-control.md, "Speed"), and from there the two laps are independent: the
   // limited one runs in a child process beside the free one's fine solve.
-  const bool coarse_to_fine = options.coarse_step_m > options.step_m;
+  const bool coarse_to_fine =
+      options.tolerance_s > 0.0 && options.collocation == Collocation::kTrapezoid
+          ? options.coarse_step_m > 0.0
+          : options.coarse_step_m > options.step_m;
   if (coarse_to_fine) {
     // The two solves share the derivative threads when side by side; so they do one after the
     // other too (--single-process), so that both ways give the same laps bit for bit.
@@ -113,7 +159,9 @@ DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track
       child.emplace([&] {
         const SolvedLap l =
             SolveLap(car, track, limited_options, limited_label, nullptr, progress, {}, &warm_up);
-        return std::vector<SolveResult>{l.run.coarse, l.run.solution.solve};
+        return std::vector<SolveResult>{
+            l.run.coarse, l.run.solution.solve,
+            EncodeMesh(l.run.solution.layout.mesh_m, l.run.mesh_rounds)};
       });
     };
   }
@@ -123,8 +171,9 @@ DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track
   const SolveResult& free = c.free.run.solution.solve;
   if (child) {
     std::optional<std::vector<SolveResult>> r = child->Join();
-    if (r && r->size() == 2) {
-      limited_options.presolved = PresolvedLap{std::move((*r)[0]), std::move((*r)[1])};
+    if (r && r->size() == 3) {
+      limited_options.presolved = PresolvedLap{std::move((*r)[0]), std::move((*r)[1]),
+                                               (*r)[2].x, DecodeRounds((*r)[2])};
       c.limited_in_second_process = true;
     } else if (log) {
       log(fmt::format("{}: the second process gave no answer; solving here", limited_label));

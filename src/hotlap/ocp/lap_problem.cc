@@ -79,6 +79,32 @@ double NodeWeight(int k, int intervals, bool hermite_simpson) {
   return k % 2 == 1 ? 4.0 / 3.0 : 2.0 / 3.0;
 }
 
+// LapProblemOptions::mesh_m checked: from 0 to the track's length (its last value set to it
+// exactly), increasing, at least 17 nodes, the trapezoid only.
+std::vector<double> CheckedMesh(const std::vector<double>& mesh_m, const track::Track& track,
+                                Collocation collocation) {
+  if (collocation != Collocation::kTrapezoid) {
+    throw InputError("optimal lap: a non-uniform mesh needs the trapezoid collocation");
+  }
+  const double length = track.length_m();
+  if (mesh_m.size() < 17 || mesh_m.front() != 0.0 || std::abs(mesh_m.back() - length) > 1e-6) {
+    throw InputError(fmt::format(
+        "optimal lap: a mesh of {} nodes from {:g} to {:g} m; expected at least 17 from 0 to the "
+        "track's {:g} m",
+        mesh_m.size(), mesh_m.empty() ? 0.0 : mesh_m.front(), mesh_m.empty() ? 0.0 : mesh_m.back(),
+        length));
+  }
+  std::vector<double> out = mesh_m;
+  out.back() = length;
+  for (size_t k = 1; k < out.size(); ++k) {
+    if (!(out[k] > out[k - 1])) {
+      throw InputError(fmt::format("optimal lap: mesh node {} at {:g} m is not beyond {:g} m", k,
+                                   out[k], out[k - 1]));
+    }
+  }
+  return out;
+}
+
 struct Builder {
   const vehicle::Car& car;
   const VehicleParams& p;
@@ -89,7 +115,10 @@ struct Builder {
   std::vector<NodeVars> nodes;
   std::vector<NodeRoad> roads;
   int intervals = 0;             // node to node (twice the Hermite-Simpson intervals)
-  double ds = 0.0;               // node to node
+  double ds = 0.0;               // node to node on a uniform mesh (the mean on another)
+  std::vector<double> node_m;    // each node's distance along the centre line
+  std::vector<double> h;         // each interval's length (trapezoid; all ds on a uniform mesh)
+  bool uniform = true;           // no LapProblemOptions::mesh_m
   bool hs = false;               // Hermite-Simpson (else trapezoid)
   double max_brake_force = 0.0;  // N at pedal -1
   // Parameters (with the smooth |x| of tyre::TyreThermalSmoothing) cast once for the thermal
@@ -112,7 +141,7 @@ struct Builder {
   // The vehicle of node k (the elements keep its address: lap_params never moves).
   const VehicleParams& P(int k) const {
     if (lap_params.size() == 1) return lap_params.front();
-    const double s = k * ds / track.length_m() * track.laps();
+    const double s = node_m[k] / track.length_m() * track.laps();
     const int lap = std::clamp(static_cast<int>(s), 0, static_cast<int>(lap_params.size()) - 1);
     return lap_params[lap];
   }
@@ -169,11 +198,21 @@ struct Builder {
                               (options.front_disc_limit && IsFront(kAllCorners[c])) || wheel_states;
     }
     hs = options.collocation == Collocation::kHermiteSimpson;
-    intervals = LapNodeCount(track, options.step_m, options.collocation) - 1;
-    ds = track.length_m() / intervals;
+    uniform = options.mesh_m.empty();
+    if (uniform) {
+      intervals = LapNodeCount(track, options.step_m, options.collocation) - 1;
+      ds = track.length_m() / intervals;
+      for (int k = 0; k <= intervals; ++k) node_m.push_back(std::min(k * ds, track.length_m()));
+      h.assign(intervals, ds);
+    } else {
+      node_m = CheckedMesh(options.mesh_m, track, options.collocation);
+      intervals = static_cast<int>(node_m.size()) - 1;
+      ds = track.length_m() / intervals;
+      for (int k = 0; k < intervals; ++k) h.push_back(node_m[k + 1] - node_m[k]);
+    }
     max_brake_force = options.max_brake_force > 0.0 ? options.max_brake_force : 2.0 * p.Weight();
     for (int k = 0; k <= intervals; ++k) {
-      const double s = std::min(k * ds, track.length_m());
+      const double s = node_m[k];
       const track::TrackPoint tp = track.At(k == intervals ? 0.0 : s);
       roads.push_back({tp.curvature_per_m, tp.bank_rad, tp.grade_rad});
       // The guess is indexed by centre-line distance (its path may be a racing line).
@@ -434,22 +473,22 @@ struct Builder {
     std::vector<Target> t;
     if (!state_in_programme[state]) return t;  // a state left out: its rate feeds nothing
     if (!hs) {
-      if (k > 0) t.push_back({defect_rows[k - 1][state], -0.5 * ds});
-      if (k < intervals) t.push_back({defect_rows[k][state], -0.5 * ds});
+      if (k > 0) t.push_back({defect_rows[k - 1][state], -0.5 * h[k - 1]});
+      if (k < intervals) t.push_back({defect_rows[k][state], -0.5 * h[k]});
       return t;
     }
-    const double h = 2.0 * ds;
+    const double hh = 2.0 * ds;
     if (k % 2 == 1) {
-      t.push_back({defect_rows[k][state], -4.0 * h / 6.0});
+      t.push_back({defect_rows[k][state], -4.0 * hh / 6.0});
       return t;
     }
     if (k > 0) {  // the last node of the interval before
-      t.push_back({defect_rows[k - 2][state], h / 8.0});
-      t.push_back({defect_rows[k - 1][state], -h / 6.0});
+      t.push_back({defect_rows[k - 2][state], hh / 8.0});
+      t.push_back({defect_rows[k - 1][state], -hh / 6.0});
     }
     if (k < intervals) {  // the first node of the interval after
-      t.push_back({defect_rows[k][state], -h / 8.0});
-      t.push_back({defect_rows[k + 1][state], -h / 6.0});
+      t.push_back({defect_rows[k][state], -hh / 8.0});
+      t.push_back({defect_rows[k + 1][state], -hh / 6.0});
     }
     return t;
   }
@@ -482,13 +521,13 @@ struct Builder {
         double rhs = 0.0;
         if (j == 4) {
           const double ka = roads[first].kappa_g(), kb = roads[hs ? first + 2 : k + 1].kappa_g();
-          const double h = 2.0 * ds;
+          const double hh = 2.0 * ds;
           if (!hs)
-            rhs = -0.5 * ds * (ka + kb);
+            rhs = -0.5 * h[k] * (ka + kb);
           else if (hermite)
-            rhs = -h / 8.0 * (ka - kb);
+            rhs = -hh / 8.0 * (ka - kb);
           else
-            rhs = -h / 6.0 * (ka + 4.0 * roads[first + 1].kappa_g() + kb);
+            rhs = -hh / 6.0 * (ka + 4.0 * roads[first + 1].kappa_g() + kb);
         }
         const double scale = nlp.scale(a[j]);
         const int row = nlp.AddConstraint(rhs, rhs, scale);
@@ -504,50 +543,95 @@ struct Builder {
       }
     }
     const double inv_iz = 1.0 / p.chassis.yaw_inertia;
+    rate_terms.assign(intervals + 1, {});
     for (int k = 0; k <= intervals; ++k) {
       const NodeVars& nv = nodes[k];
       const NodeRoad& road = roads[k];
       if (wheel_states) {
         // The rolling-resistance forces themselves (coefficient 1).
-        nlp.AddElement(MakeElement<10, 1>(internal::LongitudinalFn{&P(k), road, {1, 1, 1, 1}}),
-                       {nv.w, nv.sum_fx, nv.u, nv.v, nv.r, nv.xi, nv.roll[0], nv.roll[1],
-                        nv.roll[2], nv.roll[3]},
-                       {DefectTargets(k, 0)});
+        AddRates(k, MakeElement<10, 1>(internal::LongitudinalFn{&P(k), road, {1, 1, 1, 1}}),
+                 {nv.w, nv.sum_fx, nv.u, nv.v, nv.r, nv.xi, nv.roll[0], nv.roll[1], nv.roll[2],
+                  nv.roll[3]},
+                 {0});
       } else {
-        nlp.AddElement(
-            MakeElement<10, 1>(internal::LongitudinalFn{&P(k), road, rolling}),
-            {nv.w, nv.sum_fx, nv.u, nv.v, nv.r, nv.xi, nv.fz[0], nv.fz[1], nv.fz[2], nv.fz[3]},
-            {DefectTargets(k, 0)});
+        AddRates(k, MakeElement<10, 1>(internal::LongitudinalFn{&P(k), road, rolling}),
+                 {nv.w, nv.sum_fx, nv.u, nv.v, nv.r, nv.xi, nv.fz[0], nv.fz[1], nv.fz[2], nv.fz[3]},
+                 {0});
       }
-      nlp.AddElement(MakeElement<5, 1>(internal::LateralFn{&P(k), road}),
-                     {nv.w, nv.sum_fy, nv.u, nv.r, nv.xi}, {DefectTargets(k, 1)});
-      nlp.AddElement(MakeElement<2, 1>(internal::ScaledProductFn{inv_iz}), {nv.w, nv.yaw_moment},
-                     {DefectTargets(k, 2)});
-      nlp.AddElement(MakeElement<4, 1>(internal::OffsetFn{}), {nv.w, nv.u, nv.v, nv.xi},
-                     {DefectTargets(k, 3)});
-      nlp.AddElement(MakeElement<2, 1>(internal::ScaledProductFn{1.0}), {nv.w, nv.r},
-                     {DefectTargets(k, 4)});
+      AddRates(k, MakeElement<5, 1>(internal::LateralFn{&P(k), road}),
+               {nv.w, nv.sum_fy, nv.u, nv.r, nv.xi}, {1});
+      AddRates(k, MakeElement<2, 1>(internal::ScaledProductFn{inv_iz}), {nv.w, nv.yaw_moment}, {2});
+      AddRates(k, MakeElement<4, 1>(internal::OffsetFn{}), {nv.w, nv.u, nv.v, nv.xi}, {3});
+      AddRates(k, MakeElement<2, 1>(internal::ScaledProductFn{1.0}), {nv.w, nv.r}, {4});
       for (int c = 0; c < 4; ++c) {
         const int base = 5 + 5 * c;
         if (wheel_states) {
           const int wheel = kWheelStatesBegin + 2 * c;
-          nlp.AddElement(
-              wheel_elements[c], WheelInputs(nv, c),
-              {DefectTargets(k, base), DefectTargets(k, base + 1), DefectTargets(k, base + 2),
-               DefectTargets(k, wheel), DefectTargets(k, base + 3), DefectTargets(k, base + 4),
-               DefectTargets(k, wheel + 1)});
+          AddRates(k, wheel_elements[c], WheelInputs(nv, c),
+                   {base, base + 1, base + 2, wheel, base + 3, base + 4, wheel + 1});
           continue;
         }
-        nlp.AddElement(
-            thermal_elements[c],
-            {nv.w, nv.tread[c], nv.carcass[c], nv.wear[c], nv.vx[c], nv.fx[c], nv.fy[c], nv.fz[c],
-             nv.alpha[c], nv.kappa[c]},
-            {DefectTargets(k, base), DefectTargets(k, base + 1), DefectTargets(k, base + 2)});
+        AddRates(k, thermal_elements[c],
+                 {nv.w, nv.tread[c], nv.carcass[c], nv.wear[c], nv.vx[c], nv.fx[c], nv.fy[c],
+                  nv.fz[c], nv.alpha[c], nv.kappa[c]},
+                 {base, base + 1, base + 2});
         if (!brake_in_programme[c]) continue;
-        nlp.AddElement(brake_elements[c], {nv.w, nv.disc[c], nv.calliper[c], nv.vx[c], nv.brake},
-                       {DefectTargets(k, base + 3), DefectTargets(k, base + 4)});
+        AddRates(k, brake_elements[c], {nv.w, nv.disc[c], nv.calliper[c], nv.vx[c], nv.brake},
+                 {base + 3, base + 4});
       }
     }
+  }
+
+  // An element whose outputs are the rates d/ds of the states `states` (positions in
+  // NodeVars::States()) at node k: added to the defects and kept for NodeRates.
+  void AddRates(int k, std::shared_ptr<const Element> element, std::vector<int> inputs,
+                const std::vector<int>& states) {
+    std::vector<std::vector<Target>> targets;
+    for (int j : states) targets.push_back(DefectTargets(k, j));
+    rate_terms[k].push_back({element, inputs, states});
+    nlp.AddElement(std::move(element), std::move(inputs), std::move(targets));
+  }
+
+  // The rates d/ds of every state at node k of the point x, in NodeVars::States() order (the
+  // heading error's with its road term -kappa_g, which the defects carry on their right-hand
+  // side).
+  std::vector<double> NodeRates(int k, const std::vector<double>& x) const {
+    std::vector<double> f(state_in_programme.size(), 0.0), in, out;
+    for (const RateTerm& t : rate_terms[k]) {
+      in.clear();
+      for (int i : t.inputs) in.push_back(x[i]);
+      out.assign(t.states.size(), 0.0);
+      t.element->Values(in.data(), out.data());
+      for (size_t o = 0; o < t.states.size(); ++o) f[t.states[o]] += out[o];
+    }
+    f[4] -= roads[k].kappa_g();
+    return f;
+  }
+
+  // The trapezoid's rates and costates at the solution (x, lambda in the layout's rows) for the
+  // mesh error estimate (ocp/mesh_error.h).
+  CollocationRates Rates(const std::vector<double>& x, const std::vector<double>& lambda) const {
+    CollocationRates r;
+    if (hs) return r;
+    r.node_m = node_m;
+    r.states = static_cast<int>(state_in_programme.size());
+    const std::vector<int> first = nodes[0].States();
+    for (int k = 0; k <= intervals; ++k) {
+      const std::vector<double> f = NodeRates(k, x);
+      r.rates.insert(r.rates.end(), f.begin(), f.end());
+      r.dt_ds.push_back(x[nodes[k].w]);
+    }
+    const int defects_begin = layout.nodes * layout.rows_per_node;
+    const bool have_lambda = lambda.size() == static_cast<size_t>(layout.rows());
+    for (int k = 0; k < intervals; ++k) {
+      for (int j = 0; j < r.states; ++j) {
+        // The physical multiplier: the scaled row's over its scale (the state's).
+        const double l =
+            have_lambda ? lambda[defects_begin + k * layout.defects_per_interval + j] : 0.0;
+        r.costates.push_back(state_in_programme[j] ? l / nlp.scale(first[j]) : 0.0);
+      }
+    }
+    return r;
   }
 
   // The variables of corner c's wheel element (internal::WheelThermalFn) at node nv.
@@ -560,8 +644,8 @@ struct Builder {
   // |c_{k+1} - c_k| <= rate ds (w_k + w_{k+1}) / 2 for the control `c` (no limit if rate <= 0).
   void AddRateLimit(int NodeVars::*control, double rate, double row_scale) {
     if (!(rate > 0.0)) return;
-    const double c = 0.5 * ds * rate;
     for (int k = 0; k < intervals; ++k) {
+      const double c = 0.5 * h[k] * rate;
       const int up = nlp.AddConstraint(-kInf, 0.0, row_scale),
                 down = nlp.AddConstraint(0.0, kInf, row_scale);
       for (const int row : {up, down}) {
@@ -597,7 +681,7 @@ struct Builder {
       AddRateLimit(&NodeVars::pedal, options.max_pedal_rate, 0.1);
     }
     // Lap time: the trapezoid of dt/ds, or Simpson's rule.
-    for (int k = 0; k <= intervals; ++k) nlp.AddObjectiveLinear(nodes[k].w, Weight(k) * ds);
+    for (int k = 0; k <= intervals; ++k) nlp.AddObjectiveLinear(nodes[k].w, Weight(k));
     // Smooth controls: weight * sum ((c_{k+1} - c_k) / scale)^2 per control.
     const double spacing = hs ? 0.5 * options.step_m : options.step_m;
     const double pedal_weight = options.pedal_smoothing_weight >= 0.0
@@ -606,9 +690,13 @@ struct Builder {
     const double steer_weight =
         options.steer_smoothing_weight >= 0.0 ? options.steer_smoothing_weight : options.smoothing;
     for (int k = 0; k < intervals; ++k) {
+      // On a non-uniform mesh the pedal's weight follows each interval's own length.
+      const double pedal_k = uniform || options.pedal_smoothing_weight >= 0.0
+                                 ? pedal_weight
+                                 : options.smoothing * std::pow(h[k] / 3.0, 2);
       for (const auto& [a_var, b_var, weight] :
            {std::tuple{nodes[k].steer, nodes[k + 1].steer, steer_weight},
-            std::tuple{nodes[k].pedal, nodes[k + 1].pedal, pedal_weight},
+            std::tuple{nodes[k].pedal, nodes[k + 1].pedal, pedal_k},
             std::tuple{nodes[k].power, nodes[k + 1].power,
                        options.independent_drive_and_brake ? options.smoothing : 0.0},
             std::tuple{nodes[k].brake, nodes[k + 1].brake,
@@ -624,8 +712,11 @@ struct Builder {
     nlp.SetThreads(options.derivative_threads);
   }
 
-  // Node k's quadrature weight in units of ds (the trapezoid's or Simpson's).
-  double Weight(int k) const { return NodeWeight(k, intervals, hs); }
+  // Node k's quadrature weight, m (the trapezoid's or Simpson's).
+  double Weight(int k) const {
+    if (hs) return NodeWeight(k, intervals, hs) * ds;
+    return (k > 0 ? 0.5 * h[k - 1] : 0.0) + (k < intervals ? 0.5 * h[k] : 0.0);
+  }
 
   void Build() {
     AddNodes();
@@ -650,6 +741,7 @@ struct Builder {
     }
     layout.nodes = intervals + 1;
     layout.collocation = options.collocation;
+    if (!uniform) layout.mesh_m = node_m;
     layout.vars_per_node = nlp.variables() / layout.nodes;
     for (int k = 0; k <= intervals; ++k) AddNodeEquations(k);
     layout.rows_per_node = nlp.constraints() / layout.nodes;
@@ -673,6 +765,12 @@ struct Builder {
       wheel_elements;
   std::array<std::shared_ptr<const internal::BrakeFn>, 4> brake_fns;
   std::vector<std::vector<int>> defect_rows;
+  // The elements of each node's state rates (AddRates).
+  struct RateTerm {
+    std::shared_ptr<const Element> element;
+    std::vector<int> inputs, states;
+  };
+  std::vector<std::vector<RateTerm>> rate_terms;
   std::array<bool, 4> brake_in_programme{};
   std::vector<bool> state_in_programme;  // by position in NodeVars::States()
   int defects_left_out = 0;              // per interval
@@ -730,16 +828,17 @@ struct Builder {
       const auto wear = [&](int k) -> double& { return x[nodes[k].wear[c]]; };
       wear(0) = options.initial.tyres[c].wear;
       if (hs) {
-        const double h = 2.0 * ds;
+        const double hh = 2.0 * ds;
         for (int a = 0; a + 2 <= intervals; a += 2) {
-          wear(a + 2) = wear(a) + h / 6.0 * (rate[a] + 4.0 * rate[a + 1] + rate[a + 2]);  // Simpson
+          wear(a + 2) =
+              wear(a) + hh / 6.0 * (rate[a] + 4.0 * rate[a + 1] + rate[a + 2]);  // Simpson
           wear(a + 1) =
-              0.5 * (wear(a) + wear(a + 2)) + h / 8.0 * (rate[a] - rate[a + 2]);  // Hermite
+              0.5 * (wear(a) + wear(a + 2)) + hh / 8.0 * (rate[a] - rate[a + 2]);  // Hermite
         }
         continue;
       }
       for (int k = 0; k < intervals; ++k)
-        wear(k + 1) = wear(k) + 0.5 * ds * (rate[k] + rate[k + 1]);
+        wear(k + 1) = wear(k) + 0.5 * h[k] * (rate[k] + rate[k + 1]);
     }
   }
 
@@ -781,10 +880,11 @@ struct Builder {
         for (int it = 0; it < 30; ++it) {  // Newton on next - y - ds/2 (f0 + f(next)) = 0
           Eigen::Matrix2d j;
           const Eigen::Vector2d f1 = BrakeRate(c, x, k + 1, next, &j);
-          const double r0 = next[0] - y[0] - 0.5 * ds * (f0[0] + f1[0]);
-          const double r1 = next[1] - y[1] - 0.5 * ds * (f0[1] + f1[1]);
-          const double a = 1.0 - 0.5 * ds * j(0, 0), b = -0.5 * ds * j(0, 1);
-          const double cc = -0.5 * ds * j(1, 0), d = 1.0 - 0.5 * ds * j(1, 1);
+          const double hk = h[k];
+          const double r0 = next[0] - y[0] - 0.5 * hk * (f0[0] + f1[0]);
+          const double r1 = next[1] - y[1] - 0.5 * hk * (f0[1] + f1[1]);
+          const double a = 1.0 - 0.5 * hk * j(0, 0), b = -0.5 * hk * j(0, 1);
+          const double cc = -0.5 * hk * j(1, 0), d = 1.0 - 0.5 * hk * j(1, 1);
           const double det = a * d - b * cc;
           const double step0 = (d * r0 - b * r1) / det, step1 = (a * r1 - cc * r0) / det;
           next[0] -= step0;
@@ -802,7 +902,7 @@ struct Builder {
   // returns the last node's.
   Eigen::Vector2d HermiteSimpsonBrakeStep(int c, std::vector<double>& x, int a,
                                           const Eigen::Vector2d& ya) const {
-    const double h = 2.0 * ds;
+    const double h = 2.0 * ds;  // (this interval's: the member h is the trapezoid's)
     const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
     const Eigen::Vector2d fa = BrakeRate(c, x, a, ya, nullptr);
     Eigen::Vector2d ym = ya, yb = ya;
@@ -1135,10 +1235,12 @@ LapSolution SolveMinimumTimeLap(const vehicle::Car& car, const track::Track& tra
     out.frozen_wear_grip_difference = FrozenWearGripDifference(car, b, out.solve.x);
   }
   const std::vector<double>& x = out.solve.x;
-  const double time = AppendRoadFrameChannels(b.nodes, x, b.ds, out, b.hs);
+  const double time = b.uniform ? AppendRoadFrameChannels(b.nodes, x, b.ds, out, b.hs)
+                                : AppendRoadFrameChannelsOnMesh(b.nodes, x, b.node_m, out);
   AppendNodeChannels(car, p, b, x, out);
   out.lap_time = time;
   out.max_brake_force = b.max_brake_force;
+  out.rates = b.Rates(x, out.solve.lambda);
   return out;
 }
 

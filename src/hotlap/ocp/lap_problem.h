@@ -26,9 +26,11 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hotlap/ocp/ipopt_solve.h"
+#include "hotlap/ocp/mesh_error.h"
 #include "hotlap/ocp/road_frame_channels.h"
 #include "hotlap/sim/qss_lap.h"
 #include "hotlap/track/track.h"
@@ -54,6 +56,12 @@ Collocation ParseCollocation(const std::string& name);
 
 struct LapProblemOptions {
   double step_m = 2.0;  ///< mesh spacing along the centre line (an interval)
+  /// A non-uniform mesh instead (the trapezoid only; ocp/mesh_refinement.h makes them): every
+  /// node's distance along the centre line, m, increasing from 0 to the track's length (the last
+  /// node closes the lap), at least 17 nodes; InputError otherwise. Empty: the uniform mesh of
+  /// step_m. On such a mesh the pedal's smoothing weight (pedal_smoothing_weight < 0) follows
+  /// each interval's own length.
+  std::vector<double> mesh_m;
   Collocation collocation = Collocation::kTrapezoid;
   std::optional<double> front_disc_limit;  ///< K; front discs at most this at every node
   /// Temperatures end where they start (else they start fixed at `initial`); the wear starts at
@@ -158,6 +166,8 @@ struct LapLayout {
   int closure_rows = 0;
   int rate_blocks = 0;
   Collocation collocation = Collocation::kTrapezoid;
+  /// A non-uniform mesh's node distances, m (LapProblemOptions::mesh_m); empty: uniform.
+  std::vector<double> mesh_m;
 
   int intervals() const { return nodes - 1; }
   int variables() const { return nodes * vars_per_node; }
@@ -169,6 +179,13 @@ struct LapLayout {
   LapLayout WithNodes(int n) const {
     LapLayout l = *this;
     l.nodes = n;
+    l.mesh_m.clear();
+    return l;
+  }
+  /// The same problem on the non-uniform mesh `mesh_m`.
+  LapLayout WithMesh(std::vector<double> mesh_m) const {
+    LapLayout l = WithNodes(static_cast<int>(mesh_m.size()));
+    l.mesh_m = std::move(mesh_m);
     return l;
   }
 };
@@ -189,6 +206,9 @@ struct LapSolution : RoadFrameChannels {
   int variables = 0;
   int constraints = 0;
   LapLayout layout;
+  /// The trapezoid's state rates and costates at the solution, for the mesh error estimate
+  /// (EstimateMeshError, ocp/mesh_error.h); empty with Hermite-Simpson.
+  CollocationRates rates;
 };
 
 /// InputError naming the disc if a front disc of `start` is above `front_disc_limit` (K): a lap

@@ -11,6 +11,7 @@
 #include "hotlap/common/atomic_file.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/read_file.h"
+#include "hotlap/ocp/mesh_resample.h"
 #include "hotlap/ocp/solve_result_bytes.h"
 
 namespace hotlap::ocp {
@@ -47,7 +48,13 @@ void WriteLapStart(const std::filesystem::path& path, const LapSolution& solutio
   for (const int32_t v : LayoutNumbers(solution.layout)) {
     bytes.append(reinterpret_cast<const char*>(&v), sizeof(v));
   }
-  bytes += EncodeSolveResults({s});
+  // A non-uniform mesh's nodes as a second record (its x).
+  std::vector<SolveResult> records{s};
+  if (!solution.layout.mesh_m.empty()) {
+    records.emplace_back();
+    records.back().x = solution.layout.mesh_m;
+  }
+  bytes += EncodeSolveResults(records);
   WriteFileAtomically(path, [&](std::ostream& out) { out.write(bytes.data(), bytes.size()); });
 }
 
@@ -78,15 +85,23 @@ LapStart ReadLapStart(const std::filesystem::path& path) {
               v[3],
               v[4],
               v[5],
-              v[6] == 1 ? Collocation::kHermiteSimpson : Collocation::kTrapezoid};
+              v[6] == 1 ? Collocation::kHermiteSimpson : Collocation::kTrapezoid,
+              {}};
   std::vector<SolveResult> solves;
   try {
     solves = DecodeSolveResults(bytes.substr(at));
   } catch (const InputError& e) {
     throw fail(e.what());
   }
-  if (solves.size() != 1) throw fail("it holds no solve");
+  if (solves.size() != 1 && solves.size() != 2) throw fail("it holds no solve");
   s.solve = std::move(solves[0]);
+  if (solves.size() == 2) {
+    s.layout.mesh_m = std::move(solves[1].x);
+    if (static_cast<int>(s.layout.mesh_m.size()) != s.layout.nodes ||
+        s.layout.collocation != Collocation::kTrapezoid) {
+      throw fail("its mesh does not agree with its layout");
+    }
+  }
   const LapLayout& l = s.layout;
   const bool sizes = l.nodes >= 2 && l.vars_per_node > 0 && l.rows_per_node >= 0 &&
                      l.defects_per_interval >= 0 && l.closure_rows >= 0 && l.rate_blocks >= 0 &&
@@ -106,9 +121,20 @@ void UseLapStart(const LapStart& start, const track::Track& track, OptimalLapOpt
                                  start.track_length_m, track.length_m()));
   }
   // This problem's layout on the target mesh, as far as the file can tell: the same node.
-  StartFromSolution(start.solve, start.layout,
-                    LapNodeCount(track, options.step_m, options.collocation), options.collocation,
-                    true, options.start_point, options.ipopt);
+  const int nodes = LapNodeCount(track, options.step_m, options.collocation);
+  if (start.layout.mesh_m.empty()) {
+    StartFromSolution(start.solve, start.layout, nodes, options.collocation, true,
+                      options.start_point, options.ipopt);
+    return;
+  }
+  // From a non-uniform mesh (an adaptive one's) onto the uniform step_m mesh.
+  const std::vector<double> to = LayoutNodeDistances(start.layout.WithNodes(nodes), track.length_m());
+  if (options.collocation == Collocation::kTrapezoid) {
+    StartFromSolutionOnMesh(start.solve, start.layout, track.length_m(), to, true,
+                            options.start_point, options.ipopt);
+  } else {
+    options.start_point = ResampleLapPointOnMesh(start.solve.x, start.layout.mesh_m, to);
+  }
 }
 
 }  // namespace hotlap::ocp

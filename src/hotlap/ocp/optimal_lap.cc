@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
+#include "hotlap/ocp/adaptive_mesh.h"
 #include "hotlap/ocp/min_curvature_line.h"
 #include "hotlap/sim/hot_pressure.h"
 #include "hotlap/sim/qss_lap.h"
@@ -68,10 +71,13 @@ LapProblemOptions ProblemOptions(const OptimalLapOptions& options,
 }
 
 // Coarse to fine: the same problem on the coarse mesh from the guess, then its solution on the
-// fine mesh as the fine solve's start (lap.start_point and fine_ipopt's multipliers).
-void SolveCoarseFirst(const vehicle::Car& hot_car, const track::Track& track,
-                      const OptimalLapOptions& options, const LapWarmUp& w, LapProblemOptions& lap,
-                      IpoptOptions& fine_ipopt, OptimalLapRun& run) {
+// fine mesh as the fine solve's start (lap.start_point and fine_ipopt's multipliers). With the
+// adaptive mesh (`adaptive`) the converged coarse solve is returned instead, where the
+// refinement starts.
+std::optional<LapSolution> SolveCoarseFirst(const vehicle::Car& hot_car, const track::Track& track,
+                                            const OptimalLapOptions& options, bool adaptive,
+                                            const LapWarmUp& w, LapProblemOptions& lap,
+                                            IpoptOptions& fine_ipopt, OptimalLapRun& run) {
   LapProblemOptions coarse = lap;
   coarse.step_m = options.coarse_step_m;
   coarse.collocation = options.coarse_collocation;
@@ -91,10 +97,41 @@ void SolveCoarseFirst(const vehicle::Car& hot_car, const track::Track& track,
   if (options.on_coarse_solve) options.on_coarse_solve(c);
   run.coarse = c.solve;
   run.coarse_lap_time = c.lap_time;
+  if (adaptive && c.solve.ok()) return c;
   if (c.solve.ok()) {
     StartFromSolution(c.solve, c.layout, LapNodeCount(track, options.step_m, lap.collocation),
                       lap.collocation, options.coarse_multipliers, lap.start_point, fine_ipopt);
   }
+  return std::nullopt;
+}
+
+// The fine solve (`lap` from the coarse solve's start, or as given), or with the adaptive mesh
+// the refinement from `adaptive_start` (the coarse solve) or from the fine solve; a refinement
+// done elsewhere (OptimalLapOptions::presolved with a mesh) is taken on its mesh.
+void SolveFine(const vehicle::Car& hot_car, const track::Track& track,
+               const OptimalLapOptions& options, bool adaptive, const LapWarmUp& w,
+               std::optional<LapSolution> adaptive_start, LapProblemOptions& lap,
+               const IpoptOptions& fine_ipopt, OptimalLapRun& run) {
+  if (adaptive && options.presolved && !options.presolved->mesh_m.empty()) {
+    // Refined elsewhere: the last solve on its mesh.
+    lap.mesh_m = options.presolved->mesh_m;
+    lap.wear_in_programme = options.wear_in_programme;
+    run.solution =
+        SolveMinimumTimeLap(hot_car, track, lap, w.guess, fine_ipopt, &options.presolved->fine);
+    run.mesh_rounds = options.presolved->rounds;
+    return;
+  }
+  if (!adaptive_start) {
+    run.solution = SolveMinimumTimeLap(hot_car, track, lap, w.guess, fine_ipopt,
+                                       options.presolved ? &options.presolved->fine : nullptr);
+    // From a start point (or with no coarse solve): refined from this solve.
+    if (!adaptive || !run.solution.solve.ok() || options.presolved) return;
+    adaptive_start = std::move(run.solution);
+  }
+  AdaptiveMeshResult a =
+      RefineLapMesh(hot_car, track, lap, w.guess, options, std::move(*adaptive_start));
+  run.solution = std::move(a.solution);
+  run.mesh_rounds = std::move(a.rounds);
 }
 
 // The QSS lap on the optimal line, one lap from the optimal lap's own thermal start.
@@ -266,8 +303,11 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& any_car, const track::Track& tra
 
   LapProblemOptions lap = ProblemOptions(options, run.start);
   IpoptOptions fine_ipopt = options.ipopt;
-  if (options.start_point.empty() && options.coarse_step_m > options.step_m) {
-    SolveCoarseFirst(hot_car, track, options, w, lap, fine_ipopt, run);
+  const bool adaptive = options.tolerance_s > 0.0 && options.collocation == Collocation::kTrapezoid;
+  std::optional<LapSolution> adaptive_start;  // the coarse solve, where the refinement starts
+  if (options.start_point.empty() &&
+      (adaptive ? options.coarse_step_m > 0.0 : options.coarse_step_m > options.step_m)) {
+    adaptive_start = SolveCoarseFirst(hot_car, track, options, adaptive, w, lap, fine_ipopt, run);
   }
   // With the coarse solve's multipliers the fine solve is a warm start (small barrier, the point
   // kept where it is). Without them, Ipopt's own first barrier: a small one with the point alone
@@ -284,9 +324,9 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& any_car, const track::Track& tra
     // that an option given wins.
     fine_ipopt.extra.insert(fine_ipopt.extra.begin(), {"mumps_pivot_order", "3"});
   }
-  run.solution = SolveMinimumTimeLap(hot_car, track, lap, w.guess, fine_ipopt,
-                                     options.presolved ? &options.presolved->fine : nullptr);
+  SolveFine(hot_car, track, options, adaptive, w, std::move(adaptive_start), lap, fine_ipopt, run);
   run.posed = std::make_shared<const PosedLap>(PosedLap{lap, w.guess});
+  run.mesh_error = EstimateMeshError(run.solution.rates);
   QssOnOptimalLine(car, track, qss, run);
   ReplayExact(car, track, options, lap.periodic_thermal, run);
   return run;

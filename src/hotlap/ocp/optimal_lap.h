@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "hotlap/ocp/lap_problem.h"
+#include "hotlap/ocp/mesh_error.h"
+#include "hotlap/ocp/mesh_refinement.h"
 #include "hotlap/sim/replay.h"
 
 namespace hotlap::ocp {
@@ -41,14 +43,38 @@ inline IpoptOptions LapIpoptOptions() {
   return o;
 }
 
+/// One solve of the adaptive mesh's refinement (OptimalLapOptions::tolerance_s).
+struct MeshRound {
+  int nodes = 0;
+  int iterations = 0;
+  double solve_seconds = 0.0;
+  double lap_time_s = 0.0;
+  double estimated_error_s = 0.0;  ///< MeshErrorEstimate::lap_time_error_s of this solve
+  double abs_error_s = 0.0;        ///< MeshErrorEstimate::abs_error_s
+  bool converged = false;          ///< the solve converged
+};
+
 /// A lap's solves done already (e.g. in a child process, ocp/child_solve.h): the coarse solve
-/// (empty if none) and the fine one.
+/// (empty if none) and the fine one; with an adaptive mesh, the fine one's mesh and the rounds.
 struct PresolvedLap {
   SolveResult coarse, fine;
+  std::vector<double> mesh_m;
+  std::vector<MeshRound> rounds;
 };
 
 struct OptimalLapOptions {
   double step_m = 3.0;  ///< mesh spacing along the centre line
+  /// The adaptive mesh: if > 0, the estimated lap-time error asked for, s (the sum of |e_k| of
+  /// ocp/mesh_error.h), and step_m is not used. The lap is solved on the coarse mesh
+  /// (coarse_step_m, from the QSS guess, or on step_m from start_point), then again and again on
+  /// meshes refined from each solve's error estimate (RefineMesh), each solve from the last one's
+  /// point and multipliers (StartFromSolutionOnMesh), until no interval is over its share of the
+  /// tolerance, or after max_refinements solves. The trapezoid only (ignored with
+  /// Hermite-Simpson). 0: the uniform mesh of step_m.
+  double tolerance_s = 0.0;
+  int max_refinements = 6;
+  /// The refinement's limits (its tolerance_s is tolerance_s above).
+  MeshRefinementOptions refinement;
   /// Run the programme (and its warm-up, guess and replay) on the paper's models
   /// (vehicle::PaperModelsOf: the two-mass tyre, the lumped disc) instead of the car's own
   /// gas-and-rim tyres and surface-and-bulk discs.
@@ -156,6 +182,10 @@ struct OptimalLapRun {
   sim::ReplayResult exact;
   double max_tread_difference_K = 0.0;  ///< |exact - optimiser| over corners and nodes
   double max_disc_difference_K = 0.0;
+  /// The solution's mesh error estimate (ocp/mesh_error.h; empty with Hermite-Simpson).
+  MeshErrorEstimate mesh_error;
+  /// The adaptive mesh's solves, the coarse one first (empty on a fixed mesh).
+  std::vector<MeshRound> mesh_rounds;
 };
 
 /// The warm-up before a solve (RunOptimalLap's first step): the thermal state at the start line

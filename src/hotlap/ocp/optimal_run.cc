@@ -20,11 +20,19 @@ OptimalLapOptions MakeOptimalLapOptions(const OptimalRunOptions& a) {
     throw InputError(fmt::format("coarse_step_m: {:g} m is not 0 to 100 m (0: no coarse solve)",
                                  a.coarse_step_m));
   }
+  if (!(a.tolerance_s >= 0.0 && a.tolerance_s <= 1.0)) {
+    throw InputError(
+        fmt::format("tolerance: {:g} s is not 0 to 1 s (0: the fixed mesh)", a.tolerance_s));
+  }
+  if (a.tolerance_s > 0.0 && a.collocation != "trapezoid") {
+    throw InputError("the adaptive mesh (a tolerance) is for the trapezoid collocation only");
+  }
   if (a.max_iterations < 1) {
     throw InputError(fmt::format("max_iterations: {} is not 1 or more", a.max_iterations));
   }
   OptimalLapOptions o;
   o.step_m = a.step_m;
+  o.tolerance_s = a.tolerance_s;
   o.coarse_step_m = a.coarse_step_m;
   o.collocation = ParseCollocation(a.collocation);
   o.coarse_collocation = ParseCollocation(a.coarse_collocation);

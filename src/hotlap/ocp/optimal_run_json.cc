@@ -8,6 +8,44 @@
 
 namespace hotlap::ocp {
 
+namespace {
+
+// The lap's mesh: its nodes, shortest and longest interval, the error estimate, and an adaptive
+// mesh's solves.
+nlohmann::json MeshJson(const OptimalLapRun& run) {
+  const std::vector<double>& d = run.solution.distance;
+  double shortest = 0.0, longest = 0.0;
+  for (size_t k = 1; k < d.size(); ++k) {
+    const double h = d[k] - d[k - 1];
+    shortest = k == 1 ? h : std::min(shortest, h);
+    longest = std::max(longest, h);
+  }
+  nlohmann::json rounds = nlohmann::json::array();
+  for (const MeshRound& m : run.mesh_rounds) {
+    rounds.push_back({{"nodes", m.nodes},
+                      {"ipopt_iterations", m.iterations},
+                      {"solve_time_s", RoundSignificant(m.solve_seconds)},
+                      {"lap_time_s", RoundSignificant(m.lap_time_s)},
+                      {"estimated_error_s", RoundSignificant(m.estimated_error_s)},
+                      {"estimated_abs_error_s", RoundSignificant(m.abs_error_s)},
+                      {"status", m.converged ? "converged" : "failed"}});
+  }
+  const bool estimated = !run.mesh_error.interval_s.empty();
+  return {{"adaptive", !run.mesh_rounds.empty()},
+          {"nodes", run.solution.layout.nodes},
+          {"min_step_m", RoundSignificant(shortest)},
+          {"max_step_m", RoundSignificant(longest)},
+          {"estimated_error_s",
+           estimated ? nlohmann::json(RoundSignificant(run.mesh_error.lap_time_error_s))
+                     : nlohmann::json()},
+          {"estimated_abs_error_s",
+           estimated ? nlohmann::json(RoundSignificant(run.mesh_error.abs_error_s))
+                     : nlohmann::json()},
+          {"rounds", rounds}};
+}
+
+}  // namespace
+
 nlohmann::json SolvedLapJson(const SolvedLap& s, const std::string& thermal_start) {
   const SolveResult& r = s.run.solution.solve;
   const OptimalLapFigures& f = s.figures;
@@ -92,6 +130,7 @@ nlohmann::json SolvedLapJson(const SolvedLap& s, const std::string& thermal_star
       {"smoothing_effect_tread_K", RoundSignificant(s.run.max_tread_difference_K)},
       {"smoothing_effect_disc_K", RoundSignificant(s.run.max_disc_difference_K)},
       {"frozen_wear_grip_difference", RoundSignificant(s.run.solution.frozen_wear_grip_difference)},
+      {"mesh", MeshJson(s.run)},
       {"variables", s.run.solution.variables},
       {"constraints", s.run.solution.constraints},
       {"sensitivities",
@@ -154,7 +193,9 @@ nlohmann::json OptimalRunsJson(const OptimalRuns& runs, const OptimalRunOptions&
   j["track"] = track_name;
   j["car"] = car.name;
   j["overrides"] = vehicle::OverridesJson(car.overrides);
-  j["mesh_step_m"] = options.step_m;
+  j["mesh_step_m"] = options.tolerance_s > 0.0 ? nlohmann::json() : nlohmann::json(options.step_m);
+  j["mesh_tolerance_s"] =
+      options.tolerance_s > 0.0 ? nlohmann::json(options.tolerance_s) : nlohmann::json();
   j["collocation"] = options.collocation;
   j["coarse_mesh_step_m"] = options.coarse_step_m;
   j["coarse_collocation"] = options.coarse_collocation;

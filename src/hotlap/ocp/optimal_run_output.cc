@@ -90,7 +90,16 @@ std::vector<fs::path> WriteOptimalRunFiles(const fs::path& out, const std::vecto
   page.AddMetadata("car", car.path.string());
   if (!car.overrides.empty()) page.AddMetadata("overrides", vehicle::OverridesText(car.overrides));
   page.AddMetadata("track", fmt::format("{} ({:.1f} m)", track.name(), track.length_m()));
-  page.AddMetadata("mesh", fmt::format("{:g} m, trapezoidal collocation, Ipopt", step_m));
+  if (runs[0].run.mesh_rounds.empty()) {
+    page.AddMetadata("mesh", fmt::format("{:g} m, trapezoidal collocation, Ipopt", step_m));
+  } else {
+    std::string nodes;
+    for (const SolvedLap& s : runs) {
+      nodes += fmt::format("{}{} nodes (estimated error {:+.3f} ms)", nodes.empty() ? "" : ", ",
+                           s.run.solution.layout.nodes, 1e3 * s.run.mesh_error.lap_time_error_s);
+    }
+    page.AddMetadata("mesh", fmt::format("adaptive: {}; trapezoidal collocation, Ipopt", nodes));
+  }
   page.AddMetadata("version", HOTLAP_VERSION);
   page.AddHeading("Summary");
   std::vector<std::vector<std::string>> rows;

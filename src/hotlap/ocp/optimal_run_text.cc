@@ -50,6 +50,25 @@ std::string SolvedLapText(const SolvedLap& s, const std::string& thermal_start) 
     fmt::format_to(out, "  {:<6} {:>12.1f} {:>12.1f} {:>10.5f}\n", CornerName(c),
                    f.peak_disc_temp_C[i], f.peak_tread_temp_C[i], f.wear_mm[i]);
   }
+  if (!s.run.mesh_rounds.empty()) {
+    // The adaptive mesh: its nodes, intervals and estimated error, and its solves.
+    const std::vector<double>& d = s.run.solution.distance;
+    double shortest = 1e300, longest = 0.0;
+    for (size_t k = 1; k < d.size(); ++k) {
+      shortest = std::min(shortest, d[k] - d[k - 1]);
+      longest = std::max(longest, d[k] - d[k - 1]);
+    }
+    int iterations = 0;
+    for (size_t i = 1; i < s.run.mesh_rounds.size(); ++i) {
+      iterations += s.run.mesh_rounds[i].iterations;
+    }
+    fmt::format_to(out,
+                   "  adaptive mesh: {} nodes, intervals {:.2f} to {:.1f} m, estimated mesh error "
+                   "{:+.3f} ms (sum of |e| {:.3f} ms), {} refinement solves, {} iterations\n",
+                   s.run.solution.layout.nodes, shortest, longest,
+                   1e3 * s.run.mesh_error.lap_time_error_s, 1e3 * s.run.mesh_error.abs_error_s,
+                   s.run.mesh_rounds.size() - 1, iterations);
+  }
   fmt::format_to(
       out,
       "  smooth-model effect on the temperatures (exact replay): tread {:.2f} K, disc {:.2f} "

@@ -48,4 +48,23 @@ double AppendRoadFrameChannels(const std::vector<Node>& nodes, const std::vector
   return time;
 }
 
+/// As AppendRoadFrameChannels, on a mesh with the nodes at the distances `node_m` (one a node, in
+/// m): the trapezoid of w interval by interval.
+template <class Node>
+double AppendRoadFrameChannelsOnMesh(const std::vector<Node>& nodes, const std::vector<double>& x,
+                                     const std::vector<double>& node_m, RoadFrameChannels& out) {
+  double time = 0.0;
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    const Node& nd = nodes[k];
+    if (k > 0) time += 0.5 * (node_m[k] - node_m[k - 1]) * (x[nodes[k - 1].w] + x[nd.w]);
+    out.time.push_back(time);
+    out.distance.push_back(node_m[k]);
+    out.u.push_back(x[nd.u]);
+    out.v.push_back(x[nd.v]);
+    out.r.push_back(x[nd.r]);
+    out.n.push_back(x[nd.n]);
+  }
+  return time;
+}
+
 }  // namespace hotlap::ocp
