@@ -28,6 +28,7 @@ TEST(RefineMeshTest, SplitsOverItsShareAndMergesFarBelow) {
   MeshRefinementOptions o;
   o.tolerance_s = 1e-3;
   o.max_step_m = 20.0;
+  o.max_ratio = 0.0;  // no grading
   const MeshRefinement r = RefineMesh(mesh, e, o);
   EXPECT_EQ(r.split, 2);
   EXPECT_EQ(r.over_at_min_step, 0);
@@ -38,6 +39,25 @@ TEST(RefineMeshTest, SplitsOverItsShareAndMergesFarBelow) {
   ASSERT_EQ(r.mesh_m.size(), expected.size());
   for (size_t k = 0; k < expected.size(); ++k) EXPECT_NEAR(r.mesh_m[k], expected[k], 1e-12) << k;
   EXPECT_EQ(r.merged, 3);
+}
+
+// With grading, no interval is more than twice its neighbour: the split interval's neighbours
+// are split too, and theirs, until the 2.5 m pieces have grown back to 10 m.
+TEST(RefineMeshTest, GradesTheMeshAroundASplit) {
+  const std::vector<double> mesh = Uniform(10, 100.0);
+  std::vector<double> e(10, 0.05e-3);  // half of each share: nothing to do
+  e[5] = 1.0e-3;                       // 10 shares: 4 parts of 2.5 m
+  MeshRefinementOptions o;
+  o.tolerance_s = 1e-3;
+  const MeshRefinement r = RefineMesh(mesh, e, o);
+  EXPECT_EQ(r.split, 1);
+  EXPECT_EQ(r.graded, 2);  // intervals 4 and 6 into 2 parts (5 m); 3 and 7 stay: 10 <= 2 x 5
+  EXPECT_EQ(r.merged, 0);
+  for (size_t k = 1; k + 1 < r.mesh_m.size(); ++k) {
+    const double before = r.mesh_m[k] - r.mesh_m[k - 1], after = r.mesh_m[k + 1] - r.mesh_m[k];
+    EXPECT_LE(std::max(before, after), 2.0 * std::min(before, after) + 1e-9) << k;
+  }
+  EXPECT_EQ(r.mesh_m.size(), 11u + 3u + 2u);
 }
 
 TEST(RefineMeshTest, NoSplitBelowTheShortestInterval) {

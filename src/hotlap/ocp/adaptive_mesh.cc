@@ -35,6 +35,7 @@ AdaptiveMeshResult RefineLapMesh(const vehicle::Car& car, const track::Track& tr
     const MeshRefinement next = RefineMesh(
         LayoutNodeDistances(out.solution.layout, track.length_m()), e.interval_s, refine);
     if (next.split == 0) break;
+    if (options.on_mesh) options.on_mesh(next);
     LapProblemOptions o = lap;
     o.mesh_m = next.mesh_m;
     o.collocation = Collocation::kTrapezoid;

@@ -52,6 +52,18 @@ SolvedLap SolveLap(const vehicle::Car& car, const track::Track& track, OptimalLa
     options.ipopt.warm_z_upper = from->z_upper;
     options.ipopt.warm_lambda = from->lambda;
   }
+  if (log && !options.on_mesh) {
+    options.on_mesh = [&log, label](const MeshRefinement& m) {
+      double shortest = 1e300, longest = 0.0;
+      for (size_t k = 1; k < m.mesh_m.size(); ++k) {
+        shortest = std::min(shortest, m.mesh_m[k] - m.mesh_m[k - 1]);
+        longest = std::max(longest, m.mesh_m[k] - m.mesh_m[k - 1]);
+      }
+      log(fmt::format("{}: refined mesh: {} nodes ({} intervals split, {} pairs merged), "
+                      "intervals {:.2f} to {:.1f} m",
+                      label, m.mesh_m.size(), m.split, m.merged, shortest, longest));
+    };
+  }
   if (progress) {
     options.ipopt.on_iteration = [&](int it, double obj, double pr, double du) {
       return progress(label, it, obj, pr, du);

@@ -690,12 +690,16 @@ struct Builder {
     const double steer_weight =
         options.steer_smoothing_weight >= 0.0 ? options.steer_smoothing_weight : options.smoothing;
     for (int k = 0; k < intervals; ++k) {
-      // On a non-uniform mesh the pedal's weight follows each interval's own length.
+      // On a non-uniform mesh the pedal's weight follows each interval's own length, and the
+      // steer's is the 3 m mesh's times 3 m / h: the penalty is then the same integral of the
+      // squared steer rate on every mesh (a uniform mesh's, with a weight that does not change
+      // with the spacing, falls with it, and moves the lap at first order in the spacing).
       const double pedal_k = uniform || options.pedal_smoothing_weight >= 0.0
                                  ? pedal_weight
                                  : options.smoothing * std::pow(h[k] / 3.0, 2);
+      const double steer_k = uniform ? steer_weight : steer_weight * 3.0 / h[k];
       for (const auto& [a_var, b_var, weight] :
-           {std::tuple{nodes[k].steer, nodes[k + 1].steer, steer_weight},
+           {std::tuple{nodes[k].steer, nodes[k + 1].steer, steer_k},
             std::tuple{nodes[k].pedal, nodes[k + 1].pedal, pedal_k},
             std::tuple{nodes[k].power, nodes[k + 1].power,
                        options.independent_drive_and_brake ? options.smoothing : 0.0},

@@ -37,10 +37,32 @@ MeshRefinement RefineMesh(const std::vector<double>& mesh_m,
     }
     ++out.split;
   }
+  // Grading: no new interval more than `max_ratio` times its neighbour's (the lap closes, so the
+  // last interval's neighbour is the first's).
+  const auto piece = [&](size_t k) { return (mesh_m[k + 1] - mesh_m[k]) / parts[k]; };
+  const std::vector<int> wanted = parts;
+  for (bool changed = options.max_ratio > 1.0; changed;) {
+    changed = false;
+    for (size_t k = 0; k < intervals; ++k) {
+      for (const size_t n : {(k + intervals - 1) % intervals, (k + 1) % intervals}) {
+        if (piece(k) > options.max_ratio * piece(n) * (1.0 + 1e-12)) {
+          const double h = mesh_m[k + 1] - mesh_m[k];
+          parts[k] = static_cast<int>(std::ceil(h / (options.max_ratio * piece(n)) - 1e-9));
+          changed = true;
+        }
+      }
+    }
+  }
+  for (size_t k = 0; k < intervals; ++k) out.graded += parts[k] > wanted[k] ? 1 : 0;
   out.mesh_m.push_back(mesh_m.front());
   for (size_t k = 0; k < intervals; ++k) {
     const double a = mesh_m[k], h = mesh_m[k + 1] - a;
-    if (parts[k] == 1 && k + 1 < intervals && parts[k + 1] == 1) {
+    const size_t before = (k + intervals - 1) % intervals, after2 = (k + 2) % intervals;
+    if (parts[k] == 1 && k + 1 < intervals && parts[k + 1] == 1 &&
+        (options.max_ratio <= 1.0 || (h + mesh_m[k + 2] - mesh_m[k + 1] <=
+                                          options.max_ratio * piece(before) &&
+                                      h + mesh_m[k + 2] - mesh_m[k + 1] <=
+                                          options.max_ratio * piece(after2)))) {
       // Merge with the next one where the union is far within its share.
       const double hb = mesh_m[k + 2] - mesh_m[k + 1], u = h + hb;
       const double density = 0.5 * (std::abs(interval_error_s[k]) / (h * h * h) +

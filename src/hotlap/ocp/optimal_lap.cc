@@ -9,6 +9,7 @@
 
 #include "hotlap/common/error.h"
 #include "hotlap/ocp/adaptive_mesh.h"
+#include "hotlap/ocp/mesh_resample.h"
 #include "hotlap/ocp/min_curvature_line.h"
 #include "hotlap/sim/hot_pressure.h"
 #include "hotlap/sim/qss_lap.h"
@@ -42,6 +43,7 @@ LapProblemOptions ProblemOptions(const OptimalLapOptions& options,
                                  const sim::ReplayInitialState& start) {
   LapProblemOptions lap;
   lap.step_m = options.step_m;
+  lap.mesh_m = options.mesh_m;
   lap.collocation = options.collocation;
   lap.front_disc_limit = options.front_disc_limit;
   lap.ambient_temp = options.ambient_temp;
@@ -98,7 +100,10 @@ std::optional<LapSolution> SolveCoarseFirst(const vehicle::Car& hot_car, const t
   run.coarse = c.solve;
   run.coarse_lap_time = c.lap_time;
   if (adaptive && c.solve.ok()) return c;
-  if (c.solve.ok()) {
+  if (c.solve.ok() && !lap.mesh_m.empty()) {
+    StartFromSolutionOnMesh(c.solve, c.layout, track.length_m(), lap.mesh_m,
+                            options.coarse_multipliers, lap.start_point, fine_ipopt);
+  } else if (c.solve.ok()) {
     StartFromSolution(c.solve, c.layout, LapNodeCount(track, options.step_m, lap.collocation),
                       lap.collocation, options.coarse_multipliers, lap.start_point, fine_ipopt);
   }

@@ -73,8 +73,13 @@ struct OptimalLapOptions {
   /// Hermite-Simpson). 0: the uniform mesh of step_m.
   double tolerance_s = 0.0;
   int max_refinements = 6;
+  /// A fixed non-uniform mesh (LapProblemOptions::mesh_m) for the step_m solve instead of the
+  /// uniform one (with tolerance_s, its first solve's); empty: uniform.
+  std::vector<double> mesh_m;
   /// The refinement's limits (its tolerance_s is tolerance_s above).
   MeshRefinementOptions refinement;
+  /// The adaptive mesh: called with each refined mesh before its solve.
+  std::function<void(const MeshRefinement&)> on_mesh;
   /// Run the programme (and its warm-up, guess and replay) on the paper's models
   /// (vehicle::PaperModelsOf: the two-mass tyre, the lumped disc) instead of the car's own
   /// gas-and-rim tyres and surface-and-bulk discs.
