@@ -92,10 +92,11 @@ int RunOptimal(const OptimalArgs& a) {
   }
   if (o.tolerance_s > 0.0) {
     for (const CLI::Option* opt : a.stock_car_only) {
-      if (opt->count() > 0 && (opt->get_name() == "--step-m" || opt->get_name() == "--mesh-check")) {
-        throw InputError(fmt::format(
-            "{} is for a fixed mesh; --tolerance makes an adaptive one (give either)",
-            opt->get_name()));
+      if (opt->count() > 0 &&
+          (opt->get_name() == "--step-m" || opt->get_name() == "--mesh-check")) {
+        throw InputError(
+            fmt::format("{} is for a fixed mesh; --tolerance makes an adaptive one (give either)",
+                        opt->get_name()));
       }
     }
   }

@@ -18,7 +18,7 @@ namespace {
 // A lap of 3 nodes, one variable and one row of each kind per node or interval.
 LapSolution TinySolution() {
   LapSolution s;
-  s.layout = {3, 1, 1, 1, 1, 1};
+  s.layout = {3, 1, 1, 1, 1, 1, Collocation::kTrapezoid, {}};
   s.solve.status = SolveStatus::kConverged;
   s.solve.message = "converged";
   s.solve.x = {1.0, 2.0, 3.0};
@@ -45,6 +45,19 @@ TEST(LapStartFileTest, WritesAndReadsBackEverything) {
   EXPECT_EQ(r.solve.lambda, s.solve.lambda);
   EXPECT_EQ(r.solve.iterations, 12);
   EXPECT_EQ(r.solve.status, SolveStatus::kConverged);
+}
+
+// A lap on a non-uniform mesh keeps its nodes' distances.
+TEST(LapStartFileTest, KeepsANonUniformMesh) {
+  test::TempDir dir;
+  LapSolution s = TinySolution();
+  s.layout.mesh_m = {0.0, 500.0, 2198.0};
+  const auto path = dir.path() / "lap.bin";
+  WriteLapStart(path, s, 2198.0);
+  const LapStart r = ReadLapStart(path);
+  EXPECT_EQ(r.layout.mesh_m, s.layout.mesh_m);
+  EXPECT_EQ(r.solve.x, s.solve.x);
+  EXPECT_EQ(ReadLapStart(path).layout.nodes, 3);
 }
 
 TEST(LapStartFileTest, KeepsTheCollocationAndReadsTheFirstVersionAsTrapezoid) {

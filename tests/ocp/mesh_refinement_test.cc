@@ -34,8 +34,7 @@ TEST(RefineMeshTest, SplitsOverItsShareAndMergesFarBelow) {
   EXPECT_EQ(r.over_at_min_step, 0);
   // Intervals 0-1 and 4-5 and 7-8 merge (two 10 m into 20 m); 2 and 9 stay alone (no partner
   // left that is not split).
-  const std::vector<double> expected = {0,  20, 30, 35,   40,   60,   62.5,
-                                        65, 67.5, 70, 90, 100};
+  const std::vector<double> expected = {0, 20, 30, 35, 40, 60, 62.5, 65, 67.5, 70, 90, 100};
   ASSERT_EQ(r.mesh_m.size(), expected.size());
   for (size_t k = 0; k < expected.size(); ++k) EXPECT_NEAR(r.mesh_m[k], expected[k], 1e-12) << k;
   EXPECT_EQ(r.merged, 3);

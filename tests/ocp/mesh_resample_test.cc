@@ -50,8 +50,9 @@ TEST(ResampleOnMeshTest, UniformMeshesAgreeWithTheNodeCountResampling) {
   for (size_t i = 0; i < a.size(); ++i) EXPECT_NEAR(a[i], b[i], 1e-12) << i;
   const LapMultipliers ma = ResampleLapMultipliers(s, from, to_uniform);
   const LapMultipliers mb = ResampleLapMultipliersOnMesh(s, from, from_m, to_uniform, to_m);
-  for (const auto& [x, y] : {std::pair{&ma.z_lower, &mb.z_lower},
-                             std::pair{&ma.z_upper, &mb.z_upper}, std::pair{&ma.lambda, &mb.lambda}}) {
+  for (const auto& [x, y] :
+       {std::pair{&ma.z_lower, &mb.z_lower}, std::pair{&ma.z_upper, &mb.z_upper},
+        std::pair{&ma.lambda, &mb.lambda}}) {
     ASSERT_EQ(x->size(), y->size());
     for (size_t i = 0; i < x->size(); ++i) EXPECT_NEAR((*x)[i], (*y)[i], 1e-12) << i;
   }
@@ -83,7 +84,8 @@ TEST(ResampleOnMeshTest, NodeMultipliersKeepTheirDensity) {
   for (size_t k = 0; k < from_m.size(); ++k) {
     const double share = 0.5 * ((k > 0 ? from_m[k] - from_m[k - 1] : 0.0) +
                                 (k + 1 < from_m.size() ? from_m[k + 1] - from_m[k] : 0.0));
-    for (int i = 0; i < from.vars_per_node; ++i) s.z_lower[k * from.vars_per_node + i] = density * share;
+    for (int i = 0; i < from.vars_per_node; ++i)
+      s.z_lower[k * from.vars_per_node + i] = density * share;
   }
   const LapMultipliers m = ResampleLapMultipliersOnMesh(s, from, from_m, to, to_m);
   double sum = 0.0;

@@ -22,10 +22,10 @@ SolveResult EncodeMesh(const std::vector<double>& mesh_m, const std::vector<Mesh
   SolveResult r;
   r.x = mesh_m;
   for (const MeshRound& m : rounds) {
-    r.z_lower.insert(r.z_lower.end(),
-                     {static_cast<double>(m.nodes), static_cast<double>(m.iterations),
-                      m.solve_seconds, m.lap_time_s, m.estimated_error_s, m.abs_error_s,
-                      m.converged ? 1.0 : 0.0});
+    r.z_lower.insert(
+        r.z_lower.end(),
+        {static_cast<double>(m.nodes), static_cast<double>(m.iterations), m.solve_seconds,
+         m.lap_time_s, m.estimated_error_s, m.abs_error_s, m.converged ? 1.0 : 0.0});
   }
   return r;
 }
@@ -34,8 +34,8 @@ std::vector<MeshRound> DecodeRounds(const SolveResult& r) {
   std::vector<MeshRound> out;
   for (size_t i = 0; i + kRoundNumbers <= r.z_lower.size(); i += kRoundNumbers) {
     const double* v = r.z_lower.data() + i;
-    out.push_back({static_cast<int>(v[0]), static_cast<int>(v[1]), v[2], v[3], v[4], v[5],
-                   v[6] != 0.0});
+    out.push_back(
+        {static_cast<int>(v[0]), static_cast<int>(v[1]), v[2], v[3], v[4], v[5], v[6] != 0.0});
   }
   return out;
 }
@@ -59,7 +59,8 @@ SolvedLap SolveLap(const vehicle::Car& car, const track::Track& track, OptimalLa
         shortest = std::min(shortest, m.mesh_m[k] - m.mesh_m[k - 1]);
         longest = std::max(longest, m.mesh_m[k] - m.mesh_m[k - 1]);
       }
-      log(fmt::format("{}: refined mesh: {} nodes ({} intervals split, {} pairs merged), "
+      log(
+          fmt::format("{}: refined mesh: {} nodes ({} intervals split, {} pairs merged), "
                       "intervals {:.2f} to {:.1f} m",
                       label, m.mesh_m.size(), m.split, m.merged, shortest, longest));
     };
@@ -69,8 +70,7 @@ SolvedLap SolveLap(const vehicle::Car& car, const track::Track& track, OptimalLa
       return progress(label, it, obj, pr, du);
     };
   }
-  const bool adaptive =
-      options.tolerance_s > 0.0 && options.collocation == Collocation::kTrapezoid;
+  const bool adaptive = options.tolerance_s > 0.0 && options.collocation == Collocation::kTrapezoid;
   if (log && !options.presolved) {
     log(fmt::format(
         "{}: solving ({}{}{}{})...", label,
@@ -103,11 +103,11 @@ SolvedLap SolveLap(const vehicle::Car& car, const track::Track& track, OptimalLa
     }
     for (size_t i = 1; i < s.run.mesh_rounds.size(); ++i) {
       const MeshRound& m = s.run.mesh_rounds[i];
-      log(fmt::format("{}: mesh round {}: {} nodes, {} iterations in {:.1f} s, lap {:.4f} s, "
-                      "estimated mesh error {:+.3f} ms (sum of |e| {:.3f} ms){}",
-                      label, i, m.nodes, m.iterations, m.solve_seconds, m.lap_time_s,
-                      1e3 * m.estimated_error_s, 1e3 * m.abs_error_s,
-                      m.converged ? "" : ", not converged: the mesh before is kept"));
+      log(fmt::format(
+          "{}: mesh round {}: {} nodes, {} iterations in {:.1f} s, lap {:.4f} s, "
+          "estimated mesh error {:+.3f} ms (sum of |e| {:.3f} ms){}",
+          label, i, m.nodes, m.iterations, m.solve_seconds, m.lap_time_s, 1e3 * m.estimated_error_s,
+          1e3 * m.abs_error_s, m.converged ? "" : ", not converged: the mesh before is kept"));
     }
     log(
         fmt::format("{}: {} after {} iterations in {:.1f} s: lap {:.3f} s (QSS {:.3f} s on the "
@@ -147,8 +147,8 @@ DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track
   // from 846 to 500 degC) the free lap is a poor start: 241 iterations (206 s) on the 3 m mesh
   // from it against 66 after 91 on the 15 m mesh (46 s in all), the same lap. The limited coarse
   // solve starts from the free one's (52 iterations against 324 from the QSS guess, the same
-  // lap; docs/validation/optimal-control.md, "Speed"), and from there the two laps are independent: the
-  // limited one runs in a child process beside the free one's fine solve.
+  // lap; docs/validation/optimal-control.md, "Speed"), and from there the two laps are independent:
+  // the limited one runs in a child process beside the free one's fine solve.
   const bool coarse_to_fine =
       options.tolerance_s > 0.0 && options.collocation == Collocation::kTrapezoid
           ? options.coarse_step_m > 0.0
@@ -184,8 +184,8 @@ DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track
   if (child) {
     std::optional<std::vector<SolveResult>> r = child->Join();
     if (r && r->size() == 3) {
-      limited_options.presolved = PresolvedLap{std::move((*r)[0]), std::move((*r)[1]),
-                                               (*r)[2].x, DecodeRounds((*r)[2])};
+      limited_options.presolved =
+          PresolvedLap{std::move((*r)[0]), std::move((*r)[1]), (*r)[2].x, DecodeRounds((*r)[2])};
       c.limited_in_second_process = true;
     } else if (log) {
       log(fmt::format("{}: the second process gave no answer; solving here", limited_label));

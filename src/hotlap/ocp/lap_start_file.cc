@@ -128,7 +128,8 @@ void UseLapStart(const LapStart& start, const track::Track& track, OptimalLapOpt
     return;
   }
   // From a non-uniform mesh (an adaptive one's) onto the uniform step_m mesh.
-  const std::vector<double> to = LayoutNodeDistances(start.layout.WithNodes(nodes), track.length_m());
+  const std::vector<double> to =
+      LayoutNodeDistances(start.layout.WithNodes(nodes), track.length_m());
   if (options.collocation == Collocation::kTrapezoid) {
     StartFromSolutionOnMesh(start.solve, start.layout, track.length_m(), to, true,
                             options.start_point, options.ipopt);

@@ -5,6 +5,8 @@
 /// without the disc limit (the layout is the same), starts from it as coarse to fine starts from
 /// the coarse solve: `hotlap optimise --save-solution FILE` writes one, `--warm-start FILE` reads
 /// it (docs/optimal-control.md). The file is binary, this machine's byte order, not for archives.
+/// A lap on a non-uniform mesh (an adaptive one's) keeps its nodes' distances as a second record,
+/// and starts a solve through ResampleLapPointOnMesh and ResampleLapMultipliersOnMesh.
 
 #include <filesystem>
 

@@ -40,8 +40,8 @@ MeshErrorEstimate EstimateMeshError(const CollocationRates& r) {
     if (!any) continue;  // a state without defects
     for (int k = 0; k < nodes; ++k) f[k] = r.rates[static_cast<size_t>(k) * r.states + j];
     for (int k = 0; k < intervals; ++k) {
-      e.interval_s[k] += r.costates[static_cast<size_t>(k) * r.states + j] *
-                         TrapezoidDefect(r.node_m, f, k);
+      e.interval_s[k] +=
+          r.costates[static_cast<size_t>(k) * r.states + j] * TrapezoidDefect(r.node_m, f, k);
     }
   }
   for (int k = 0; k < intervals; ++k) {

@@ -14,9 +14,9 @@ MeshRefinement RefineMesh(const std::vector<double>& mesh_m,
                           const MeshRefinementOptions& options) {
   if (mesh_m.size() < 2 || interval_error_s.size() + 1 != mesh_m.size() ||
       !(options.tolerance_s > 0.0)) {
-    throw InputError(fmt::format(
-        "mesh refinement: {} nodes, {} interval errors and a tolerance of {:g} s", mesh_m.size(),
-        interval_error_s.size(), options.tolerance_s));
+    throw InputError(
+        fmt::format("mesh refinement: {} nodes, {} interval errors and a tolerance of {:g} s",
+                    mesh_m.size(), interval_error_s.size(), options.tolerance_s));
   }
   const double length = mesh_m.back() - mesh_m.front();
   const size_t intervals = interval_error_s.size();
@@ -59,10 +59,9 @@ MeshRefinement RefineMesh(const std::vector<double>& mesh_m,
     const double a = mesh_m[k], h = mesh_m[k + 1] - a;
     const size_t before = (k + intervals - 1) % intervals, after2 = (k + 2) % intervals;
     if (parts[k] == 1 && k + 1 < intervals && parts[k + 1] == 1 &&
-        (options.max_ratio <= 1.0 || (h + mesh_m[k + 2] - mesh_m[k + 1] <=
-                                          options.max_ratio * piece(before) &&
-                                      h + mesh_m[k + 2] - mesh_m[k + 1] <=
-                                          options.max_ratio * piece(after2)))) {
+        (options.max_ratio <= 1.0 ||
+         (h + mesh_m[k + 2] - mesh_m[k + 1] <= options.max_ratio * piece(before) &&
+          h + mesh_m[k + 2] - mesh_m[k + 1] <= options.max_ratio * piece(after2)))) {
       // Merge with the next one where the union is far within its share.
       const double hb = mesh_m[k + 2] - mesh_m[k + 1], u = h + hb;
       const double density = 0.5 * (std::abs(interval_error_s[k]) / (h * h * h) +

@@ -20,10 +20,10 @@
 namespace hotlap::ocp {
 
 struct MeshRefinementOptions {
-  double tolerance_s = 1e-3;    ///< the sum of |e_k| asked for, s
-  double min_step_m = 0.75;     ///< no interval is split below this, m
-  double max_step_m = 15.0;     ///< no merge makes an interval longer than this, m (the coarse mesh's)
-  int max_split = 4;            ///< an interval into at most this many in one round
+  double tolerance_s = 1e-3;  ///< the sum of |e_k| asked for, s
+  double min_step_m = 0.75;   ///< no interval is split below this, m
+  double max_step_m = 15.0;  ///< no merge makes an interval longer than this, m (the coarse mesh's)
+  int max_split = 4;         ///< an interval into at most this many in one round
   double merge_fraction = 0.1;  ///< merge where the union's estimate is below this of its share
   /// Grading: an interval at most this many times as long as either neighbour (more parts where
   /// a split neighbour asks it, no merge that breaks it; <= 1: none).

@@ -19,8 +19,8 @@ struct Interpolant {
   std::pair<size_t, double> Locate(double at) const {
     if (places.size() < 2 || at <= places.front()) return {0, 0.0};
     if (at >= places.back()) return {places.size() - 2, 1.0};
-    const size_t j = static_cast<size_t>(
-        std::upper_bound(places.begin(), places.end(), at) - places.begin() - 1);
+    const size_t j = static_cast<size_t>(std::upper_bound(places.begin(), places.end(), at) -
+                                         places.begin() - 1);
     return {j, (at - places[j]) / (places[j + 1] - places[j])};
   }
 };
@@ -55,8 +55,8 @@ void Resample(const std::vector<double>& src, size_t src_begin, const std::vecto
     const double b = in_scale.empty() ? 1.0 : 1.0 / in_scale[j1];
     const double c = out_scale.empty() ? 1.0 : out_scale[k];
     for (size_t i = 0; i < per; ++i) {
-      dst[dst_begin + k * per + i] =
-          c * ((1.0 - w) * a * src[src_begin + j * per + i] + w * b * src[src_begin + j1 * per + i]);
+      dst[dst_begin + k * per + i] = c * ((1.0 - w) * a * src[src_begin + j * per + i] +
+                                          w * b * src[src_begin + j1 * per + i]);
     }
   }
 }
@@ -113,8 +113,7 @@ LapMultipliers ResampleLapMultipliersOnMesh(const SolveResult& solve, const LapL
   size_t src = static_cast<size_t>(from.nodes) * from.rows_per_node;
   size_t dst = static_cast<size_t>(to.nodes) * to.rows_per_node;
   // The defects: costates, the same on any mesh, at the interval midpoints.
-  Resample(solve.lambda, src, from_mid, {}, out.lambda, dst, to_mid, {},
-           from.defects_per_interval);
+  Resample(solve.lambda, src, from_mid, {}, out.lambda, dst, to_mid, {}, from.defects_per_interval);
   src += static_cast<size_t>(from.intervals()) * from.defects_per_interval;
   dst += static_cast<size_t>(to.intervals()) * to.defects_per_interval;
   std::copy_n(solve.lambda.begin() + src, from.closure_rows, out.lambda.begin() + dst);

@@ -382,7 +382,11 @@ std::vector<TurnApproach> FindTurnApproaches(const LapSolution& solution, const 
     // that braking starts.
     const size_t m = n - 1;  // the last node repeats the first
     const auto prev = [m](size_t k) { return (k + m - 1) % m; };
-    const double spacing = solution.distance[1] - solution.distance[0];
+    // (The shortest interval: on a non-uniform mesh 600 m is at most that many nodes.)
+    double spacing = solution.distance[1] - solution.distance[0];
+    for (size_t k = 2; k < n; ++k) {
+      spacing = std::min(spacing, solution.distance[k] - solution.distance[k - 1]);
+    }
     const size_t reach = std::min(m / 2, static_cast<size_t>(600.0 / spacing));
     const auto off_power = [&](size_t k) { return solution.drive_power[k] < 0.95 * wheel_power; };
     const auto braking = [&](size_t k) { return solution.brake_force[k] > 100.0; };

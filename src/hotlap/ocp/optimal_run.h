@@ -24,7 +24,7 @@ namespace hotlap::ocp {
 
 /// The options of an optimal-lap run, as the commands take them (docs/optimal-control.md).
 struct OptimalRunOptions {
-  double step_m = 3.0;                    ///< mesh spacing along the centre line, m
+  double step_m = 3.0;  ///< mesh spacing along the centre line, m
   /// The adaptive mesh (OptimalLapOptions::tolerance_s): the estimated lap-time error asked
   /// for, s; 0: the fixed mesh of step_m.
   double tolerance_s = 0.0;

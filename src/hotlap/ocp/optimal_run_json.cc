@@ -31,17 +31,17 @@ nlohmann::json MeshJson(const OptimalLapRun& run) {
                       {"status", m.converged ? "converged" : "failed"}});
   }
   const bool estimated = !run.mesh_error.interval_s.empty();
-  return {{"adaptive", !run.mesh_rounds.empty()},
-          {"nodes", run.solution.layout.nodes},
-          {"min_step_m", RoundSignificant(shortest)},
-          {"max_step_m", RoundSignificant(longest)},
-          {"estimated_error_s",
-           estimated ? nlohmann::json(RoundSignificant(run.mesh_error.lap_time_error_s))
-                     : nlohmann::json()},
-          {"estimated_abs_error_s",
-           estimated ? nlohmann::json(RoundSignificant(run.mesh_error.abs_error_s))
-                     : nlohmann::json()},
-          {"rounds", rounds}};
+  return {
+      {"adaptive", !run.mesh_rounds.empty()},
+      {"nodes", run.solution.layout.nodes},
+      {"min_step_m", RoundSignificant(shortest)},
+      {"max_step_m", RoundSignificant(longest)},
+      {"estimated_error_s", estimated
+                                ? nlohmann::json(RoundSignificant(run.mesh_error.lap_time_error_s))
+                                : nlohmann::json()},
+      {"estimated_abs_error_s",
+       estimated ? nlohmann::json(RoundSignificant(run.mesh_error.abs_error_s)) : nlohmann::json()},
+      {"rounds", rounds}};
 }
 
 }  // namespace
