@@ -1,7 +1,6 @@
 #pragma once
 // A short closed track for the mesh tests: a stadium whose two half circles (radius 80 m, flat)
-// are entered and left by 60 m clothoids, between 100 m straights; 823 m, 5 m wide (a narrow
-// road leaves the line little choice, and the laps fewer local optima).
+// are entered and left by 60 m clothoids, between 100 m straights; 823 m, 12 m wide.
 
 #include <cmath>
 
@@ -18,7 +17,7 @@ inline track::Track ShortStadium() {
     p.length_m = length;
     p.curvature = kappa;
     p.bank = p.grade = CubicHermite::Constant(0.0);
-    p.width_left = p.width_right = CubicHermite::Constant(2.5);
+    p.width_left = p.width_right = CubicHermite::Constant(6.0);
     return p;
   };
   const CubicHermite zero = CubicHermite::Constant(0.0);

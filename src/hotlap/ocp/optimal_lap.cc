@@ -82,6 +82,7 @@ std::optional<LapSolution> SolveCoarseFirst(const vehicle::Car& hot_car, const t
                                             IpoptOptions& fine_ipopt, OptimalLapRun& run) {
   LapProblemOptions coarse = lap;
   coarse.step_m = options.coarse_step_m;
+  coarse.mesh_m.clear();  // the coarse mesh is uniform
   coarse.collocation = options.coarse_collocation;
   IpoptOptions coarse_ipopt = options.ipopt;
   if (options.coarse_start) {
