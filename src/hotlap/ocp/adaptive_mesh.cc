@@ -41,8 +41,12 @@ AdaptiveMeshResult RefineLapMesh(const vehicle::Car& car, const track::Track& tr
     o.collocation = Collocation::kTrapezoid;
     o.wear_in_programme = options.wear_in_programme;
     IpoptOptions ipopt = options.ipopt;
+    // The point alone: with the multipliers too (an Ipopt warm start at a small barrier) the
+    // first refined solve of Darlington's lap stalled at a constraint violation of 1e-2 for
+    // 400-500 iterations on two meshes; from the point alone the same meshes converged in about
+    // 160, then 75 and 35 (docs/validation/optimal-lap.md, "Mesh").
     StartFromSolutionOnMesh(out.solution.solve, out.solution.layout, track.length_m(), next.mesh_m,
-                            true, o.start_point, ipopt);
+                            options.refinement_multipliers, o.start_point, ipopt);
     // From a solution: SCOTCH's ordering, as coarse to fine (optimal_lap.cc).
     ipopt.extra.insert(ipopt.extra.begin(), {"mumps_pivot_order", "3"});
     LapSolution s = SolveMinimumTimeLap(car, track, o, guess, ipopt);

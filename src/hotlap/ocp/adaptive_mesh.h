@@ -20,7 +20,8 @@ struct AdaptiveMeshResult {
 
 /// Refines from `start` (a converged solve of `lap` on any mesh of `track`): at most
 /// options.max_refinements solves of `lap` on the refined meshes (its mesh_m and start_point
-/// replaced; the wear in the programme as options.wear_in_programme), each with options.ipopt
+/// replaced: the last solve's point, and its multipliers if options.refinement_multipliers; the
+/// wear in the programme as options.wear_in_programme), each with options.ipopt
 /// and MUMPS' SCOTCH ordering as every solve from a solution. Stops when no interval is over its
 /// share of options.tolerance_s (RefineMesh splits none) or a solve fails (its round is recorded,
 /// the solution kept is the one before).

@@ -78,6 +78,9 @@ struct OptimalLapOptions {
   std::vector<double> mesh_m;
   /// The refinement's limits (its tolerance_s is tolerance_s above).
   MeshRefinementOptions refinement;
+  /// The adaptive mesh: start each refined solve from the last one's multipliers too (an Ipopt
+  /// warm start), not only its point (adaptive_mesh.cc says why not by default).
+  bool refinement_multipliers = false;
   /// The adaptive mesh: called with each refined mesh before its solve.
   std::function<void(const MeshRefinement&)> on_mesh;
   /// Run the programme (and its warm-up, guess and replay) on the paper's models
