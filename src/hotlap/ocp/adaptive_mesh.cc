@@ -23,10 +23,12 @@ MeshRound MeshRoundOf(const LapSolution& solution) {
 
 AdaptiveMeshResult RefineLapMesh(const vehicle::Car& car, const track::Track& track,
                                  const LapProblemOptions& lap, const sim::QssLap& guess,
-                                 const OptimalLapOptions& options, LapSolution start) {
+                                 const OptimalLapOptions& options, LapSolution start,
+                                 LapProblemOptions start_problem) {
   AdaptiveMeshResult out;
   out.rounds.push_back(MeshRoundOf(start));
   out.solution = std::move(start);
+  out.problem = std::move(start_problem);
   MeshRefinementOptions refine = options.refinement;
   refine.tolerance_s = options.tolerance_s;
   for (int round = 0; round < options.max_refinements; ++round) {
@@ -53,6 +55,7 @@ AdaptiveMeshResult RefineLapMesh(const vehicle::Car& car, const track::Track& tr
     out.rounds.push_back(MeshRoundOf(s));
     if (!s.solve.ok()) break;
     out.solution = std::move(s);
+    out.problem = std::move(o);
   }
   return out;
 }

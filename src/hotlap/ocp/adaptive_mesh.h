@@ -15,10 +15,13 @@ namespace hotlap::ocp {
 struct AdaptiveMeshResult {
   /// The last converged solve (`start` if none after it converged).
   LapSolution solution;
+  /// Its problem as posed (the mesh, the start point that froze the wear): `start_problem`, or
+  /// the refined solve's. RunOptimalLap keeps it (OptimalLapRun::posed) for the sensitivities.
+  LapProblemOptions problem;
   std::vector<MeshRound> rounds;  ///< `start` first, then each solve
 };
 
-/// Refines from `start` (a converged solve of `lap` on any mesh of `track`): at most
+/// Refines from `start` (a converged solve of `start_problem` on any mesh of `track`): at most
 /// options.max_refinements solves of `lap` on the refined meshes (its mesh_m and start_point
 /// replaced: the last solve's point, and its multipliers if options.refinement_multipliers; the
 /// wear in the programme as options.wear_in_programme), each with options.ipopt
@@ -27,7 +30,8 @@ struct AdaptiveMeshResult {
 /// the solution kept is the one before).
 AdaptiveMeshResult RefineLapMesh(const vehicle::Car& car, const track::Track& track,
                                  const LapProblemOptions& lap, const sim::QssLap& guess,
-                                 const OptimalLapOptions& options, LapSolution start);
+                                 const OptimalLapOptions& options, LapSolution start,
+                                 LapProblemOptions start_problem);
 
 /// A solve's round: its nodes, iterations, time, lap and estimate.
 MeshRound MeshRoundOf(const LapSolution& solution);

@@ -14,14 +14,18 @@ namespace hotlap::ocp {
 
 namespace {
 
-// The child's adaptive mesh and its rounds as one more SolveResult for the pipe (x the mesh,
-// z_lower the rounds, seven numbers each), and back.
+// The child's adaptive mesh as one more SolveResult for the pipe: x the mesh of the solve kept
+// (empty if it kept the coarse one), z_upper that solve's start point (it froze the wear),
+// z_lower the rounds (seven numbers each); and back.
 constexpr int kRoundNumbers = 7;
 
-SolveResult EncodeMesh(const std::vector<double>& mesh_m, const std::vector<MeshRound>& rounds) {
+SolveResult EncodeMesh(const OptimalLapRun& run) {
   SolveResult r;
-  r.x = mesh_m;
-  for (const MeshRound& m : rounds) {
+  if (run.posed) {
+    r.x = run.posed->problem.mesh_m;
+    if (!r.x.empty()) r.z_upper = run.posed->problem.start_point;
+  }
+  for (const MeshRound& m : run.mesh_rounds) {
     r.z_lower.insert(
         r.z_lower.end(),
         {static_cast<double>(m.nodes), static_cast<double>(m.iterations), m.solve_seconds,
@@ -171,9 +175,7 @@ DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track
       child.emplace([&] {
         const SolvedLap l =
             SolveLap(car, track, limited_options, limited_label, nullptr, progress, {}, &warm_up);
-        return std::vector<SolveResult>{
-            l.run.coarse, l.run.solution.solve,
-            EncodeMesh(l.run.solution.layout.mesh_m, l.run.mesh_rounds)};
+        return std::vector<SolveResult>{l.run.coarse, l.run.solution.solve, EncodeMesh(l.run)};
       });
     };
   }
@@ -184,8 +186,8 @@ DiscLimitComparison CompareDiscLimit(const vehicle::Car& car, const track::Track
   if (child) {
     std::optional<std::vector<SolveResult>> r = child->Join();
     if (r && r->size() == 3) {
-      limited_options.presolved =
-          PresolvedLap{std::move((*r)[0]), std::move((*r)[1]), (*r)[2].x, DecodeRounds((*r)[2])};
+      limited_options.presolved = PresolvedLap{std::move((*r)[0]), std::move((*r)[1]), (*r)[2].x,
+                                               DecodeRounds((*r)[2]), (*r)[2].z_upper};
       c.limited_in_second_process = true;
     } else if (log) {
       log(fmt::format("{}: the second process gave no answer; solving here", limited_label));

@@ -72,14 +72,21 @@ LapProblemOptions ProblemOptions(const OptimalLapOptions& options,
   return lap;
 }
 
+// A converged solve and its problem as posed: where the adaptive mesh's refinement starts.
+struct SolvedProblem {
+  LapSolution solution;
+  LapProblemOptions problem;
+};
+
 // Coarse to fine: the same problem on the coarse mesh from the guess, then its solution on the
 // fine mesh as the fine solve's start (lap.start_point and fine_ipopt's multipliers). With the
 // adaptive mesh (`adaptive`) the converged coarse solve is returned instead, where the
 // refinement starts.
-std::optional<LapSolution> SolveCoarseFirst(const vehicle::Car& hot_car, const track::Track& track,
-                                            const OptimalLapOptions& options, bool adaptive,
-                                            const LapWarmUp& w, LapProblemOptions& lap,
-                                            IpoptOptions& fine_ipopt, OptimalLapRun& run) {
+std::optional<SolvedProblem> SolveCoarseFirst(const vehicle::Car& hot_car,
+                                              const track::Track& track,
+                                              const OptimalLapOptions& options, bool adaptive,
+                                              const LapWarmUp& w, LapProblemOptions& lap,
+                                              IpoptOptions& fine_ipopt, OptimalLapRun& run) {
   LapProblemOptions coarse = lap;
   coarse.step_m = options.coarse_step_m;
   coarse.mesh_m.clear();  // the coarse mesh is uniform
@@ -100,7 +107,7 @@ std::optional<LapSolution> SolveCoarseFirst(const vehicle::Car& hot_car, const t
   if (options.on_coarse_solve) options.on_coarse_solve(c);
   run.coarse = c.solve;
   run.coarse_lap_time = c.lap_time;
-  if (adaptive && c.solve.ok()) return c;
+  if (adaptive && c.solve.ok()) return SolvedProblem{c, coarse};
   if (c.solve.ok() && !lap.mesh_m.empty()) {
     StartFromSolutionOnMesh(c.solve, c.layout, track.length_m(), lap.mesh_m,
                             options.coarse_multipliers, lap.start_point, fine_ipopt);
@@ -113,18 +120,27 @@ std::optional<LapSolution> SolveCoarseFirst(const vehicle::Car& hot_car, const t
 
 // The fine solve (`lap` from the coarse solve's start, or as given), or with the adaptive mesh
 // the refinement from `adaptive_start` (the coarse solve) or from the fine solve; a refinement
-// done elsewhere (OptimalLapOptions::presolved with a mesh) is taken on its mesh.
+// done elsewhere (OptimalLapOptions::presolved with rounds) is taken as it ended. `lap` ends as
+// the problem of the solve kept, as it was posed.
 void SolveFine(const vehicle::Car& hot_car, const track::Track& track,
                const OptimalLapOptions& options, bool adaptive, const LapWarmUp& w,
-               std::optional<LapSolution> adaptive_start, LapProblemOptions& lap,
+               std::optional<SolvedProblem> adaptive_start, LapProblemOptions& lap,
                const IpoptOptions& fine_ipopt, OptimalLapRun& run) {
-  if (adaptive && options.presolved && !options.presolved->mesh_m.empty()) {
-    // Refined elsewhere: the last solve on its mesh.
+  if (adaptive && options.presolved && !options.presolved->rounds.empty()) {
+    run.mesh_rounds = options.presolved->rounds;
+    if (options.presolved->mesh_m.empty() && adaptive_start) {
+      // Refined elsewhere and the coarse solve kept (within the tolerance, or no refined solve
+      // converged).
+      run.solution = std::move(adaptive_start->solution);
+      lap = std::move(adaptive_start->problem);
+      return;
+    }
+    // Refined elsewhere: the last solve on its mesh, from its start.
     lap.mesh_m = options.presolved->mesh_m;
+    lap.start_point = options.presolved->start_point;
     lap.wear_in_programme = options.wear_in_programme;
     run.solution =
         SolveMinimumTimeLap(hot_car, track, lap, w.guess, fine_ipopt, &options.presolved->fine);
-    run.mesh_rounds = options.presolved->rounds;
     return;
   }
   if (!adaptive_start) {
@@ -132,12 +148,14 @@ void SolveFine(const vehicle::Car& hot_car, const track::Track& track,
                                        options.presolved ? &options.presolved->fine : nullptr);
     // From a start point (or with no coarse solve): refined from this solve.
     if (!adaptive || !run.solution.solve.ok() || options.presolved) return;
-    adaptive_start = std::move(run.solution);
+    adaptive_start = SolvedProblem{std::move(run.solution), lap};
   }
   AdaptiveMeshResult a =
-      RefineLapMesh(hot_car, track, lap, w.guess, options, std::move(*adaptive_start));
+      RefineLapMesh(hot_car, track, lap, w.guess, options, std::move(adaptive_start->solution),
+                    std::move(adaptive_start->problem));
   run.solution = std::move(a.solution);
   run.mesh_rounds = std::move(a.rounds);
+  lap = std::move(a.problem);
 }
 
 // The QSS lap on the optimal line, one lap from the optimal lap's own thermal start.
@@ -310,7 +328,7 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& any_car, const track::Track& tra
   LapProblemOptions lap = ProblemOptions(options, run.start);
   IpoptOptions fine_ipopt = options.ipopt;
   const bool adaptive = options.tolerance_s > 0.0 && options.collocation == Collocation::kTrapezoid;
-  std::optional<LapSolution> adaptive_start;  // the coarse solve, where the refinement starts
+  std::optional<SolvedProblem> adaptive_start;  // the coarse solve: the refinement starts there
   if (options.start_point.empty() &&
       (adaptive ? options.coarse_step_m > 0.0 : options.coarse_step_m > options.step_m)) {
     adaptive_start = SolveCoarseFirst(hot_car, track, options, adaptive, w, lap, fine_ipopt, run);

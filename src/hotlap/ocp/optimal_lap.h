@@ -55,11 +55,13 @@ struct MeshRound {
 };
 
 /// A lap's solves done already (e.g. in a child process, ocp/child_solve.h): the coarse solve
-/// (empty if none) and the fine one; with an adaptive mesh, the fine one's mesh and the rounds.
+/// (empty if none) and the fine one; with an adaptive mesh, the fine one's mesh, the rounds and
+/// the fine one's start point (it froze the wear: the programme is posed again from it).
 struct PresolvedLap {
   SolveResult coarse, fine;
   std::vector<double> mesh_m;
   std::vector<MeshRound> rounds;
+  std::vector<double> start_point;
 };
 
 struct OptimalLapOptions {

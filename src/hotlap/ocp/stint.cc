@@ -284,7 +284,8 @@ std::vector<double> RunGreedyLaps(const StintSetup& s, StintResult& result) {
     OptimalLapRun run = RunOptimalLap(WithMass(s.worn, mass), s.track, lap_options, &w);
     if (s.checkpoints && !saved) {
       s.save([&] {
-        s.checkpoints->WriteGreedyLap(i + 1, PresolvedLap{run.coarse, run.solution.solve, {}, {}});
+        s.checkpoints->WriteGreedyLap(i + 1,
+                                      PresolvedLap{run.coarse, run.solution.solve, {}, {}, {}});
       });
     }
     StintLap lap = StintLaps(run.solution, s.track, 1, fuel, {mass}, s.o.bsfc_kg_per_J, s.eta)[0];

@@ -89,7 +89,7 @@ std::optional<PresolvedLap> StintCheckpoints::ReadGreedyLap(int lap) const {
   try {
     std::vector<SolveResult> s = DecodeSolveResults(*payload);
     if (s.size() != 2) return std::nullopt;
-    return PresolvedLap{std::move(s[0]), std::move(s[1]), {}, {}};
+    return PresolvedLap{std::move(s[0]), std::move(s[1]), {}, {}, {}};
   } catch (const InputError&) {
     return std::nullopt;
   }
