@@ -100,9 +100,6 @@ int RunLap(const LapArgs& a) {
     o.run.ambient_C = a.run.ambient_C;
     o.run.track_C = a.run.track_C;
     if (a.ocp_step_m) o.run.step_m = *a.ocp_step_m;
-    if (a.tolerance_s && a.ocp_step_m) {
-      throw InputError("give either --ocp-step-m (a fixed mesh) or --tolerance (an adaptive one)");
-    }
     if (a.tolerance_s) o.run.tolerance_s = *a.tolerance_s;
     o.single_process = a.single_process;
     o.run.wear_in_programme = a.wear_in_programme;
@@ -149,9 +146,9 @@ CommandRunner RegisterLapCommand(CLI::App& app) {
                   "ocp: solve without and with this front-disc limit (degC) and compare");
   sub->add_option("--ocp-step-m", args->ocp_step_m, "ocp: mesh spacing, m (default 3)");
   sub->add_option("--tolerance", args->tolerance_s,
-                  "ocp: adaptive mesh to this estimated lap-time error, s (e.g. 2e-4; default: "
-                  "the fixed --ocp-step-m mesh; docs/optimal-control.md)")
-      ->check(CLI::Range(0.0, 1.0));
+                  "ocp: adaptive mesh to this estimated lap-time error, s (e.g. 2e-4)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->excludes("--ocp-step-m");
   sub->add_flag("--single-process", args->single_process,
                 "ocp: solve the limited lap after the free one, not beside it in a second process");
   sub->add_flag("--wear-in-programme", args->wear_in_programme,

@@ -15,16 +15,16 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
   AddSetOption(sub, a.set);
   sub->add_option("--out", a.out, "Output folder")->required();
   sub->add_option("--json", a.json, "Write the summary as JSON (docs/json-output.md)");
-  a.stock_car_only.push_back(
+  CLI::Option* step_m =
       sub->add_option("--step-m", a.run.step_m, "Mesh spacing along the centre line, m")
           ->capture_default_str()
-          ->check(CLI::Range(0.5, 50.0)));
-  a.stock_car_only.push_back(
-      sub->add_option("--tolerance", a.run.tolerance_s,
-                      "Adaptive mesh: the estimated lap-time error asked for, s (e.g. 2e-4; 0: "
-                      "the fixed --step-m mesh; docs/optimal-control.md)")
-          ->capture_default_str()
-          ->check(CLI::Range(0.0, 1.0)));
+          ->check(CLI::Range(0.5, 50.0));
+  CLI::Option* tolerance = sub->add_option("--tolerance", a.run.tolerance_s,
+                                           "Adaptive mesh: the estimated lap-time error asked "
+                                           "for, s (e.g. 2e-4; docs/optimal-control.md)")
+                               ->check(CLI::Range(0.0, 1.0))
+                               ->excludes(step_m);
+  a.stock_car_only.insert(a.stock_car_only.end(), {step_m, tolerance});
   a.stock_car_only.push_back(
       sub->add_option("--coarse-step-m", a.run.coarse_step_m,
                       "Coarse to fine: solve first on a mesh of this spacing, m, and start the "
@@ -92,7 +92,8 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
       "lap's multipliers, without solving again (docs/optimal-control.md)"));
   a.stock_car_only.push_back(
       sub->add_flag("--mesh-check", a.mesh_check,
-                    "Solve again on a mesh of half the spacing and report the lap time's change"));
+                    "Solve again on a mesh of half the spacing and report the lap time's change")
+          ->excludes(tolerance));
   sub->add_flag("--ipopt-output", a.run.ipopt_output, "Print Ipopt's own iteration log");
   a.stock_car_only.push_back(
       sub->add_option(

@@ -90,16 +90,6 @@ int RunOptimal(const OptimalArgs& a) {
   if (o.compare_disc_limit_C && !(a.warm_start.empty() && a.save_solution.empty())) {
     throw InputError("--warm-start and --save-solution are for one solve, not the comparison");
   }
-  if (o.tolerance_s > 0.0) {
-    for (const CLI::Option* opt : a.stock_car_only) {
-      if (opt->count() > 0 &&
-          (opt->get_name() == "--step-m" || opt->get_name() == "--mesh-check")) {
-        throw InputError(
-            fmt::format("{} is for a fixed mesh; --tolerance makes an adaptive one (give either)",
-                        opt->get_name()));
-      }
-    }
-  }
   if (o.disc_limit_C && o.compare_disc_limit_C) {
     throw InputError("give either --disc-limit-C (one solve) or --compare-disc-limit-C (two)");
   }
