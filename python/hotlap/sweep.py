@@ -46,6 +46,7 @@ OPTIONS = {
     "cautions": (str, ("race",)),
     "races": (int, ("race",)),
     "line": (str, ("qss",)),
+    "tolerance_s": (float, ("ocp", "compare")),
     "coarse_step_m": (float, ("ocp", "compare", "stint")),
     "collocation": (str, ("ocp", "compare")),
     "disc_limit_C": (float, ("ocp", "stint")),

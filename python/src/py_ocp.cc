@@ -31,9 +31,9 @@ namespace {
 
 py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
                     std::optional<double> disc_limit_C, std::optional<double> compare_disc_limit_C,
-                    double step_m, double coarse_step_m, const std::string& collocation,
-                    const std::string& thermal_start, double ambient_C, double track_C,
-                    int max_iterations,
+                    double step_m, double tolerance_s, double coarse_step_m,
+                    const std::string& collocation, const std::string& thermal_start,
+                    double ambient_C, double track_C, int max_iterations,
                     const std::vector<std::pair<std::string, std::string>>& ipopt_options,
                     int threads, bool wear_in_programme, bool paper_models, bool sensitivities,
                     const py::object& progress) {
@@ -41,6 +41,7 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
   ocp::OptimalRunOptions o;
   o.threads = threads;
   o.step_m = step_m;
+  o.tolerance_s = tolerance_s;
   o.coarse_step_m = coarse_step_m;
   ocp::ParseCollocation(collocation);  // an InputError (ValueError) before any work
   o.collocation = collocation;
@@ -152,7 +153,8 @@ void BindOcp(py::module_& m) {
   const ocp::OptimalRunOptions defaults;  // the library's defaults are the module's
   m.def("optimal_lap", &OptimalLap, py::arg("car"), py::arg("track"), py::kw_only(),
         py::arg("disc_limit_C") = py::none(), py::arg("compare_disc_limit_C") = py::none(),
-        py::arg("step_m") = defaults.step_m, py::arg("coarse_step_m") = defaults.coarse_step_m,
+        py::arg("step_m") = defaults.step_m, py::arg("tolerance_s") = defaults.tolerance_s,
+        py::arg("coarse_step_m") = defaults.coarse_step_m,
         py::arg("collocation") = defaults.collocation,
         py::arg("thermal_start") = defaults.thermal_start,
         py::arg("ambient_temp_C") = defaults.ambient_C, py::arg("track_temp_C") = defaults.track_C,
@@ -169,6 +171,8 @@ void BindOcp(py::module_& m) {
         "objective_s, infeasibility, optimality) is called at every Ipopt iteration; returning "
         "False stops the solve. collocation: 'trapezoid' or 'hermite-simpson' (step_m is then an "
         "interval with a node at its midpoint; the coarse solve stays trapezoid). "
+        "tolerance_s: > 0 for the adaptive mesh, refined until the estimated lap-time error is "
+        "within it, s (step_m is then not used; trapezoid only; docs/optimal-control.md). "
         "threads: threads evaluating the derivatives (1, the default, "
         "suits sweeps of one case per worker; 0: one per core, as the command line). "
         "wear_in_programme: keep the tyres' wear as states of a solve from a solution (by "
