@@ -36,7 +36,7 @@ TEST(StintCheckpointsTest, FilesHoldWhatWasSavedForThisStintOnly) {
   const StintCheckpoints mine(dir.path() / "a" / "b", 42);  // created with its parents
   EXPECT_FALSE(mine.ReadGreedyLap(1).has_value());
   EXPECT_FALSE(mine.ReadStintIterate().has_value());
-  mine.WriteGreedyLap(1, PresolvedLap{Example(1.0), Example(2.0)});
+  mine.WriteGreedyLap(1, PresolvedLap{Example(1.0), Example(2.0), {}, {}, {}});
   mine.WriteStintIterate(Example(3.0));
   const std::optional<PresolvedLap> lap = mine.ReadGreedyLap(1);
   ASSERT_TRUE(lap.has_value());
