@@ -131,6 +131,20 @@ def test_wear_in_programme_equals_the_command_line(cli, tmp_path):
         assert got["frozen_wear_grip_difference"] < 2e-3
 
 
+def test_tolerance_equals_the_command_line(cli, tmp_path):
+    # The adaptive mesh from a 30 m solve; 1 s is far above its estimate, so no refined solve.
+    cli("optimise", "--tolerance", 1.0, "--coarse-step-m", 30, "--threads", 1, "--out",
+        tmp_path / "o", "--json", tmp_path / "o.json")
+    expected = read_json(tmp_path / "o.json")
+    got = hotlap.optimal_lap(hotlap.load_car("gen7"), hotlap.load_track("darlington"),
+                             tolerance_s=1.0, coarse_step_m=30.0)["summary"]
+    assert got["status"] == expected["status"] == "converged"
+    assert got["mesh_tolerance_s"] == expected["mesh_tolerance_s"] == 1.0
+    assert got["mesh"] == expected["mesh"]
+    assert got["mesh"]["adaptive"] and len(got["mesh"]["rounds"]) == 1
+    assert got["lap_time_s"] == expected["lap_time_s"]
+
+
 def test_a_stint_with_checkpoints_resumes_from_them(tmp_path):
     """The second call with the same folder takes both greedy laps from their files and the
     stint's solve from its saved end: the same stint, converged at once."""

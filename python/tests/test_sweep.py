@@ -148,6 +148,10 @@ def test_case_tables_are_checked_with_suggestions(tmp_path):
         sweep.resolve_cases([{"method": "lap"}])
     with pytest.raises(ValueError, match="option disc_limit_C does not apply to method qss"):
         sweep.resolve_cases([{"method": "qss", "disc_limit_C": 500}])
+    # The adaptive mesh is for single laps; a stint keeps its fixed mesh.
+    assert sweep.resolve_cases([{"method": "ocp", "tolerance_s": 1e-3}])[0]["options"]["tolerance_s"] == 1e-3
+    with pytest.raises(ValueError, match="option tolerance_s does not apply to method stint"):
+        sweep.resolve_cases([{"method": "stint", "tolerance_s": 1e-3}])
     afile = tmp_path / "afile"
     afile.write_text("")
     with pytest.raises(ValueError, match="exists and is not a folder"):
