@@ -84,6 +84,9 @@ struct StadiumLap {
     options.thermal_start = ThermalStart::kWarm;
     options.coarse_step_m = 0.0;
     options.ipopt.max_iterations = 300;
+    // The paper's models: the estimator is judged on discretisation, and on this short lap the
+    // car's own models' local optima (solves from the same start ending tens of ms apart) swamp it.
+    options.paper_models = true;
     warm_up = RunLapWarmUp(car, track, options);
   }
   // On a uniform mesh of `step_m` from the lap `from` (its point; the wear kept in the
@@ -113,9 +116,10 @@ TEST(EstimateMeshErrorTest, HasTheSignOfTheErrorAgainstAFineSolve) {
   const double estimate = run.mesh_error.lap_time_error_s - fine.mesh_error.lap_time_error_s;
   RecordProperty("true_error_ms_12m", fmt::format("{:.4f}", 1e3 * truth));
   RecordProperty("estimate_ms_12m", fmt::format("{:.4f}", 1e3 * estimate));
-  // The same sign, and not above a factor 3.
+  // The same sign, and within a factor 3 either way.
   EXPECT_GT(estimate * truth, 0.0) << estimate << " against " << truth;
   EXPECT_LT(std::abs(estimate), 3.0 * std::abs(truth));
+  EXPECT_GT(std::abs(estimate), std::abs(truth) / 3.0);
   // The intervals' magnitudes sum to more than their signed sum; on 3 m the estimate is under a
   // tenth of the 12 m lap's (second order: about a sixteenth).
   EXPECT_GE(run.mesh_error.abs_error_s, std::abs(run.mesh_error.lap_time_error_s));
