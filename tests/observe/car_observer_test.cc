@@ -22,19 +22,15 @@
 #include "hotlap/sim/road.h"
 #include "hotlap/sim/synth.h"
 #include "hotlap/track/track_io.h"
+#include "observe/observer_example.h"
 #include "test_util.h"
 
 namespace hotlap::observe {
 namespace {
 
-const vehicle::Car& Gen7() {
-  static const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
-  return car;
-}
-
-ObserverConfig DefaultConfig() {
-  return LoadObserverConfig(test::SourcePath("data/observer/default.yaml"));
-}
+using testing::Column;
+using testing::DefaultConfig;
+using testing::Gen7;
 
 // Two laps of Darlington at 100 Hz, 0.5 degC sensors without lag (made once, about 0.3 s).
 const sim::SynthLog& TwoLaps() {
@@ -44,7 +40,7 @@ const sim::SynthLog& TwoLaps() {
     o.rate_hz = 100.0;
     o.temp_noise_K = 0.5;
     o.sensor_lag_s = 0.0;
-    return sim::SynthesizeLog(Gen7(), sim::SampleRoad(track::LoadTrack("darlington"), 1.0), o);
+    return testing::DarlingtonLog(o);
   }();
   return log;
 }
@@ -52,12 +48,6 @@ const sim::SynthLog& TwoLaps() {
 // The log's samples as the observer takes them: tread and disc read, nothing else.
 std::vector<ObserverSample> Samples(const sim::SynthLog& log) {
   const sim::ReplayInputs& in = log.inputs;
-  const auto column = [&](const std::string& name) -> const std::vector<double>& {
-    for (size_t i = 0; i < log.columns.size(); ++i) {
-      if (log.columns[i] == name) return log.values[i];
-    }
-    throw std::runtime_error("no column " + name);
-  };
   std::vector<ObserverSample> out(in.time.size());
   for (size_t k = 0; k < in.time.size(); ++k) {
     ObserverSample& s = out[k];
@@ -70,8 +60,8 @@ std::vector<ObserverSample> Samples(const sim::SynthLog& log) {
       const sim::CornerChannels& ch = in.corners[i];
       s.inputs[i] = {ch.speed[k], ch.fx[k], ch.fy[k], ch.fz[k], ch.slip_angle[k], ch.slip_ratio[k]};
       if (!ch.brake_fx.empty()) s.inputs[i].brake_fx = ch.brake_fx[k];  // the rear spool's share
-      s.readings[i].tread_temp = CelsiusToKelvin(column("tread_temp_" + n + "_C")[k]);
-      s.readings[i].disc_temp = CelsiusToKelvin(column("disc_temp_" + n + "_C")[k]);
+      s.readings[i].tread_temp = CelsiusToKelvin(Column(log, "tread_temp_" + n + "_C")[k]);
+      s.readings[i].disc_temp = CelsiusToKelvin(Column(log, "disc_temp_" + n + "_C")[k]);
     }
   }
   return out;

@@ -19,19 +19,15 @@
 #include "hotlap/sim/road.h"
 #include "hotlap/sim/synth.h"
 #include "hotlap/track/track_io.h"
+#include "observe/observer_example.h"
 #include "test_util.h"
 
 namespace hotlap::observe {
 namespace {
 
-const vehicle::Car& Gen7() {
-  static const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
-  return car;
-}
-
-ObserverConfig DefaultConfig() {
-  return LoadObserverConfig(test::SourcePath("data/observer/default.yaml"));
-}
+using testing::Column;
+using testing::DefaultConfig;
+using testing::Gen7;
 
 // Two laps of Darlington at 50 Hz with the car's own models as the truth: 0.5 degC temperature
 // sensors without lag, TPMS with the synth's defaults (0.35 kPa, 0.5 degC, 2 s lag; the observer's
@@ -43,16 +39,9 @@ const sim::SynthLog& CarTruthLaps() {
     o.rate_hz = 50.0;
     o.sensor_lag_s = 0.0;
     o.paper_models = false;
-    return sim::SynthesizeLog(Gen7(), sim::SampleRoad(track::LoadTrack("darlington"), 1.0), o);
+    return testing::DarlingtonLog(o);
   }();
   return log;
-}
-
-const std::vector<double>& Column(const sim::SynthLog& log, const std::string& name) {
-  for (size_t i = 0; i < log.columns.size(); ++i) {
-    if (log.columns[i] == name) return log.values[i];
-  }
-  throw std::runtime_error("no column " + name);
 }
 
 // The log's samples as the observer takes them; without `readings`, none read.
