@@ -201,17 +201,7 @@ sim::ReplayInputs ReplayInputsOf(const vehicle::Car& car, const LapSolution& s,
 // Where the replay starts: the run's start, or a periodic lap's own first node.
 sim::ReplayInitialState ReplayStart(const LapSolution& s, bool periodic_thermal,
                                     const sim::ReplayInitialState& start) {
-  sim::ReplayInitialState from = start;
-  if (periodic_thermal) {
-    for (int c = 0; c < 4; ++c) {
-      const CornerTrace& t = s.corners[c];
-      from.tyres[c] = {t.tread_temp[0], t.carcass_temp[0], t.wear[0],
-                       t.rim_temp.empty() ? from.tyres[c].rim_temp : t.rim_temp[0]};
-      from.brakes[c] = {t.disc_temp[0], t.calliper_temp[0],
-                        t.disc_bulk_temp.empty() ? from.brakes[c].bulk_temp : t.disc_bulk_temp[0]};
-    }
-  }
-  return from;
+  return periodic_thermal ? StateAtNode(s, 0, start) : start;
 }
 
 // The exact models over the solution's channels, and how far they are from the solution's.
@@ -245,6 +235,19 @@ void ReplayExact(const vehicle::Car& car, const track::Track& track,
 }
 
 }  // namespace
+
+sim::ReplayInitialState StateAtNode(const LapSolution& s, size_t k,
+                                    const sim::ReplayInitialState& fallback) {
+  sim::ReplayInitialState at = fallback;
+  for (int c = 0; c < 4; ++c) {
+    const CornerTrace& t = s.corners[c];
+    at.tyres[c] = {t.tread_temp[k], t.carcass_temp[k], t.wear[k],
+                   t.rim_temp.empty() ? fallback.tyres[c].rim_temp : t.rim_temp[k]};
+    at.brakes[c] = {t.disc_temp[k], t.calliper_temp[k],
+                    t.disc_bulk_temp.empty() ? fallback.brakes[c].bulk_temp : t.disc_bulk_temp[k]};
+  }
+  return at;
+}
 
 ThermalStart ParseThermalStart(const std::string& name) {
   if (name == "racing") return ThermalStart::kRacing;

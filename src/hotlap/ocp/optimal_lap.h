@@ -36,6 +36,11 @@ enum class ThermalStart {
 /// InputError naming the choices otherwise.
 ThermalStart ParseThermalStart(const std::string& name);
 
+/// The thermal state and wear at node `k` of a solved lap; the rim and the disc bulk from
+/// `fallback` where the solution has no such states (the paper's tyre, a lumped disc).
+sim::ReplayInitialState StateAtNode(const LapSolution& solution, size_t k,
+                                    const sim::ReplayInitialState& fallback = {});
+
 /// Ipopt's settings for the lap: its defaults but for alpha_for_y = "min-dual-infeas".
 inline IpoptOptions LapIpoptOptions() {
   IpoptOptions o;

@@ -23,15 +23,7 @@ double At(const std::vector<double>& distance, const std::vector<double>& values
 
 // The thermal state at the last node of a solution: where the next lap starts.
 sim::ReplayInitialState EndState(const LapSolution& s) {
-  sim::ReplayInitialState e;
-  for (int c = 0; c < 4; ++c) {
-    const CornerTrace& t = s.corners[c];
-    e.tyres[c] = {t.tread_temp.back(), t.carcass_temp.back(), t.wear.back(),
-                  t.rim_temp.empty() ? 0.0 : t.rim_temp.back()};
-    e.brakes[c] = {t.disc_temp.back(), t.calliper_temp.back(),
-                   t.disc_bulk_temp.empty() ? 0.0 : t.disc_bulk_temp.back()};
-  }
-  return e;
+  return StateAtNode(s, s.corners[0].tread_temp.size() - 1);
 }
 
 vehicle::Car WithMass(const vehicle::Car& car, double mass_kg) {
