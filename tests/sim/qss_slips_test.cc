@@ -9,6 +9,7 @@
 #include "hotlap/common/units.h"
 #include "hotlap/vehicle/car.h"
 #include "test_util.h"
+#include "vehicle/corner_forces.h"
 
 namespace hotlap::sim {
 namespace {
@@ -30,17 +31,7 @@ const std::vector<vehicle::InvertibleTyre>& Tyres() {
 // The forces a corner's model makes at given slips (grip factor applied).
 std::pair<double, double> Forces(Corner corner, const vehicle::TyreConditions& c, double kappa,
                                  double alpha) {
-  const vehicle::CornerSetup& s = Gen7().corner(corner);
-  tyre::TyreOperatingPoint<double> op;
-  op.fz = c.fz;
-  op.slip_ratio = kappa;
-  op.slip_angle = alpha;
-  op.camber = s.camber;
-  op.speed = c.vx;
-  op.pressure = s.pressure;
-  op.tread_temp = c.tread_temp;
-  const tyre::TyreForces<double> f = tyre::CalcTyreForces(s.forces, op);
-  return {c.grip_factor * f.fx, c.grip_factor * f.fy};
+  return vehicle::testing::CornerForces(Gen7().corner(corner), c, kappa, alpha);
 }
 
 // A point mid-turn: the forces the four tyres make at a slip angle of about 2 degrees (the
