@@ -216,5 +216,45 @@ TEST(CoarseToFineTest, ReachesTheSameLapAsTheGuessStartInFewerIterations) {
   EXPECT_NEAR(again.solution.lap_time, staged.solution.lap_time, 2e-3);
 }
 
+// Robust starts (OptimalLapOptions::fallback_start): a fixed-mesh solve that fails from its
+// start is solved again from the other one, and the failed start is reported. Made to fail by an
+// iteration limit no start can meet: from a coarse solution the second attempt starts from the
+// guess, from the guess it starts from a coarse solve at twice the spacing; without the option,
+// or with a start point of the caller's, no second attempt.
+TEST(FallbackStartTest, AFailedStartIsSolvedAgainFromTheOtherAndReported) {
+  const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
+  const track::Track track = track::LoadTrack("darlington");
+  OptimalLapOptions o;
+  o.step_m = 40.0;
+  o.coarse_step_m = 80.0;
+  o.ambient_temp = CelsiusToKelvin(25.0);
+  o.track_temp = CelsiusToKelvin(40.0);
+  o.ipopt.max_iterations = 3;
+  const LapWarmUp warm_up = RunLapWarmUp(car, track, o);
+  // The coarse solve fails too, so the fine one ran from the guess: the fallback is a coarse
+  // solve at twice the step.
+  const OptimalLapRun from_coarse = RunOptimalLap(car, track, o, &warm_up);
+  EXPECT_FALSE(from_coarse.solution.solve.ok());
+  ASSERT_EQ(from_coarse.failed_starts.size(), 1u);
+  EXPECT_EQ(from_coarse.failed_starts[0].from, "the QSS guess");
+  EXPECT_EQ(from_coarse.failed_starts[0].iterations, 3);
+  EXPECT_EQ(from_coarse.coarse.iterations, 3);  // the fallback's own 80 m coarse solve
+  o.coarse_step_m = 0.0;
+  const OptimalLapRun from_guess = RunOptimalLap(car, track, o, &warm_up);
+  ASSERT_EQ(from_guess.failed_starts.size(), 1u);
+  EXPECT_EQ(from_guess.failed_starts[0].from, "the QSS guess");
+  EXPECT_EQ(from_guess.coarse.iterations, 3);  // the fallback's coarse solve at 80 m
+  o.fallback_start = false;
+  const OptimalLapRun once = RunOptimalLap(car, track, o, &warm_up);
+  EXPECT_TRUE(once.failed_starts.empty());
+  EXPECT_EQ(once.coarse.iterations, 0);
+  // Converged at the first start: nothing to report.
+  o.fallback_start = true;
+  o.ipopt.max_iterations = 3000;
+  const OptimalLapRun solved = RunOptimalLap(car, track, o, &warm_up);
+  ASSERT_TRUE(solved.solution.solve.ok()) << solved.solution.solve.message;
+  EXPECT_TRUE(solved.failed_starts.empty());
+}
+
 }  // namespace
 }  // namespace hotlap::ocp

@@ -40,6 +40,29 @@ TEST(ResolveSensorLag, TheOptionThenTheLogsLineThenTheNoiseFile) {
             "L: '# sensor_lag_s: 61' is not a time constant in [0, 60] s");
 }
 
+TEST(ResolveTpmsLag, TheLogsTpmsLineThenTheNoiseFile) {
+  observe::ObserverConfig config;
+  config.path = "noise.yaml";
+  // Without a car_models section there is no TPMS to lag.
+  EXPECT_EQ(ResolveTpmsLag({{"tpms", "lag 3 s"}}, "log.csv", config), "");
+  config.car_models = observe::CarModelsNoise{.tpms_lag_s = 2.0};
+  observe::ObserverConfig c = config;
+  EXPECT_EQ(ResolveTpmsLag({{"sensor_lag_s", "0.4"}}, "log.csv", c), "noise.yaml");
+  EXPECT_EQ(c.car_models->tpms_lag_s, 2.0);
+  const std::string synth_line = "pressure noise 2 kPa, gas temperature noise 0.5 C, lag 3.5 s";
+  EXPECT_EQ(ResolveTpmsLag({{"tpms", synth_line}}, "log.csv", c), "the log's tpms line");
+  EXPECT_EQ(c.car_models->tpms_lag_s, 3.5);
+  for (const std::string bad :
+       {"lag 0 s", "lag 61 s", "lag s", "pressure noise 2 kPa", "lag x s"}) {
+    EXPECT_EQ(
+        test::InputErrorOf([&] {
+          ResolveTpmsLag({{"tpms", bad}}, "L", c);
+        }),
+        "L: '# tpms: " + bad + "' does not end in 'lag <s> s' with a time constant in (0, 60] s")
+        << bad;
+  }
+}
+
 TEST(RunObserve, HooksSeeEveryRowAndTheFileHasOneLineASample) {
   const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
   test::TempDir dir;

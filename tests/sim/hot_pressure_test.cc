@@ -1,5 +1,5 @@
-// The pressure that acts (sim/hot_pressure.h): each gas-and-rim tyre's force model at its hot
-// pressure, and the hot pressures of a state and over a lap.
+// The pressure that acts (sim/hot_pressure.h): each gas-and-rim tyre's force model and rolling
+// radius at its hot pressure, and the hot pressures of a state and over a lap.
 
 #include "hotlap/sim/hot_pressure.h"
 
@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "hotlap/common/units.h"
+#include "hotlap/tyre/rolling_radius.h"
 #include "hotlap/tyre/tyre_thermal.h"
 #include "test_util.h"
 
@@ -26,11 +27,27 @@ TEST(HotPressureTest, OnlyTheGasAndRimTyresTakeTheirHotPressure) {
   for (int c = 0; c < 3; ++c) EXPECT_EQ(moved.vehicle->corners[c].pressure, hot[c]) << c;
   // No pressure given: the set-up's cold pressure stays.
   EXPECT_EQ(moved.vehicle->corners[3].pressure, car.vehicle->corners[3].pressure);
+  EXPECT_EQ(moved.vehicle->corners[3].rolling_radius, car.vehicle->corners[3].rolling_radius);
+  // The rollout as set grows by what the pressure changes in the .tir's effective rolling radius
+  // at its nominal load: the soft left tyres most, so the rear stagger (right over left) shrinks.
+  for (int c = 0; c < 3; ++c) {
+    const vehicle::CornerSetup& cold = car.vehicle->corners[c];
+    const auto& mf = std::get<tyre::MagicFormulaModel<double>>(cold.forces.params).params;
+    EXPECT_DOUBLE_EQ(moved.vehicle->corners[c].rolling_radius - cold.rolling_radius,
+                     tyre::CalcRollingRadiusChange(mf, mf.FNOMIN, cold.pressure, hot[c]))
+        << c;
+    EXPECT_GT(moved.vehicle->corners[c].rolling_radius, cold.rolling_radius + 0.5e-3) << c;
+  }
+  const auto rear_stagger = [](const vehicle::Car& x) {
+    return x.vehicle->corners[3].rolling_radius - x.vehicle->corners[2].rolling_radius;
+  };
+  EXPECT_LT(rear_stagger(WithHotPressures(car, {0.0, 0.0, 205e3, 397e3})), rear_stagger(car));
   // The paper's tyres have no gas: their set-up is left alone.
   const vehicle::Car paper = vehicle::PaperModelsOf(car);
   const vehicle::Car same = WithHotPressures(paper, hot);
   for (int c = 0; c < 4; ++c) {
     EXPECT_EQ(same.vehicle->corners[c].pressure, paper.vehicle->corners[c].pressure) << c;
+    EXPECT_EQ(same.vehicle->corners[c].rolling_radius, paper.vehicle->corners[c].rolling_radius);
   }
   EXPECT_EQ(HotPressuresAt(paper, CarStartState(paper), 50.0), (std::array<double, 4>{}));
 }

@@ -329,6 +329,10 @@ TEST(CarOverride, OptionalNumberOfACarThatReadsOnlyWithItsOverrides) {
   const size_t at = text.find("mass_kg:");
   ASSERT_NE(at, std::string::npos);
   text.replace(at, text.find('\n', at) - at, "mass_kg: 50");
+  // The right rear's rolling radius left out, so that it is an optional number.
+  const size_t rr = text.find(", rolling_radius_m:", text.find("  rr: {"));
+  ASSERT_NE(rr, std::string::npos);
+  text.erase(rr, text.find('}', rr) - rr);
   test::WriteTextFile(car, text);
   const Car mended =
       LoadCar(car, {{"chassis.mass_kg", 1500}, {"tyre_forces.rr.rolling_radius_m", 0.3677}});

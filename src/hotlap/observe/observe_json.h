@@ -22,6 +22,7 @@ struct ObserveSummary {
   std::string out;              ///< the estimates file as given ("-" for standard output)
   std::optional<int> lap;       ///< the lap observed, if one was selected
   std::string sensor_lag_from;  ///< "--sensor-lag-s", "the log's sensor_lag_s" or the file
+  std::string tpms_lag_from;    ///< "the log's tpms line" or the file ("" without car_models)
   double duration_s = 0.0;      ///< of log, from the first sample to the last
   double wall_time_s = 0.0;     ///< the run's
   std::vector<DisagreementWarning> warnings;    ///< in the order raised

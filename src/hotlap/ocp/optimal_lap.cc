@@ -234,6 +234,37 @@ void ReplayExact(const vehicle::Car& car, const track::Track& track,
   }
 }
 
+// One solve from the start `options` give (a coarse solve first, or the QSS guess, or the
+// caller's start point): the problem as posed, the solution and the coarse solve in `run`.
+LapProblemOptions SolveFromStart(const vehicle::Car& hot_car, const track::Track& track,
+                                 const OptimalLapOptions& options, bool adaptive,
+                                 const LapWarmUp& w, OptimalLapRun& run) {
+  LapProblemOptions lap = ProblemOptions(options, run.start);
+  IpoptOptions fine_ipopt = options.ipopt;
+  std::optional<SolvedProblem> adaptive_start;  // the coarse solve: the refinement starts there
+  if (options.start_point.empty() &&
+      (adaptive ? options.coarse_step_m > 0.0 : options.coarse_step_m > options.step_m)) {
+    adaptive_start = SolveCoarseFirst(hot_car, track, options, adaptive, w, lap, fine_ipopt, run);
+  }
+  // With the coarse solve's multipliers the fine solve is a warm start (small barrier, the point
+  // kept where it is). Without them, Ipopt's own first barrier: a small one with the point alone
+  // (1e-4 with the start kept 1e-6 off its bounds, IpoptOptions::primal_start_mu) helped the
+  // uncalibrated car's free lap (36 iterations against 167) but stalled the calibrated car's
+  // limited lap (900 and more against 66; docs/validation/optimal-control.md, "Speed").
+  if (!lap.start_point.empty()) {
+    lap.wear_in_programme = options.wear_in_programme;
+    // From a solution (the coarse one, or another lap's): MUMPS with SCOTCH's ordering, 0.42-0.44
+    // s an iteration on the 3 m lap against 0.47 with PORD's and 0.57 with its automatic choice,
+    // to the same laps, and bit for bit the same from run to run on one SCOTCH thread
+    // (ipopt_solve.cc). Not from the QSS guess, where SCOTCH sent the limited lap's 15 m solve the
+    // long way (266 iterations against 92; docs/validation/optimal-control.md, "Speed"). First, so
+    // that an option given wins.
+    fine_ipopt.extra.insert(fine_ipopt.extra.begin(), {"mumps_pivot_order", "3"});
+  }
+  SolveFine(hot_car, track, options, adaptive, w, std::move(adaptive_start), lap, fine_ipopt, run);
+  return lap;
+}
+
 }  // namespace
 
 sim::ReplayInitialState StateAtNode(const LapSolution& s, size_t k,
@@ -328,30 +359,31 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& any_car, const track::Track& tra
   run.start_carcass_rise_K = w.start_carcass_rise_K;
   run.qss_lap_time = w.guess.lap_time;
 
-  LapProblemOptions lap = ProblemOptions(options, run.start);
-  IpoptOptions fine_ipopt = options.ipopt;
   const bool adaptive = options.tolerance_s > 0.0 && options.collocation == Collocation::kTrapezoid;
-  std::optional<SolvedProblem> adaptive_start;  // the coarse solve: the refinement starts there
-  if (options.start_point.empty() &&
-      (adaptive ? options.coarse_step_m > 0.0 : options.coarse_step_m > options.step_m)) {
-    adaptive_start = SolveCoarseFirst(hot_car, track, options, adaptive, w, lap, fine_ipopt, run);
+  LapProblemOptions lap = SolveFromStart(hot_car, track, options, adaptive, w, run);
+  // Robust starts: a fixed-mesh solve of the caller's own choosing that fails from its start (a
+  // coarse solution, or the QSS guess: at the iteration limit, or lost in restoration or numerical
+  // trouble; not stopped, out of time or infeasible) is solved again from the other: from the
+  // guess, or from a coarse solve at twice the spacing. Both attempts are reported
+  // (OptimalLapRun::failed_starts).
+  const SolveStatus status = run.solution.solve.status;
+  const bool start_failed = status == SolveStatus::kIterationLimit ||
+                            status == SolveStatus::kRestorationFailed ||
+                            status == SolveStatus::kNumericalTrouble;
+  if (start_failed && options.fallback_start && !adaptive && options.start_point.empty() &&
+      !options.presolved && !options.coarse_start) {
+    // The fine solve started from the coarse solution only where that converged.
+    const bool from_coarse = options.coarse_step_m > options.step_m && run.coarse.ok();
+    run.failed_starts.push_back({from_coarse
+                                     ? fmt::format("a {:g} m coarse solve", options.coarse_step_m)
+                                     : "the QSS guess",
+                                 run.solution.solve.iterations, run.solution.solve.message});
+    OptimalLapOptions other = options;
+    other.coarse_step_m = from_coarse ? 0.0 : 2.0 * options.step_m;
+    run.coarse = {};
+    run.coarse_lap_time = 0.0;
+    lap = SolveFromStart(hot_car, track, other, adaptive, w, run);
   }
-  // With the coarse solve's multipliers the fine solve is a warm start (small barrier, the point
-  // kept where it is). Without them, Ipopt's own first barrier: a small one with the point alone
-  // (1e-4 with the start kept 1e-6 off its bounds, IpoptOptions::primal_start_mu) helped the
-  // uncalibrated car's free lap (36 iterations against 167) but stalled the calibrated car's
-  // limited lap (900 and more against 66; docs/validation/optimal-control.md, "Speed").
-  if (!lap.start_point.empty()) {
-    lap.wear_in_programme = options.wear_in_programme;
-    // From a solution (the coarse one, or another lap's): MUMPS with SCOTCH's ordering, 0.42-0.44
-    // s an iteration on the 3 m lap against 0.47 with PORD's and 0.57 with its automatic choice,
-    // to the same laps, and bit for bit the same from run to run on one SCOTCH thread
-    // (ipopt_solve.cc). Not from the QSS guess, where SCOTCH sent the limited lap's 15 m solve the
-    // long way (266 iterations against 92; docs/validation/optimal-control.md, "Speed"). First, so
-    // that an option given wins.
-    fine_ipopt.extra.insert(fine_ipopt.extra.begin(), {"mumps_pivot_order", "3"});
-  }
-  SolveFine(hot_car, track, options, adaptive, w, std::move(adaptive_start), lap, fine_ipopt, run);
   run.posed = std::make_shared<const PosedLap>(PosedLap{lap, w.guess});
   run.mesh_error = EstimateMeshError(run.solution.rates);
   QssOnOptimalLine(car, track, qss, run);

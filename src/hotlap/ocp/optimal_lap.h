@@ -118,6 +118,12 @@ struct OptimalLapOptions {
     SolveResult solve;
   };
   std::optional<CoarseStart> coarse_start;
+  /// Robust starts on a fixed mesh: a solve that fails from its start (a coarse solution, or the
+  /// QSS guess; at the iteration limit, or in restoration or numerical trouble) is solved again
+  /// from the other (from the guess, or from a coarse solve at twice
+  /// step_m), both reported in OptimalLapRun::failed_starts. Not with start_point, coarse_start,
+  /// presolved or the adaptive mesh, whose starts are the caller's.
+  bool fallback_start = true;
   /// Coarse to fine: called with the coarse solve (converged or not) before the fine solve starts.
   std::function<void(const LapSolution& coarse)> on_coarse_solve;
   /// The transcription of the step_m solve and of the coarse one (step_m and coarse_step_m are
@@ -201,6 +207,13 @@ struct OptimalLapRun {
   MeshErrorEstimate mesh_error;
   /// The adaptive mesh's solves, the coarse one first (empty on a fixed mesh).
   std::vector<MeshRound> mesh_rounds;
+  /// A start that failed before the solution's (OptimalLapOptions::fallback_start).
+  struct FailedStart {
+    std::string from;  ///< "a 15 m coarse solve" or "the QSS guess"
+    int iterations = 0;
+    std::string message;
+  };
+  std::vector<FailedStart> failed_starts;
 };
 
 /// The warm-up before a solve (RunOptimalLap's first step): the thermal state at the start line

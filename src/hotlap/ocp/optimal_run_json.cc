@@ -44,6 +44,14 @@ nlohmann::json MeshJson(const OptimalLapRun& run) {
       {"rounds", rounds}};
 }
 
+nlohmann::json FailedStartsJson(const std::vector<OptimalLapRun::FailedStart>& failed) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const OptimalLapRun::FailedStart& f : failed) {
+    out.push_back({{"from", f.from}, {"ipopt_iterations", f.iterations}, {"message", f.message}});
+  }
+  return out;
+}
+
 }  // namespace
 
 nlohmann::json SolvedLapJson(const SolvedLap& s, const std::string& thermal_start) {
@@ -113,6 +121,7 @@ nlohmann::json SolvedLapJson(const SolvedLap& s, const std::string& thermal_star
            : nlohmann::json()},
       {"status", r.ok() ? "converged" : "failed"},
       {"message", r.message},
+      {"failed_starts", FailedStartsJson(s.run.failed_starts)},
       {"constraint_violation", RoundSignificant(r.primal_infeasibility)},
       {"front_disc_limit_C",
        s.front_disc_limit ? nlohmann::json(RoundSignificant(KelvinToCelsius(*s.front_disc_limit)))

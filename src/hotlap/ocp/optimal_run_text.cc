@@ -23,6 +23,11 @@ std::string SolvedLapText(const SolvedLap& s, const std::string& thermal_start) 
       "  lap {:.3f} s, top speed {:.2f} m/s, slowest {:.2f} m/s, front discs peak {:.1f} "
       "degC\n",
       f.lap_time_s, f.top_speed_mps, f.min_speed_mps, f.max_front_disc_temp_C);
+  for (const OptimalLapRun::FailedStart& failed : s.run.failed_starts) {
+    fmt::format_to(out,
+                   "  from {}: stopped after {} iterations ({}); solved from the other start\n",
+                   failed.from, failed.iterations, failed.message);
+  }
   {
     const LapSolution& sol = s.run.solution;
     std::string carcass, disc;

@@ -74,6 +74,29 @@ std::string ResolveSensorLag(const std::optional<double>& option,
   return from;
 }
 
+std::string ResolveTpmsLag(const std::vector<std::pair<std::string, std::string>>& metadata,
+                           const std::string& source, observe::ObserverConfig& config) {
+  if (!config.car_models) return "";
+  std::string from = config.path.string();
+  for (const auto& [key, value] : metadata) {
+    if (key != "tpms") continue;
+    // hotlap synth's line: "pressure noise 2 kPa, gas temperature noise 0.5 C, lag 2 s".
+    const size_t at = value.rfind("lag ");
+    const size_t end = value.size() >= 2 && value.ends_with(" s") ? value.size() - 2 : 0;
+    const std::optional<double> tau = at == std::string::npos || end <= at + 4
+                                          ? std::nullopt
+                                          : ParseYamlNumber(value.substr(at + 4, end - at - 4));
+    if (!tau || !(*tau > 0.0 && *tau <= 60.0)) {
+      throw InputError(fmt::format(
+          "{}: '# tpms: {}' does not end in 'lag <s> s' with a time constant in (0, 60] s", source,
+          value));
+    }
+    config.car_models->tpms_lag_s = *tau;
+    from = "the log's tpms line";
+  }
+  return from;
+}
+
 ObserveRun RunObserve(const vehicle::Car& car, const ObserveRunOptions& o,
                       const ObserveHooks& hooks) {
   const auto started = std::chrono::steady_clock::now();
@@ -92,6 +115,7 @@ ObserveRun RunObserve(const vehicle::Car& car, const ObserveRunOptions& o,
   ObserveRun run;
   run.summary.sensor_lag_from =
       ResolveSensorLag(o.sensor_lag_s, source.metadata(), source.name(), config);
+  run.summary.tpms_lag_from = ResolveTpmsLag(source.metadata(), source.name(), config);
   run.observer = std::make_unique<observe::CarObserver>(car, config, start, ModelsOf(o.models));
   observe::LineCsvWriter writer(o.out);
   const std::vector<std::string> columns = observe::EstimateColumns(*run.observer);

@@ -65,6 +65,13 @@ std::string ResolveSensorLag(const std::optional<double>& option,
                              const std::vector<std::pair<std::string, std::string>>& metadata,
                              const std::string& source, observe::ObserverConfig& config);
 
+/// The TPMS sensors' lag into `config.car_models` (where it has that section): the log's `# tpms:`
+/// line (hotlap synth's, ending "lag <s> s"), else the noise file's; returns where it came from
+/// ("" without the section). InputError (naming `source`) for a line without a time constant in
+/// (0, 60] s.
+std::string ResolveTpmsLag(const std::vector<std::pair<std::string, std::string>>& metadata,
+                           const std::string& source, observe::ObserverConfig& config);
+
 /// Runs the observer over the whole input. Everything that can fail on input before the first
 /// sample fails before the estimates file is opened (no file is left behind).
 ObserveRun RunObserve(const vehicle::Car& car, const ObserveRunOptions& options,

@@ -79,6 +79,10 @@ std::string ObserveRunText(const ObserveRun& run, const vehicle::Car& car) {
                  "sensor lag: tread {:g} s, disc {:g} s, calliper {:g} s (from {})\n",
                  config.sensor_lag.tread_temp, config.sensor_lag.disc_temp,
                  config.sensor_lag.calliper_temp, s.sensor_lag_from);
+  if (observer.models() == observe::ObservedModels::kCar && config.car_models) {
+    fmt::format_to(std::back_inserter(out), "TPMS lag: {:g} s (from {})\n",
+                   config.car_models->tpms_lag_s, s.tpms_lag_from);
+  }
   AppendEstimates(out, observer);
   AppendGas(out, observer);
   AppendConsistency(out, observer);

@@ -79,7 +79,16 @@ RaceSpotChecks RunRaceSpotChecks(const vehicle::Car& car, const track::Track& tr
   for (int age : ages) {
     if (progress) progress(fmt::format("the optimal lap at age {} (a {:g} m mesh)", age, step_m));
     warm.start = age == 0 ? qss.initial : sim::EndState(run.laps[age - 1].thermal);
-    const ocp::OptimalLapRun lap = ocp::RunOptimalLap(car, track, o, &warm);
+    ocp::OptimalLapRun lap = ocp::RunOptimalLap(car, track, o, &warm);
+    int failed_iterations = 0;
+    if (!lap.solution.solve.ok() && !o.start_point.empty()) {
+      // From the last age's solution it failed: again from the guess (and the library's own
+      // fallback from there, OptimalLapOptions::fallback_start).
+      failed_iterations = lap.solution.solve.iterations;
+      ocp::OptimalLapOptions fresh = o;
+      fresh.start_point.clear();
+      lap = ocp::RunOptimalLap(car, track, fresh, &warm);
+    }
     if (lap.solution.solve.ok()) o.start_point = lap.solution.solve.x;
     const sim::ReplayResult& qss_lap = run.laps[std::min<size_t>(age, run.laps.size() - 1)].thermal;
     out.checks.push_back(
@@ -91,7 +100,7 @@ RaceSpotChecks RunRaceSpotChecks(const vehicle::Car& car, const track::Track& tr
          .qss_grip = CornerMean(qss_lap, &sim::CornerHistory::grip_factor),
          .optimal_grip = CornerMean(lap.exact, &sim::CornerHistory::grip_factor),
          .converged = lap.solution.solve.ok(),
-         .iterations = lap.coarse.iterations + lap.solution.solve.iterations});
+         .iterations = failed_iterations + lap.coarse.iterations + lap.solution.solve.iterations});
   }
   out.qss_fall_off_s = out.checks.back().qss_lap_time_s - out.checks.front().qss_lap_time_s;
   out.optimal_fall_off_s =

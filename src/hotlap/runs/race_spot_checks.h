@@ -30,7 +30,7 @@ struct RaceSpotCheck {
   double qss_tread_temp = 0.0, optimal_tread_temp = 0.0;
   double qss_grip = 0.0, optimal_grip = 0.0;
   bool converged = false;  ///< the optimal lap's solve
-  int iterations = 0;      ///< its Ipopt iterations, coarse and fine
+  int iterations = 0;      ///< its Ipopt iterations, coarse and fine (and of a failed start)
 };
 
 struct RaceSpotChecks {

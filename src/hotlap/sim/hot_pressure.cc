@@ -1,5 +1,8 @@
 #include "hotlap/sim/hot_pressure.h"
 
+#include <variant>
+
+#include "hotlap/tyre/rolling_radius.h"
 #include "hotlap/tyre/tyre_thermal.h"
 
 namespace hotlap::sim {
@@ -8,8 +11,15 @@ vehicle::Car WithHotPressures(const vehicle::Car& car, const std::array<double, 
   vehicle::Car out = car;
   if (!out.vehicle) return out;
   for (int c = 0; c < 4; ++c) {
-    if (car.tyres[c].params.HasGasAndRim() && pressure[c] > 0.0) {
-      out.vehicle->corners[c].pressure = pressure[c];
+    if (!car.tyres[c].params.HasGasAndRim() || pressure[c] <= 0.0) continue;
+    vehicle::CornerSetup& setup = out.vehicle->corners[c];
+    const double cold = setup.pressure;
+    setup.pressure = pressure[c];
+    // The rollout as set (measured, or the .tir's free radius) grows with the air
+    // (tyre/rolling_radius.h).
+    if (const auto* mf = std::get_if<tyre::MagicFormulaModel<double>>(&setup.forces.params)) {
+      const tyre::MagicFormulaParams<double>& p = mf->params;
+      setup.rolling_radius += tyre::CalcRollingRadiusChange(p, p.FNOMIN, cold, pressure[c]);
     }
   }
   return out;

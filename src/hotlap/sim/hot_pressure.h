@@ -1,7 +1,7 @@
 #pragma once
 /// @file
-/// The pressure that acts: a gas-and-rim tyre's force model at its hot pressure instead of the
-/// cold set. The Magic Formula takes the inflation pressure (its PPX*, PPY* terms about the
+/// The pressure that acts: a gas-and-rim tyre's force model and rolling radius at its hot
+/// pressure instead of the cold set. The Magic Formula takes the inflation pressure (its PPX*, PPY* terms about the
 /// file's NOMPRES); the set-up's `pressure` is the cold set, and over a run the gas heats it by
 /// 5-18 psi (docs/models.md). The QSS lap runs each lap at the hot pressures the last lap had (the
 /// first at its start's), the optimal lap at its guess lap's: a lap's pressure moves by about 1%
@@ -16,7 +16,9 @@ namespace hotlap::sim {
 
 /// The car with corner c's force model at `pressure[c]` (Pa, gauge) where its tyre runs the
 /// gas-and-rim model (the set-up's cold pressure elsewhere, and for a car without vehicle
-/// sections, the car as it is).
+/// sections, the car as it is), and a Magic Formula corner's rolling radius moved by what the
+/// pressure changes in the file's effective rolling radius at its nominal load
+/// (tyre/rolling_radius.h): the stagger follows the air.
 vehicle::Car WithHotPressures(const vehicle::Car& car, const std::array<double, 4>& pressure);
 
 /// Each gas-and-rim tyre's time-mean hot pressure over a replay, Pa; 0 for a tyre without gas.

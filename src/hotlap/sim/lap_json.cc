@@ -20,6 +20,7 @@ nlohmann::json LapCornerJson(const CornerLapMeans& m, const CornerEnergyAudit& a
     j["mean_pressure_build_psi"] = RoundSignificant((m.pressure - tyre.cold_pressure) / kPsi);
   }
   if (m.disc_bulk > 0.0) j["mean_disc_bulk_temp_C"] = celsius(m.disc_bulk);
+  if (m.rolling_radius > 0.0) j["rolling_radius_mm"] = RoundSignificant(1e3 * m.rolling_radius);
   j["energy_audit"] = AuditJson(audit);
   return j;
 }
@@ -35,9 +36,14 @@ nlohmann::json StintJson(const StintSummary& stint, const track::Track& track,
       lap_corners[std::string(CornerName(c))] =
           LapCornerJson(f.means[k], f.audit[k], car.tyre(c).params);
     }
+    // The rear stagger as crew chiefs give it: right rear's rollout over the left rear's, mm.
+    const double stagger = 2.0 * kPi *
+                           (f.means[CornerIndex(Corner::kRearRight)].rolling_radius -
+                            f.means[CornerIndex(Corner::kRearLeft)].rolling_radius);
     laps.push_back({{"lap_time_s", RoundSignificant(f.lap_time_s)},
                     {"top_speed_mps", RoundSignificant(f.top_speed)},
                     {"min_speed_mps", RoundSignificant(f.min_speed)},
+                    {"rear_stagger_mm", RoundSignificant(1e3 * stagger)},
                     {"corners", lap_corners}});
   }
   nlohmann::json braking = nlohmann::json::array();

@@ -72,6 +72,7 @@ LapFigures CalcLapFigures(const QssLap& lap) {
     f.peak_calliper_temp[k] = peak(h.calliper_temp);
     f.wear[k] = h.wear.back() - h.wear.front();
     CornerLapMeans& m = f.means[k];
+    m.rolling_radius = lap.rolling_radius[k];
     const std::vector<double>& t = lap.thermal.time;
     m.tread = CalcHistoryStats(t, h.tread_temp).mean;
     m.carcass = CalcHistoryStats(t, h.carcass_temp).mean;

@@ -35,6 +35,7 @@ struct CornerLapMeans {
   double tread = 0.0, carcass = 0.0, disc = 0.0;
   double gas = 0.0, rim = 0.0, pressure = 0.0, disc_bulk = 0.0;
   double peak_pressure = 0.0;
+  double rolling_radius = 0.0;  ///< m, the lap's (QssLap::rolling_radius)
 };
 
 /// Per-lap figures.

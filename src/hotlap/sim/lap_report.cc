@@ -44,6 +44,8 @@ void AddRunSettling(report::HtmlReport& page, const StintSummary& stint) {
     per_lap("Lap mean gas temperature", "gas", "\u00b0C", &CornerLapMeans::gas, 1.0, -kZeroCelsius);
     per_lap("Lap mean hot pressure (gauge)", "pressure", "psi", &CornerLapMeans::pressure,
             1.0 / kPsi, 0.0);
+    per_lap("Rolling circumference at the lap's hot pressure", "rollout", "mm",
+            &CornerLapMeans::rolling_radius, 2e3 * kPi, 0.0);
   }
   if (last.means[0].disc_bulk > 0.0) {
     per_lap("Lap mean disc bulk temperature", "disc bulk", "\u00b0C", &CornerLapMeans::disc_bulk,

@@ -449,6 +449,10 @@ QssResult RunQssLap(const vehicle::Car& car, std::span<const RoadPoint> road,
     QssLap lap = RunPass(x, road, guess.grip, guess.tread, state, guess.drag, guess.rolling,
                          options.max_drag_passes);
     TakeThermal(x, lap, guess.grip, guess.tread, guess.rolling);
+    for (int k = 0; k < 4; ++k) {
+      lap.rolling_radius[k] =
+          (own_rolling ? hot_car.vehicle : car.vehicle)->corners[k].rolling_radius;
+    }
     state = EndState(lap.thermal);
     result.laps.push_back(std::move(lap));
   }

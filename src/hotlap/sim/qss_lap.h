@@ -112,6 +112,9 @@ struct QssLap {
   std::array<CornerChannels, 4> corners;
   std::array<std::vector<double>, 4> tread_temp_used;  ///< K, the grip factors' temperatures
   double lap_time = 0.0;                               ///< s
+  /// m, each corner's rolling radius on this lap (a gas-and-rim tyre's at the lap's hot pressure,
+  /// sim/hot_pressure.h; else the set-up's)
+  std::array<double, 4> rolling_radius{};
   int slip_points_not_reached = 0;  ///< samples where a tyre could not make its target forces
   double max_force_deficit = 0.0;   ///< N, the largest such shortfall
   ReplayResult thermal;             ///< temperatures, wear, brake power along the lap
