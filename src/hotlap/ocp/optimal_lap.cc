@@ -362,14 +362,15 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& any_car, const track::Track& tra
   const bool adaptive = options.tolerance_s > 0.0 && options.collocation == Collocation::kTrapezoid;
   LapProblemOptions lap = SolveFromStart(hot_car, track, options, adaptive, w, run);
   // Robust starts: a fixed-mesh solve of the caller's own choosing that fails from its start (a
-  // coarse solution, or the QSS guess: at the iteration limit, or lost in restoration or numerical
-  // trouble; not stopped, out of time or infeasible) is solved again from the other: from the
+  // coarse solution, or the QSS guess: at the iteration limit, at a locally infeasible point, or
+  // lost in restoration or numerical trouble; not stopped or out of time) is solved again from
+  // the other: from the
   // guess, or from a coarse solve at twice the spacing. Both attempts are reported
   // (OptimalLapRun::failed_starts).
   const SolveStatus status = run.solution.solve.status;
-  const bool start_failed = status == SolveStatus::kIterationLimit ||
-                            status == SolveStatus::kRestorationFailed ||
-                            status == SolveStatus::kNumericalTrouble;
+  const bool start_failed =
+      status == SolveStatus::kIterationLimit || status == SolveStatus::kInfeasible ||
+      status == SolveStatus::kRestorationFailed || status == SolveStatus::kNumericalTrouble;
   if (start_failed && options.fallback_start && !adaptive && options.start_point.empty() &&
       !options.presolved && !options.coarse_start) {
     // The fine solve started from the coarse solution only where that converged.

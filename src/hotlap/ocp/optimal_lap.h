@@ -119,8 +119,8 @@ struct OptimalLapOptions {
   };
   std::optional<CoarseStart> coarse_start;
   /// Robust starts on a fixed mesh: a solve that fails from its start (a coarse solution, or the
-  /// QSS guess; at the iteration limit, or in restoration or numerical trouble) is solved again
-  /// from the other (from the guess, or from a coarse solve at twice
+  /// QSS guess; at the iteration limit, a locally infeasible point, or in restoration or numerical
+  /// trouble) is solved again from the other (from the guess, or from a coarse solve at twice
   /// step_m), both reported in OptimalLapRun::failed_starts. Not with start_point, coarse_start,
   /// presolved or the adaptive mesh, whose starts are the caller's.
   bool fallback_start = true;
