@@ -9,10 +9,13 @@ atomically; ``OUT/results.csv`` (every case's inputs, status and headline output
 ``OUT/report.html`` (each output against each varied input, the table sorted by lap time) are
 written from those folders at the end, and again by ``merge``. A case already done with the same
 resolved inputs (their hash) is skipped, so a sweep that stopped can be run again on the same
-``OUT``. docs/sweeps.md has the table format, the recipes for a cluster and for Slurm.
+``OUT``. Optimal laps (``ocp``) start from the nearest lap already solved (a lap cache on disk,
+by the inputs' hash: the same inputs reuse their lap, others start from the closest in the varied
+values), and the cases run in an order that gives each a solved neighbour. docs/sweeps.md has the
+table format, warm starts, the recipes for a cluster and for Slurm.
 
     hotlap sweep --cases cases.csv --out study [--local-workers N | --scheduler tcp://HOST:8786]
-                 [--shard I/N] [--json PATH]
+                 [--shard I/N] [--lap-cache DIR | --cold] [--json PATH]
     hotlap sweep merge study
 """
 
@@ -55,6 +58,7 @@ OPTIONS = {
     "fuel_kg": (float, ("stint",)),
     "thermal_start": (str, ("ocp", "compare", "stint")),
     "max_iterations": (int, ("ocp", "compare", "stint")),
+    "wear_in_programme": ("bool", ("ocp", "compare")),
     "ambient_temp_C": (float, ("qss", "ocp", "compare", "stint")),
     "track_temp_C": (float, ("qss", "ocp", "compare", "stint")),
 }
@@ -155,6 +159,11 @@ def resolve_case(row, index, source="cases"):
             case[column] = value
         elif column in OPTIONS:
             kind = OPTIONS[column][0]
+            if kind == "bool":
+                if value not in (True, False, 0, 1) and str(value).lower() not in ("true", "false"):
+                    raise CaseTableError("%s: %s = %r is not true, false, 1 or 0" % (where, column, value))
+                case["options"][column] = value in (True, 1) or str(value).lower() == "true"
+                continue
             try:
                 case["options"][column] = kind(value)
             except (TypeError, ValueError):
@@ -181,10 +190,138 @@ def resolve_case(row, index, source="cases"):
             raise CaseTableError("%s: option %s does not apply to method %s" % (where, option, case["method"]))
     if case["method"] == "compare":
         case["options"].setdefault("compare_disc_limit_C", COMPARE_DEFAULT_LIMIT_C)
+    if case["method"] in ("ocp", "compare"):
+        # The wear as states: a lap solved from another's point is then the same programme as
+        # from the guess (frozen, the wear would be the start's; docs/sweeps.md).
+        case["options"].setdefault("wear_in_programme", True)
     resolved = {k: case[k] for k in ("car", "track", "method", "options", "overrides")}
     resolved["hotlap"] = hotlap.__version__
     case["hash"] = hashlib.sha256(json.dumps(resolved, sort_keys=True).encode()).hexdigest()[:16]
     return case
+
+
+# ---- warm starts: the lap cache, the nearest solved lap, the order ----
+
+# Methods whose cases start from a solved neighbour (one solve; the comparison's two laps and a
+# stint's greedy laps have their own starts).
+WARM_START_METHODS = ("ocp",)
+# The nearest solved laps a case tries in turn, each for at most this many iterations (a slow
+# start counts as failed), before its default start.
+WARM_START_CANDIDATES = 2
+WARM_START_MAX_ITERATIONS = 150
+# Options that pose another programme (another mesh or thermal start): a solved lap is a start
+# for a case only where these are equal. The other options that are numbers are coordinates.
+PROGRAMME_OPTIONS = ("step_m", "collocation", "thermal_start", "tolerance_s", "wear_in_programme")
+
+
+def warm_startable(case):
+    """Whether ``case`` starts from a solved lap: an optimal lap on a fixed mesh."""
+    return case["method"] in WARM_START_METHODS and not case["options"].get("tolerance_s")
+
+
+def coordinates(entry):
+    """A case's (or a cached lap's) position among its neighbours: its overrides and its options
+    that are numbers but pose no other programme, {key: value}."""
+    out = {k: float(v) for k, v in entry["overrides"].items()}
+    for k, v in entry["options"].items():
+        if k not in PROGRAMME_OPTIONS and isinstance(v, (int, float)) and not isinstance(v, bool):
+            out[k] = float(v)
+    return out
+
+
+def family(entry, version=None):
+    """What must be equal for one lap to start another: version, car, track, method, the options
+    that pose the programme, and which coordinates are given."""
+    return json.dumps({"hotlap": version or entry.get("hotlap", hotlap.__version__), "car": entry["car"],
+                       "track": entry["track"], "method": entry["method"],
+                       "programme": {k: entry["options"].get(k) for k in PROGRAMME_OPTIONS},
+                       "keys": sorted(coordinates(entry))}, sort_keys=True)
+
+
+def coordinate_scales(cases):
+    """Each coordinate's scale: its spread over ``cases`` (max - min), else its size (at least 1)."""
+    values = {}
+    for case in cases:
+        for k, v in coordinates(case).items():
+            values.setdefault(k, []).append(v)
+    return {k: (max(v) - min(v)) or max(abs(max(v)), 1.0) for k, v in values.items()}
+
+
+def distance(a, b, scales):
+    """The scaled distance between two coordinate dicts of the same keys."""
+    return math.sqrt(sum(((a[k] - b[k]) / scales.get(k, max(abs(a[k]), 1.0))) ** 2 for k in a))
+
+
+def cached_laps(lap_cache):
+    """The laps in ``lap_cache``: a list of their index entries (``<hash>.json``, each with the
+    case's inputs, its name and the lap's ``path``); unreadable entries are left out."""
+    out = []
+    try:
+        names = sorted(os.listdir(lap_cache))
+    except OSError:
+        return out
+    for name in names:
+        if not name.endswith(".json"):
+            continue
+        try:
+            with open(os.path.join(lap_cache, name)) as f:
+                entry = json.load(f)
+        except (OSError, ValueError):
+            continue
+        entry["path"] = os.path.join(lap_cache, name[:-5] + ".lap")
+        if os.path.exists(entry["path"]):
+            out.append(entry)
+    return out
+
+
+def nearest_solved(case, lap_cache, scales, count=1):
+    """The ``count`` cached laps nearest ``case`` in its family, nearest first: a list of (entry,
+    distance); with ``count`` 1 the nearest alone, (entry, distance) or (None, None). The same
+    inputs (hash) are at distance 0."""
+    mine = family(case, hotlap.__version__)
+    here = coordinates(case)
+    found = []
+    for entry in cached_laps(lap_cache):
+        if entry.get("hash") == case["hash"]:
+            found.append((entry, 0.0))
+        elif family(entry) == mine:
+            found.append((entry, distance(here, coordinates(entry), scales)))
+    found.sort(key=lambda e: (e[1], e[0]["case"]))
+    if count == 1:
+        return found[0] if found else (None, None)
+    return found[:count]
+
+
+def order_for_warm_starts(cases, scales):
+    """``cases`` in an order that gives each warm-startable case a solved neighbour: per family,
+    a nearest-neighbour path from its first case in the table (on a grid, a serpentine); the
+    other cases as they are, first."""
+    others = [c for c in cases if not warm_startable(c)]
+    families = {}
+    for c in cases:
+        if warm_startable(c):
+            families.setdefault(family(c, hotlap.__version__), []).append(c)
+    ordered = list(others)
+    for members in families.values():
+        left = list(members)
+        path = [left.pop(0)]
+        while left:
+            here = coordinates(path[-1])
+            k = min(range(len(left)), key=lambda i: (distance(here, coordinates(left[i]), scales), left[i]["index"]))
+            path.append(left.pop(k))
+        ordered += path
+    return ordered
+
+
+def _keep_lap(lap_cache, case, saved, summary):
+    """Moves the lap ``saved`` into the cache as ``<hash>.lap`` with its index entry (written
+    last, atomically: an entry always names a whole lap)."""
+    os.makedirs(lap_cache, exist_ok=True)
+    os.replace(saved, os.path.join(lap_cache, case["hash"] + ".lap"))
+    entry = {k: case[k] for k in ("car", "track", "method", "options", "overrides", "hash", "case")}
+    entry.update(hotlap=hotlap.__version__, lap_time_s=summary.get("lap_time_s"),
+                 ipopt_iterations=summary.get("ipopt_iterations"))
+    _write_json_atomically(os.path.join(lap_cache, case["hash"] + ".json"), entry)
 
 
 # ---- one case ----
@@ -211,16 +348,26 @@ def _write_channels(path, channels):
             f.write(",".join("" if math.isnan(v) else repr(float(v)) for v in row) + "\n")
 
 
-def run_case(case, out):
+def run_case(case, out, lap_cache=None, scales=None):
     """Runs one case and writes OUT/cases/<case>/ (result.json and the channels) atomically.
 
     Returns the result: the case, status ("ok", "not converged", "bad input", "numerical failure",
-    "not available"), message, elapsed_s and the flattened summary. Runs in a worker process.
+    "not available"), message, elapsed_s, the flattened summary and, for an optimal lap with a
+    ``lap_cache`` folder, ``warm_start_from`` and ``warm_start_distance`` (the cached lap it
+    started from, "" and None if none; its converged lap goes into the cache). Runs in a worker
+    process.
     """
     started = time.perf_counter()
     result = {"case": case["case"], "hash": case["hash"], "index": case["index"], "inputs": {
-        k: case[k] for k in ("car", "track", "method", "options", "overrides")}}
+        k: case[k] for k in ("car", "track", "method", "options", "overrides")},
+        "warm_start_from": "", "warm_start_distance": None}
     channels = {}
+    warm = lap_cache is not None and warm_startable(case)
+    saved = None
+    if warm:
+        candidates = nearest_solved(case, lap_cache, scales or {}, count=WARM_START_CANDIDATES)
+        saved = os.path.join(lap_cache, ".%s-%d.lap" % (case["hash"], os.getpid()))
+        os.makedirs(lap_cache, exist_ok=True)
     try:
         car = hotlap.load_car(case["car"], overrides=case["overrides"]) if case["overrides"] else hotlap.load_car(case["car"])
         track = hotlap.load_track(case["track"])
@@ -238,6 +385,29 @@ def run_case(case, out):
             channels = {"fall_off.csv": {"age_laps": ages, "lap_time_s": fall_off["lap_time_s"],
                                          "heat_only_lap_time_s": fall_off["heat_only_lap_time_s"]}}
             r = {"summary": summary}
+        elif warm:
+            while True:
+                try:
+                    r = hotlap.optimal_lap(car, track, warm_start=[e["path"] for e, _ in candidates] or None,
+                                           start_max_iterations=WARM_START_MAX_ITERATIONS, save_solution=saved,
+                                           **options)
+                    break
+                except ValueError as e:
+                    # A cached lap that cannot be read (cut short, another build's) is no start.
+                    bad = [c for c in candidates if c[0]["path"] in str(e)]
+                    if not bad:
+                        raise
+                    candidates.remove(bad[0])
+            # Which candidate the solve converged from: the first not among the failed starts.
+            tried = sum(1 for f in r["summary"].get("failed_starts") or [] if f["from"].startswith("saved lap")
+                        or f["from"] == "the saved lap")
+            if tried < len(candidates) and r["summary"].get("started_from") == "the given start point":
+                entry, d = candidates[tried]
+                result.update(warm_start_from=entry["case"], warm_start_distance=round(d, 6))
+            channels = {"%s.csv" % label.replace(" ", "_").replace("<=", "le").replace("/", "_"): c
+                        for label, c in r["channels"].items()}
+            if os.path.exists(saved):
+                _keep_lap(lap_cache, case, saved, r["summary"])
         else:
             r = hotlap.optimal_lap(car, track, **options)
             channels = {"%s.csv" % label.replace(" ", "_").replace("<=", "le").replace("/", "_"): c
@@ -247,13 +417,16 @@ def run_case(case, out):
         statuses = [summary.get("status")] + [summary.get(k, {}).get("status") for k in ("unconstrained", "constrained")]
         if any(s not in (None, "converged") for s in statuses):
             status = "not converged"
-        result.update(status=status, message="", summary=_flatten(summary))
+        result.update(status=status, message="", summary=_flatten(summary),
+                      failed_start_iterations=sum(f.get("ipopt_iterations", 0) for f in summary.get("failed_starts") or []))
     except ValueError as e:
         result.update(status="bad input", message=str(e), summary={})
     except hotlap.NumericalError as e:
         result.update(status="numerical failure", message=str(e), summary={})
     except NotImplementedError as e:
         result.update(status="not available", message=str(e), summary={})
+    if saved is not None and os.path.exists(saved):
+        os.remove(saved)
     result["elapsed_s"] = round(time.perf_counter() - started, 3)
     # Atomic: everything into a temporary folder beside the case's, then renamed into place.
     cases_dir = os.path.join(out, "cases")
@@ -298,7 +471,7 @@ def _progress_line(total, done, running, failed, started):
 
 
 def sweep(cases, out, *, local_workers=None, scheduler=None, shard=None, progress=print,
-          worker_retries=2):
+          worker_retries=2, warm_starts=True, lap_cache=None):
     """Runs every case of ``cases`` (a case-table path, or a list of row dicts) into ``out``.
 
     Default: a local dask cluster of ``local_workers`` single-threaded worker processes (one per
@@ -306,8 +479,10 @@ def sweep(cases, out, *, local_workers=None, scheduler=None, shard=None, progres
     cluster instead; ``shard=(i, n)`` runs cases i, i + n, ... (1-based i) in this process without
     dask. A case already done with the same inputs is skipped; a failing case is recorded and the
     rest go on; a case whose worker dies is run again on another (at most ``worker_retries``
-    times). Returns the summary dict (also written to OUT/sweep.json) after writing results.csv
-    and report.html.
+    times). With ``warm_starts`` each optimal lap starts from the nearest lap solved before it in
+    the lap cache (``lap_cache``, default OUT/laps; run_case), the cases ordered so that each has
+    a solved neighbour (order_for_warm_starts); else every case from its default start. Returns
+    the summary dict (also written to OUT/sweep.json) after writing results.csv and report.html.
     """
     source = os.fspath(cases) if not isinstance(cases, list) else "cases"
     rows = read_cases(cases) if not isinstance(cases, list) else cases
@@ -327,6 +502,12 @@ def sweep(cases, out, *, local_workers=None, scheduler=None, shard=None, progres
         mine = [c for c in resolved if c["index"] % n == i - 1]
     todo = [c for c in mine if load_result(out, c) is None]
     skipped = len(mine) - len(todo)
+    scales = coordinate_scales(resolved)
+    if warm_starts:
+        lap_cache = os.path.abspath(lap_cache or os.path.join(out, "laps"))
+        todo = order_for_warm_starts(todo, scales)
+    else:
+        lap_cache = None
     started = time.monotonic()
     done = failed = 0
     lost = []
@@ -344,9 +525,9 @@ def sweep(cases, out, *, local_workers=None, scheduler=None, shard=None, progres
     try:
         if shard is not None or not todo:
             for case in todo:
-                record(run_case(case, out))
+                record(run_case(case, out, lap_cache, scales))
         else:
-            lost = _run_on_dask(todo, out, local_workers, scheduler, worker_retries, record)
+            lost = _run_on_dask(todo, out, local_workers, scheduler, worker_retries, record, lap_cache, scales)
     except KeyboardInterrupt:
         interrupted = True
     summary = merge(out, resolved if shard is None else mine, write_report=shard is None)
@@ -370,7 +551,7 @@ def _write_json_atomically(path, value):
     os.replace(tmp, path)
 
 
-def _run_on_dask(todo, out, local_workers, scheduler, worker_retries, record):
+def _run_on_dask(todo, out, local_workers, scheduler, worker_retries, record, lap_cache, scales):
     import dask
     from distributed import Client, LocalCluster, as_completed
     from distributed.scheduler import KilledWorker
@@ -390,7 +571,9 @@ def _run_on_dask(todo, out, local_workers, scheduler, worker_retries, record):
         client = scheduler
     lost = []
     try:
-        futures = {client.submit(run_case, case, os.path.abspath(out), pure=False, key="hotlap-case-%s-%s" % (case["case"], case["hash"])): case for case in todo}
+        # Submitted in the warm starts' order; the scheduler hands them out first come, first served.
+        futures = {client.submit(run_case, case, os.path.abspath(out), lap_cache, scales, pure=False,
+                                 key="hotlap-case-%s-%s" % (case["case"], case["hash"])): case for case in todo}
         for future in as_completed(futures):
             case = futures[future]
             slots = max(1, sum(w.get("nthreads", 1) for w in client.scheduler_info()["workers"].values()))
@@ -407,7 +590,8 @@ def _run_on_dask(todo, out, local_workers, scheduler, worker_retries, record):
     return lost
 
 
-RESULT_COLUMNS = ("case", "status", "message", "method", "car", "track", "elapsed_s", "hash")
+RESULT_COLUMNS = ("case", "status", "message", "method", "car", "track", "elapsed_s", "hash",
+                  "warm_start_from", "warm_start_distance")
 
 
 def merge(out, cases=None, write_report=True):
@@ -443,7 +627,8 @@ def merge(out, cases=None, write_report=True):
         w.writerow(header)
         for r in results:
             row = [r["case"], r["status"], r["message"], r["inputs"]["method"], r["inputs"]["car"],
-                   r["inputs"]["track"], r["elapsed_s"], r["hash"]]
+                   r["inputs"]["track"], r["elapsed_s"], r["hash"], r.get("warm_start_from", ""),
+                   _cell(r.get("warm_start_distance"))]
             row += [r["inputs"]["options"].get(k, "") for k in option_keys]
             row += [r["inputs"]["overrides"].get(k, "") for k in override_keys]
             row += [_cell(r["summary"].get(k)) for k in output_keys]
@@ -455,7 +640,8 @@ def merge(out, cases=None, write_report=True):
     if write_report and results:
         _write_report(out, results, option_keys + override_keys)
     return {"cases": len(results) + len(missing), "results": len(results), "missing": missing,
-            "by_status": counts, "results_csv": os.path.join(out, "results.csv")}
+            "by_status": counts, "warm_started": sum(1 for r in results if r.get("warm_start_from")),
+            "results_csv": os.path.join(out, "results.csv")}
 
 
 def _cell(v):
@@ -545,19 +731,24 @@ def main(argv=None):
     where.add_argument("--local-workers", type=int, help="worker processes of the local dask cluster (default: one per core)")
     where.add_argument("--scheduler", help="an existing dask scheduler, tcp://HOST:PORT")
     where.add_argument("--shard", type=_shard, help="I/N: run cases I, I+N, ... here without dask (a Slurm array task)")
+    cache = p.add_mutually_exclusive_group()
+    cache.add_argument("--lap-cache", help="the folder of solved laps optimal-lap cases start from and add to (default OUT/laps; may be shared by sweeps)")
+    cache.add_argument("--cold", action="store_true", help="every optimal lap from its default start, no lap cache")
     p.add_argument("--json", help="write the summary as JSON")
     a = p.parse_args(argv)
     if a.local_workers is not None and a.local_workers < 1:
         p.error("--local-workers must be >= 1")
     try:
         summary = sweep(a.cases, a.out, local_workers=a.local_workers, scheduler=a.scheduler, shard=a.shard,
-                        progress=lambda line: print(line, flush=True))
+                        progress=lambda line: print(line, flush=True), warm_starts=not a.cold,
+                        lap_cache=a.lap_cache)
     except KeyboardInterrupt:
         return 130
     except ValueError as e:
         print("hotlap: error: %s" % e, file=sys.stderr)
         return 2
-    print("%d cases: %s (%d skipped as done); wrote %s" % (summary["cases"], summary["by_status"], summary["skipped"], summary["results_csv"]))
+    print("%d cases: %s (%d skipped as done, %d started from a solved lap); wrote %s" % (
+        summary["cases"], summary["by_status"], summary["skipped"], summary["warm_started"], summary["results_csv"]))
     if a.json:
         _write_json_atomically(a.json, summary)
     return 0

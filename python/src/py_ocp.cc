@@ -16,6 +16,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "hotlap/common/error.h"
+#include "hotlap/common/output_folder.h"
 #include "hotlap/ocp/optimal_output.h"
 #include "hotlap/ocp/optimal_run.h"
 #include "hotlap/ocp/optimal_run_json.h"
@@ -36,6 +37,8 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
                     double ambient_C, double track_C, int max_iterations,
                     const std::vector<std::pair<std::string, std::string>>& ipopt_options,
                     int threads, bool wear_in_programme, bool paper_models, bool sensitivities,
+                    const py::object& warm_start, int start_max_iterations,
+                    const std::optional<std::filesystem::path>& save_solution,
                     const py::object& progress) {
   runs::CheckThreads(threads, runs::NameStyle::kPython);
   ocp::OptimalRunOptions o;
@@ -60,6 +63,24 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
   if (disc_limit_C && compare_disc_limit_C) {
     throw InputError("give disc_limit_C (one solve) or compare_disc_limit_C (two), not both");
   }
+  // warm_start: one saved lap's path, or a list of them tried in turn.
+  std::vector<std::filesystem::path> start_paths;
+  if (py::isinstance<py::list>(warm_start) || py::isinstance<py::tuple>(warm_start)) {
+    start_paths = warm_start.cast<std::vector<std::filesystem::path>>();
+  } else if (!warm_start.is_none()) {
+    start_paths.push_back(warm_start.cast<std::filesystem::path>());
+  }
+  if (compare_disc_limit_C && (!start_paths.empty() || save_solution)) {
+    throw InputError("warm_start and save_solution are for one solve, not the comparison");
+  }
+  if (start_max_iterations < 0) {
+    throw InputError(
+        fmt::format("start_max_iterations: {} is not 0 or more", start_max_iterations));
+  }
+  o.start_max_iterations = start_max_iterations;
+  std::vector<ocp::LapStart> starts;
+  for (const std::filesystem::path& p : start_paths) starts.push_back(ocp::ReadLapStart(p));
+  if (save_solution) CheckOutputFolder(*save_solution, "save_solution");
 
   // Called on the solving thread without the GIL: take it, call Python, and stop the solve when
   // the callback returns False, raises, or Ctrl-C arrives (the error is raised after the solve).
@@ -91,9 +112,13 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
   ocp::OptimalRuns runs;
   {
     py::gil_scoped_release release;
-    runs = ocp::SolveOptimalRuns(car, track, o, nullptr, on_iteration);
+    runs = ocp::SolveOptimalRuns(car, track, o, starts, on_iteration);
   }
   if (callback_error) std::rethrow_exception(callback_error);
+  const ocp::SolvedLap& first = runs.laps.front();
+  if (save_solution && first.run.solution.solve.ok()) {
+    ocp::WriteLapStart(*save_solution, first.run.solution, track.length_m());
+  }
   const double wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   py::dict out;
@@ -163,7 +188,9 @@ void BindOcp(py::module_& m) {
         py::arg("threads") = defaults.threads,
         py::arg("wear_in_programme") = defaults.wear_in_programme,
         py::arg("paper_models") = defaults.paper_models,
-        py::arg("sensitivities") = defaults.sensitivities, py::arg("progress") = py::none(),
+        py::arg("sensitivities") = defaults.sensitivities, py::arg("warm_start") = py::none(),
+        py::arg("start_max_iterations") = defaults.start_max_iterations,
+        py::arg("save_solution") = py::none(), py::arg("progress") = py::none(),
         "The minimum-time lap with tyre and brake temperatures and wear as states: one solve "
         "(optionally with a front-disc limit, degC), or with compare_disc_limit_C the free and "
         "the limited lap. Returns {'summary': dict (the keys of `hotlap optimise --json`), "
@@ -182,7 +209,12 @@ void BindOcp(py::module_& m) {
         "lap's set-up "
         "sensitivities (the lap time's derivative for each parameter a crew chief sets, from the "
         "solved lap's multipliers) in summary['sensitivities'] (per lap in the comparison, with "
-        "summary['limit_cost_sensitivities']).");
+        "summary['limit_cost_sensitivities']). warm_start: a lap saved with save_solution (or "
+        "`hotlap optimise --save-solution`) to start from, its point and multipliers (the coarse "
+        "solve skipped), or a list of them tried in turn, each within start_max_iterations "
+        "(0: max_iterations); should every one fail, the default start (summary['started_from'], "
+        "summary['failed_starts']); "
+        "save_solution: where to write the converged lap (one solve, not the comparison).");
   const ocp::StintOptions stint;
   m.def("stint", &Stint, py::arg("car"), py::arg("track"), py::kw_only(),
         py::arg("laps") = stint.laps, py::arg("wear_scale") = stint.wear_scale,

@@ -1,5 +1,6 @@
 """hotlap.sweep on a real dask LocalCluster (two worker processes): the same results as a serial
-run, a killed worker's case run again, a failing case recorded, a resumed sweep redoing nothing."""
+run, a killed worker's case run again, a failing case recorded, a resumed sweep redoing nothing;
+optimal laps started from their solved neighbours and the lap cache reused."""
 
 import json
 import os
@@ -41,7 +42,8 @@ def test_two_workers_give_the_serial_results_bit_for_bit(tmp_path):
     assert (tmp_path / "dask" / "report.html").stat().st_size > 10000
     with open(tmp_path / "dask" / "results.csv") as f:
         rows = f.read().splitlines()
-    assert rows[0].startswith("case,status,message,method,car,track,elapsed_s,hash,ambient_temp_C,laps,")
+    assert rows[0].startswith("case,status,message,method,car,track,elapsed_s,hash,warm_start_from,"
+                              "warm_start_distance,ambient_temp_C,laps,")
     assert len(rows) == 5 and rows[1].startswith("c0,ok,,qss,gen7,darlington,")
 
 
@@ -196,3 +198,103 @@ def test_race_cases_run_and_more_pit_loss_never_adds_a_stop(tmp_path):
     assert stops["dear"] <= stops["cheap"]
     with open(tmp_path / "results.csv") as f:
         assert "plan.race_time_s" in f.readline().strip().split(",")
+
+
+# ---- warm starts ----
+
+
+def _cache_entry(folder, name, overrides, options=None, version=None):
+    """A lap-cache entry as run_case writes one (an empty lap file: never read here)."""
+    case = sweep.resolve_case(dict({"case": name, "method": "ocp", "step_m": 30.0}, **(options or {}), **overrides), 0)
+    entry = {k: case[k] for k in ("car", "track", "method", "options", "overrides", "hash", "case")}
+    entry["hotlap"] = version or sweep.hotlap.__version__
+    if version:  # the hash holds the build's version
+        case["hash"] = entry["hash"] = "%016x" % abs(hash(version))
+    (folder / (case["hash"] + ".lap")).write_bytes(b"")
+    (folder / (case["hash"] + ".json")).write_text(json.dumps(entry))
+    return case
+
+
+def test_the_nearest_solved_lap_is_the_closest_of_its_family(tmp_path):
+    _cache_entry(tmp_path, "near", {"brake_system.front_share": 0.58, "brakes.fl.duct_factor": 1.0})
+    _cache_entry(tmp_path, "far", {"brake_system.front_share": 0.55, "brakes.fl.duct_factor": 1.2})
+    # Nearer in the values, but another programme, another build or other keys: not a start.
+    _cache_entry(tmp_path, "mesh", {"brake_system.front_share": 0.6, "brakes.fl.duct_factor": 1.1}, {"step_m": 20.0})
+    _cache_entry(tmp_path, "build", {"brake_system.front_share": 0.6, "brakes.fl.duct_factor": 1.1}, version="0.0.1")
+    _cache_entry(tmp_path, "keys", {"brake_system.front_share": 0.6})
+    case = sweep.resolve_case({"method": "ocp", "step_m": 30.0, "brake_system.front_share": 0.6,
+                               "brakes.fl.duct_factor": 1.1}, 0)
+    scales = {"brake_system.front_share": 0.1, "brakes.fl.duct_factor": 0.4}
+    entry, d = sweep.nearest_solved(case, tmp_path, scales)
+    assert entry["case"] == "near"
+    assert d == pytest.approx((((0.6 - 0.58) / 0.1) ** 2 + ((1.1 - 1.0) / 0.4) ** 2) ** 0.5, rel=1e-12)
+    # The same inputs: their own lap, at distance 0.
+    same = _cache_entry(tmp_path, "same", {"brake_system.front_share": 0.6, "brakes.fl.duct_factor": 1.1})
+    entry, d = sweep.nearest_solved(dict(case, hash=same["hash"]), tmp_path, scales)
+    assert (entry["case"], d) == ("same", 0.0)
+    # Nothing of its family: no start.
+    other = sweep.resolve_case({"method": "ocp", "step_m": 30.0, "track": "stadium",
+                                "brake_system.front_share": 0.6, "brakes.fl.duct_factor": 1.1}, 0)
+    assert sweep.nearest_solved(other, tmp_path, scales) == (None, None)
+
+
+def test_a_grid_is_ordered_so_each_case_has_a_solved_neighbour():
+    rows = [{"case": "g%d%d" % (i, j), "method": "ocp", "brakes.fl.duct_factor": 0.8 + 0.2 * i,
+             "brake_system.front_share": 0.55 + 0.05 * j} for i in range(3) for j in range(3)]
+    rows.insert(4, {"case": "q", "method": "qss"})
+    cases = sweep.resolve_cases(rows)
+    scales = sweep.coordinate_scales(cases)
+    ordered = sweep.order_for_warm_starts(cases, scales)
+    assert sorted(c["case"] for c in ordered) == sorted(c["case"] for c in cases)
+    assert ordered[0]["case"] == "q"  # cases without warm starts first
+    grid = ordered[1:]
+    assert grid[0]["case"] == "g00"  # the family's first case of the table
+    # One grid step is half the spread: every case is one step from the case before it.
+    for before, case in zip(grid, grid[1:]):
+        assert sweep.distance(sweep.coordinates(before), sweep.coordinates(case), scales) == pytest.approx(0.5)
+
+
+def _lap(out, name):
+    with open(os.path.join(out, "cases", name, "result.json")) as f:
+        r = json.load(f)
+    return r, r["summary"]
+
+
+def test_optimal_laps_start_from_their_solved_neighbours_and_the_cache_is_reused(tmp_path):
+    cases = [{"case": "b%d" % k, "method": "ocp", "step_m": 30.0, "coarse_step_m": 0.0, "disc_limit_C": 500.0,
+              "brake_system.front_share": 0.55 + 0.05 * k} for k in range(3)]
+    warm = sweep.sweep(cases, tmp_path / "warm", shard=(1, 1), progress=None)
+    cold = sweep.sweep(cases, tmp_path / "cold", shard=(1, 1), progress=None, warm_starts=False)
+    assert warm["by_status"] == cold["by_status"] == {"ok": 3}
+    assert (warm["warm_started"], cold["warm_started"]) == (2, 0)
+    assert not os.path.exists(tmp_path / "cold" / "laps")
+    for k, source in ((0, ""), (1, "b0"), (2, "b1")):
+        w, ws = _lap(tmp_path / "warm", "b%d" % k)
+        c, cs = _lap(tmp_path / "cold", "b%d" % k)
+        assert w["warm_start_from"] == source
+        assert cs["started_from"] == "the QSS guess"
+        if source:
+            assert w["warm_start_distance"] == pytest.approx(0.5)
+            assert ws["started_from"] == "the given start point"
+            # From a neighbour a fraction of the iterations, to a lap within 10 ms of the cold one
+            # (another local optimum of the same lap is a few ms away on a 30 m mesh).
+            assert ws["ipopt_iterations"] < 0.5 * cs["ipopt_iterations"]
+            assert abs(ws["lap_time_s"] - cs["lap_time_s"]) < 0.01
+    with open(tmp_path / "warm" / "results.csv") as f:
+        header = f.readline().strip().split(",")
+    assert header[8:10] == ["warm_start_from", "warm_start_distance"]
+    # Another sweep on the same lap cache: the same inputs start from their own laps.
+    again = sweep.sweep(cases[1:2], tmp_path / "again", shard=(1, 1), progress=None,
+                        lap_cache=tmp_path / "warm" / "laps")
+    r, s = _lap(tmp_path / "again", "b1")
+    assert again["warm_started"] == 1
+    assert (r["warm_start_from"], r["warm_start_distance"]) == ("b1", 0.0)
+    assert s["ipopt_iterations"] <= 5
+    assert s["lap_time_s"] == pytest.approx(_lap(tmp_path / "warm", "b1")[1]["lap_time_s"], abs=1e-4)
+    # A cached lap that cannot be read is no start: the next nearest is.
+    with open(tmp_path / "warm" / "laps" / (sweep.resolve_case(cases[0], 0)["hash"] + ".lap"), "wb") as f:
+        f.write(b"not a lap")
+    near_b0 = [dict(cases[0], case="c", **{"brake_system.front_share": 0.56})]
+    sweep.sweep(near_b0, tmp_path / "after", shard=(1, 1), progress=None, lap_cache=tmp_path / "warm" / "laps")
+    r, s = _lap(tmp_path / "after", "c")
+    assert (r["status"], r["warm_start_from"], s["started_from"]) == ("ok", "b1", "the given start point")

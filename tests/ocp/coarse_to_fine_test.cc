@@ -219,8 +219,8 @@ TEST(CoarseToFineTest, ReachesTheSameLapAsTheGuessStartInFewerIterations) {
 // Robust starts (OptimalLapOptions::fallback_start): a fixed-mesh solve that fails from its
 // start is solved again from the other one, and the failed start is reported. Made to fail by an
 // iteration limit no start can meet: from a coarse solution the second attempt starts from the
-// guess, from the guess it starts from a coarse solve at twice the spacing; without the option,
-// or with a start point of the caller's, no second attempt.
+// guess, from the guess it starts from a coarse solve at twice the spacing; without the option
+// no second attempt.
 TEST(FallbackStartTest, AFailedStartIsSolvedAgainFromTheOtherAndReported) {
   const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
   const track::Track track = track::LoadTrack("darlington");
@@ -254,6 +254,29 @@ TEST(FallbackStartTest, AFailedStartIsSolvedAgainFromTheOtherAndReported) {
   const OptimalLapRun solved = RunOptimalLap(car, track, o, &warm_up);
   ASSERT_TRUE(solved.solution.solve.ok()) << solved.solution.solve.message;
   EXPECT_TRUE(solved.failed_starts.empty());
+  EXPECT_EQ(solved.started_from, "the QSS guess");
+
+  // A start point of the caller's (a saved lap's, a neighbouring case's): from its own solution
+  // it converges where it starts; made to fail, with start_point_fallback the default start
+  // (the guess: no coarse mesh) follows and then the other (a coarse solve at twice the
+  // spacing), each failure reported; without it, the caller's start alone.
+  o.start_point = solved.solution.solve.x;
+  o.start_point_fallback = true;
+  const OptimalLapRun resolved = RunOptimalLap(car, track, o, &warm_up);
+  ASSERT_TRUE(resolved.solution.solve.ok()) << resolved.solution.solve.message;
+  EXPECT_TRUE(resolved.failed_starts.empty());
+  EXPECT_EQ(resolved.started_from, "the given start point");
+  EXPECT_EQ(resolved.coarse.iterations, 0);
+  o.ipopt.max_iterations = 3;
+  const OptimalLapRun chain = RunOptimalLap(car, track, o, &warm_up);
+  ASSERT_EQ(chain.failed_starts.size(), 2u);
+  EXPECT_EQ(chain.failed_starts[0].from, "the given start point");
+  EXPECT_EQ(chain.failed_starts[1].from, "the QSS guess");
+  EXPECT_EQ(chain.coarse.iterations, 3);  // the last attempt's coarse solve at 80 m
+  o.start_point_fallback = false;
+  const OptimalLapRun alone = RunOptimalLap(car, track, o, &warm_up);
+  EXPECT_TRUE(alone.failed_starts.empty());
+  EXPECT_EQ(alone.started_from, "the given start point");
 }
 
 }  // namespace

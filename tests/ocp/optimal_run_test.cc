@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "hotlap/common/units.h"
+#include "hotlap/ocp/lap_sensitivities.h"
 #include "hotlap/track/track_io.h"
 #include "hotlap/vehicle/car.h"
 #include "test_util.h"
@@ -95,6 +96,42 @@ TEST(SolveOptimalRuns, TheOldTwoControlsBrakeAgainstTheEngineAndThePedalDoesNot)
   EXPECT_GT(t.brake_energy_under_drive_J, 0.2 * t.brake_energy_J);
   EXPECT_LT(t.lap_time_s, p.lap_time_s);  // what braking against the engine buys on paper
   for (double pedal_value : two.laps[0].run.solution.pedal) EXPECT_EQ(pedal_value, 0.0);
+}
+
+// Saved laps tried in turn (a sweep's nearest solved cases): each within start_max_iterations,
+// a slow one counted as failed and reported, then the next, then the default start.
+TEST(SolveOptimalRuns, TriesTheSavedLapsInTurnThenTheDefaultStart) {
+  const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
+  const track::Track track = track::LoadTrack("darlington");
+  OptimalRunOptions o;
+  o.step_m = 30.0;
+  o.coarse_step_m = 0.0;
+  o.disc_limit_C = 500.0;
+  const OptimalRuns base = SolveOptimalRuns(car, track, o);
+  const LapSolution& solved = base.laps[0].run.solution;
+  ASSERT_TRUE(solved.solve.ok()) << solved.solve.message;
+  EXPECT_EQ(base.laps[0].run.started_from, "the QSS guess");
+  const LapStart start{track.length_m(), solved.layout, solved.solve};
+  // From its own lap: converged near where it starts (a few iterations: the wear is frozen at the
+  // start's, kept in the programme from the guess).
+  const OptimalRuns again = SolveOptimalRuns(car, track, o, std::vector<LapStart>{start, start});
+  EXPECT_TRUE(again.laps[0].run.failed_starts.empty());
+  EXPECT_EQ(again.laps[0].run.started_from, "the given start point");
+  EXPECT_LE(again.laps[0].run.solution.solve.iterations, 10);
+  // Another car (the balance moved) from the same lap, with a cap no start meets: both saved laps
+  // fail at the cap, then the default start converges.
+  OptimalRunOptions capped = o;
+  capped.start_max_iterations = 1;
+  const vehicle::Car other = CarWithSetup(car, "brake_system.front_share", 0.65);
+  const OptimalRuns chain =
+      SolveOptimalRuns(other, track, capped, std::vector<LapStart>{start, start});
+  const OptimalLapRun& run = chain.laps[0].run;
+  ASSERT_TRUE(run.solution.solve.ok()) << run.solution.solve.message;
+  ASSERT_GE(run.failed_starts.size(), 2u);
+  EXPECT_EQ(run.failed_starts[0].from, "saved lap 1");
+  EXPECT_EQ(run.failed_starts[0].iterations, 1);
+  EXPECT_EQ(run.failed_starts[1].from, "saved lap 2");
+  EXPECT_EQ(run.started_from, "the QSS guess");
 }
 
 TEST(MakeOptimalLapOptions, AnUnknownThermalStartIsAnInputError) {

@@ -234,6 +234,22 @@ void ReplayExact(const vehicle::Car& car, const track::Track& track,
   }
 }
 
+// A start the solve could not get from to the optimum (not one stopped or out of time).
+bool StartFailed(SolveStatus status) {
+  return status == SolveStatus::kIterationLimit || status == SolveStatus::kInfeasible ||
+         status == SolveStatus::kRestorationFailed || status == SolveStatus::kNumericalTrouble;
+}
+
+// Where the solve `options` pose started, after it ran into `run`: "the given start point", "a 15
+// m coarse solve" (the fine solve started from it only where it converged) or "the QSS guess".
+std::string StartLabel(const OptimalLapOptions& options, bool adaptive, const OptimalLapRun& run) {
+  if (!options.start_point.empty()) return "the given start point";
+  const bool coarse =
+      adaptive ? options.coarse_step_m > 0.0 : options.coarse_step_m > options.step_m;
+  if (coarse && run.coarse.ok()) return fmt::format("a {:g} m coarse solve", options.coarse_step_m);
+  return "the QSS guess";
+}
+
 // One solve from the start `options` give (a coarse solve first, or the QSS guess, or the
 // caller's start point): the problem as posed, the solution and the coarse solve in `run`.
 LapProblemOptions SolveFromStart(const vehicle::Car& hot_car, const track::Track& track,
@@ -361,30 +377,36 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& any_car, const track::Track& tra
 
   const bool adaptive = options.tolerance_s > 0.0 && options.collocation == Collocation::kTrapezoid;
   LapProblemOptions lap = SolveFromStart(hot_car, track, options, adaptive, w, run);
-  // Robust starts: a fixed-mesh solve of the caller's own choosing that fails from its start (a
-  // coarse solution, or the QSS guess: at the iteration limit, at a locally infeasible point, or
-  // lost in restoration or numerical trouble; not stopped or out of time) is solved again from
-  // the other: from the
-  // guess, or from a coarse solve at twice the spacing. Both attempts are reported
-  // (OptimalLapRun::failed_starts).
-  const SolveStatus status = run.solution.solve.status;
-  const bool start_failed =
-      status == SolveStatus::kIterationLimit || status == SolveStatus::kInfeasible ||
-      status == SolveStatus::kRestorationFailed || status == SolveStatus::kNumericalTrouble;
-  if (start_failed && options.fallback_start && !adaptive && options.start_point.empty() &&
-      !options.presolved && !options.coarse_start) {
-    // The fine solve started from the coarse solution only where that converged.
-    const bool from_coarse = options.coarse_step_m > options.step_m && run.coarse.ok();
-    run.failed_starts.push_back({from_coarse
-                                     ? fmt::format("a {:g} m coarse solve", options.coarse_step_m)
-                                     : "the QSS guess",
-                                 run.solution.solve.iterations, run.solution.solve.message});
-    OptimalLapOptions other = options;
-    other.coarse_step_m = from_coarse ? 0.0 : 2.0 * options.step_m;
+  // Robust starts: a fixed-mesh solve that fails from its start (at the iteration limit, at a
+  // locally infeasible point, or lost in restoration or numerical trouble; not stopped or out of
+  // time) is solved again from the next: a caller's start point (with start_point_fallback) falls
+  // back to the default start, a coarse solution to the QSS guess, the guess to a coarse solve at
+  // twice the spacing. Every failed attempt is reported (OptimalLapRun::failed_starts).
+  const bool caller_start = !options.start_point.empty();
+  int retries = !options.fallback_start || adaptive || options.presolved || options.coarse_start ? 0
+                : caller_start ? (options.start_point_fallback ? 2 : 0)
+                               : 1;
+  OptimalLapOptions current = options;
+  for (; retries > 0 && StartFailed(run.solution.solve.status); --retries) {
+    OptimalLapOptions other = current;
+    if (!current.start_point.empty()) {
+      other.start_point.clear();
+      other.ipopt.warm_z_lower.clear();
+      other.ipopt.warm_z_upper.clear();
+      other.ipopt.warm_lambda.clear();
+    } else {
+      // The fine solve started from the coarse solution only where that converged.
+      const bool from_coarse = current.coarse_step_m > current.step_m && run.coarse.ok();
+      other.coarse_step_m = from_coarse ? 0.0 : 2.0 * current.step_m;
+    }
+    run.failed_starts.push_back({StartLabel(current, adaptive, run), run.solution.solve.iterations,
+                                 run.solution.solve.message});
     run.coarse = {};
     run.coarse_lap_time = 0.0;
     lap = SolveFromStart(hot_car, track, other, adaptive, w, run);
+    current = std::move(other);
   }
+  run.started_from = StartLabel(current, adaptive, run);
   run.posed = std::make_shared<const PosedLap>(PosedLap{lap, w.guess});
   run.mesh_error = EstimateMeshError(run.solution.rates);
   QssOnOptimalLine(car, track, qss, run);

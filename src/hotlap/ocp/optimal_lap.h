@@ -121,9 +121,15 @@ struct OptimalLapOptions {
   /// Robust starts on a fixed mesh: a solve that fails from its start (a coarse solution, or the
   /// QSS guess; at the iteration limit, a locally infeasible point, or in restoration or numerical
   /// trouble) is solved again from the other (from the guess, or from a coarse solve at twice
-  /// step_m), both reported in OptimalLapRun::failed_starts. Not with start_point, coarse_start,
-  /// presolved or the adaptive mesh, whose starts are the caller's.
+  /// step_m), both reported in OptimalLapRun::failed_starts. Not with coarse_start, presolved or
+  /// the adaptive mesh, whose starts are the caller's; with start_point only if
+  /// start_point_fallback.
   bool fallback_start = true;
+  /// With fallback_start: a solve from start_point (a saved or neighbouring lap's) that fails is
+  /// solved again from the default start (coarse to fine from the QSS guess) and, should that
+  /// fail too, from the other, each failure reported. Off: the start point is the caller's alone
+  /// (a stint's laps, a mesh check).
+  bool start_point_fallback = false;
   /// Coarse to fine: called with the coarse solve (converged or not) before the fine solve starts.
   std::function<void(const LapSolution& coarse)> on_coarse_solve;
   /// The transcription of the step_m solve and of the coarse one (step_m and coarse_step_m are
@@ -214,6 +220,9 @@ struct OptimalLapRun {
     std::string message;
   };
   std::vector<FailedStart> failed_starts;
+  /// Where the reported solve started: "the given start point" (OptimalLapOptions::start_point),
+  /// "a 15 m coarse solve" or "the QSS guess".
+  std::string started_from;
 };
 
 /// The warm-up before a solve (RunOptimalLap's first step): the thermal state at the start line

@@ -82,7 +82,7 @@ void AddSensitivities(const vehicle::Car& car, const track::Track& track,
 }
 
 OptimalRuns SolveLaps(const vehicle::Car& car, const track::Track& track,
-                      const OptimalRunOptions& a, const LapStart* warm_start,
+                      const OptimalRunOptions& a, const std::vector<LapStart>& warm_starts,
                       const LapProgress& progress, const LapLog& log) {
   OptimalRuns runs;
   if (a.compare_disc_limit_C) {
@@ -96,11 +96,33 @@ OptimalRuns SolveLaps(const vehicle::Car& car, const track::Track& track,
   }
   OptimalLapOptions o = MakeOptimalLapOptions(a);
   if (a.disc_limit_C) o.front_disc_limit = CelsiusToKelvin(*a.disc_limit_C);
-  if (warm_start) UseLapStart(*warm_start, track, o);
-  runs.laps.push_back(
-      SolveLap(car, track, o,
-               a.disc_limit_C ? fmt::format("discs <= {:g} degC", *a.disc_limit_C) : "optimal lap",
-               nullptr, progress, log));
+  const std::string label =
+      a.disc_limit_C ? fmt::format("discs <= {:g} degC", *a.disc_limit_C) : "optimal lap";
+  // The saved laps in turn, each within start_max_iterations; then the default start (with its
+  // own fallback). Every attempt that failed is reported with the solution.
+  std::vector<OptimalLapRun::FailedStart> failed;
+  for (size_t i = 0; i < warm_starts.size(); ++i) {
+    OptimalLapOptions from = o;
+    UseLapStart(warm_starts[i], track, from);
+    if (a.start_max_iterations > 0) {
+      from.ipopt.max_iterations = std::min(from.ipopt.max_iterations, a.start_max_iterations);
+    }
+    SolvedLap lap = SolveLap(car, track, from, label, nullptr, progress, log);
+    const SolveResult& r = lap.run.solution.solve;
+    if (r.ok() || r.status == SolveStatus::kStopped) {
+      lap.run.failed_starts.insert(lap.run.failed_starts.begin(), failed.begin(), failed.end());
+      runs.laps.push_back(std::move(lap));
+      return runs;
+    }
+    failed.push_back({warm_starts.size() == 1 ? std::string("the saved lap")
+                                              : fmt::format("saved lap {}", i + 1),
+                      r.iterations, r.message});
+    if (log)
+      log(fmt::format("{}: from {}: {}; the next start", label, failed.back().from, r.message));
+  }
+  SolvedLap lap = SolveLap(car, track, o, label, nullptr, progress, log);
+  lap.run.failed_starts.insert(lap.run.failed_starts.begin(), failed.begin(), failed.end());
+  runs.laps.push_back(std::move(lap));
   return runs;
 }
 
@@ -109,7 +131,15 @@ OptimalRuns SolveLaps(const vehicle::Car& car, const track::Track& track,
 OptimalRuns SolveOptimalRuns(const vehicle::Car& car, const track::Track& track,
                              const OptimalRunOptions& a, const LapStart* warm_start,
                              const LapProgress& progress, const LapLog& log) {
-  OptimalRuns runs = SolveLaps(car, track, a, warm_start, progress, log);
+  std::vector<LapStart> starts;
+  if (warm_start) starts.push_back(*warm_start);
+  return SolveOptimalRuns(car, track, a, starts, progress, log);
+}
+
+OptimalRuns SolveOptimalRuns(const vehicle::Car& car, const track::Track& track,
+                             const OptimalRunOptions& a, const std::vector<LapStart>& warm_starts,
+                             const LapProgress& progress, const LapLog& log) {
+  OptimalRuns runs = SolveLaps(car, track, a, warm_starts, progress, log);
   if (a.sensitivities) AddSensitivities(car, track, a, log, runs);
   return runs;
 }

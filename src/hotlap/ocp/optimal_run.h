@@ -55,6 +55,9 @@ struct OptimalRunOptions {
   /// After the solves, each converged lap's set-up sensitivities (ComputeLapSensitivities, every
   /// parameter of CrewChiefParameters the car takes) into SolvedLap::sensitivities.
   bool sensitivities = false;
+  /// A solve from a saved lap (SolveOptimalRuns' warm starts) stops after this many iterations
+  /// and the next start is tried (a slow start counts as failed); 0: max_iterations.
+  int start_max_iterations = 0;
   std::vector<std::pair<std::string, std::string>> ipopt_options;  ///< passed to Ipopt as they are
 };
 
@@ -73,6 +76,14 @@ struct OptimalRuns {
 /// sensitivities. InputError as those.
 OptimalRuns SolveOptimalRuns(const vehicle::Car& car, const track::Track& track,
                              const OptimalRunOptions& options, const LapStart* warm_start = nullptr,
+                             const LapProgress& progress = {}, const LapLog& log = {});
+
+/// As above, from each of `warm_starts` in turn (the nearest first; each solve within
+/// options.start_max_iterations) until one converges, else from the default start; the starts
+/// that failed are in the solution's failed_starts ("saved lap 1", ...).
+OptimalRuns SolveOptimalRuns(const vehicle::Car& car, const track::Track& track,
+                             const OptimalRunOptions& options,
+                             const std::vector<LapStart>& warm_starts,
                              const LapProgress& progress = {}, const LapLog& log = {});
 
 }  // namespace hotlap::ocp

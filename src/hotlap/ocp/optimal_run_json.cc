@@ -122,6 +122,7 @@ nlohmann::json SolvedLapJson(const SolvedLap& s, const std::string& thermal_star
       {"status", r.ok() ? "converged" : "failed"},
       {"message", r.message},
       {"failed_starts", FailedStartsJson(s.run.failed_starts)},
+      {"started_from", s.run.started_from},
       {"constraint_violation", RoundSignificant(r.primal_infeasibility)},
       {"front_disc_limit_C",
        s.front_disc_limit ? nlohmann::json(RoundSignificant(KelvinToCelsius(*s.front_disc_limit)))

@@ -24,9 +24,9 @@ std::string SolvedLapText(const SolvedLap& s, const std::string& thermal_start) 
       "degC\n",
       f.lap_time_s, f.top_speed_mps, f.min_speed_mps, f.max_front_disc_temp_C);
   for (const OptimalLapRun::FailedStart& failed : s.run.failed_starts) {
-    fmt::format_to(out,
-                   "  from {}: stopped after {} iterations ({}); solved from the other start\n",
-                   failed.from, failed.iterations, failed.message);
+    fmt::format_to(
+        out, "  from {}: stopped after {} iterations ({}); solved again from the next start\n",
+        failed.from, failed.iterations, failed.message);
   }
   {
     const LapSolution& sol = s.run.solution;

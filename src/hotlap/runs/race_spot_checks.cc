@@ -75,20 +75,17 @@ RaceSpotChecks RunRaceSpotChecks(const vehicle::Car& car, const track::Track& tr
   // The wear as states (its start is each age's), and each lap after the first started from the
   // last one's solution: the laps differ only in the state they start from.
   o.wear_in_programme = true;
+  o.start_point_fallback = true;
   ocp::LapWarmUp warm = ocp::RunLapWarmUp(car, track, o);
   for (int age : ages) {
     if (progress) progress(fmt::format("the optimal lap at age {} (a {:g} m mesh)", age, step_m));
     warm.start = age == 0 ? qss.initial : sim::EndState(run.laps[age - 1].thermal);
-    ocp::OptimalLapRun lap = ocp::RunOptimalLap(car, track, o, &warm);
+    // From the last age's solution; should that fail, again from the guess
+    // (OptimalLapOptions::start_point_fallback).
+    const ocp::OptimalLapRun lap = ocp::RunOptimalLap(car, track, o, &warm);
     int failed_iterations = 0;
-    if (!lap.solution.solve.ok() && !o.start_point.empty()) {
-      // From the last age's solution it failed: again from the guess (and the library's own
-      // fallback from there, OptimalLapOptions::fallback_start).
-      failed_iterations = lap.solution.solve.iterations;
-      ocp::OptimalLapOptions fresh = o;
-      fresh.start_point.clear();
-      lap = ocp::RunOptimalLap(car, track, fresh, &warm);
-    }
+    for (const ocp::OptimalLapRun::FailedStart& f : lap.failed_starts)
+      failed_iterations += f.iterations;
     if (lap.solution.solve.ok()) o.start_point = lap.solution.solve.x;
     const sim::ReplayResult& qss_lap = run.laps[std::min<size_t>(age, run.laps.size() - 1)].thermal;
     out.checks.push_back(
