@@ -106,7 +106,7 @@ def report(table, cold, warm, wall_s, a):
         diff = 1e3 * (w["lap_time_s"] - k["lap_time_s"]) if k["lap_time_s"] and w["lap_time_s"] else float("nan")
         print("| %s | %d + %d | %d%s | %s | %.4f | %+.2f |" % (
             n, k["coarse"], k["fine"], w["coarse"] + w["fine"],
-            "" if w["started_from"] == "the given start point" else " (%s)" % w["started_from"],
+            "" if w["warm_start_from"] else " (%s)" % w["started_from"],
             w["warm_start_from"] or "-", k["lap_time_s"] or float("nan"), diff))
     cold_mean = statistics.mean(k["coarse"] + k["fine"] for k in cold.values())
     started_warm = [w for w in warm.values() if w["warm_start_from"]]

@@ -274,10 +274,9 @@ def cached_laps(lap_cache):
     return out
 
 
-def nearest_solved(case, lap_cache, scales, count=1):
+def nearest_solved(case, lap_cache, scales, count=WARM_START_CANDIDATES):
     """The ``count`` cached laps nearest ``case`` in its family, nearest first: a list of (entry,
-    distance); with ``count`` 1 the nearest alone, (entry, distance) or (None, None). The same
-    inputs (hash) are at distance 0."""
+    distance). The same inputs (hash) are at distance 0."""
     mine = family(case, hotlap.__version__)
     here = coordinates(case)
     found = []
@@ -287,8 +286,6 @@ def nearest_solved(case, lap_cache, scales, count=1):
         elif family(entry) == mine:
             found.append((entry, distance(here, coordinates(entry), scales)))
     found.sort(key=lambda e: (e[1], e[0]["case"]))
-    if count == 1:
-        return found[0] if found else (None, None)
     return found[:count]
 
 
@@ -365,7 +362,7 @@ def run_case(case, out, lap_cache=None, scales=None):
     warm = lap_cache is not None and warm_startable(case)
     saved = None
     if warm:
-        candidates = nearest_solved(case, lap_cache, scales or {}, count=WARM_START_CANDIDATES)
+        candidates = nearest_solved(case, lap_cache, scales or {})
         saved = os.path.join(lap_cache, ".%s-%d.lap" % (case["hash"], os.getpid()))
         os.makedirs(lap_cache, exist_ok=True)
     try:
@@ -385,33 +382,13 @@ def run_case(case, out, lap_cache=None, scales=None):
             channels = {"fall_off.csv": {"age_laps": ages, "lap_time_s": fall_off["lap_time_s"],
                                          "heat_only_lap_time_s": fall_off["heat_only_lap_time_s"]}}
             r = {"summary": summary}
-        elif warm:
-            while True:
-                try:
-                    r = hotlap.optimal_lap(car, track, warm_start=[e["path"] for e, _ in candidates] or None,
-                                           start_max_iterations=WARM_START_MAX_ITERATIONS, save_solution=saved,
-                                           **options)
-                    break
-                except ValueError as e:
-                    # A cached lap that cannot be read (cut short, another build's) is no start.
-                    bad = [c for c in candidates if c[0]["path"] in str(e)]
-                    if not bad:
-                        raise
-                    candidates.remove(bad[0])
-            # Which candidate the solve converged from: the first not among the failed starts.
-            tried = sum(1 for f in r["summary"].get("failed_starts") or [] if f["from"].startswith("saved lap")
-                        or f["from"] == "the saved lap")
-            if tried < len(candidates) and r["summary"].get("started_from") == "the given start point":
-                entry, d = candidates[tried]
-                result.update(warm_start_from=entry["case"], warm_start_distance=round(d, 6))
-            channels = {"%s.csv" % label.replace(" ", "_").replace("<=", "le").replace("/", "_"): c
-                        for label, c in r["channels"].items()}
-            if os.path.exists(saved):
-                _keep_lap(lap_cache, case, saved, r["summary"])
         else:
-            r = hotlap.optimal_lap(car, track, **options)
+            r = _optimal_lap_from(candidates, saved, result, car, track, options) if warm else \
+                hotlap.optimal_lap(car, track, **options)
             channels = {"%s.csv" % label.replace(" ", "_").replace("<=", "le").replace("/", "_"): c
                         for label, c in r["channels"].items()}
+            if warm and os.path.exists(saved):
+                _keep_lap(lap_cache, case, saved, r["summary"])
         summary = r["summary"]
         status = "ok"
         statuses = [summary.get("status")] + [summary.get(k, {}).get("status") for k in ("unconstrained", "constrained")]
@@ -447,6 +424,31 @@ def run_case(case, out, lap_cache=None, scales=None):
     else:
         os.replace(tmp, final)
     return result
+
+
+def _optimal_lap_from(candidates, saved, result, car, track, options):
+    """The optimal lap from the cached laps ``candidates`` in turn (each within
+    WARM_START_MAX_ITERATIONS), else from its default start, saved to ``saved`` if it converges;
+    ``result`` gets the lap it converged from (warm_start_from, warm_start_distance)."""
+    candidates = list(candidates)
+    while True:
+        try:
+            r = hotlap.optimal_lap(car, track, warm_start=[e["path"] for e, _ in candidates] or None,
+                                   start_max_iterations=WARM_START_MAX_ITERATIONS, save_solution=saved, **options)
+            break
+        except ValueError as e:
+            # A cached lap that cannot be read (cut short, another build's) is no start.
+            bad = [c for c in candidates if c[0]["path"] in str(e)]
+            if not bad:
+                raise
+            candidates.remove(bad[0])
+    started = r["summary"].get("started_from", "")
+    # "the saved lap" (one candidate) or "saved lap N" (several), else the default start.
+    index = 0 if started == "the saved lap" else int(started.split()[-1]) - 1 if started.startswith("saved lap ") else None
+    if index is not None:
+        entry, d = candidates[index]
+        result.update(warm_start_from=entry["case"], warm_start_distance=round(d, 6))
+    return r
 
 
 def load_result(out, case):

@@ -225,17 +225,17 @@ def test_the_nearest_solved_lap_is_the_closest_of_its_family(tmp_path):
     case = sweep.resolve_case({"method": "ocp", "step_m": 30.0, "brake_system.front_share": 0.6,
                                "brakes.fl.duct_factor": 1.1}, 0)
     scales = {"brake_system.front_share": 0.1, "brakes.fl.duct_factor": 0.4}
-    entry, d = sweep.nearest_solved(case, tmp_path, scales)
-    assert entry["case"] == "near"
+    (entry, d), (second, _) = sweep.nearest_solved(case, tmp_path, scales)
+    assert (entry["case"], second["case"]) == ("near", "far")
     assert d == pytest.approx((((0.6 - 0.58) / 0.1) ** 2 + ((1.1 - 1.0) / 0.4) ** 2) ** 0.5, rel=1e-12)
     # The same inputs: their own lap, at distance 0.
     same = _cache_entry(tmp_path, "same", {"brake_system.front_share": 0.6, "brakes.fl.duct_factor": 1.1})
-    entry, d = sweep.nearest_solved(dict(case, hash=same["hash"]), tmp_path, scales)
+    entry, d = sweep.nearest_solved(dict(case, hash=same["hash"]), tmp_path, scales)[0]
     assert (entry["case"], d) == ("same", 0.0)
     # Nothing of its family: no start.
     other = sweep.resolve_case({"method": "ocp", "step_m": 30.0, "track": "stadium",
                                 "brake_system.front_share": 0.6, "brakes.fl.duct_factor": 1.1}, 0)
-    assert sweep.nearest_solved(other, tmp_path, scales) == (None, None)
+    assert sweep.nearest_solved(other, tmp_path, scales) == []
 
 
 def test_a_grid_is_ordered_so_each_case_has_a_solved_neighbour():
@@ -275,7 +275,8 @@ def test_optimal_laps_start_from_their_solved_neighbours_and_the_cache_is_reused
         assert cs["started_from"] == "the QSS guess"
         if source:
             assert w["warm_start_distance"] == pytest.approx(0.5)
-            assert ws["started_from"] == "the given start point"
+            # b1 had one cached lap to try (b0's), b2 two (b1's nearest)
+            assert ws["started_from"] == ("the saved lap" if k == 1 else "saved lap 1")
             # From a neighbour a fraction of the iterations, to a lap within 10 ms of the cold one
             # (another local optimum of the same lap is a few ms away on a 30 m mesh).
             assert ws["ipopt_iterations"] < 0.5 * cs["ipopt_iterations"]
@@ -297,4 +298,5 @@ def test_optimal_laps_start_from_their_solved_neighbours_and_the_cache_is_reused
     near_b0 = [dict(cases[0], case="c", **{"brake_system.front_share": 0.56})]
     sweep.sweep(near_b0, tmp_path / "after", shard=(1, 1), progress=None, lap_cache=tmp_path / "warm" / "laps")
     r, s = _lap(tmp_path / "after", "c")
-    assert (r["status"], r["warm_start_from"], s["started_from"]) == ("ok", "b1", "the given start point")
+    # b0's lap was the nearest: b1's is left, the only one to try.
+    assert (r["status"], r["warm_start_from"], s["started_from"]) == ("ok", "b1", "the saved lap")

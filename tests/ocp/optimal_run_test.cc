@@ -116,7 +116,7 @@ TEST(SolveOptimalRuns, TriesTheSavedLapsInTurnThenTheDefaultStart) {
   // start's, kept in the programme from the guess).
   const OptimalRuns again = SolveOptimalRuns(car, track, o, std::vector<LapStart>{start, start});
   EXPECT_TRUE(again.laps[0].run.failed_starts.empty());
-  EXPECT_EQ(again.laps[0].run.started_from, "the given start point");
+  EXPECT_EQ(again.laps[0].run.started_from, "saved lap 1");
   EXPECT_LE(again.laps[0].run.solution.solve.iterations, 10);
   // Another car (the balance moved) from the same lap, with a cap no start meets: both saved laps
   // fail at the cap, then the default start converges.

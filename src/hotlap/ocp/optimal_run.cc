@@ -109,14 +109,15 @@ OptimalRuns SolveLaps(const vehicle::Car& car, const track::Track& track,
     }
     SolvedLap lap = SolveLap(car, track, from, label, nullptr, progress, log);
     const SolveResult& r = lap.run.solution.solve;
+    const std::string name =
+        warm_starts.size() == 1 ? std::string("the saved lap") : fmt::format("saved lap {}", i + 1);
     if (r.ok() || r.status == SolveStatus::kStopped) {
       lap.run.failed_starts.insert(lap.run.failed_starts.begin(), failed.begin(), failed.end());
+      lap.run.started_from = name;
       runs.laps.push_back(std::move(lap));
       return runs;
     }
-    failed.push_back({warm_starts.size() == 1 ? std::string("the saved lap")
-                                              : fmt::format("saved lap {}", i + 1),
-                      r.iterations, r.message});
+    failed.push_back({name, r.iterations, r.message});
     if (log)
       log(fmt::format("{}: from {}: {}; the next start", label, failed.back().from, r.message));
   }

@@ -80,7 +80,8 @@ OptimalRuns SolveOptimalRuns(const vehicle::Car& car, const track::Track& track,
 
 /// As above, from each of `warm_starts` in turn (the nearest first; each solve within
 /// options.start_max_iterations) until one converges, else from the default start; the starts
-/// that failed are in the solution's failed_starts ("saved lap 1", ...).
+/// that failed are in the solution's failed_starts, the one it converged from its started_from
+/// ("saved lap 1", ...; "the saved lap" if there is one).
 OptimalRuns SolveOptimalRuns(const vehicle::Car& car, const track::Track& track,
                              const OptimalRunOptions& options,
                              const std::vector<LapStart>& warm_starts,
