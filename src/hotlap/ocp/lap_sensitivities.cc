@@ -8,6 +8,7 @@
 
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
+#include "hotlap/vehicle/vehicle_fields.h"
 
 namespace hotlap::ocp {
 
@@ -42,14 +43,6 @@ std::vector<SetupParameter> MakeParameters() {
   return out;
 }
 
-// The corner of a "<section>.<corner>.<field>" key, or -1.
-int CornerOfKey(const std::string& key) {
-  for (int c = 0; c < 4; ++c) {
-    if (key.find(fmt::format(".{}.", kCornerKeys[c])) != std::string::npos) return c;
-  }
-  return -1;
-}
-
 bool EndsWith(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
 }
@@ -73,21 +66,8 @@ double SetupValue(const vehicle::Car& car, const std::string& key) {
     if (o.key == key) return o.value;
   }
   const vehicle::VehicleParams& p = vehicle::RequireVehicle(car, "set-up sensitivities");
-  const int c = CornerOfKey(key);
-  if (c >= 0 && key.rfind("tyre_forces.", 0) == 0 && EndsWith(key, ".pressure_kPa")) {
-    return p.corners[c].pressure / 1000.0;
-  }
-  if (c >= 0 && key.rfind("tyre_forces.", 0) == 0 && EndsWith(key, ".camber_deg")) {
-    return RadToDeg(p.corners[c].camber);
-  }
-  if (c >= 0 && key.rfind("brakes.", 0) == 0 && EndsWith(key, ".duct_factor")) return 1.0;
-  if (key == "brake_system.front_share") return p.brakes.front_share;
-  if (key == "chassis.front_weight_fraction") return p.chassis.front_weight_fraction;
-  if (key == "chassis.left_weight_fraction") return p.chassis.left_weight_fraction;
-  if (key == "chassis.mass_kg") return p.chassis.mass;
-  if (key == "aero.drag_area_m2") return p.aero.drag_area;
-  if (key == "aero.downforce_area_m2") return p.aero.downforce_area;
-  if (key == "aero.front_downforce_share") return p.aero.front_downforce_share;
+  if (key.rfind("brakes.", 0) == 0 && EndsWith(key, ".duct_factor")) return 1.0;  // derived
+  if (const std::optional<double> v = vehicle::VehicleFileValue(p, key)) return *v;
   throw InputError(fmt::format("set-up sensitivities: no sensitivity for the key '{}'", key));
 }
 

@@ -42,9 +42,10 @@ struct SetupParameter {
 /// left weight fractions, the drag and downforce areas, the aero balance and the chassis mass.
 const std::vector<SetupParameter>& CrewChiefParameters();
 
-/// The value of `key` (one of CrewChiefParameters) on `car`, in the key's unit: an override the
-/// car was loaded with, else the car's own (a duct factor not overridden: 1). InputError for a
-/// key it does not know or a car without vehicle sections.
+/// The value of `key` (one of CrewChiefParameters, or any number of the vehicle's field tables,
+/// vehicle/vehicle_fields.h) on `car`, in the key's unit: an override the car was loaded with,
+/// else the car's own (a duct factor not overridden: 1). InputError for a key it does not know or
+/// a car without vehicle sections.
 double SetupValue(const vehicle::Car& car, const std::string& key);
 
 /// One parameter's sensitivity.

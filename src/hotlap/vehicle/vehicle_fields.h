@@ -1,0 +1,52 @@
+#pragma once
+/// @file
+/// The field tables of the vehicle's numbers (vehicle_params.h): for each, the car file's section
+/// and key, the allowed range with its unit and the factor to SI. The reader (ReadVehicleParams)
+/// and the set-up sensitivities' values (ocp/lap_sensitivities.h) read these tables, so each key
+/// is written once, as the thermal models' tables (tyre/tyre_thermal_fields.h) list theirs.
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "hotlap/common/yaml_reader.h"
+#include "hotlap/vehicle/vehicle_params.h"
+
+namespace hotlap::vehicle {
+
+/// One number of VehicleParams as a car file's `chassis`, `aero`, `powertrain` or
+/// `brake_system` section holds it.
+struct VehicleField {
+  std::string_view section;  ///< e.g. "chassis"
+  std::string_view key;      ///< with its unit, e.g. "mass_kg"
+  double& (*member)(VehicleParams&);
+  Range range;         ///< allowed file values, with the unit for messages
+  double to_si = 1.0;  ///< SI per file unit
+
+  /// "section.key", as overrides and messages name it.
+  std::string Path() const;
+  double& Of(VehicleParams& p) const { return member(p); }
+  double Of(const VehicleParams& p) const { return member(const_cast<VehicleParams&>(p)); }
+};
+
+/// Every number of the four sections, in file order.
+std::span<const VehicleField> VehicleFields();
+
+/// One number of a corner's tyre set-up (the car file's `tyre_forces.<c>`).
+struct CornerSetupField {
+  std::string_view key;  ///< e.g. "pressure_kPa"
+  double CornerSetup::*member;
+  Range range;
+  double to_si = 1.0;     ///< SI per file unit
+  bool optional = false;  ///< may be left out (the rolling radius of a .tir model)
+};
+
+/// The corner set-up's numbers, in file order.
+std::span<const CornerSetupField> CornerSetupFields();
+
+/// The value of the car-file key `path` ("chassis.mass_kg", "tyre_forces.rr.pressure_kPa") in
+/// `p`, in the key's unit; nullopt for a key of no table.
+std::optional<double> VehicleFileValue(const VehicleParams& p, std::string_view path);
+
+}  // namespace hotlap::vehicle
