@@ -25,7 +25,7 @@ TEST(VehicleFieldsTest, EachKeyIsTheFilesNumberInSiAndReadsBack) {
   EXPECT_DOUBLE_EQ(p.brakes.front_share, 0.60);
   EXPECT_DOUBLE_EQ(p.corners[3].pressure, 303.4e3);
   EXPECT_NEAR(p.corners[1].camber, -3.0 * M_PI / 180.0, 1e-15);
-  // Each key: its file value times the factor is the member's SI value.
+  // Each key: its file value is the member's (the sections are in SI).
   std::map<std::string, double> file_values;
   for (const YamlScalarField& f : ListYamlScalars(test::Gen7Dir() / "car.yaml")) {
     if (f.number) file_values[f.field] = std::stod(f.text);
@@ -38,14 +38,14 @@ TEST(VehicleFieldsTest, EachKeyIsTheFilesNumberInSiAndReadsBack) {
   for (const VehicleField& f : VehicleFields()) {
     EXPECT_TRUE(paths.insert(f.Path()).second) << f.Path() << " listed twice";
     const double file = file_value(f.Path());
-    EXPECT_DOUBLE_EQ(f.Of(p), f.to_si * file) << f.Path();
+    EXPECT_EQ(f.Of(p), file) << f.Path();
     EXPECT_DOUBLE_EQ(*VehicleFileValue(p, f.Path()), file) << f.Path();
     EXPECT_TRUE(f.range.Contains(file)) << f.Path();
   }
   for (const char* c : {"fl", "fr", "rl", "rr"}) {
     for (const CornerSetupField& f : CornerSetupFields()) {
       const std::string path = std::string("tyre_forces.") + c + "." + std::string(f.key);
-      EXPECT_NEAR(*VehicleFileValue(p, path), file_value(path), 1e-12) << path;
+      EXPECT_EQ(*VehicleFileValue(p, path), file_value(path)) << path;
     }
   }
   EXPECT_FALSE(VehicleFileValue(p, "chassis.cross_weight"));

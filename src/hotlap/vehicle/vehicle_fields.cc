@@ -1,13 +1,15 @@
 #include "hotlap/vehicle/vehicle_fields.h"
 
+#include "hotlap/common/units.h"
+
 #include <array>
-#include <numbers>
 
 namespace hotlap::vehicle {
 
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
+double KilopascalsToSi(double kpa) { return 1e3 * kpa; }
+double SiToKilopascals(double pa) { return pa / 1000.0; }
 
 std::span<const VehicleField> Table() {
   using V = VehicleParams;
@@ -43,16 +45,18 @@ std::span<const VehicleField> VehicleFields() { return Table(); }
 
 std::span<const CornerSetupField> CornerSetupFields() {
   static const auto corner = std::to_array<CornerSetupField>({
-      {"pressure_kPa", &CornerSetup::pressure, Range::Closed(20.0, 1000.0, "kPa"), 1e3},
-      {"camber_deg", &CornerSetup::camber, Range::Closed(-10.0, 10.0, "deg"), kDegree},
-      {"rolling_radius_m", &CornerSetup::rolling_radius, Range::Closed(0.1, 1.0, "m"), 1.0, true},
+      {"pressure_kPa", &CornerSetup::pressure, Range::Closed(20.0, 1000.0, "kPa"), &KilopascalsToSi,
+       &SiToKilopascals},
+      {"camber_deg", &CornerSetup::camber, Range::Closed(-10.0, 10.0, "deg"), &DegToRad, &RadToDeg},
+      {"rolling_radius_m", &CornerSetup::rolling_radius, Range::Closed(0.1, 1.0, "m"), nullptr,
+       nullptr, true},
   });
   return corner;
 }
 
 std::optional<double> VehicleFileValue(const VehicleParams& p, std::string_view path) {
   for (const VehicleField& f : VehicleFields()) {
-    if (f.Path() == path) return f.Of(p) / f.to_si;
+    if (f.Path() == path) return f.Of(p);
   }
   // tyre_forces.<c>.<key>
   constexpr std::string_view kCorners = "tyre_forces.";
@@ -63,7 +67,7 @@ std::optional<double> VehicleFileValue(const VehicleParams& p, std::string_view 
   const std::optional<Corner> c = ParseCorner(rest.substr(0, dot));
   if (!c) return std::nullopt;
   for (const CornerSetupField& f : CornerSetupFields()) {
-    if (f.key == rest.substr(dot + 1)) return p.corners[CornerIndex(*c)].*f.member / f.to_si;
+    if (f.key == rest.substr(dot + 1)) return f.FromSi(p.corners[CornerIndex(*c)].*f.member);
   }
   return std::nullopt;
 }

@@ -1,9 +1,10 @@
 #pragma once
 /// @file
 /// The field tables of the vehicle's numbers (vehicle_params.h): for each, the car file's section
-/// and key, the allowed range with its unit and the factor to SI. The reader (ReadVehicleParams)
-/// and the set-up sensitivities' values (ocp/lap_sensitivities.h) read these tables, so each key
-/// is written once, as the thermal models' tables (tyre/tyre_thermal_fields.h) list theirs.
+/// and key, the allowed range with its unit and the conversion to SI. The reader
+/// (ReadVehicleParams) and the set-up sensitivities' values (ocp/lap_sensitivities.h) read these
+/// tables, so each key is written once, as the thermal models' tables (tyre/tyre_thermal_fields.h)
+/// list theirs.
 
 #include <optional>
 #include <span>
@@ -16,13 +17,12 @@
 namespace hotlap::vehicle {
 
 /// One number of VehicleParams as a car file's `chassis`, `aero`, `powertrain` or
-/// `brake_system` section holds it.
+/// `brake_system` section holds it (in SI there).
 struct VehicleField {
   std::string_view section;  ///< e.g. "chassis"
   std::string_view key;      ///< with its unit, e.g. "mass_kg"
   double& (*member)(VehicleParams&);
-  Range range;         ///< allowed file values, with the unit for messages
-  double to_si = 1.0;  ///< SI per file unit
+  Range range;  ///< allowed file values, with the unit for messages
 
   /// "section.key", as overrides and messages name it.
   std::string Path() const;
@@ -38,8 +38,13 @@ struct CornerSetupField {
   std::string_view key;  ///< e.g. "pressure_kPa"
   double CornerSetup::*member;
   Range range;
-  double to_si = 1.0;     ///< SI per file unit
+  /// File value to SI and back (kPa to Pa, degrees to radians); nullptr where the file is SI.
+  double (*to_si)(double) = nullptr;
+  double (*from_si)(double) = nullptr;
   bool optional = false;  ///< may be left out (the rolling radius of a .tir model)
+
+  double ToSi(double file_value) const { return to_si ? to_si(file_value) : file_value; }
+  double FromSi(double si) const { return from_si ? from_si(si) : si; }
 };
 
 /// The corner set-up's numbers, in file order.

@@ -26,7 +26,7 @@ namespace {
 void ReadSection(YamlReader y, std::string_view section, VehicleParams& v) {
   if (section == "powertrain") y.Choice("drive", {"rear_spool"});
   for (const VehicleField& f : VehicleFields()) {
-    if (f.section == section) f.Of(v) = f.to_si * y.Number(f.key, f.range);
+    if (f.section == section) f.Of(v) = y.Number(f.key, f.range);
   }
   y.Finish();
 }
@@ -39,7 +39,7 @@ CornerSetup ReadCorner(YamlReader y) {
     const std::optional<double> value =
         f.optional ? y.OptionalNumber(f.key, f.range) : y.Number(f.key, f.range);
     if (value) {
-      c.*f.member = f.to_si * *value;
+      c.*f.member = f.ToSi(*value);
     } else {
       left_out = &f;
     }
