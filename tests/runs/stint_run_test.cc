@@ -57,8 +57,8 @@ TEST(StintRun, TheCheckpointKeyFollowsTheFilesAndTheOverrides) {
   test::WriteTextFile(dir.path() / "car/tyres/t.yaml", "x: 1\n");
   const fs::path track = test::WriteTextFile(dir.path() / "track.yaml", "name: t\n");
   const std::string key = StintCheckpointKey(car, track, {});
-  EXPECT_TRUE(test::Contains(key, "t.yaml:"));
-  EXPECT_TRUE(test::Contains(key, "track.yaml:"));
+  EXPECT_TRUE(test::Contains(key, " tyres/t.yaml "));
+  EXPECT_TRUE(test::Contains(key, " track.yaml "));
   EXPECT_NE(StintCheckpointKey(car, track, {"chassis.mass_kg=1600"}), key);
   test::WriteTextFile(dir.path() / "car/tyres/t.yaml", "x: 2\n");
   EXPECT_NE(StintCheckpointKey(car, track, {}), key);

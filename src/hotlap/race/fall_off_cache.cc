@@ -11,6 +11,7 @@
 #include "hotlap/common/atomic_file.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/fnv1a.h"
+#include "hotlap/common/folder_fingerprint.h"
 #include "hotlap/common/read_file.h"
 
 namespace hotlap::race {
@@ -68,24 +69,8 @@ std::string CarFilesKey(const vehicle::Car& car) {
   std::string key = "car " + car.name + ":";
   std::error_code ec;
   const fs::path folder = car.path.parent_path();
-  if (car.path.empty() || !fs::is_directory(folder, ec)) {
-    key += " no files;";
-  } else {
-    std::vector<fs::path> files;
-    for (const auto& e : fs::recursive_directory_iterator(folder, ec)) {
-      if (e.is_regular_file()) files.push_back(e.path());
-    }
-    std::sort(files.begin(), files.end());
-    for (const fs::path& p : files) {
-      std::string bytes;
-      try {
-        bytes = ReadWholeFile(p);
-      } catch (const InputError&) {
-        bytes = "unreadable";
-      }
-      key += fmt::format(" {} {:016x};", fs::relative(p, folder, ec).string(), Fnv1a64(bytes));
-    }
-  }
+  key +=
+      car.path.empty() || !fs::is_directory(folder, ec) ? " no files;" : FolderFingerprint(folder);
   for (const vehicle::CarOverride& o : car.overrides)
     key += fmt::format(" set {}={:.17g};", o.key, o.value);
   return key;

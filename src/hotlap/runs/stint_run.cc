@@ -1,12 +1,9 @@
 #include "hotlap/runs/stint_run.h"
 
-#include <algorithm>
-
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
-#include "hotlap/common/fnv1a.h"
-#include "hotlap/common/read_file.h"
+#include "hotlap/common/folder_fingerprint.h"
 #include "hotlap/common/units.h"
 
 namespace hotlap::runs {
@@ -43,18 +40,8 @@ ocp::StintOptions MakeStintOptions(const StintRunOptions& s, NameStyle style) {
 
 std::string StintCheckpointKey(const fs::path& car_file, const fs::path& track_file,
                                const std::vector<std::string>& overrides) {
-  std::string key;
-  const auto add_file = [&](const fs::path& p) {
-    key += p.filename().string() + ":" + std::to_string(Fnv1a64(ReadWholeFile(p))) + ";";
-  };
-  std::vector<fs::path> files;
-  for (const auto& e : fs::recursive_directory_iterator(car_file.parent_path())) {
-    if (e.is_regular_file()) files.push_back(e.path());
-  }
-  std::sort(files.begin(), files.end());
-  for (const fs::path& p : files) add_file(p);
-  add_file(track_file);
-  for (const std::string& s : overrides) key += "set " + s + ";";
+  std::string key = FolderFingerprint(car_file.parent_path()) + FileFingerprint(track_file);
+  for (const std::string& s : overrides) key += " set " + s + ";";
   return key;
 }
 
