@@ -3,13 +3,16 @@
 
 #include "hotlap/vehicle/vehicle_fields.h"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <set>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "hotlap/common/read_file.h"
 #include "hotlap/common/yaml_reader.h"
 #include "hotlap/vehicle/car.h"
 #include "test_util.h"
@@ -51,6 +54,36 @@ TEST(VehicleFieldsTest, EachKeyIsTheFilesNumberInSiAndReadsBack) {
   EXPECT_FALSE(VehicleFileValue(p, "chassis.cross_weight"));
   EXPECT_FALSE(VehicleFileValue(p, "tyre_forces.xx.pressure_kPa"));
   EXPECT_FALSE(VehicleFileValue(p, "tyre_forces.fl.file"));
+}
+
+// The initial state: each temperature from its key, kelvin inside; an optional one left out takes
+// its default's value.
+TEST(VehicleFieldsTest, TheInitialStateIsReadFromItsTable) {
+  const Car car = LoadCar(test::Gen7Dir() / "car.yaml");
+  // data/cars/gen7/car.yaml: 60, 60, 150, 80, 45, 120 degC.
+  EXPECT_DOUBLE_EQ(car.initial.tread_temp, 333.15);
+  EXPECT_DOUBLE_EQ(car.initial.calliper_temp, 353.15);
+  EXPECT_DOUBLE_EQ(car.initial.rim_temp, 318.15);
+  EXPECT_DOUBLE_EQ(car.initial.disc_bulk_temp, 393.15);
+  EXPECT_EQ(InitialStateFields().size() * sizeof(double), sizeof(InitialTemperatures));
+  // A copy of the car without the two optional ones.
+  test::TempDir dir;
+  std::filesystem::copy(test::Gen7Dir(), dir.path() / "gen7",
+                        std::filesystem::copy_options::recursive);
+  std::string text = ReadWholeFile(dir.path() / "gen7/car.yaml"), kept;
+  for (size_t at = 0; at < text.size();) {
+    const size_t end = std::min(text.find('\n', at), text.size() - 1) + 1;
+    const std::string line = text.substr(at, end - at);
+    if (!test::Contains(line, "rim_temp_C:") && !test::Contains(line, "disc_bulk_temp_C:")) {
+      kept += line;
+    }
+    at = end;
+  }
+  ASSERT_LT(kept.size(), text.size());
+  test::WriteTextFile(dir.path() / "gen7/car.yaml", kept);
+  const Car without = LoadCar(dir.path() / "gen7/car.yaml");
+  EXPECT_DOUBLE_EQ(without.initial.rim_temp, without.initial.carcass_temp);
+  EXPECT_DOUBLE_EQ(without.initial.disc_bulk_temp, without.initial.disc_temp);
 }
 
 // The tables cover every double of the four sections: a member added to a struct and not to the

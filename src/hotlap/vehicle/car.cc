@@ -8,6 +8,7 @@
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
 #include "hotlap/common/yaml_reader.h"
+#include "hotlap/vehicle/vehicle_fields.h"
 
 namespace hotlap::vehicle {
 
@@ -88,18 +89,14 @@ Car LoadCar(const std::filesystem::path& path, const std::vector<CarOverride>& o
   }
   {
     YamlReader init = y.Map("initial_state");
-    const Range temp = Range::Closed(-50.0, 1200.0, "degC");
-    car.initial.tread_temp = CelsiusToKelvin(init.Number("tread_temp_C", temp));
-    car.initial.carcass_temp = CelsiusToKelvin(init.Number("carcass_temp_C", temp));
-    car.initial.disc_temp = CelsiusToKelvin(init.Number("disc_temp_C", temp));
-    car.initial.calliper_temp = CelsiusToKelvin(init.Number("calliper_temp_C", temp));
-    // The gas-and-rim tyre's rim and the bulk disc's bulk; by default as the carcass and the disc.
-    car.initial.rim_temp =
-        CelsiusToKelvin(init.OptionalNumber("rim_temp_C", temp)
-                            .value_or(KelvinToCelsius(car.initial.carcass_temp)));
-    car.initial.disc_bulk_temp =
-        CelsiusToKelvin(init.OptionalNumber("disc_bulk_temp_C", temp)
-                            .value_or(KelvinToCelsius(car.initial.disc_temp)));
+    for (const InitialStateField& f : InitialStateFields()) {
+      const std::optional<double> celsius =
+          f.default_from ? init.OptionalNumber(f.key, InitialTemperatureRange())
+                         : init.Number(f.key, InitialTemperatureRange());
+      // Left out (an optional one): the default's value, through degC as the file would give it.
+      car.initial.*f.member =
+          CelsiusToKelvin(celsius ? *celsius : KelvinToCelsius(car.initial.*f.default_from));
+    }
     init.Finish();
   }
   constexpr std::array<std::string_view, 5> kVehicleSections = {"chassis", "aero", "powertrain",

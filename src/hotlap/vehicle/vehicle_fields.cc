@@ -54,6 +54,21 @@ std::span<const CornerSetupField> CornerSetupFields() {
   return corner;
 }
 
+std::span<const InitialStateField> InitialStateFields() {
+  using T = InitialTemperatures;
+  static const auto table = std::to_array<InitialStateField>({
+      {"tread_temp_C", &T::tread_temp},
+      {"carcass_temp_C", &T::carcass_temp},
+      {"disc_temp_C", &T::disc_temp},
+      {"calliper_temp_C", &T::calliper_temp},
+      {"rim_temp_C", &T::rim_temp, &T::carcass_temp},           // the gas-and-rim tyres' rims
+      {"disc_bulk_temp_C", &T::disc_bulk_temp, &T::disc_temp},  // the bulk discs' bulk
+  });
+  return table;
+}
+
+Range InitialTemperatureRange() { return Range::Closed(-50.0, 1200.0, "degC"); }
+
 std::optional<double> VehicleFileValue(const VehicleParams& p, std::string_view path) {
   for (const VehicleField& f : VehicleFields()) {
     if (f.Path() == path) return f.Of(p);

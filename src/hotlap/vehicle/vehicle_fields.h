@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "hotlap/common/yaml_reader.h"
+#include "hotlap/vehicle/car.h"
 #include "hotlap/vehicle/vehicle_params.h"
 
 namespace hotlap::vehicle {
@@ -49,6 +50,18 @@ struct CornerSetupField {
 
 /// The corner set-up's numbers, in file order.
 std::span<const CornerSetupField> CornerSetupFields();
+
+/// One temperature of a car file's `initial_state` (degC in the file, kelvin inside).
+struct InitialStateField {
+  std::string_view key;  ///< e.g. "tread_temp_C"
+  double InitialTemperatures::*member;
+  /// An optional one's default: this other member's value (listed before it); nullptr: required.
+  double InitialTemperatures::*default_from = nullptr;
+};
+
+/// The initial state's temperatures, in file order, and their common range (degC).
+std::span<const InitialStateField> InitialStateFields();
+Range InitialTemperatureRange();
 
 /// The value of the car-file key `path` ("chassis.mass_kg", "tyre_forces.rr.pressure_kPa") in
 /// `p`, in the key's unit; nullopt for a key of no table.
