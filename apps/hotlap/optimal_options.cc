@@ -107,6 +107,9 @@ void AddOptimalOptions(CLI::App* sub, OptimalArgs& a) {
   a.stock_car_only.push_back(sub->add_option(
       "--save-solution", a.save_solution,
       "Save the solved lap (point and multipliers) for --warm-start (binary, this machine)"));
+  a.stock_car_only.push_back(sub->add_option(
+      "--lap-cache", a.run.lap_cache_dir,
+      "Start from the nearest laps solved in this folder, and keep the lap there (one solve)"));
   a.stock_car_only.push_back(sub->add_flag(
       "--single-process", a.single_process,
       "With a comparison: the limited lap after the free one, not beside it in a second process"));

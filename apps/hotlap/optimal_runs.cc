@@ -90,14 +90,7 @@ int RunOptimal(const OptimalArgs& a) {
   if (o.compare_disc_limit_C && !(a.warm_start.empty() && a.save_solution.empty())) {
     throw InputError("--warm-start and --save-solution are for one solve, not the comparison");
   }
-  if (o.disc_limit_C && o.compare_disc_limit_C) {
-    throw InputError("give either --disc-limit-C (one solve) or --compare-disc-limit-C (two)");
-  }
-  for (const auto& limit : {o.disc_limit_C, o.compare_disc_limit_C}) {
-    if (limit && !(*limit > 0.0 && *limit < 1500.0)) {
-      throw InputError(fmt::format("the disc limit {:g} degC must be in (0, 1500)", *limit));
-    }
-  }
+  CheckDiscLimits(o);
   std::optional<ocp::LapStart> warm_start;
   if (!a.warm_start.empty()) warm_start = ocp::ReadLapStart(a.warm_start);
   ocp::KeepSolverMemory();

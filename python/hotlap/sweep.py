@@ -205,9 +205,8 @@ def resolve_case(row, index, source="cases"):
 # Methods whose cases start from a solved neighbour (one solve; the comparison's two laps and a
 # stint's greedy laps have their own starts).
 WARM_START_METHODS = ("ocp",)
-# The nearest solved laps a case tries in turn, each for at most this many iterations (a slow
-# start counts as failed), before its default start.
-WARM_START_CANDIDATES = 2
+# The nearest solved laps (two) a case tries in turn, each for at most this many iterations (a
+# slow start counts as failed), before its default start.
 WARM_START_MAX_ITERATIONS = 150
 # Options that pose another programme (another mesh or thermal start): a solved lap is a start
 # for a case only where these are equal. The other options that are numbers are coordinates.
@@ -219,23 +218,23 @@ def warm_startable(case):
     return case["method"] in WARM_START_METHODS and not case["options"].get("tolerance_s")
 
 
-def coordinates(entry):
-    """A case's (or a cached lap's) position among its neighbours: its overrides and its options
-    that are numbers but pose no other programme, {key: value}."""
-    out = {k: float(v) for k, v in entry["overrides"].items()}
-    for k, v in entry["options"].items():
+def coordinates(case):
+    """A case's position among its neighbours: its overrides and its options that are numbers but
+    pose no other programme, {key: value}."""
+    out = {k: float(v) for k, v in case["overrides"].items()}
+    for k, v in case["options"].items():
         if k not in PROGRAMME_OPTIONS and isinstance(v, (int, float)) and not isinstance(v, bool):
             out[k] = float(v)
     return out
 
 
-def family(entry, version=None):
-    """What must be equal for one lap to start another: version, car, track, method, the options
-    that pose the programme, and which coordinates are given."""
-    return json.dumps({"hotlap": version or entry.get("hotlap", hotlap.__version__), "car": entry["car"],
-                       "track": entry["track"], "method": entry["method"],
-                       "programme": {k: entry["options"].get(k) for k in PROGRAMME_OPTIONS},
-                       "keys": sorted(coordinates(entry))}, sort_keys=True)
+def family(case):
+    """The cases that are neighbours (ordered together): the same car, track, method, options
+    that pose the programme, and coordinates given. (The lap cache keys a lap itself by the car's
+    files; docs/sweeps.md.)"""
+    return json.dumps({"car": case["car"], "track": case["track"], "method": case["method"],
+                       "programme": {k: case["options"].get(k) for k in PROGRAMME_OPTIONS},
+                       "keys": sorted(coordinates(case))}, sort_keys=True)
 
 
 def coordinate_scales(cases):
@@ -248,45 +247,9 @@ def coordinate_scales(cases):
 
 
 def distance(a, b, scales):
-    """The scaled distance between two coordinate dicts of the same keys."""
+    """The scaled distance between two coordinate dicts of the same keys (the lap cache's own,
+    ocp::CoordinateDistance, for ordering the cases)."""
     return math.sqrt(sum(((a[k] - b[k]) / scales.get(k, max(abs(a[k]), 1.0))) ** 2 for k in a))
-
-
-def cached_laps(lap_cache):
-    """The laps in ``lap_cache``: a list of their index entries (``<hash>.json``, each with the
-    case's inputs, its name and the lap's ``path``); unreadable entries are left out."""
-    out = []
-    try:
-        names = sorted(os.listdir(lap_cache))
-    except OSError:
-        return out
-    for name in names:
-        if not name.endswith(".json"):
-            continue
-        try:
-            with open(os.path.join(lap_cache, name)) as f:
-                entry = json.load(f)
-        except (OSError, ValueError):
-            continue
-        entry["path"] = os.path.join(lap_cache, name[:-5] + ".lap")
-        if os.path.exists(entry["path"]):
-            out.append(entry)
-    return out
-
-
-def nearest_solved(case, lap_cache, scales, count=WARM_START_CANDIDATES):
-    """The ``count`` cached laps nearest ``case`` in its family, nearest first: a list of (entry,
-    distance). The same inputs (hash) are at distance 0."""
-    mine = family(case, hotlap.__version__)
-    here = coordinates(case)
-    found = []
-    for entry in cached_laps(lap_cache):
-        if entry.get("hash") == case["hash"]:
-            found.append((entry, 0.0))
-        elif family(entry) == mine:
-            found.append((entry, distance(here, coordinates(entry), scales)))
-    found.sort(key=lambda e: (e[1], e[0]["case"]))
-    return found[:count]
 
 
 def order_for_warm_starts(cases, scales):
@@ -297,7 +260,7 @@ def order_for_warm_starts(cases, scales):
     families = {}
     for c in cases:
         if warm_startable(c):
-            families.setdefault(family(c, hotlap.__version__), []).append(c)
+            families.setdefault(family(c), []).append(c)
     ordered = list(others)
     for members in families.values():
         left = list(members)
@@ -308,17 +271,6 @@ def order_for_warm_starts(cases, scales):
             path.append(left.pop(k))
         ordered += path
     return ordered
-
-
-def _keep_lap(lap_cache, case, saved, summary):
-    """Moves the lap ``saved`` into the cache as ``<hash>.lap`` with its index entry (written
-    last, atomically: an entry always names a whole lap)."""
-    os.makedirs(lap_cache, exist_ok=True)
-    os.replace(saved, os.path.join(lap_cache, case["hash"] + ".lap"))
-    entry = {k: case[k] for k in ("car", "track", "method", "options", "overrides", "hash", "case")}
-    entry.update(hotlap=hotlap.__version__, lap_time_s=summary.get("lap_time_s"),
-                 ipopt_iterations=summary.get("ipopt_iterations"))
-    _write_json_atomically(os.path.join(lap_cache, case["hash"] + ".json"), entry)
 
 
 # ---- one case ----
@@ -360,11 +312,6 @@ def run_case(case, out, lap_cache=None, scales=None):
         "warm_start_from": "", "warm_start_distance": None}
     channels = {}
     warm = lap_cache is not None and warm_startable(case)
-    saved = None
-    if warm:
-        candidates = nearest_solved(case, lap_cache, scales or {})
-        saved = os.path.join(lap_cache, ".%s-%d.lap" % (case["hash"], os.getpid()))
-        os.makedirs(lap_cache, exist_ok=True)
     try:
         car = hotlap.load_car(case["car"], overrides=case["overrides"]) if case["overrides"] else hotlap.load_car(case["car"])
         track = hotlap.load_track(case["track"])
@@ -383,12 +330,15 @@ def run_case(case, out, lap_cache=None, scales=None):
                                          "heat_only_lap_time_s": fall_off["heat_only_lap_time_s"]}}
             r = {"summary": summary}
         else:
-            r = _optimal_lap_from(candidates, saved, result, car, track, options) if warm else \
-                hotlap.optimal_lap(car, track, **options)
+            if warm:  # from the nearest laps solved before it (the library's lap cache)
+                options.update(lap_cache=lap_cache, lap_cache_name=case["case"], lap_cache_scales=scales or {},
+                               start_max_iterations=WARM_START_MAX_ITERATIONS)
+            r = hotlap.optimal_lap(car, track, **options)
+            if warm and r["summary"].get("warm_start_from"):
+                result.update(warm_start_from=r["summary"]["warm_start_from"],
+                              warm_start_distance=r["summary"]["warm_start_distance"])
             channels = {"%s.csv" % label.replace(" ", "_").replace("<=", "le").replace("/", "_"): c
                         for label, c in r["channels"].items()}
-            if warm and os.path.exists(saved):
-                _keep_lap(lap_cache, case, saved, r["summary"])
         summary = r["summary"]
         status = "ok"
         statuses = [summary.get("status")] + [summary.get(k, {}).get("status") for k in ("unconstrained", "constrained")]
@@ -402,8 +352,6 @@ def run_case(case, out, lap_cache=None, scales=None):
         result.update(status="numerical failure", message=str(e), summary={})
     except NotImplementedError as e:
         result.update(status="not available", message=str(e), summary={})
-    if saved is not None and os.path.exists(saved):
-        os.remove(saved)
     result["elapsed_s"] = round(time.perf_counter() - started, 3)
     # Atomic: everything into a temporary folder beside the case's, then renamed into place.
     cases_dir = os.path.join(out, "cases")
@@ -424,31 +372,6 @@ def run_case(case, out, lap_cache=None, scales=None):
     else:
         os.replace(tmp, final)
     return result
-
-
-def _optimal_lap_from(candidates, saved, result, car, track, options):
-    """The optimal lap from the cached laps ``candidates`` in turn (each within
-    WARM_START_MAX_ITERATIONS), else from its default start, saved to ``saved`` if it converges;
-    ``result`` gets the lap it converged from (warm_start_from, warm_start_distance)."""
-    candidates = list(candidates)
-    while True:
-        try:
-            r = hotlap.optimal_lap(car, track, warm_start=[e["path"] for e, _ in candidates] or None,
-                                   start_max_iterations=WARM_START_MAX_ITERATIONS, save_solution=saved, **options)
-            break
-        except ValueError as e:
-            # A cached lap that cannot be read (cut short, another build's) is no start.
-            bad = [c for c in candidates if c[0]["path"] in str(e)]
-            if not bad:
-                raise
-            candidates.remove(bad[0])
-    started = r["summary"].get("started_from", "")
-    # "the saved lap" (one candidate) or "saved lap N" (several), else the default start.
-    index = 0 if started == "the saved lap" else int(started.split()[-1]) - 1 if started.startswith("saved lap ") else None
-    if index is not None:
-        entry, d = candidates[index]
-        result.update(warm_start_from=entry["case"], warm_start_distance=round(d, 6))
-    return r
 
 
 def load_result(out, case):

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <exception>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -30,16 +31,16 @@ namespace hotlap::python {
 
 namespace {
 
-py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
-                    std::optional<double> disc_limit_C, std::optional<double> compare_disc_limit_C,
-                    double step_m, double tolerance_s, double coarse_step_m,
-                    const std::string& collocation, const std::string& thermal_start,
-                    double ambient_C, double track_C, int max_iterations,
-                    const std::vector<std::pair<std::string, std::string>>& ipopt_options,
-                    int threads, bool wear_in_programme, bool paper_models, bool sensitivities,
-                    const py::object& warm_start, int start_max_iterations,
-                    const std::optional<std::filesystem::path>& save_solution,
-                    const py::object& progress) {
+py::dict OptimalLap(
+    const vehicle::Car& car, const track::Track& track, std::optional<double> disc_limit_C,
+    std::optional<double> compare_disc_limit_C, double step_m, double tolerance_s,
+    double coarse_step_m, const std::string& collocation, const std::string& thermal_start,
+    double ambient_C, double track_C, int max_iterations,
+    const std::vector<std::pair<std::string, std::string>>& ipopt_options, int threads,
+    bool wear_in_programme, bool paper_models, bool sensitivities, const py::object& warm_start,
+    int start_max_iterations, const std::optional<std::filesystem::path>& lap_cache,
+    const std::string& lap_cache_name, const std::map<std::string, double>& lap_cache_scales,
+    const std::optional<std::filesystem::path>& save_solution, const py::object& progress) {
   runs::CheckThreads(threads, runs::NameStyle::kPython);
   ocp::OptimalRunOptions o;
   o.threads = threads;
@@ -60,9 +61,7 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
   o.paper_models = paper_models;
   // One process: a fork beside Python's own threads is not safe (docs/python.md).
   o.second_process = false;
-  if (disc_limit_C && compare_disc_limit_C) {
-    throw InputError("give disc_limit_C (one solve) or compare_disc_limit_C (two), not both");
-  }
+  ocp::CheckDiscLimits(o);
   // warm_start: one saved lap's path, or a list of them tried in turn.
   std::vector<std::filesystem::path> start_paths;
   if (py::isinstance<py::list>(warm_start) || py::isinstance<py::tuple>(warm_start)) {
@@ -78,6 +77,9 @@ py::dict OptimalLap(const vehicle::Car& car, const track::Track& track,
         fmt::format("start_max_iterations: {} is not 0 or more", start_max_iterations));
   }
   o.start_max_iterations = start_max_iterations;
+  if (lap_cache) o.lap_cache_dir = lap_cache->string();
+  o.lap_cache_name = lap_cache_name;
+  o.lap_cache_scales = lap_cache_scales;
   std::vector<ocp::LapStart> starts;
   for (const std::filesystem::path& p : start_paths) starts.push_back(ocp::ReadLapStart(p));
   if (save_solution) CheckOutputFolder(*save_solution, "save_solution");
@@ -190,6 +192,8 @@ void BindOcp(py::module_& m) {
         py::arg("paper_models") = defaults.paper_models,
         py::arg("sensitivities") = defaults.sensitivities, py::arg("warm_start") = py::none(),
         py::arg("start_max_iterations") = defaults.start_max_iterations,
+        py::arg("lap_cache") = py::none(), py::arg("lap_cache_name") = "",
+        py::arg("lap_cache_scales") = std::map<std::string, double>{},
         py::arg("save_solution") = py::none(), py::arg("progress") = py::none(),
         "The minimum-time lap with tyre and brake temperatures and wear as states: one solve "
         "(optionally with a front-disc limit, degC), or with compare_disc_limit_C the free and "
@@ -213,7 +217,11 @@ void BindOcp(py::module_& m) {
         "`hotlap optimise --save-solution`) to start from, its point and multipliers (the coarse "
         "solve skipped), or a list of them tried in turn, each within start_max_iterations "
         "(0: max_iterations); should every one fail, the default start (summary['started_from'], "
-        "summary['failed_starts']); "
+        "summary['failed_starts']); lap_cache: a folder of solved laps: the solve starts from "
+        "the two nearest (the same car files, track and programme; the distance over the "
+        "overrides, disc limit and temperatures, each divided by lap_cache_scales[key] or a "
+        "crew chief's step) and keeps its lap there as lap_cache_name "
+        "(summary['warm_start_from'], summary['warm_start_distance']); "
         "save_solution: where to write the converged lap (one solve, not the comparison).");
   const ocp::StintOptions stint;
   m.def("stint", &Stint, py::arg("car"), py::arg("track"), py::kw_only(),

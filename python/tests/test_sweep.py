@@ -203,41 +203,6 @@ def test_race_cases_run_and_more_pit_loss_never_adds_a_stop(tmp_path):
 # ---- warm starts ----
 
 
-def _cache_entry(folder, name, overrides, options=None, version=None):
-    """A lap-cache entry as run_case writes one (an empty lap file: never read here)."""
-    case = sweep.resolve_case(dict({"case": name, "method": "ocp", "step_m": 30.0}, **(options or {}), **overrides), 0)
-    entry = {k: case[k] for k in ("car", "track", "method", "options", "overrides", "hash", "case")}
-    entry["hotlap"] = version or sweep.hotlap.__version__
-    if version:  # the hash holds the build's version
-        case["hash"] = entry["hash"] = "%016x" % abs(hash(version))
-    (folder / (case["hash"] + ".lap")).write_bytes(b"")
-    (folder / (case["hash"] + ".json")).write_text(json.dumps(entry))
-    return case
-
-
-def test_the_nearest_solved_lap_is_the_closest_of_its_family(tmp_path):
-    _cache_entry(tmp_path, "near", {"brake_system.front_share": 0.58, "brakes.fl.duct_factor": 1.0})
-    _cache_entry(tmp_path, "far", {"brake_system.front_share": 0.55, "brakes.fl.duct_factor": 1.2})
-    # Nearer in the values, but another programme, another build or other keys: not a start.
-    _cache_entry(tmp_path, "mesh", {"brake_system.front_share": 0.6, "brakes.fl.duct_factor": 1.1}, {"step_m": 20.0})
-    _cache_entry(tmp_path, "build", {"brake_system.front_share": 0.6, "brakes.fl.duct_factor": 1.1}, version="0.0.1")
-    _cache_entry(tmp_path, "keys", {"brake_system.front_share": 0.6})
-    case = sweep.resolve_case({"method": "ocp", "step_m": 30.0, "brake_system.front_share": 0.6,
-                               "brakes.fl.duct_factor": 1.1}, 0)
-    scales = {"brake_system.front_share": 0.1, "brakes.fl.duct_factor": 0.4}
-    (entry, d), (second, _) = sweep.nearest_solved(case, tmp_path, scales)
-    assert (entry["case"], second["case"]) == ("near", "far")
-    assert d == pytest.approx((((0.6 - 0.58) / 0.1) ** 2 + ((1.1 - 1.0) / 0.4) ** 2) ** 0.5, rel=1e-12)
-    # The same inputs: their own lap, at distance 0.
-    same = _cache_entry(tmp_path, "same", {"brake_system.front_share": 0.6, "brakes.fl.duct_factor": 1.1})
-    entry, d = sweep.nearest_solved(dict(case, hash=same["hash"]), tmp_path, scales)[0]
-    assert (entry["case"], d) == ("same", 0.0)
-    # Nothing of its family: no start.
-    other = sweep.resolve_case({"method": "ocp", "step_m": 30.0, "track": "stadium",
-                                "brake_system.front_share": 0.6, "brakes.fl.duct_factor": 1.1}, 0)
-    assert sweep.nearest_solved(other, tmp_path, scales) == []
-
-
 def test_a_grid_is_ordered_so_each_case_has_a_solved_neighbour():
     rows = [{"case": "g%d%d" % (i, j), "method": "ocp", "brakes.fl.duct_factor": 0.8 + 0.2 * i,
              "brake_system.front_share": 0.55 + 0.05 * j} for i in range(3) for j in range(3)]
@@ -293,10 +258,12 @@ def test_optimal_laps_start_from_their_solved_neighbours_and_the_cache_is_reused
     assert s["ipopt_iterations"] <= 5
     assert s["lap_time_s"] == pytest.approx(_lap(tmp_path / "warm", "b1")[1]["lap_time_s"], abs=1e-4)
     # A cached lap that cannot be read is no start: the next nearest is.
-    with open(tmp_path / "warm" / "laps" / (sweep.resolve_case(cases[0], 0)["hash"] + ".lap"), "wb") as f:
-        f.write(b"not a lap")
+    laps = tmp_path / "warm" / "laps"
+    b0 = [p for p in laps.glob("*.json") if json.loads(p.read_text())["name"] == "b0"]
+    assert len(b0) == 1
+    b0[0].with_suffix(".lap").write_bytes(b"not a lap")
     near_b0 = [dict(cases[0], case="c", **{"brake_system.front_share": 0.56})]
-    sweep.sweep(near_b0, tmp_path / "after", shard=(1, 1), progress=None, lap_cache=tmp_path / "warm" / "laps")
+    sweep.sweep(near_b0, tmp_path / "after", shard=(1, 1), progress=None, lap_cache=laps)
     r, s = _lap(tmp_path / "after", "c")
     # b0's lap was the nearest: b1's is left, the only one to try.
     assert (r["status"], r["warm_start_from"], s["started_from"]) == ("ok", "b1", "the saved lap")

@@ -34,6 +34,10 @@ struct SolvedLap {
   /// Set-up sensitivities of the lap (OptimalRunOptions::sensitivities; empty if not asked or
   /// the lap did not converge).
   std::vector<LapSensitivity> sensitivities;
+  /// The cached lap it converged from (OptimalRunOptions::lap_cache_dir), its name and distance;
+  /// "" if none.
+  std::string warm_start_from;
+  double warm_start_distance = 0.0;
 };
 
 /// Called at every Ipopt iteration of a solve with the lap's label, the iteration, the objective

@@ -12,12 +12,14 @@
 ///   const ocp::OptimalRuns runs = ocp::SolveOptimalRuns(car, track, o);
 ///   ocp::WriteOptimalRunFiles("out", runs.laps, car, track, o.step_m);
 
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "hotlap/ocp/disc_limit_comparison.h"
+#include "hotlap/ocp/lap_cache.h"
 #include "hotlap/ocp/lap_start_file.h"
 
 namespace hotlap::ocp {
@@ -56,10 +58,32 @@ struct OptimalRunOptions {
   /// parameter of CrewChiefParameters the car takes) into SolvedLap::sensitivities.
   bool sensitivities = false;
   /// A solve from a saved lap (SolveOptimalRuns' warm starts) stops after this many iterations
-  /// and the next start is tried (a slow start counts as failed); 0: max_iterations.
+  /// and the next start is tried (a slow start counts as failed); 0: max_iterations (150 for the
+  /// laps of a lap cache).
   int start_max_iterations = 0;
+  /// A lap cache (ocp/lap_cache.h): one solve starts from the two laps of this folder nearest it
+  /// (LapCacheKeyOf: the same build, car files, track and programme; the distance over the car's
+  /// overrides, the disc limit and the temperatures), and its converged lap is kept there under
+  /// `lap_cache_name` (default: the car's name and overrides). Not for the comparison.
+  std::string lap_cache_dir;
+  std::string lap_cache_name;
+  /// The coordinates' scales for the distance (default: each crew-chief key's typical step, 50
+  /// degC of disc limit, 10 degC of air or track; else the value's size).
+  std::map<std::string, double> lap_cache_scales;
   std::vector<std::pair<std::string, std::string>> ipopt_options;  ///< passed to Ipopt as they are
 };
+
+/// InputError for a disc limit and a comparison's limit both given, or a limit outside (0, 1500)
+/// degC (SolveOptimalRuns checks them; callers may check before any work).
+void CheckDiscLimits(const OptimalRunOptions& options);
+
+/// What a lap of `car` on `track` with `options` is cached under: the family (the build, every
+/// file of the car's folder, the track's name and length, the mesh, collocation, thermal start and
+/// the programme's other choices) and the coordinates (every crew-chief value of
+/// CrewChiefParameters, the car's or its override, any other override, the disc limit if any, the
+/// air and track temperatures). InputError for a car made in code (no files).
+CachedLapKey LapCacheKeyOf(const vehicle::Car& car, const track::Track& track,
+                           const OptimalRunOptions& options);
 
 /// The solver's options for `options` (mesh options.step_m; the disc limits are not set).
 OptimalLapOptions MakeOptimalLapOptions(const OptimalRunOptions& options);

@@ -123,6 +123,11 @@ nlohmann::json SolvedLapJson(const SolvedLap& s, const std::string& thermal_star
       {"message", r.message},
       {"failed_starts", FailedStartsJson(s.run.failed_starts)},
       {"started_from", s.run.started_from},
+      {"warm_start_from",
+       s.warm_start_from.empty() ? nlohmann::json() : nlohmann::json(s.warm_start_from)},
+      {"warm_start_distance", s.warm_start_from.empty()
+                                  ? nlohmann::json()
+                                  : nlohmann::json(RoundSignificant(s.warm_start_distance))},
       {"constraint_violation", RoundSignificant(r.primal_infeasibility)},
       {"front_disc_limit_C",
        s.front_disc_limit ? nlohmann::json(RoundSignificant(KelvinToCelsius(*s.front_disc_limit)))

@@ -23,6 +23,10 @@ std::string SolvedLapText(const SolvedLap& s, const std::string& thermal_start) 
       "  lap {:.3f} s, top speed {:.2f} m/s, slowest {:.2f} m/s, front discs peak {:.1f} "
       "degC\n",
       f.lap_time_s, f.top_speed_mps, f.min_speed_mps, f.max_front_disc_temp_C);
+  if (!s.warm_start_from.empty()) {
+    fmt::format_to(out, "  from the cached lap '{}' (distance {:.3g})\n", s.warm_start_from,
+                   s.warm_start_distance);
+  }
   for (const OptimalLapRun::FailedStart& failed : s.run.failed_starts) {
     fmt::format_to(
         out, "  from {}: stopped after {} iterations ({}); solved again from the next start\n",
