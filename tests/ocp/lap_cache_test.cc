@@ -13,6 +13,7 @@
 
 #include "hotlap/common/error.h"
 #include "hotlap/ocp/lap_sensitivities.h"
+#include "hotlap/ocp/lap_start_file.h"
 #include "hotlap/ocp/optimal_run.h"
 #include "hotlap/track/track_io.h"
 #include "hotlap/vehicle/car.h"
@@ -118,6 +119,40 @@ TEST(LapCacheTest, ASolveStartsFromItsNeighbourAndKeepsItsLap) {
   compare.disc_limit_C.reset();
   compare.compare_disc_limit_C = 500.0;
   EXPECT_THROW(SolveOptimalRuns(other, track, compare), InputError);
+}
+
+// A cached lap that does not fit this programme (another build of the same version: another
+// layout) is a failed start, not an error: the solve goes on from its default start.
+TEST(LapCacheTest, ACachedLapThatDoesNotFitIsNoStart) {
+  const track::Track track = track::LoadTrack("darlington");
+  const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
+  test::TempDir dir;
+  OptimalRunOptions o;
+  o.step_m = 30.0;
+  o.coarse_step_m = 0.0;
+  o.lap_cache_dir = dir.path().string();
+  LapSolution tiny;  // one variable a node
+  tiny.layout = {3, 1, 1, 1, 1, 1, Collocation::kTrapezoid, {}};
+  tiny.solve.status = SolveStatus::kConverged;
+  tiny.solve.x.assign(3, 1.0);
+  tiny.solve.z_lower.assign(3, 0.0);
+  tiny.solve.z_upper.assign(3, 0.0);
+  tiny.solve.lambda.assign(tiny.layout.rows(), 0.0);
+  WriteLapStart(dir.path() / ".tiny.lap", tiny, track.length_m());
+  KeepCachedLap(dir.path(), LapCacheKeyOf(car, track, o), "tiny", dir.path() / ".tiny.lap", 30.0,
+                1);
+  const OptimalRuns runs = SolveOptimalRuns(car, track, o);
+  const SolvedLap& lap = runs.laps[0];
+  ASSERT_TRUE(lap.run.solution.solve.ok()) << lap.run.solution.solve.message;
+  ASSERT_EQ(lap.run.failed_starts.size(), 1u);
+  EXPECT_EQ(lap.run.failed_starts[0].from, "the saved lap");
+  EXPECT_EQ(lap.run.started_from, "the QSS guess");
+  EXPECT_EQ(lap.warm_start_from, "");
+  // The converged lap replaced the one that did not fit.
+  const std::vector<CachedLap> now =
+      NearestCachedLaps(dir.path(), LapCacheKeyOf(car, track, o), {}, 2);
+  ASSERT_EQ(now.size(), 1u);
+  EXPECT_EQ(now[0].name, "gen7");
 }
 
 }  // namespace

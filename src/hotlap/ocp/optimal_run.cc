@@ -182,13 +182,24 @@ OptimalRuns SolveLaps(const vehicle::Car& car, const track::Track& track,
   std::vector<OptimalLapRun::FailedStart> failed;
   std::optional<SolvedLap> solved;
   for (size_t i = 0; i < starts.size() && !solved; ++i) {
-    OptimalLapOptions from = o;
-    UseLapStart(starts[i], track, from);
-    if (cap > 0) from.ipopt.max_iterations = std::min(from.ipopt.max_iterations, cap);
-    SolvedLap lap = SolveLap(car, track, from, label, nullptr, progress, log);
-    const SolveResult& r = lap.run.solution.solve;
     const std::string name =
         starts.size() == 1 ? std::string("the saved lap") : fmt::format("saved lap {}", i + 1);
+    OptimalLapOptions from = o;
+    std::optional<SolvedLap> tried;
+    try {
+      UseLapStart(starts[i], track, from);
+      if (cap > 0) from.ipopt.max_iterations = std::min(from.ipopt.max_iterations, cap);
+      tried = SolveLap(car, track, from, label, nullptr, progress, log);
+    } catch (const InputError& e) {
+      // The caller's own lap that does not fit is their error; a cached one (of another build
+      // with the same version, say) is just no start.
+      if (i < warm_starts.size()) throw;
+      failed.push_back({name, 0, e.what()});
+      if (log) log(fmt::format("{}: from {}: {}; the next start", label, name, e.what()));
+      continue;
+    }
+    SolvedLap& lap = *tried;
+    const SolveResult& r = lap.run.solution.solve;
     if (r.ok() || r.status == SolveStatus::kStopped) {
       lap.run.started_from = name;
       if (i >= warm_starts.size()) {
