@@ -205,9 +205,6 @@ def resolve_case(row, index, source="cases"):
 # Methods whose cases start from a solved neighbour (one solve; the comparison's two laps and a
 # stint's greedy laps have their own starts).
 WARM_START_METHODS = ("ocp",)
-# The nearest solved laps (two) a case tries in turn, each for at most this many iterations (a
-# slow start counts as failed), before its default start.
-WARM_START_MAX_ITERATIONS = 150
 # Options that pose another programme (another mesh or thermal start): a solved lap is a start
 # for a case only where these are equal. The other options that are numbers are coordinates.
 PROGRAMME_OPTIONS = ("step_m", "collocation", "thermal_start", "tolerance_s", "wear_in_programme")
@@ -331,8 +328,8 @@ def run_case(case, out, lap_cache=None, scales=None):
             r = {"summary": summary}
         else:
             if warm:  # from the nearest laps solved before it (the library's lap cache)
-                options.update(lap_cache=lap_cache, lap_cache_name=case["case"], lap_cache_scales=scales or {},
-                               start_max_iterations=WARM_START_MAX_ITERATIONS)
+                # (its two nearest in turn, 150 iterations each, then the default start)
+                options.update(lap_cache=lap_cache, lap_cache_name=case["case"], lap_cache_scales=scales or {})
             r = hotlap.optimal_lap(car, track, **options)
             if warm and r["summary"].get("warm_start_from"):
                 result.update(warm_start_from=r["summary"]["warm_start_from"],
