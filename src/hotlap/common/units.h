@@ -19,5 +19,7 @@ constexpr double CelsiusToKelvin(double c) { return c + kZeroCelsius; }
 constexpr double KelvinToCelsius(double k) { return k - kZeroCelsius; }
 constexpr double DegToRad(double deg) { return deg * kPi / 180.0; }
 constexpr double RadToDeg(double rad) { return rad * 180.0 / kPi; }
+constexpr double KilopascalsToPascals(double kpa) { return 1e3 * kpa; }
+constexpr double PascalsToKilopascals(double pa) { return pa / 1000.0; }
 
 }  // namespace hotlap

@@ -30,7 +30,6 @@ constexpr FitHint kRimAirFit{"G_ra", "W/K", 0.0, 1000.0, 1.0};
 
 double DegreesToSi(double deg) { return DegToRad(deg); }
 double CelsiusToSi(double c) { return CelsiusToKelvin(c); }
-double KilopascalsToSi(double kpa) { return 1e3 * kpa; }
 
 std::span<const TyreThermalField> Table() {
   // clang-format off
@@ -61,12 +60,12 @@ std::span<const TyreThermalField> Table() {
       {"hysteresis", "carcass_slip_share", &P::carcass_slip_share, Range::Closed(0.0, 1.0, "")},
       {"hysteresis", "rolling_resistance_coefficient", &P::rolling_resistance, Range::Closed(0.0, 0.1, "")},
       {"hysteresis", "reference_carcass_temp_C", &P::rolling_reference_temp, Range::Closed(-50.0, 300.0, "degC"), &CelsiusToSi},
-      {"hysteresis", "reference_pressure_kPa", &P::rolling_reference_pressure, Range::Closed(20.0, 1000.0, "kPa"), &KilopascalsToSi},
+      {"hysteresis", "reference_pressure_kPa", &P::rolling_reference_pressure, Range::Closed(20.0, 1000.0, "kPa"), &KilopascalsToPascals},
       {"hysteresis", "temp_coefficient_per_K", &P::rolling_temp_coefficient, Range::Closed(0.0, 0.1, "1/K")},
       {"hysteresis", "temp_floor", &P::rolling_temp_floor, Range::Closed(0.0, 1.0, "")},
       {"hysteresis", "pressure_exponent", &P::rolling_pressure_exponent, Range::Closed(0.0, 2.0, "")},
       {"gas", "cold_set_temp_C", &P::cold_set_temp, Range::Closed(-40.0, 80.0, "degC"), &CelsiusToSi},
-      {"gas", "liner_pressure_above_tyre_kPa", &P::liner_pressure_offset, Range::Closed(0.0, 1000.0, "kPa"), &KilopascalsToSi},
+      {"gas", "liner_pressure_above_tyre_kPa", &P::liner_pressure_offset, Range::Closed(0.0, 1000.0, "kPa"), &KilopascalsToPascals},
       {"gas", "carcass_gas_W_per_K", &P::carcass_gas_conductance, Range::Positive("W/K"), nullptr, &kCarcassGasFit},
       {"gas", "gas_rim_W_per_K", &P::gas_rim_conductance, Range::Positive("W/K"), nullptr, &kGasRimFit},
       {"gas", "gas_liner_W_per_K", &P::gas_liner_conductance, Range::NonNegative("W/K")},

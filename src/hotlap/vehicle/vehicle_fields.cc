@@ -1,17 +1,12 @@
 #include "hotlap/vehicle/vehicle_fields.h"
 
-#include "hotlap/common/units.h"
-
 #include <array>
+
+#include "hotlap/common/units.h"
 
 namespace hotlap::vehicle {
 
-namespace {
-
-double KilopascalsToSi(double kpa) { return 1e3 * kpa; }
-double SiToKilopascals(double pa) { return pa / 1000.0; }
-
-std::span<const VehicleField> Table() {
+std::span<const VehicleField> VehicleFields() {
   using V = VehicleParams;
   const Range share = Range::Closed(0.2, 0.8, "1");
   // clang-format off
@@ -37,16 +32,12 @@ std::span<const VehicleField> Table() {
   return table;
 }
 
-}  // namespace
-
 std::string VehicleField::Path() const { return std::string(section) + "." + std::string(key); }
-
-std::span<const VehicleField> VehicleFields() { return Table(); }
 
 std::span<const CornerSetupField> CornerSetupFields() {
   static const auto corner = std::to_array<CornerSetupField>({
-      {"pressure_kPa", &CornerSetup::pressure, Range::Closed(20.0, 1000.0, "kPa"), &KilopascalsToSi,
-       &SiToKilopascals},
+      {"pressure_kPa", &CornerSetup::pressure, Range::Closed(20.0, 1000.0, "kPa"),
+       &KilopascalsToPascals, &PascalsToKilopascals},
       {"camber_deg", &CornerSetup::camber, Range::Closed(-10.0, 10.0, "deg"), &DegToRad, &RadToDeg},
       {"rolling_radius_m", &CornerSetup::rolling_radius, Range::Closed(0.1, 1.0, "m"), nullptr,
        nullptr, true},
