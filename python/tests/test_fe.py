@@ -17,7 +17,7 @@ def coarse_config(tmp_path):
         ("config_file: ../abs/", "config_file: %s/" % (REPO / "data" / "abs")),
     ]:
         assert old in text, old
-        text = text.replace(old, new, 1)
+        text = text.replace(old, new)  # every ABS file named (the FE stop's and the lumped one's)
     path = tmp_path / "coarse.yaml"
     path.write_text(text)
     return path

@@ -69,20 +69,30 @@ TEST(WriteFeAbsReport, DrawsTheLumpedRunBesideTheFeOne) {
   lumped_history.lambda = {0.0, 0.04};
   lumped_history.brake_torque = {0.0, 120.0};
   lumped_history.fx = {0.0, -900.0};
-  FeAbsLumpedRun lumped{&lumped_history, {}, 0.36};
+  FeAbsLumpedRun lumped{&lumped_history, {}, 0.36, "lumped, same ABS file"};
   lumped.cycles.cycles = 3;
   lumped.cycles.first_cycle_start_s = 0.125;
   lumped.cycles.second_cycle_start_s = 0.19;
-  WriteFeAbsReport(path, fe_history, cycles, 0.4, {}, &lumped);
+  // A second lumped run (the lumped quarter car's own tuning): its own line and sentence.
+  FeAbsLumpedRun own = lumped;
+  own.label = "lumped, own tuning";
+  own.cycles.cycles = 5;
+  own.cycles.first_cycle_start_s = 0.13;
+  WriteFeAbsReport(path, fe_history, cycles, 0.4, {}, {lumped, own});
   const std::string html = test::ReadTextFile(path);
   for (const char* part :
-       {"first pressure release FE 0.125 s, lumped 0.125 s",
-        "second cycle FE 0.270 s, lumped 0.190 s", "cycles FE 2, lumped 3", "lumped hotlap abs",
-        "Vx (lumped)", "omega R_l (lumped)", "slip (lumped)", "Fx (lumped)"}) {
+       {"Beside the lumped, same ABS file `hotlap abs` run",
+        "first pressure release FE 0.125 s, lumped 0.125 s",
+        "second cycle FE 0.270 s, lumped 0.190 s", "cycles FE 2, lumped 3",
+        "torque (lumped, same ABS file)", "Vx (lumped, same ABS file)",
+        "omega R_l (lumped, same ABS file)", "slip (lumped, same ABS file)",
+        "Fx (lumped, same ABS file)", "Beside the lumped, own tuning `hotlap abs` run",
+        "first pressure release FE 0.125 s, lumped 0.130 s", "cycles FE 2, lumped 5",
+        "slip (lumped, own tuning)"}) {
     EXPECT_TRUE(test::Contains(html, part)) << part;
   }
   WriteFeAbsReport(path, fe_history, cycles, 0.4, {});
-  EXPECT_FALSE(test::Contains(test::ReadTextFile(path), "(lumped)"));
+  EXPECT_FALSE(test::Contains(test::ReadTextFile(path), "(lumped"));
 }
 
 }  // namespace

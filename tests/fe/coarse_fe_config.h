@@ -1,8 +1,8 @@
 #pragma once
 // The shipped FE tyre file (data/fe/paper_235_75r15.yaml) made cheap for tests: a very coarse
 // mesh (720 elements), mass scaling to a 12 us step, a 10 ms roll and a 1 ms history, the lumped
-// ABS tuning (data/abs/paper.yaml) named by its absolute path; everything else as shipped. Used by the FE command, stop and
-// ensemble tests.
+// ABS tuning (data/abs/paper.yaml) named by its absolute path; everything else as shipped. Used by
+// the FE command, stop and ensemble tests.
 
 #include <filesystem>
 #include <string>
@@ -23,6 +23,8 @@ inline std::filesystem::path WriteCoarseFeConfig(const std::filesystem::path& pa
   // The lumped tuning (no wheel-speed filter): the coarse tyre's bounds were set with it.
   y = ReplaceOnce(y, "config_file: ../abs/fe_tyre.yaml",
                   "config_file: " + SourcePath("data/abs/paper.yaml").string());
+  y = ReplaceOnce(y, "lumped_config_file: ../abs/paper.yaml",
+                  "lumped_config_file: " + SourcePath("data/abs/paper.yaml").string());
   y = ReplaceOnce(y, "damping_per_s: 250", "damping_per_s: 150");  // mass scaled: heavier
   y = ReplaceOnce(y, "duration_s: 0.1 ", "duration_s: 0.01 ");
   y = ReplaceOnce(y, "history_interval_s: 1.0e-4", "history_interval_s: 1.0e-3");

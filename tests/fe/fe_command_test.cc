@@ -108,6 +108,14 @@ TEST_F(FeCommandTest, AbsStepRunsEveryStepAndWritesTheOutputs) {
                             "cf. 002 Fig. 11", "Energy balance error"}) {
     EXPECT_TRUE(Contains(html, title)) << title;
   }
+  // Both lumped runs: the FE file's ABS file and the lumped quarter car's own tuning.
+  EXPECT_TRUE(j["abs"].contains("lumped"));
+  ASSERT_TRUE(j["abs"].contains("lumped_own_tuning"));
+  EXPECT_TRUE(Contains(j["abs"]["lumped_own_tuning"]["config_file"].get<std::string>(),
+                       "data/abs/paper.yaml"));
+  for (const char* label : {"slip (lumped, same ABS file)", "slip (lumped, own tuning)"}) {
+    EXPECT_TRUE(Contains(html, label)) << label;
+  }
   // The page draws its six charts without a script error.
   fs::create_directories(dir_ / "chromium");
   const auto status = hotlap::test::RenderInChromium(out / "abs_report.html", dir_ / "chromium");
@@ -144,8 +152,11 @@ TEST_F(FeCommandTest, EnsembleWritesEachFiguresStatisticAndRefusesCheckpoints) {
   EXPECT_EQ(e["figures"]["distance_m"]["n"].get<int>(), 3);
   EXPECT_GT(e["figures"]["distance_m"]["mean"].get<double>(), 0.2);
   EXPECT_TRUE(e.contains("lumped"));
+  EXPECT_TRUE(e.contains("lumped_own_tuning"));
   EXPECT_TRUE(Contains(ReadTextFile(out / "abs_ensemble.csv"), "member,control_cycles,"));
-  EXPECT_TRUE(Contains(ReadTextFile(out / "abs_report.html"), "Ensemble figures"));
+  const std::string html = ReadTextFile(out / "abs_report.html");
+  EXPECT_TRUE(Contains(html, "Ensemble figures"));
+  EXPECT_TRUE(Contains(html, "lumped, own tuning"));
   // The page draws its three charts (torque, speeds, slip: each a band) without a script error.
   fs::create_directories(dir_ / "chromium");
   const auto status = hotlap::test::RenderInChromium(out / "abs_report.html", dir_ / "chromium");
@@ -316,6 +327,16 @@ TEST_F(FeCommandTest, BadConfigurationNamesTheField) {
   EXPECT_EQ(Run("inflate --config " + p.string() + " --out " + (dir_ / "o").string()), 2);
   EXPECT_TRUE(Contains(err_, "mesh.thickness_elements")) << err_;
   EXPECT_TRUE(Contains(err_, "bad.yaml")) << err_;
+
+  // The lumped quarter car's own tuning, optional, must name a file that exists.
+  y = Replace(ReadTextFile(hotlap::test::SourcePath("data/fe/paper_235_75r15.yaml")),
+              "lumped_config_file: ../abs/paper.yaml", "lumped_config_file: ../abs/none.yaml");
+  y = Replace(y, "config_file: ../abs/fe_tyre.yaml",
+              "config_file: " + hotlap::test::SourcePath("data/abs/fe_tyre.yaml").string());
+  std::ofstream(p) << y;
+  EXPECT_EQ(Run("inflate --config " + p.string() + " --out " + (dir_ / "o").string()), 2);
+  EXPECT_TRUE(Contains(err_, "abs.lumped_config_file")) << err_;
+  EXPECT_TRUE(Contains(err_, "does not exist")) << err_;
 }
 
 // The stick spring's penalty factor: outside (0, 1), or above the stability bound

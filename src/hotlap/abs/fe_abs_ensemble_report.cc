@@ -71,7 +71,7 @@ void WriteFeAbsEnsembleCsv(const std::filesystem::path& path, const FeAbsEnsembl
 }
 
 void WriteFeAbsEnsembleReport(const std::filesystem::path& path, const FeAbsEnsembleResult& e,
-                              const AbsMetrics& lumped,
+                              const std::vector<LumpedAbsColumn>& lumped,
                               const std::vector<std::pair<std::string, std::string>>& metadata) {
   if (e.time_s.empty()) throw std::invalid_argument("WriteFeAbsEnsembleReport: no history");
   report::HtmlReport page("hotlap fe abs --ensemble: finite-element tyre braking, ensemble");
@@ -82,22 +82,33 @@ void WriteFeAbsEnsembleReport(const std::filesystem::path& path, const FeAbsEnse
       "round-off after a few control cycles; the statistics below do not (docs/fe-tyre.md).",
       e.members.size(), FePerturbationName(e.perturbation)));
   const auto opt = [](const std::optional<double>& v) { return v ? Figure(*v) : std::string("-"); };
-  const std::vector<std::optional<double>> lumped_values = {lumped.fraction_time_lambda_below_0_135,
-                                                            std::nullopt,
-                                                            std::nullopt,
-                                                            lumped.max_lambda_after_first_cycle,
-                                                            lumped.cycles_per_s,
-                                                            lumped.first_cycle_start_s,
-                                                            lumped.distance_m,
-                                                            lumped.mean_deceleration_mps2};
-  report::Table table{.title = "Ensemble figures (window: after the first control cycle)",
-                      .header = {"figure", "unit", "mean", "standard error", "smallest", "largest",
-                                 "members", "lumped hotlap abs"}};
+  // Each lumped run's value of the ensemble's figures, in the order of `e.keys` (slip_p99 and
+  // slip_mean have no lumped counterpart in AbsMetrics).
+  const auto lumped_values = [](const AbsMetrics& m) {
+    return std::vector<std::optional<double>>{m.fraction_time_lambda_below_0_135,
+                                              std::nullopt,
+                                              std::nullopt,
+                                              m.max_lambda_after_first_cycle,
+                                              m.cycles_per_s,
+                                              m.first_cycle_start_s,
+                                              m.distance_m,
+                                              m.mean_deceleration_mps2};
+  };
+  report::Table table{
+      .title = "Ensemble figures (window: after the first control cycle)",
+      .header = {"figure", "unit", "mean", "standard error", "smallest", "largest", "members"}};
+  std::vector<std::vector<std::optional<double>>> columns;
+  for (const LumpedAbsColumn& c : lumped) {
+    table.header.push_back(c.label);
+    columns.push_back(lumped_values(c.metrics));
+  }
   for (size_t k = 0; k < e.keys.size(); ++k) {
     const EnsembleStat& s = e.stats[k];
-    table.rows.push_back({e.keys[k], e.units[k], Figure(s.mean), Figure(s.standard_error),
-                          Figure(s.min), Figure(s.max), std::to_string(s.n),
-                          k < lumped_values.size() ? opt(lumped_values[k]) : "-"});
+    std::vector<std::string> row = {
+        e.keys[k],     e.units[k],    Figure(s.mean),     Figure(s.standard_error),
+        Figure(s.min), Figure(s.max), std::to_string(s.n)};
+    for (const auto& values : columns) row.push_back(k < values.size() ? opt(values[k]) : "-");
+    table.rows.push_back(row);
   }
   page.AddTable(table);
 

@@ -15,11 +15,17 @@
 
 namespace hotlap::sim {
 
-/// Writes the report to `path` (atomically), with `lumped` (the lumped `hotlap abs` run of the
-/// same event) beside the ensemble and `metadata` lines under the title. Throws InputError if the
-/// file cannot be written, std::invalid_argument if the ensemble has no history.
+/// A lumped `hotlap abs` run of the same event, a column of the report's table.
+struct LumpedAbsColumn {
+  std::string label;  ///< e.g. "lumped, same ABS file", "lumped, own tuning"
+  AbsMetrics metrics;
+};
+
+/// Writes the report to `path` (atomically), with the `lumped` runs of the same event beside the
+/// ensemble (a column each) and `metadata` lines under the title. Throws InputError if the file
+/// cannot be written, std::invalid_argument if the ensemble has no history.
 void WriteFeAbsEnsembleReport(const std::filesystem::path& path, const FeAbsEnsembleResult& e,
-                              const AbsMetrics& lumped,
+                              const std::vector<LumpedAbsColumn>& lumped,
                               const std::vector<std::pair<std::string, std::string>>& metadata);
 
 /// One row per member: its index, cycle count and figures (ListFeAbsFigures; empty where none).

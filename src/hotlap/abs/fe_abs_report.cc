@@ -50,21 +50,21 @@ FeChannels FeChannelsOf(const std::vector<fe::HistoryRow>& history, double loade
   return ch;
 }
 
-// The lumped run's channels on the FE histories' clock (its t = 0 is the braking step's start,
+// A lumped run's channels on the FE histories' clock (its t = 0 is the braking step's start,
 // t0 on the FE clock); empty without a lumped history.
 struct LumpedChannels {
   std::vector<double> t, torque, vx, omega_r, slip, fx;
 };
 
-LumpedChannels LumpedChannelsOf(const FeAbsLumpedRun* lumped, double t0) {
+LumpedChannels LumpedChannelsOf(const FeAbsLumpedRun& lumped, double t0) {
   LumpedChannels l;
-  if (lumped == nullptr || lumped->history == nullptr) return l;
-  const AbsHistory& h = *lumped->history;
+  if (lumped.history == nullptr) return l;
+  const AbsHistory& h = *lumped.history;
   for (size_t k = 0; k < h.size(); ++k) {
     l.t.push_back(t0 + h.time[k]);
     l.torque.push_back(-h.brake_torque[k]);
     l.vx.push_back(h.speed[k]);
-    l.omega_r.push_back(h.wheel_speed[k] * lumped->loaded_radius_m);
+    l.omega_r.push_back(h.wheel_speed[k] * lumped.loaded_radius_m);
     l.slip.push_back(h.lambda[k]);
     l.fx.push_back(h.fx[k]);
   }
@@ -94,7 +94,7 @@ void AddEventText(report::HtmlReport& page, const FeChannels& ch, const CycleWin
       "docs/validation/fe-tyre.md says what was compared.");
 }
 
-// The FE run's cycles beside the lumped run's, in time from the braking step's start (t0).
+// The FE run's cycles beside a lumped run's, in time from the braking step's start (t0).
 void AddLumpedText(report::HtmlReport& page, const CycleWindow& cycles,
                    const FeAbsLumpedRun& lumped, double t0) {
   const auto opt = [](const std::optional<double>& v, double offset) {
@@ -102,33 +102,39 @@ void AddLumpedText(report::HtmlReport& page, const CycleWindow& cycles,
   };
   const CycleWindow& c = lumped.cycles;
   page.AddText(fmt::format(
-      "Beside the lumped `hotlap abs` run of the same event (same controller and hydraulics, "
-      "rigid wheel, brush tyre), time from the braking step's start: first pressure release "
-      "FE {} s, lumped {} s; second cycle FE {} s, lumped {} s; cycles FE {}, lumped {}; slip "
-      "below {:.3f} after the first cycle FE {}, lumped {}; at most FE {}, lumped {}.",
-      opt(cycles.first_cycle_start_s, -t0), opt(c.first_cycle_start_s, 0.0),
+      "Beside the {} `hotlap abs` run of the same event (rigid wheel, brush tyre), time from "
+      "the braking step's start: first pressure release FE {} s, lumped {} s; second cycle FE "
+      "{} s, lumped {} s; cycles FE {}, lumped {}; slip below {:.3f} after the first cycle FE "
+      "{}, lumped {}; at most FE {}, lumped {}.",
+      lumped.label, opt(cycles.first_cycle_start_s, -t0), opt(c.first_cycle_start_s, 0.0),
       opt(cycles.second_cycle_start_s, -t0), opt(c.second_cycle_start_s, 0.0), cycles.cycles,
       c.cycles, kPaperSlipLimit, opt(cycles.fraction_time_lambda_below_0_135, 0.0),
       opt(c.fraction_time_lambda_below_0_135, 0.0), opt(cycles.max_lambda_after_first_cycle, 0.0),
       opt(c.max_lambda_after_first_cycle, 0.0)));
 }
 
-// 002's Figures 8 to 11, with the lumped run dotted where there is one.
-void AddBrakingCharts(report::HtmlReport& page, const FeChannels& ch, const LumpedChannels& l) {
+// 002's Figures 8 to 11, with the lumped runs dotted.
+void AddBrakingCharts(report::HtmlReport& page, const FeChannels& ch,
+                      const std::vector<FeAbsLumpedRun>& lumped) {
   const std::vector<double>& t = ch.t;
-  const auto add_lumped = [&](report::LineChart& chart, const std::string& label,
-                              const std::vector<double>& y) {
-    if (l.t.empty()) return;
-    chart.series.push_back({.label = label,
-                            .x = l.t,
-                            .y = y,
-                            .colour = "#9c755f",
-                            .style = report::LineStyle::kDotted});
+  std::vector<LumpedChannels> ls;
+  for (const FeAbsLumpedRun& run : lumped) ls.push_back(LumpedChannelsOf(run, t.front()));
+  const auto add_lumped = [&](report::LineChart& chart, const std::string& what,
+                              std::vector<double> LumpedChannels::*channel) {
+    static const char* kColours[] = {"#9c755f", "#b07aa1", "#76b7b2"};
+    for (size_t k = 0; k < ls.size(); ++k) {
+      if (ls[k].t.empty()) continue;
+      chart.series.push_back({.label = fmt::format("{} ({})", what, lumped[k].label),
+                              .x = ls[k].t,
+                              .y = ls[k].*channel,
+                              .colour = kColours[k % 3],
+                              .style = report::LineStyle::kDotted});
+    }
   };
   page.AddHeading("Braking event (002 Figures 8 to 11)");
   report::LineChart fig8 = TimeChart("Brake torque (cf. 002 Fig. 8)", "torque", "N m");
   fig8.series.push_back({.label = "ABS brake torque", .x = t, .y = ch.torque});
-  add_lumped(fig8, "lumped hotlap abs", l.torque);
+  add_lumped(fig8, "torque", &LumpedChannels::torque);
   page.AddLineChart(fig8);
 
   report::LineChart fig9 =
@@ -136,13 +142,13 @@ void AddBrakingCharts(report::HtmlReport& page, const FeChannels& ch, const Lump
   fig9.series.push_back({.label = "Vx (rim)", .x = t, .y = ch.vx});
   fig9.series.push_back(
       {.label = "omega R_l", .x = t, .y = ch.omega_r, .style = report::LineStyle::kDashed});
-  add_lumped(fig9, "Vx (lumped)", l.vx);
-  add_lumped(fig9, "omega R_l (lumped)", l.omega_r);
+  add_lumped(fig9, "Vx", &LumpedChannels::vx);
+  add_lumped(fig9, "omega R_l", &LumpedChannels::omega_r);
   page.AddLineChart(fig9);
 
   report::LineChart fig10 = TimeChart("Slip ratio (cf. 002 Fig. 10)", "slip", "");
   fig10.series.push_back({.label = "slip", .x = t, .y = ch.slip});
-  add_lumped(fig10, "slip (lumped)", l.slip);
+  add_lumped(fig10, "slip", &LumpedChannels::slip);
   fig10.series.push_back({.label = "0.135 (002 Fig. 10)",
                           .x = {t.front(), t.back()},
                           .y = {kPaperSlipLimit, kPaperSlipLimit},
@@ -153,7 +159,7 @@ void AddBrakingCharts(report::HtmlReport& page, const FeChannels& ch, const Lump
   report::LineChart fig11 =
       TimeChart("Road longitudinal force (cf. 002 Fig. 11)", "road force Fx", "N");
   fig11.series.push_back({.label = "road Fx on the tyre", .x = t, .y = ch.fx});
-  add_lumped(fig11, "Fx (lumped)", l.fx);
+  add_lumped(fig11, "Fx", &LumpedChannels::fx);
   page.AddLineChart(fig11);
 }
 
@@ -177,17 +183,16 @@ void AddEnergyCharts(report::HtmlReport& page, const FeChannels& ch) {
 void WriteFeAbsReport(const std::filesystem::path& path, const std::vector<fe::HistoryRow>& history,
                       const CycleWindow& cycles, double loaded_radius_m,
                       const std::vector<std::pair<std::string, std::string>>& metadata,
-                      const FeAbsLumpedRun* lumped) {
+                      const std::vector<FeAbsLumpedRun>& lumped) {
   if (history.empty()) throw std::invalid_argument("WriteFeAbsReport: empty history");
   const FeChannels ch = FeChannelsOf(history, loaded_radius_m);
   report::HtmlReport page("hotlap fe abs: finite-element tyre braking event");
   for (const auto& [key, value] : metadata) page.AddMetadata(key, value);
   AddEventText(page, ch, cycles);
-  const LumpedChannels l = LumpedChannelsOf(lumped, ch.t.front());
-  if (lumped != nullptr && lumped->history != nullptr) {
-    AddLumpedText(page, cycles, *lumped, ch.t.front());
+  for (const FeAbsLumpedRun& run : lumped) {
+    if (run.history != nullptr) AddLumpedText(page, cycles, run, ch.t.front());
   }
-  AddBrakingCharts(page, ch, l);
+  AddBrakingCharts(page, ch, lumped);
   AddEnergyCharts(page, ch);
   page.Write(path);
 }

@@ -182,6 +182,8 @@ void ReadRoll(YamlReader& y, FeConfig& c) {
 void ReadAbs(YamlReader& y, FeConfig& c) {
   YamlReader s = y.Map("abs");
   c.abs_config = s.FilePath("config_file");
+  // Optional: the lumped quarter car's own tuning, run and drawn beside the FE stop too.
+  if (s.Has("lumped_config_file")) c.abs_lumped_config = s.FilePath("lumped_config_file");
   c.abs_duration_s = s.Number("duration_s", Range::Positive("s"));
   s.Finish();
 }

@@ -45,6 +45,9 @@ struct FeConfig {
   double roll_speed_mps = 0.0;
   double roll_duration_s = 0.0;
   std::filesystem::path abs_config;  ///< the ABS controller and hydraulics (data/abs/*.yaml)
+  /// Optional: the lumped quarter car's own ABS tuning (data/abs/*.yaml), whose `hotlap abs`
+  /// run is reported beside the FE stop with the run of `abs_config`; empty if not given.
+  std::filesystem::path abs_lumped_config;
   double abs_duration_s = 0.0;
   double history_interval_s = 0.0;
   int vtu_frames = 0;  ///< deformed shapes written per step (>= 1: at least the last)

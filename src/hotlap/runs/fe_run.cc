@@ -68,9 +68,12 @@ class FeRunner {
   // The abs step: one stop (continued from the checkpoint if restarted), or the ensemble.
   void RunAbsStop(const fe::StepHooks& hooks, const fe::CheckpointKey& key);
   void RunAbsEnsemble();
-  // The lumped `hotlap abs` run of the same event (issue 27): the same controller and
-  // hydraulics file, speed and duration, its own rigid wheel and brush tyre.
+  // The lumped `hotlap abs` runs of the same event (speed and duration), each with its own
+  // rigid wheel and brush tyre: the FE file's controller and hydraulics file, then the lumped
+  // quarter car's own tuning where the FE file names one (`abs.lumped_config_file`).
   void RunLumped(double initial_speed_mps);
+  // The lumped runs' JSON: `lumped` (the same ABS file) and `lumped_own_tuning`.
+  void AddLumpedJson(nlohmann::json& j) const;
   void Performance(Clock::time_point wall0, long steps_at_start, bool restarted);
 
   const FeRunOptions& o_;
@@ -82,9 +85,15 @@ class FeRunner {
   nlohmann::json j_;
   double step_t0_ = 0.0;
   Clock::time_point step_wall0_;
-  // The lumped run, once RunLumped ran.
-  std::optional<sim::AbsRunResult> lumped_run_;
-  sim::AbsMetrics lumped_metrics_;
+  // The lumped runs, once RunLumped ran (the same ABS file first).
+  struct LumpedRun {
+    std::string label;
+    fs::path file;
+    sim::AbsConfig config;
+    sim::AbsRunResult run;
+    sim::AbsMetrics metrics;
+  };
+  std::vector<LumpedRun> lumped_;
 };
 
 void FeRunner::Prepare() {
@@ -228,11 +237,28 @@ void FeRunner::RunEarlierSteps(const fe::StepHooks& hooks) {
 }
 
 void FeRunner::RunLumped(double initial_speed_mps) {
-  sim::AbsEvent event = abs_config_->event;
-  event.initial_speed_mps = initial_speed_mps;
-  event.duration_s = config_.abs_duration_s;
-  lumped_run_ = sim::RunAbs(*abs_config_, event);
-  lumped_metrics_ = sim::CalcAbsMetrics(*abs_config_, *lumped_run_);
+  const auto run = [&](const std::string& label, const fs::path& file, const sim::AbsConfig& abs) {
+    sim::AbsEvent event = abs.event;
+    event.initial_speed_mps = initial_speed_mps;
+    event.duration_s = config_.abs_duration_s;
+    LumpedRun l{label, file, abs, sim::RunAbs(abs, event), {}};
+    l.metrics = sim::CalcAbsMetrics(abs, l.run);
+    lumped_.push_back(std::move(l));
+  };
+  lumped_.clear();
+  run("lumped, same ABS file", config_.abs_config, *abs_config_);
+  if (!config_.abs_lumped_config.empty()) {
+    run("lumped, own tuning", config_.abs_lumped_config,
+        sim::LoadAbsConfig(config_.abs_lumped_config));
+  }
+}
+
+void FeRunner::AddLumpedJson(nlohmann::json& j) const {
+  j["lumped"] = sim::LumpedAbsJson(lumped_.front().metrics);
+  if (lumped_.size() > 1) {
+    j["lumped_own_tuning"] = sim::LumpedAbsJson(lumped_[1].metrics);
+    j["lumped_own_tuning"]["config_file"] = lumped_[1].file.string();
+  }
 }
 
 void FeRunner::RunAbsStop(const fe::StepHooks& hooks, const fe::CheckpointKey& key) {
@@ -251,16 +277,18 @@ void FeRunner::RunAbsStop(const fe::StepHooks& hooks, const fe::CheckpointKey& k
   fe::WriteFeHistoryCsv(o_.out / "abs_history.csv", "abs", config_, br.history,
                         run_->slip_radius_m());
   RunLumped(br.initial_speed_mps);
-  const sim::FeAbsLumpedRun lumped{&lumped_run_->history, lumped_metrics_,
-                                   abs_config_->plant.wheel.radius};
+  std::vector<sim::FeAbsLumpedRun> lumped;
+  for (const LumpedRun& l : lumped_) {
+    lumped.push_back({&l.run.history, l.metrics, l.config.plant.wheel.radius, l.label});
+  }
   sim::WriteFeAbsReport(
       o_.out / "abs_report.html", br.history, r.cycles, run_->slip_radius_m(),
       {{"configuration", config_.file.string()},
        {"mesh", fmt::format("{} elements, {} nodes", run_->tyre().mesh.elements.size(),
                             run_->tyre().mesh.nodes.size())}},
-      &lumped);
+      lumped);
   j_["abs"] = sim::FeAbsStopJson(r, config_.abs_duration_s, run_->solver().energies());
-  j_["abs"]["lumped"] = sim::LumpedAbsJson(lumped_metrics_);
+  AddLumpedJson(j_["abs"]);
   WarnCordStrain("abs", br.max_cord_strain);
   Say(
       fmt::format("abs: {:.3f} s, speed {:.3f} -> {:.3f} m/s over {:.3f} m, max slip {:.3f}, {} "
@@ -289,15 +317,17 @@ void FeRunner::RunAbsEnsemble() {
   const sim::FeAbsEnsembleResult e = sim::RunFeAbsEnsemble(*run_, *abs_config_, eo);
   RunLumped(e.vx_mps.mean.empty() ? config_.roll_speed_mps : e.vx_mps.mean.front());
   sim::WriteFeAbsEnsembleCsv(o_.out / "abs_ensemble.csv", e);
+  std::vector<sim::LumpedAbsColumn> columns;
+  for (const LumpedRun& l : lumped_) columns.push_back({l.label, l.metrics});
   sim::WriteFeAbsEnsembleReport(
-      o_.out / "abs_report.html", e, lumped_metrics_,
+      o_.out / "abs_report.html", e, columns,
       {{"configuration", config_.file.string()},
        {"mesh", fmt::format("{} elements, {} nodes", run_->tyre().mesh.elements.size(),
                             run_->tyre().mesh.nodes.size())},
        {"ensemble", fmt::format("{} members, perturbation {}", eo.members,
                                 sim::FePerturbationName(eo.perturbation))}});
   j_["abs_ensemble"] = sim::FeAbsEnsembleJson(e, config_.abs_duration_s);
-  j_["abs_ensemble"]["lumped"] = sim::LumpedAbsJson(lumped_metrics_);
+  AddLumpedJson(j_["abs_ensemble"]);
   for (const std::string& line : sim::FeAbsEnsembleText(e)) Say(line);
 }
 
