@@ -21,7 +21,6 @@
 #include "hotlap/common/error.h"
 #include "hotlap/common/json_output.h"
 #include "hotlap/common/output_folder.h"
-#include "hotlap/common/units.h"
 
 namespace hotlap::app {
 
@@ -36,13 +35,10 @@ struct AbsArgs {
   bool no_abs = false;
   bool drum = false;
   bool scenarios = false;
+  std::vector<std::string> set;  // KEY=VALUE overrides of the ABS file's numbers
   std::string out;
   std::string json;
 };
-
-std::string Figure(const std::optional<double>& x, const char* format) {
-  return x ? fmt::format(fmt::runtime(format), *x) : std::string("-");
-}
 
 int RunAbsCommand(const AbsArgs& a) {
   // Everything checked before any work: the output folder, the configuration, the options.
@@ -51,7 +47,8 @@ int RunAbsCommand(const AbsArgs& a) {
   CheckOutputDirectory(out, "--out");
   if (!a.json.empty()) CheckOutputFolder(a.json, "--json");
   const sim::AbsConfig config =
-      sim::LoadAbsConfig(a.config.empty() ? sim::DefaultAbsConfigPath() : fs::path(a.config));
+      sim::LoadAbsConfig(a.config.empty() ? sim::DefaultAbsConfigPath() : fs::path(a.config),
+                         sim::ParseAbsOverrides(a.set));
   sim::AbsEvent event = config.event;
   if (a.speed_mps) event.initial_speed_mps = *a.speed_mps;
   if (a.duration_s) event.duration_s = *a.duration_s;
@@ -88,19 +85,9 @@ int RunAbsCommand(const AbsArgs& a) {
              event.initial_speed_mps, with_abs ? "" : ", without ABS");
   for (const auto& [k, v] : summary) fmt::print("  {:<48} {}\n", k, v);
   if (comparison) {
-    fmt::print("  scenarios (to standstill):   surface   ABS m   locked m   ratio\n");
-    for (size_t i = 0; i + 1 < comparison->size(); i += 2) {
-      const sim::AbsMetrics& abs = (*comparison)[i].metrics;
-      const sim::AbsMetrics& locked = (*comparison)[i + 1].metrics;
-      fmt::print("  {:>38} {:>7} {:>10} {:>7}\n", (*comparison)[i].surface,
-                 Figure(abs.stopping_distance_m, "{:.2f}"),
-                 Figure(locked.stopping_distance_m, "{:.2f}"),
-                 abs.stopping_distance_m && locked.stopping_distance_m
-                     ? fmt::format("{:.3f}", *abs.stopping_distance_m / *locked.stopping_distance_m)
-                     : std::string("-"));
+    for (const std::string& line : sim::AbsScenarioLines(*comparison, *series)) {
+      fmt::print("  {}\n", line);
     }
-    fmt::print("  stop series: peak disc temperature {:.1f} degC after {} stops\n",
-               KelvinToCelsius(series->stops.back().peak_disc_temp_K), series->stops.size());
   }
   fmt::print("wrote {} and {}\n", csv.string(), html.string());
 
@@ -121,6 +108,9 @@ CommandRunner RegisterAbsCommand(CLI::App& app) {
       "abs", "Brake one wheel with the ABS controller (the FE/ABS paper's case by default)");
   sub->add_option("--config", args->config,
                   "ABS configuration file (default: the shipped data/abs/paper.yaml)");
+  sub->add_option("--set", args->set,
+                  "Override a number of the ABS file: KEY=VALUE in the key's own unit, "
+                  "repeatable (e.g. controller.reapply_fraction=0.85; docs/abs.md)");
   sub->add_option("--speed-mps", args->speed_mps, "Initial speed, m/s (default: the file's)")
       ->check(kPositive);
   sub->add_option("--duration-s", args->duration_s, "Longest time simulated, s")->check(kPositive);

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "commands.h"
 #include "hotlap/common/json_output.h"
@@ -24,14 +25,15 @@ struct FeArgs {
   std::string config;
   std::string out;
   std::string json;
-  double duration_s = 0.0;          // 0: the file's
-  int threads = 0;                  // 0: OpenMP's default (all cores)
-  std::string kernel;               // empty: HOTLAP_FE_KERNEL, else auto
-  double checkpoint_every_s = 0.0;  // 0: no checkpoints
-  std::string restart;              // checkpoint to continue from
-  double step_scale = 1.0;          // the time step is this times the stable one's (0, 1]
-  int ensemble = 0;                 // abs: members of an ensemble (0: one stop)
-  std::string perturb = "spin";     // the ensemble's perturbation
+  double duration_s = 0.0;           // 0: the file's
+  int threads = 0;                   // 0: OpenMP's default (all cores)
+  std::string kernel;                // empty: HOTLAP_FE_KERNEL, else auto
+  double checkpoint_every_s = 0.0;   // 0: no checkpoints
+  std::string restart;               // checkpoint to continue from
+  double step_scale = 1.0;           // the time step is this times the stable one's (0, 1]
+  int ensemble = 0;                  // abs: members of an ensemble (0: one stop)
+  std::string perturb = "spin";      // the ensemble's perturbation
+  std::vector<std::string> abs_set;  // abs: KEY=VALUE overrides of the ABS file's numbers
 };
 
 // --kernel, else the environment variable HOTLAP_FE_KERNEL, else auto.
@@ -56,6 +58,7 @@ int RunFeCommand(const FeArgs& a) {
   o.step_scale = a.step_scale;
   o.ensemble = a.ensemble;
   o.perturbation = sim::ParseFePerturbation(a.perturb, "--perturb");
+  o.abs_set = a.abs_set;
   o.note = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
   o.say = [](const std::string& line) {
     std::printf("%s\n", line.c_str());
@@ -107,6 +110,9 @@ CommandRunner RegisterFeCommand(CLI::App& app) {
                   "abs --ensemble: spin (the initial spin by up to 1e-9 relative) | sum-order (the "
                   "rim's sums over its nodes) | round-off (every node's velocity by one rounding)")
       ->check(CLI::IsMember({"spin", "sum-order", "round-off"}));
+  sub->add_option("--abs-set", args->abs_set,
+                  "abs: override a number of the ABS file the FE file names, KEY=VALUE in the "
+                  "key's own unit, repeatable (e.g. controller.reapply_fraction=0.85)");
   return [args] { return RunFeCommand(*args); };
 }
 

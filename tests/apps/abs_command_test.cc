@@ -121,6 +121,38 @@ TEST_F(AbsCommandTest, OptionsChangeTheEvent) {
   EXPECT_GT(j["energy"]["drum_work_J"].get<double>(), 0.0);
 }
 
+// --set replaces numbers of the ABS file (a tuning study without copies of the file): the
+// run follows the new value, the JSON records it, and a key the file does not have or a value
+// outside the field's range is refused as the file's own would be, before anything is written.
+TEST_F(AbsCommandTest, SetOverridesTheFilesNumbers) {
+  const fs::path json = dir_ / "abs.json";
+  ASSERT_EQ(Run("--out " + (dir_ / "a").string() + " --json " + json.string()), 0) << err_;
+  const nlohmann::json plain = Json(json);
+  EXPECT_EQ(plain["overrides"], nlohmann::json::object());
+  // Reapplying at half the last release pressure rather than 95%: other cycles.
+  ASSERT_EQ(Run("--out " + (dir_ / "b").string() + " --json " + json.string() +
+                " --set controller.reapply_fraction=0.5 --set hydraulics.delay_s=0.02"),
+            0)
+      << err_;
+  const nlohmann::json set = Json(json);
+  EXPECT_DOUBLE_EQ(set["overrides"]["controller.reapply_fraction"].get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(set["overrides"]["hydraulics.delay_s"].get<double>(), 0.02);
+  EXPECT_NE(set["distance_m"].get<double>(), plain["distance_m"].get<double>());
+  EXPECT_TRUE(
+      Contains(ReadTextFile(dir_ / "b" / "abs_report.html"), "controller.reapply_fraction=0.5"));
+
+  const fs::path out = dir_ / "refused";
+  EXPECT_EQ(Run("--out " + out.string() + " --set controller.reaply_fraction=0.5"), 2);
+  EXPECT_TRUE(Contains(err_, "override 'controller.reaply_fraction=0.5'")) << err_;
+  EXPECT_TRUE(Contains(err_, "controller.reapply_fraction")) << err_;  // the closest key
+  EXPECT_EQ(Run("--out " + out.string() + " --set controller.reapply_fraction=1.5"), 2);
+  EXPECT_TRUE(Contains(err_, "reapply_fraction")) << err_;
+  EXPECT_TRUE(Contains(err_, "[0, 1)")) << err_;
+  EXPECT_EQ(Run("--out " + out.string() + " --set controller.reapply_fraction"), 2);
+  EXPECT_TRUE(Contains(err_, "expected KEY=VALUE")) << err_;
+  EXPECT_FALSE(fs::exists(out));
+}
+
 TEST_F(AbsCommandTest, BadInputFailsCleanly) {
   const fs::path out = dir_ / "run";
   EXPECT_EQ(Run("--out " + out.string() + " --surface ice"), 2);

@@ -128,9 +128,11 @@ TEST_F(FeCommandTest, AbsStepRunsEveryStepAndWritesTheOutputs) {
 // anything is written.
 TEST_F(FeCommandTest, EnsembleWritesEachFiguresStatisticAndRefusesCheckpoints) {
   const fs::path cfg = CoarseConfig(), out = dir_ / "ens", json = dir_ / "ens.json";
-  ASSERT_EQ(Run("abs --config " + cfg.string() + " --out " + out.string() + " --json " +
-                json.string() + " --duration-s 0.02 --ensemble 3 --perturb sum-order --threads 2"),
-            0)
+  ASSERT_EQ(
+      Run("abs --config " + cfg.string() + " --out " + out.string() + " --json " + json.string() +
+          " --duration-s 0.02 --ensemble 3 --perturb sum-order --threads 2 --abs-set "
+          "controller.reapply_fraction=0.9"),
+      0)
       << err_;
   EXPECT_TRUE(Contains(out_, "abs ensemble: 3 members, perturbation sum-order")) << out_;
   const nlohmann::json j = nlohmann::json::parse(ReadTextFile(json));
@@ -153,6 +155,7 @@ TEST_F(FeCommandTest, EnsembleWritesEachFiguresStatisticAndRefusesCheckpoints) {
   EXPECT_GT(e["figures"]["distance_m"]["mean"].get<double>(), 0.2);
   EXPECT_TRUE(e.contains("lumped"));
   EXPECT_TRUE(e.contains("lumped_own_tuning"));
+  EXPECT_DOUBLE_EQ(j["abs_overrides"]["controller.reapply_fraction"].get<double>(), 0.9);
   EXPECT_TRUE(Contains(ReadTextFile(out / "abs_ensemble.csv"), "member,control_cycles,"));
   const std::string html = ReadTextFile(out / "abs_report.html");
   EXPECT_TRUE(Contains(html, "Ensemble figures"));
@@ -308,6 +311,14 @@ TEST_F(FeCommandTest, BadCheckpointIsRefusedAndNothingIsWritten) {
   std::ofstream(dir_ / "other.yaml") << y;
   refused("abs --config " + (dir_ / "other.yaml").string() + " --restart " + ckpt.string(),
           "written for another configuration");
+  // The same files with a number of the ABS file overridden.
+  refused(base + " --restart " + ckpt.string() + " --abs-set controller.reapply_fraction=0.9",
+          "written for another configuration");
+  // --abs-set: only the abs step, and a key the ABS file has.
+  refused("roll --config " + cfg.string() + " --abs-set controller.reapply_fraction=0.9",
+          "--abs-set: only `hotlap fe abs`");
+  refused(base + " --abs-set controller.reaply_fraction=0.9",
+          "override 'controller.reaply_fraction=0.9'");
   // Another mesh.
   std::string m = ReadTextFile(cfg);
   m = Replace(m, "circumferential_elements_rest: 16", "circumferential_elements_rest: 20");

@@ -87,10 +87,25 @@ int AbsConfig::DelayTicks() const {
   return static_cast<int>(std::lround(plant.hydraulics.delay / controller.period_s));
 }
 
-AbsConfig LoadAbsConfig(const fs::path& path) {
-  YamlReader y = YamlReader::Load(path);
+std::vector<YamlOverride> ParseAbsOverrides(const std::vector<std::string>& texts) {
+  std::vector<YamlOverride> out;
+  for (const std::string& t : texts) {
+    out.push_back(ParseYamlOverride(t, "controller.reapply_fraction=0.85"));
+  }
+  return out;
+}
+
+nlohmann::json AbsOverridesJson(const std::vector<YamlOverride>& overrides) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const YamlOverride& o : overrides) j[o.field] = o.value;
+  return j;
+}
+
+AbsConfig LoadAbsConfig(const fs::path& path, const std::vector<YamlOverride>& overrides) {
+  YamlReader y = overrides.empty() ? YamlReader::Load(path) : YamlReader::Load(path, overrides);
   AbsConfig c;
   c.path = path;
+  c.overrides = overrides;
   c.name = y.String("name");
   y.Choice("model", {"abs_quarter_car"});
   {

@@ -10,11 +10,14 @@
 #include <string_view>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "hotlap/abs/abs_plant.h"
 #include "hotlap/abs/abs_surface.h"
 #include "hotlap/brake/abs_controller.h"
 #include "hotlap/brake/brake_params_io.h"
 #include "hotlap/brake/wheel_speed_filter.h"
+#include "hotlap/common/yaml_reader.h"
 
 namespace hotlap::sim {
 
@@ -67,6 +70,8 @@ struct NamedFrictionLaw {
 struct AbsConfig {
   std::string name;
   std::filesystem::path path;
+  /// The numbers of the file replaced on loading (LoadAbsConfig's `overrides`), in order.
+  std::vector<YamlOverride> overrides;
   AbsPlantModel<double> plant;  ///< wheel, tyre (from `wheel.tyre_file`), hydraulics
   brake::AbsControllerParams controller;
   /// The wheel-speed filter before the controller (`wheel_speed_filter`; absent: none).
@@ -86,7 +91,17 @@ struct AbsConfig {
 };
 
 /// Loads and checks an ABS configuration file; InputError naming the file, field, value and range.
-AbsConfig LoadAbsConfig(const std::filesystem::path& path);
+/// `overrides` (`--set KEY=VALUE`, ParseAbsOverrides) replace numbers of the file itself (e.g.
+/// `controller.reapply_fraction`), checked as the file's own; not of the tyre and brake files it
+/// names.
+AbsConfig LoadAbsConfig(const std::filesystem::path& path,
+                        const std::vector<YamlOverride>& overrides = {});
+
+/// Each of `texts` ("KEY=VALUE") as an override of an ABS file's number (ParseYamlOverride).
+std::vector<YamlOverride> ParseAbsOverrides(const std::vector<std::string>& texts);
+
+/// The summaries' record of the overrides: {key: value}, {} when there are none.
+nlohmann::json AbsOverridesJson(const std::vector<YamlOverride>& overrides);
 
 /// The shipped default, the FE/ABS paper's case: DataDir()/abs/paper.yaml.
 std::filesystem::path DefaultAbsConfigPath();

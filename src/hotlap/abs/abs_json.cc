@@ -44,6 +44,7 @@ nlohmann::json AbsRunJson(const AbsConfig& config, const AbsEvent& event, const 
   nlohmann::json j = AbsMetricsJson(m);
   j["command"] = "abs";
   j["config"] = config.path.string();
+  j["overrides"] = AbsOverridesJson(config.overrides);
   j["surface"] = event.surface;
   j["abs"] = event.control == AbsControl::kAbs;
   j["vehicle"] = event.vehicle == AbsVehicleMode::kFree ? "free" : "drum";

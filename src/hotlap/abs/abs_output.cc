@@ -92,4 +92,24 @@ std::vector<std::pair<std::string, std::string>> AbsSummaryRows(const AbsMetrics
   };
 }
 
+std::vector<std::string> AbsScenarioLines(const std::vector<AbsComparisonRun>& comparison,
+                                          const AbsStopSeries& series) {
+  std::vector<std::string> lines = {
+      "scenarios (to standstill):   surface   ABS m   locked m   ratio"};
+  for (size_t i = 0; i + 1 < comparison.size(); i += 2) {
+    const AbsMetrics& abs = comparison[i].metrics;
+    const AbsMetrics& locked = comparison[i + 1].metrics;
+    lines.push_back(fmt::format(
+        "{:>38} {:>7} {:>10} {:>7}", comparison[i].surface,
+        Figure(abs.stopping_distance_m, "{:.2f}"), Figure(locked.stopping_distance_m, "{:.2f}"),
+        abs.stopping_distance_m && locked.stopping_distance_m
+            ? fmt::format("{:.3f}", *abs.stopping_distance_m / *locked.stopping_distance_m)
+            : std::string("-")));
+  }
+  lines.push_back(fmt::format("stop series: peak disc temperature {:.1f} degC after {} stops",
+                              KelvinToCelsius(series.stops.back().peak_disc_temp_K),
+                              series.stops.size()));
+  return lines;
+}
+
 }  // namespace hotlap::sim

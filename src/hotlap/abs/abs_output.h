@@ -12,6 +12,7 @@
 #include "hotlap/abs/abs_config.h"
 #include "hotlap/abs/abs_metrics.h"
 #include "hotlap/abs/abs_run.h"
+#include "hotlap/abs/abs_scenarios.h"
 
 namespace hotlap::sim {
 
@@ -24,5 +25,11 @@ void WriteAbsCsv(const std::filesystem::path& path, const AbsConfig& config, con
 /// energies; `with_abs` false says "no ABS" for the cycles.
 std::vector<std::pair<std::string, std::string>> AbsSummaryRows(const AbsMetrics& metrics,
                                                                 bool with_abs);
+
+/// The scenarios' lines as `hotlap abs --scenarios` prints them: each surface's stopping
+/// distances with ABS and locked and their ratio (`comparison` in RunAbsComparison's pairs),
+/// then the stop series' peak disc temperature.
+std::vector<std::string> AbsScenarioLines(const std::vector<AbsComparisonRun>& comparison,
+                                          const AbsStopSeries& series);
 
 }  // namespace hotlap::sim

@@ -180,6 +180,13 @@ void WriteAbsReport(const AbsReportInputs& in, const std::filesystem::path& path
   report::HtmlReport page(fmt::format("hotlap abs: {} on '{}'{}", config.name, event.surface,
                                       with_abs ? "" : " without ABS"));
   page.AddMetadata("configuration", config.path.string());
+  if (!config.overrides.empty()) {
+    std::string set;
+    for (const YamlOverride& o : config.overrides) {
+      set += fmt::format("{}{}={}", set.empty() ? "" : ", ", o.field, o.value);
+    }
+    page.AddMetadata("overrides", set);
+  }
   page.AddMetadata("tyre",
                    fmt::format("{} ({})", config.plant.tyre.name, config.plant.tyre.path.string()));
   page.AddMetadata("brake", fmt::format("{} ({})", config.brake.name, config.brake.path.string()));

@@ -7,7 +7,8 @@
 
 namespace hotlap::sim {
 
-fe::CheckpointKey MakeFeCheckpointKey(const fe::TyreRun& run) {
+fe::CheckpointKey MakeFeCheckpointKey(const fe::TyreRun& run,
+                                      const std::vector<YamlOverride>& abs_overrides) {
   const auto bytes = [](const std::filesystem::path& p) { return ReadWholeFile(p); };
   fe::CheckpointKey key;
   key.mesh_hash = fe::HashMesh(run.tyre().mesh);
@@ -15,6 +16,9 @@ fe::CheckpointKey MakeFeCheckpointKey(const fe::TyreRun& run) {
   key.elements = run.tyre().mesh.elements.size();
   key.config_hash =
       fe::Fnv1a64(bytes(run.config().abs_config), fe::Fnv1a64(bytes(run.config().file)));
+  for (const YamlOverride& o : abs_overrides) {
+    key.config_hash = fe::Fnv1a64(fmt::format("{}={:.17g}", o.field, o.value), key.config_hash);
+  }
   return key;
 }
 

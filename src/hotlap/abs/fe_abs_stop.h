@@ -33,15 +33,17 @@
 #include "hotlap/abs/abs_config.h"
 #include "hotlap/abs/abs_metrics.h"
 #include "hotlap/abs/fe_abs_torque.h"
+#include "hotlap/common/yaml_reader.h"
 #include "hotlap/fe/checkpoint.h"
 #include "hotlap/fe/tyre_steps.h"
 
 namespace hotlap::sim {
 
-/// What a checkpoint is for: the mesh and the bytes of both configuration files (the FE file and
-/// the ABS file it names). The braking duration is not part of it: a restart may run longer.
-/// Throws InputError if a file cannot be read.
-fe::CheckpointKey MakeFeCheckpointKey(const fe::TyreRun& run);
+/// What a checkpoint is for: the mesh, the bytes of both configuration files (the FE file and
+/// the ABS file it names) and the ABS file's `overrides` (LoadAbsConfig's). The braking duration
+/// is not part of it: a restart may run longer. Throws InputError if a file cannot be read.
+fe::CheckpointKey MakeFeCheckpointKey(const fe::TyreRun& run,
+                                      const std::vector<YamlOverride>& abs_overrides = {});
 
 /// How to run the stop.
 struct FeAbsStopOptions {

@@ -32,6 +32,20 @@ std::string Range::Describe() const {
                      max_inclusive ? "]" : ")", u);
 }
 
+YamlOverride ParseYamlOverride(std::string_view text, std::string_view example) {
+  const size_t eq = text.find('=');
+  if (eq == std::string_view::npos || eq == 0) {
+    throw InputError(fmt::format("override '{}': expected KEY=VALUE, e.g. {} (docs/overrides.md)",
+                                 text, example));
+  }
+  const std::string_view value = text.substr(eq + 1);
+  const std::optional<double> number = ParseYamlNumber(value);
+  if (!number) {
+    throw InputError(fmt::format("override '{}': '{}' is not a finite number", text, value));
+  }
+  return {std::string(text.substr(0, eq)), *number, fmt::format("override '{}'", text)};
+}
+
 std::optional<double> ParseYamlNumber(std::string_view text) {
   double value = 0.0;
   const char* begin = text.data();

@@ -122,6 +122,12 @@ struct YamlScalarField {
 /// finite only), or nullopt.
 std::optional<double> ParseYamlNumber(std::string_view text);
 
+/// "KEY=VALUE" as a command line's `--set` gives it: the override of the number at the dotted
+/// path KEY by VALUE (read as ParseYamlNumber reads it), labelled "override 'KEY=VALUE'".
+/// InputError without '=', with an empty key, or with a value that is not a finite number; the
+/// message shows `example` (e.g. "chassis.mass_kg=1600").
+YamlOverride ParseYamlOverride(std::string_view text, std::string_view example);
+
 /// Checks what every reader of a YAML file takes for granted: every key of every mapping in
 /// `root` is a name (a scalar; not a mapping, a list or empty, as YAML's `? [a, b]: 1` allows),
 /// nesting is at most 64 deep (so an alias that holds itself, `&a [*a]`, is refused) and there are

@@ -117,7 +117,10 @@ void FeRunner::Prepare() {
     if (last_ == 3) config_.abs_duration_s = o_.duration_s;
   }
   config_.solver.time_step_scale = o_.step_scale;
-  if (last_ == 3) abs_config_ = sim::LoadAbsConfig(config_.abs_config);
+  if (!o_.abs_set.empty() && last_ != 3) throw InputError("--abs-set: only `hotlap fe abs`");
+  if (last_ == 3) {
+    abs_config_ = sim::LoadAbsConfig(config_.abs_config, sim::ParseAbsOverrides(o_.abs_set));
+  }
   run_.emplace(config_);
   // An ensemble's steps before the braking run on one thread, so that its members (copies of
   // the rolled run) are the same bits whatever --threads (the members at once) is.
@@ -355,7 +358,7 @@ FeRunResult FeRunner::Run() {
   Describe();
   fe::CheckpointKey key;
   if (stop_ && (o_.checkpoint_every_s > 0.0 || !o_.restart.empty())) {
-    key = sim::MakeFeCheckpointKey(*run_);
+    key = sim::MakeFeCheckpointKey(*run_, abs_config_->overrides);
   }
   const bool restarted = !o_.restart.empty();
   if (restarted) j_ = Restart(key);
@@ -364,6 +367,7 @@ FeRunResult FeRunner::Run() {
   const Clock::time_point wall0 = Clock::now();
   const fe::StepHooks hooks = Hooks();
   j_["config"] = config_.file.string();
+  if (abs_config_) j_["abs_overrides"] = sim::AbsOverridesJson(abs_config_->overrides);
   j_["step"] = o_.step;
   j_["mesh"] = fe::FeMeshJson(*run_);
   if (!restarted) RunEarlierSteps(hooks);

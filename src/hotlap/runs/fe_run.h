@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -34,6 +35,10 @@ struct FeRunOptions {
   double step_scale = 1.0;          ///< the time step as a fraction of the stable one's, (0, 1]
   int ensemble = 0;                 ///< abs: members of an ensemble (0: one plain stop)
   sim::FePerturbation perturbation = sim::FePerturbation::kSpin;  ///< of the ensemble's members
+  /// abs: numbers of the FE file's ABS file (`abs.config_file`) replaced, "KEY=VALUE" each
+  /// (sim::ParseAbsOverrides; e.g. "controller.reapply_fraction=0.85"): the FE stop's controller
+  /// and the lumped run of the same ABS file take them, the lumped own tuning does not.
+  std::vector<std::string> abs_set;
   /// Lines for the user as the run goes: `note` progress and warnings (the command's stderr),
   /// `say` each step's summary (its stdout). Either may be empty.
   std::function<void(const std::string&)> note, say;

@@ -185,17 +185,8 @@ std::vector<std::string> NumberKeysUnder(const std::vector<Target>& targets,
 }  // namespace
 
 CarOverride ParseCarOverride(std::string_view text) {
-  const size_t eq = text.find('=');
-  if (eq == std::string_view::npos || eq == 0) {
-    throw InputError(fmt::format(
-        "override '{}': expected KEY=VALUE, e.g. chassis.mass_kg=1600 (docs/overrides.md)", text));
-  }
-  const std::string_view value = text.substr(eq + 1);
-  const std::optional<double> number = ParseYamlNumber(value);
-  if (!number) {
-    throw InputError(fmt::format("override '{}': '{}' is not a finite number", text, value));
-  }
-  return {std::string(text.substr(0, eq)), *number};
+  YamlOverride o = ParseYamlOverride(text, "chassis.mass_kg=1600");
+  return {std::move(o.field), o.value};
 }
 
 std::vector<CarOverride> ParseCarOverrides(const std::vector<std::string>& texts) {
