@@ -13,8 +13,9 @@
 # to a temporary folder first and copied back however the script ends (trap), so the tree is left
 # as it was (git diff before and after: the same); the copy back gives the file a new time, so the
 # next build compiles it again. Costs (2 cores): yaml_self_alias and sweep_rerun well under a
-# minute each once built; stint_* about 1 minute; fe_checkpoint a few; the disc-limit ones several
-# minutes each (optimal-control solves; disc_delta_command runs the README's main job).
+# minute each once built; stint_* about 1 minute; fe_checkpoint and fe_ensemble_step a few; the
+# disc-limit ones several minutes each (optimal-control solves; disc_delta_command runs the
+# README's main job).
 # Exit status: 0 if every mutation run made its test fail by its check, 1 otherwise.
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -27,6 +28,7 @@ mutations=(
   "sweep_rerun|python/tests/test_sweep.py|s/os\.kill\(pid, signal\.SIGKILL\)/os.kill(pid, 0)  # MUTATION: no kill/|hotlap_python hotlap|pytest test_sweep.py::test_a_worker_killed_during_a_case_leaves_every_case_done|was not run again"
   "stint_last_iterate|src/hotlap/ocp/stint_checkpoint.cc|s/(void StintCheckpoints::WriteStintIterate\(const SolveResult& iterate\) const \{\n)/\$1  if (std::filesystem::exists(dir_ \/ \"stint_iterate.bin\")) return;  \/\/ MUTATION: the first kept\n/|hotlap_tests|gtest StintCommandTest.KilledStintResumesFromItsCheckpoints|more than one interval behind"
   "fe_checkpoint|src/hotlap/fe/checkpoint.cc|s/(\nvoid WriteCheckpointFile\([^)]*\) \{\n)/\$1  if (std::filesystem::exists(path)) return;  \/\/ MUTATION: the first kept\n/|hotlap_tests|gtest FeCommandTest.KilledRunRestartsFromItsLastCheckpointLosingAtMostOneInterval|more than one interval behind the run"
+  "fe_ensemble_step|src/hotlap/abs/fe_abs_torque.cc|s/  spin_sum_ \+= dt \* spin;/  spin_sum_ += dt * spin * (1.0 + 1e-2 * (6e-6 \/ dt));  \/\/ MUTATION: a step-dependent sensor gain/|hotlap_tests|gtest FeAbsEnsembleTest.FiguresAgreeAtTheFullAndHalfStepWithinTheirMargins|moved with the step"
   "disc_lap_time|src/hotlap/ocp/disc_limit_comparison.cc|s/limited_options\.front_disc_limit = front_disc_limit;/limited_options.front_disc_limit = front_disc_limit + 150.0;  \/\/ MUTATION/|hotlap_tests|gtest DiscLimitComparisonTest.LimitHoldsBindsAndCostsTime|and from_guess.run.solution.lap_time"
   "disc_delta|src/hotlap/ocp/disc_limit_comparison.cc|s/limited_options\.front_disc_limit = front_disc_limit;/limited_options.front_disc_limit = front_disc_limit + 1000.0;  \/\/ MUTATION/|hotlap_tests|gtest DiscLimitComparisonTest.LimitHoldsBindsAndCostsTime|the limit costs no time"
   "disc_delta_command|src/hotlap/ocp/disc_limit_comparison.cc|s/limited_options\.front_disc_limit = front_disc_limit;/limited_options.front_disc_limit = front_disc_limit + 1000.0;  \/\/ MUTATION/|hotlap_tests|gtest OptimalLapCommandTest.DarlingtonDiscLimitComparisonMeetsTheAcceptance|the limit costs no time"

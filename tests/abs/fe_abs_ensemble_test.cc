@@ -68,7 +68,7 @@ TEST(FeAbsEnsembleTest, FiguresAgreeAtTheFullAndHalfStepWithinTheirMargins) {
     EXPECT_EQ(a.n, 4) << m.key;
     EXPECT_EQ(b.n, 4) << m.key;
     const double bound = EquivalenceBound(a, b, m.se_floor);
-    EXPECT_LT(bound, m.margin) << m.key << ": full " << a.mean << " +- " << a.standard_error
+    EXPECT_LT(bound, m.margin) << m.key << " moved with the step: full " << a.mean << " +- " << a.standard_error
                                << ", half " << b.mean << " +- " << b.standard_error;
     std::printf("%s: full %.5g +- %.2g, half %.5g +- %.2g, bound %.3g of %.3g\n", m.key, a.mean,
                 a.standard_error, b.mean, b.standard_error, bound, m.margin);
