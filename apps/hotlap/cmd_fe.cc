@@ -33,6 +33,7 @@ struct FeArgs {
   double step_scale = 1.0;           // the time step is this times the stable one's (0, 1]
   int ensemble = 0;                  // abs: members of an ensemble (0: one stop)
   std::string perturb = "spin";      // the ensemble's perturbation
+  int first_member = 0;              // the ensemble's first member (a shard)
   std::vector<std::string> abs_set;  // abs: KEY=VALUE overrides of the ABS file's numbers
 };
 
@@ -59,6 +60,7 @@ int RunFeCommand(const FeArgs& a) {
   o.ensemble = a.ensemble;
   o.perturbation = sim::ParseFePerturbation(a.perturb, "--perturb");
   o.abs_set = a.abs_set;
+  o.first_member = a.first_member;
   o.note = [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); };
   o.say = [](const std::string& line) {
     std::printf("%s\n", line.c_str());
@@ -110,6 +112,10 @@ CommandRunner RegisterFeCommand(CLI::App& app) {
                   "abs --ensemble: spin (the initial spin by up to 1e-9 relative) | sum-order (the "
                   "rim's sums over its nodes) | round-off (every node's velocity by one rounding)")
       ->check(CLI::IsMember({"spin", "sum-order", "round-off"}));
+  sub->add_option("--first-member", args->first_member,
+                  "abs --ensemble: start at member K of the sequence (a shard of a larger "
+                  "ensemble; sum-order or round-off)")
+      ->check(CLI::NonNegativeNumber);
   sub->add_option("--abs-set", args->abs_set,
                   "abs: override a number of the ABS file the FE file names, KEY=VALUE in the "
                   "key's own unit, repeatable (e.g. controller.reapply_fraction=0.85)");

@@ -19,7 +19,8 @@ namespace {
 
 py::object Fe(const std::string& step, const std::string& config, const std::string& out,
               double duration_s, int threads, const std::string& kernel, double step_scale,
-              int ensemble, const std::string& perturb, const std::vector<std::string>& abs_set) {
+              int ensemble, const std::string& perturb, int first_member,
+              const std::vector<std::string>& abs_set) {
   runs::FeRunOptions o;
   o.step = step;
   o.config = config;
@@ -30,6 +31,7 @@ py::object Fe(const std::string& step, const std::string& config, const std::str
   o.step_scale = step_scale;
   o.ensemble = ensemble;
   o.perturbation = sim::ParseFePerturbation(perturb, "perturb");
+  o.first_member = first_member;
   o.abs_set = abs_set;
   runs::FeRunResult r;
   {
@@ -45,10 +47,11 @@ void BindFe(py::module_& m) {
   m.def("fe", &Fe, py::arg("step"), py::arg("config"), py::arg("out"), py::kw_only(),
         py::arg("duration_s") = 0.0, py::arg("threads") = 0, py::arg("kernel") = "auto",
         py::arg("step_scale") = 1.0, py::arg("ensemble") = 0, py::arg("perturb") = "spin",
-        py::arg("abs_set") = std::vector<std::string>{},
+        py::arg("first_member") = 0, py::arg("abs_set") = std::vector<std::string>{},
         "The finite-element tyre's steps up to `step` (inflate, footprint, roll, abs), their "
         "files written to `out`; with `ensemble` N > 0 the abs step as N perturbed stops "
-        "(`perturb`: spin, sum-order, round-off); `abs_set`: \"KEY=VALUE\" overrides of the "
+        "(`perturb`: spin, sum-order, round-off), from member `first_member` of the sequence "
+        "(a shard); `abs_set`: \"KEY=VALUE\" overrides of the "
         "ABS file's numbers (e.g. \"controller.reapply_fraction=0.85\"). Returns the summary "
         "`hotlap fe --json` "
         "writes (docs/fe-tyre.md).");

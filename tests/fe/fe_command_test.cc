@@ -165,11 +165,31 @@ TEST_F(FeCommandTest, EnsembleWritesEachFiguresStatisticAndRefusesCheckpoints) {
   const auto status = hotlap::test::RenderInChromium(out / "abs_report.html", dir_ / "chromium");
   EXPECT_TRUE(hotlap::test::RenderedCleanly(status, 3));
 
+  // A shard (--first-member): its member is the same bits as that member of the whole ensemble.
+  const fs::path shard_json = dir_ / "shard.json";
+  ASSERT_EQ(Run("abs --config " + cfg.string() + " --out " + (dir_ / "shard").string() +
+                " --json " + shard_json.string() +
+                " --duration-s 0.02 --ensemble 1 --first-member 2 --perturb sum-order "
+                "--abs-set controller.reapply_fraction=0.9"),
+            0)
+      << err_;
+  const nlohmann::json shard = nlohmann::json::parse(ReadTextFile(shard_json))["abs_ensemble"];
+  EXPECT_EQ(shard["first_member"].get<int>(), 2);
+  ASSERT_EQ(shard["member_figures"].size(), 1u);
+  EXPECT_EQ(shard["member_figures"][0], e["member_figures"][2]);
+  EXPECT_EQ(e["member_figures"][2]["member"].get<int>(), 2);
+
   const fs::path refused = dir_ / "refused";
   EXPECT_EQ(Run("abs --config " + cfg.string() + " --out " + refused.string() +
                 " --ensemble 2 --checkpoint-every-s 0.01"),
             2);
   EXPECT_TRUE(Contains(err_, "--ensemble")) << err_;
+  EXPECT_FALSE(fs::exists(refused));
+  // A spin member depends on the ensemble's size: no shards of it.
+  EXPECT_EQ(Run("abs --config " + cfg.string() + " --out " + refused.string() +
+                " --ensemble 2 --first-member 2 --perturb spin"),
+            2);
+  EXPECT_TRUE(Contains(err_, "--first-member")) << err_;
   EXPECT_FALSE(fs::exists(refused));
 }
 

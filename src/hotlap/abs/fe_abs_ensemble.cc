@@ -25,7 +25,7 @@ MemberRun RunMember(const fe::TyreRun& rolled, const AbsConfig& abs, const FeAbs
                     int member) {
   fe::TyreRun run = rolled;
   run.mutable_solver().set_threads(1);
-  ApplyFePerturbation(o.perturbation, member, o.members, run);
+  ApplyFePerturbation(o.perturbation, o.first_member + member, o.members, run);
   FeAbsStop stop(run, abs);
   FeAbsStopOptions so;
   so.duration_s = o.duration_s;
@@ -68,6 +68,12 @@ FeAbsEnsembleResult RunFeAbsEnsemble(const fe::TyreRun& rolled, const AbsConfig&
                                      const FeAbsEnsembleOptions& options) {
   if (options.members < 1) throw InputError("--ensemble: at least one member");
   if (options.threads < 1) throw InputError("--threads: at least one");
+  if (options.first_member < 0) throw InputError("--first-member: at least 0");
+  if (options.first_member > 0 && options.perturbation == FePerturbation::kSpin) {
+    throw InputError(
+        "--first-member: a shard of an ensemble needs --perturb sum-order or round-off (a spin "
+        "member's perturbation depends on the ensemble's size)");
+  }
   std::vector<MemberRun> runs(options.members);
   std::atomic<int> next{0};
   std::mutex done_mutex;
@@ -77,7 +83,7 @@ FeAbsEnsembleResult RunFeAbsEnsemble(const fe::TyreRun& rolled, const AbsConfig&
       try {
         runs[m] = RunMember(rolled, abs, options, m);
         const std::lock_guard<std::mutex> lock(done_mutex);
-        if (options.member_done) options.member_done(m, runs[m].figures);
+        if (options.member_done) options.member_done(options.first_member + m, runs[m].figures);
       } catch (...) {
         const std::lock_guard<std::mutex> lock(done_mutex);
         if (!failure) failure = std::current_exception();
@@ -94,6 +100,7 @@ FeAbsEnsembleResult RunFeAbsEnsemble(const fe::TyreRun& rolled, const AbsConfig&
 
   FeAbsEnsembleResult e;
   e.perturbation = options.perturbation;
+  e.first_member = options.first_member;
   for (const MemberRun& r : runs) e.members.push_back(r.figures);
   for (const FeAbsFigureValue& f : ListFeAbsFigures(e.members.front())) {
     e.keys.push_back(f.key);

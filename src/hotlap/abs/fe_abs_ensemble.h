@@ -29,10 +29,16 @@ namespace hotlap::sim {
 struct FeAbsEnsembleOptions {
   int members = 16;
   FePerturbation perturbation = FePerturbation::kSpin;
+  /// The members run are first_member .. first_member + members - 1 of the perturbation's
+  /// sequence: a shard of a larger ensemble, whose members are the same bits as the larger
+  /// ensemble's (its statistics are then those of the shards' members together). kSumOrder and
+  /// kRoundOff only: a kSpin member's perturbation depends on the ensemble's size.
+  int first_member = 0;
   int threads = 1;          ///< members run at once (each on one solver thread)
   double duration_s = 0.0;  ///< braking time of each member, s
   double history_interval_s = 1e-4;
-  /// Called (from the thread that ran it, one call at a time) as each member ends; may be empty.
+  /// Called (from the thread that ran it, one call at a time) as each member ends, with its index
+  /// in the sequence (from first_member); may be empty.
   std::function<void(int member, const FeAbsFigures& figures)> member_done;
 };
 
@@ -45,6 +51,7 @@ struct EnsembleBand {
 /// What the ensemble gave.
 struct FeAbsEnsembleResult {
   FePerturbation perturbation = FePerturbation::kSpin;
+  int first_member = 0;                  ///< the first member's index in the sequence
   std::vector<FeAbsFigures> members;     ///< each member's figures, in member order
   std::vector<std::string> keys, units;  ///< ListFeAbsFigures' names and units
   std::vector<EnsembleStat> stats;       ///< per key, over the members that have the figure

@@ -60,7 +60,7 @@ void WriteFeAbsEnsembleCsv(const std::filesystem::path& path, const FeAbsEnsembl
   for (const std::string& k : e.keys) columns.push_back(k);
   std::vector<std::vector<double>> v(columns.size());
   for (size_t m = 0; m < e.members.size(); ++m) {
-    v[0].push_back(static_cast<double>(m));
+    v[0].push_back(static_cast<double>(e.first_member + m));
     v[1].push_back(e.members[m].cycles);
     const std::vector<FeAbsFigureValue> f = ListFeAbsFigures(e.members[m]);
     for (size_t k = 0; k < f.size(); ++k) {

@@ -53,12 +53,15 @@ nlohmann::json FeAbsEnsembleJson(const FeAbsEnsembleResult& e, double duration_s
                           {"unit", e.units[k]}};
   }
   nlohmann::json members = nlohmann::json::array();
-  for (const FeAbsFigures& f : e.members) {
-    nlohmann::json m = {{"control_cycles", f.cycles}};
+  for (size_t k = 0; k < e.members.size(); ++k) {
+    const FeAbsFigures& f = e.members[k];
+    nlohmann::json m = {{"member", e.first_member + static_cast<int>(k)},
+                        {"control_cycles", f.cycles}};
     for (const FeAbsFigureValue& v : ListFeAbsFigures(f)) m[v.key] = JsonOrNull(v.value, 6);
     members.push_back(m);
   }
   return {{"members", static_cast<int>(e.members.size())},
+          {"first_member", e.first_member},
           {"perturbation", FePerturbationName(e.perturbation)},
           {"duration_s", RoundSignificant(duration_s, 6)},
           {"figures", figures},

@@ -112,6 +112,14 @@ void FeRunner::Prepare() {
   if (o_.ensemble > 0 && (!o_.restart.empty() || o_.checkpoint_every_s > 0.0)) {
     throw InputError("--ensemble: an ensemble neither writes checkpoints nor restarts");
   }
+  if (o_.first_member != 0 && o_.ensemble == 0) {
+    throw InputError("--first-member: only with --ensemble");
+  }
+  if (o_.first_member != 0 && o_.perturbation == sim::FePerturbation::kSpin) {
+    throw InputError(
+        "--first-member: a shard of an ensemble needs --perturb sum-order or round-off (a spin "
+        "member's perturbation depends on the ensemble's size)");
+  }
   if (o_.duration_s > 0.0) {
     if (last_ == 2) config_.roll_duration_s = o_.duration_s;
     if (last_ == 3) config_.abs_duration_s = o_.duration_s;
@@ -304,6 +312,7 @@ void FeRunner::RunAbsEnsemble() {
   sim::FeAbsEnsembleOptions eo;
   eo.members = o_.ensemble;
   eo.perturbation = o_.perturbation;
+  eo.first_member = o_.first_member;
   eo.threads = o_.threads > 0 ? o_.threads : fe::DefaultThreadCount();
   eo.duration_s = config_.abs_duration_s;
   eo.history_interval_s = config_.history_interval_s;
@@ -314,8 +323,11 @@ void FeRunner::RunAbsEnsemble() {
     for (const sim::FeAbsFigureValue& v : sim::ListFeAbsFigures(f)) {
       figures += fmt::format(" {}={}", v.key, v.value ? fmt::format("{:.5g}", *v.value) : "-");
     }
+    const std::string of = eo.first_member == 0 ? fmt::format("{}", eo.members)
+                                                : fmt::format("{}-{}", eo.first_member + 1,
+                                                              eo.first_member + eo.members);
     Note(fmt::format("fe abs ensemble: member {} of {} done after {:.0f} s: cycles={}{}",
-                     member + 1, eo.members, Seconds(wall0), f.cycles, figures));
+                     member + 1, of, Seconds(wall0), f.cycles, figures));
   };
   const sim::FeAbsEnsembleResult e = sim::RunFeAbsEnsemble(*run_, *abs_config_, eo);
   RunLumped(e.vx_mps.mean.empty() ? config_.roll_speed_mps : e.vx_mps.mean.front());
@@ -327,8 +339,8 @@ void FeRunner::RunAbsEnsemble() {
       {{"configuration", config_.file.string()},
        {"mesh", fmt::format("{} elements, {} nodes", run_->tyre().mesh.elements.size(),
                             run_->tyre().mesh.nodes.size())},
-       {"ensemble", fmt::format("{} members, perturbation {}", eo.members,
-                                sim::FePerturbationName(eo.perturbation))}});
+       {"ensemble", fmt::format("{} members (from member {}), perturbation {}", eo.members,
+                                eo.first_member, sim::FePerturbationName(eo.perturbation))}});
   j_["abs_ensemble"] = sim::FeAbsEnsembleJson(e, config_.abs_duration_s);
   AddLumpedJson(j_["abs_ensemble"]);
   for (const std::string& line : sim::FeAbsEnsembleText(e)) Say(line);

@@ -35,6 +35,9 @@ struct FeRunOptions {
   double step_scale = 1.0;          ///< the time step as a fraction of the stable one's, (0, 1]
   int ensemble = 0;                 ///< abs: members of an ensemble (0: one plain stop)
   sim::FePerturbation perturbation = sim::FePerturbation::kSpin;  ///< of the ensemble's members
+  /// abs --ensemble: the first member's index in the perturbation's sequence (a shard of a larger
+  /// ensemble, sim::FeAbsEnsembleOptions::first_member; sum-order and round-off only).
+  int first_member = 0;
   /// abs: numbers of the FE file's ABS file (`abs.config_file`) replaced, "KEY=VALUE" each
   /// (sim::ParseAbsOverrides; e.g. "controller.reapply_fraction=0.85"): the FE stop's controller
   /// and the lumped run of the same ABS file take them, the lumped own tuning does not.
