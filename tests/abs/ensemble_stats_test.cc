@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -24,6 +25,10 @@ TEST(EnsembleStatsTest, MeanStandardErrorAndSpreadOfKnownSamples) {
   EXPECT_EQ(one.n, 1);
   EXPECT_EQ(one.sd, 0.0);
   EXPECT_EQ(CalcEnsembleStat({}).n, 0);
+  // Equal members (every one 6.3498 cycles a second): no spread at all, not the mean's rounding.
+  const EnsembleStat same = CalcEnsembleStat(std::vector<double>(8, 6.3498));
+  EXPECT_EQ(same.sd, 0.0);
+  EXPECT_EQ(same.standard_error, 0.0);
 }
 
 TEST(EnsembleStatsTest, EquivalenceBoundAddsTwoCombinedStandardErrorsWithTheirFloor) {

@@ -15,11 +15,12 @@ EnsembleStat CalcEnsembleStat(const std::vector<double>& values) {
   s.mean = sum / s.n;
   double ss = 0.0;
   for (double v : values) ss += (v - s.mean) * (v - s.mean);
-  s.sd = s.n > 1 ? std::sqrt(ss / (s.n - 1)) : 0.0;
-  s.standard_error = s.sd / std::sqrt(static_cast<double>(s.n));
   const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
   s.min = *lo;
   s.max = *hi;
+  // Equal values have no spread (their mean's rounding would otherwise leave one of 1e-16).
+  s.sd = s.n > 1 && s.min < s.max ? std::sqrt(ss / (s.n - 1)) : 0.0;
+  s.standard_error = s.sd / std::sqrt(static_cast<double>(s.n));
   return s;
 }
 
