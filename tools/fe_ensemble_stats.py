@@ -52,7 +52,9 @@ def stat(values):
     if n == 0:
         return {"n": 0}
     mean = sum(values) / n
-    sd = math.sqrt(sum((v - mean) ** 2 for v in values) / (n - 1)) if n > 1 else 0.0
+    # Equal values have no spread (as sim::CalcEnsembleStat: not the mean's rounding).
+    spread = n > 1 and min(values) < max(values)
+    sd = math.sqrt(sum((v - mean) ** 2 for v in values) / (n - 1)) if spread else 0.0
     return {"n": n, "mean": mean, "sd": sd, "standard_error": sd / math.sqrt(n),
             "min": min(values), "max": max(values)}
 

@@ -4,13 +4,18 @@ slip 0.135 and of the 99th percentile of slip (after the first control cycle), w
 of two standard errors, and the acceptance's equivalence margins drawn about the first ensemble's
 mean (docs/fe-tyre.md, "ABS stop").
 
-    /usr/bin/python3 tools/plot_fe_ensembles.py OUT.svg LABEL=ENSEMBLE.json [LABEL=ENSEMBLE.json ...]
+    /usr/bin/python3 tools/plot_fe_ensembles.py OUT.svg LABEL=A.json[,A2.json...] [LABEL=...]
 
-Each JSON is `hotlap fe abs --ensemble N --json` output. Writes one SVG with two panels.
+Each JSON is `hotlap fe abs --ensemble N --json` output; an ensemble run in shards
+(`--first-member`) is its shards' files, joined as tools/fe_ensemble_stats.py joins them.
+Writes one SVG with two panels.
 """
 
-import json
+import os
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from fe_ensemble_stats import join_shards, stat  # noqa: E402
 
 import matplotlib
 
@@ -30,9 +35,11 @@ def main(argv):
     out = argv[1]
     runs = []
     for arg in argv[2:]:
-        label, path = arg.rsplit("=", 1)
-        with open(path) as f:
-            runs.append((label, json.load(f)["abs_ensemble"]))
+        label, paths = arg.rsplit("=", 1)
+        members, _ = join_shards(label, paths.split(","))
+        figures = {key: stat([m[key] for m in members.values() if m.get(key) is not None])
+                   for key, *_ in PANELS}
+        runs.append((label, {"figures": figures}))
     fig, axes = plt.subplots(1, len(PANELS), figsize=(10, 3.8))
     for ax, (key, title, scale, margin) in zip(axes, PANELS):
         for i, (label, e) in enumerate(runs):

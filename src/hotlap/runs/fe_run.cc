@@ -268,7 +268,7 @@ void FeRunner::AddLumpedJson(nlohmann::json& j) const {
   j["lumped"] = sim::LumpedAbsJson(lumped_.front().metrics);
   if (lumped_.size() > 1) {
     j["lumped_own_tuning"] = sim::LumpedAbsJson(lumped_[1].metrics);
-    j["lumped_own_tuning"]["config_file"] = lumped_[1].file.string();
+    j["lumped_own_tuning"]["config_file"] = lumped_[1].file.lexically_normal().string();
   }
 }
 
