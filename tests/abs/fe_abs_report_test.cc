@@ -80,15 +80,14 @@ TEST(WriteFeAbsReport, DrawsTheLumpedRunBesideTheFeOne) {
   own.cycles.first_cycle_start_s = 0.13;
   WriteFeAbsReport(path, fe_history, cycles, 0.4, {}, {lumped, own});
   const std::string html = test::ReadTextFile(path);
-  for (const char* part :
-       {"Beside the lumped, same ABS file `hotlap abs` run",
-        "first pressure release FE 0.125 s, lumped 0.125 s",
-        "second cycle FE 0.270 s, lumped 0.190 s", "cycles FE 2, lumped 3",
-        "torque (lumped, same ABS file)", "Vx (lumped, same ABS file)",
-        "omega R_l (lumped, same ABS file)", "slip (lumped, same ABS file)",
-        "Fx (lumped, same ABS file)", "Beside the lumped, own tuning `hotlap abs` run",
-        "first pressure release FE 0.125 s, lumped 0.130 s", "cycles FE 2, lumped 5",
-        "slip (lumped, own tuning)"}) {
+  for (const char* part : {"`hotlap abs` run of the same event (lumped, same ABS file: rigid wheel",
+                           "first pressure release FE 0.125 s, lumped 0.125 s",
+                           "second cycle FE 0.270 s, lumped 0.190 s", "cycles FE 2, lumped 3",
+                           "torque (lumped, same ABS file)", "Vx (lumped, same ABS file)",
+                           "omega R_l (lumped, same ABS file)", "slip (lumped, same ABS file)",
+                           "Fx (lumped, same ABS file)", "(lumped, own tuning: rigid wheel",
+                           "first pressure release FE 0.125 s, lumped 0.130 s",
+                           "cycles FE 2, lumped 5", "slip (lumped, own tuning)"}) {
     EXPECT_TRUE(test::Contains(html, part)) << part;
   }
   WriteFeAbsReport(path, fe_history, cycles, 0.4, {});

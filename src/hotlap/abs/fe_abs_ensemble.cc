@@ -64,16 +64,20 @@ EnsembleBand MakeBand(const std::vector<MemberRun>& runs, size_t rows,
 
 }  // namespace
 
-FeAbsEnsembleResult RunFeAbsEnsemble(const fe::TyreRun& rolled, const AbsConfig& abs,
-                                     const FeAbsEnsembleOptions& options) {
-  if (options.members < 1) throw InputError("--ensemble: at least one member");
-  if (options.threads < 1) throw InputError("--threads: at least one");
-  if (options.first_member < 0) throw InputError("--first-member: at least 0");
-  if (options.first_member > 0 && options.perturbation == FePerturbation::kSpin) {
+void CheckFeEnsembleShard(FePerturbation perturbation, int first_member) {
+  if (first_member < 0) throw InputError("--first-member: at least 0");
+  if (first_member > 0 && perturbation == FePerturbation::kSpin) {
     throw InputError(
         "--first-member: a shard of an ensemble needs --perturb sum-order or round-off (a spin "
         "member's perturbation depends on the ensemble's size)");
   }
+}
+
+FeAbsEnsembleResult RunFeAbsEnsemble(const fe::TyreRun& rolled, const AbsConfig& abs,
+                                     const FeAbsEnsembleOptions& options) {
+  if (options.members < 1) throw InputError("--ensemble: at least one member");
+  if (options.threads < 1) throw InputError("--threads: at least one");
+  CheckFeEnsembleShard(options.perturbation, options.first_member);
   std::vector<MemberRun> runs(options.members);
   std::atomic<int> next{0};
   std::mutex done_mutex;

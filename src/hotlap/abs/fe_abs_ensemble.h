@@ -60,6 +60,10 @@ struct FeAbsEnsembleResult {
   double slip_radius_m = 0.0;  ///< R_l of omega R_l
 };
 
+/// Refuses (InputError, naming --first-member) a shard the perturbation cannot make: a negative
+/// first member, or one past 0 of kSpin (whose members depend on the ensemble's size).
+void CheckFeEnsembleShard(FePerturbation perturbation, int first_member);
+
 /// Runs the ensemble from `rolled` (a TyreRun after Roll; copied, not changed) with the ABS
 /// controller of `abs`. Throws InputError for fewer than 1 member or threads, NumericalError if a
 /// member's step fails (the first failure, after the running members end).

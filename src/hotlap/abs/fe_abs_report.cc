@@ -102,7 +102,7 @@ void AddLumpedText(report::HtmlReport& page, const CycleWindow& cycles,
   };
   const CycleWindow& c = lumped.cycles;
   page.AddText(fmt::format(
-      "Beside the {} `hotlap abs` run of the same event (rigid wheel, brush tyre), time from "
+      "Beside the `hotlap abs` run of the same event ({}: rigid wheel, brush tyre), time from "
       "the braking step's start: first pressure release FE {} s, lumped {} s; second cycle FE "
       "{} s, lumped {} s; cycles FE {}, lumped {}; slip below {:.3f} after the first cycle FE "
       "{}, lumped {}; at most FE {}, lumped {}.",

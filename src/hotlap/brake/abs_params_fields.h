@@ -2,7 +2,7 @@
 /// @file
 /// The field tables of an ABS file's `controller:` and `hydraulics:` sections (docs/abs.md,
 /// data/abs/paper.yaml): for each number its key (with the file's unit), the member it sets, the
-/// allowed range and the factor from the file's unit to SI. The readers (abs_params_io.h) loop
+/// allowed range and the conversion from the file's unit to SI. The readers (abs_params_io.h) loop
 /// over them, so each key is written once, as the vehicle's and the thermal models' tables
 /// (vehicle/vehicle_fields.h, tyre/tyre_thermal_fields.h) list theirs.
 

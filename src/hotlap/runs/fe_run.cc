@@ -115,11 +115,8 @@ void FeRunner::Prepare() {
   if (o_.first_member != 0 && o_.ensemble == 0) {
     throw InputError("--first-member: only with --ensemble");
   }
-  if (o_.first_member != 0 && o_.perturbation == sim::FePerturbation::kSpin) {
-    throw InputError(
-        "--first-member: a shard of an ensemble needs --perturb sum-order or round-off (a spin "
-        "member's perturbation depends on the ensemble's size)");
-  }
+  // Before the steps before the braking, not after them.
+  sim::CheckFeEnsembleShard(o_.perturbation, o_.first_member);
   if (o_.duration_s > 0.0) {
     if (last_ == 2) config_.roll_duration_s = o_.duration_s;
     if (last_ == 3) config_.abs_duration_s = o_.duration_s;
