@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "hotlap/abs/abs_config.h"
+#include "hotlap/brake/abs_params_io.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/units.h"
 #include "test_util.h"
@@ -45,25 +45,31 @@ TEST(AbsParamsFields, EveryNumberIsListedOnce) {
 
 TEST(AbsParamsFields, EachKeyReadsBackFromTheShippedFileInSi) {
   const std::filesystem::path file = test::SourcePath("data/abs/paper.yaml");
-  const sim::AbsConfig c = sim::LoadAbsConfig(file);
+  YamlReader y = YamlReader::Load(file);
+  YamlReader controller_section = y.Map("controller");
+  const AbsControllerParams controller = ReadAbsControllerParams(controller_section);
+  YamlReader hydraulics_section = y.Map("hydraulics");
+  const BrakeHydraulicsParams<double> hydraulics = ReadBrakeHydraulicsParams(hydraulics_section);
   for (const AbsControllerField& f : AbsControllerFields()) {
     const double v = FileValue(file, "controller." + std::string(f.key));
-    EXPECT_EQ(c.controller.*f.member, f.ToSi(v)) << f.key;
+    EXPECT_EQ(controller.*f.member, f.ToSi(v)) << f.key;
   }
   for (const BrakeHydraulicsField& f : BrakeHydraulicsFields()) {
     const double v = FileValue(file, "hydraulics." + std::string(f.key));
-    EXPECT_EQ(c.plant.hydraulics.*f.member, f.ToSi(v)) << f.key;
+    EXPECT_EQ(hydraulics.*f.member, f.ToSi(v)) << f.key;
   }
   // The conversions by hand: 1.6 g, 150 MPa/s, 150 N m/MPa.
-  EXPECT_DOUBLE_EQ(c.controller.decel_threshold_mps2, 1.6 * kGravity);
-  EXPECT_DOUBLE_EQ(c.controller.decrease_rate_Pa_per_s, 150e6);
-  EXPECT_DOUBLE_EQ(c.plant.hydraulics.torque_gain, 150e-6);
+  EXPECT_DOUBLE_EQ(controller.decel_threshold_mps2, 1.6 * kGravity);
+  EXPECT_DOUBLE_EQ(controller.decrease_rate_Pa_per_s, 150e6);
+  EXPECT_DOUBLE_EQ(hydraulics.torque_gain, 150e-6);
 }
 
 TEST(AbsParamsFields, ATimerShorterThanThePeriodIsRefused) {
   const std::filesystem::path file = test::SourcePath("data/abs/paper.yaml");
   try {
-    sim::LoadAbsConfig(file, {{"controller.low_grip_hold_s", 0.001, "override 'x'"}});
+    YamlReader y = YamlReader::Load(file, {{"controller.low_grip_hold_s", 0.001, "override 'x'"}});
+    YamlReader section = y.Map("controller");
+    ReadAbsControllerParams(section);
     FAIL() << "a 1 ms timer at a 5 ms period was accepted";
   } catch (const InputError& e) {
     EXPECT_TRUE(test::Contains(e.what(), "low_grip_hold_s")) << e.what();
