@@ -368,6 +368,20 @@ TEST_F(FeCommandTest, BadConfigurationNamesTheField) {
   EXPECT_EQ(Run("inflate --config " + p.string() + " --out " + (dir_ / "o").string()), 2);
   EXPECT_TRUE(Contains(err_, "abs.lumped_config_file")) << err_;
   EXPECT_TRUE(Contains(err_, "does not exist")) << err_;
+  // One that exists but is not valid is refused before any step runs, nothing written.
+  std::string lumped = ReadTextFile(hotlap::test::SourcePath("data/abs/paper.yaml"));
+  lumped = Replace(lumped, "reapply_fraction: 0.95 ", "reapply_fraction: 1.5 ");
+  lumped = Replace(
+      lumped, "tyre_file: ", "tyre_file: " + hotlap::test::SourcePath("data/abs").string() + "/");
+  lumped = Replace(
+      lumped, "brake_file: ", "brake_file: " + hotlap::test::SourcePath("data/abs").string() + "/");
+  std::ofstream(dir_ / "bad_lumped.yaml") << lumped;
+  std::ofstream(p) << Replace(y, "lumped_config_file: ../abs/none.yaml",
+                              "lumped_config_file: " + (dir_ / "bad_lumped.yaml").string());
+  EXPECT_EQ(Run("abs --config " + p.string() + " --out " + (dir_ / "o").string()), 2);
+  EXPECT_TRUE(Contains(err_, "bad_lumped.yaml")) << err_;
+  EXPECT_TRUE(Contains(err_, "controller.reapply_fraction")) << err_;
+  EXPECT_FALSE(fs::exists(dir_ / "o"));
 }
 
 // The stick spring's penalty factor: outside (0, 1), or above the stability bound

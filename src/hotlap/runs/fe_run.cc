@@ -80,6 +80,8 @@ class FeRunner {
   fe::FeConfig config_;
   int last_ = 0;  // 0 inflate, 1 footprint, 2 roll, 3 abs
   std::optional<sim::AbsConfig> abs_config_;
+  // The lumped quarter car's own tuning (`abs.lumped_config_file`), read with the input.
+  std::optional<sim::AbsConfig> lumped_own_config_;
   std::optional<fe::TyreRun> run_;
   std::optional<sim::FeAbsStop> stop_;
   nlohmann::json j_;
@@ -125,6 +127,9 @@ void FeRunner::Prepare() {
   if (!o_.abs_set.empty() && last_ != 3) throw InputError("--abs-set: only `hotlap fe abs`");
   if (last_ == 3) {
     abs_config_ = sim::LoadAbsConfig(config_.abs_config, sim::ParseAbsOverrides(o_.abs_set));
+    if (!config_.abs_lumped_config.empty()) {
+      lumped_own_config_ = sim::LoadAbsConfig(config_.abs_lumped_config);
+    }
   }
   run_.emplace(config_);
   // An ensemble's steps before the braking run on one thread, so that its members (copies of
@@ -255,9 +260,8 @@ void FeRunner::RunLumped(double initial_speed_mps) {
   };
   lumped_.clear();
   run("lumped, same ABS file", config_.abs_config, *abs_config_);
-  if (!config_.abs_lumped_config.empty()) {
-    run("lumped, own tuning", config_.abs_lumped_config,
-        sim::LoadAbsConfig(config_.abs_lumped_config));
+  if (lumped_own_config_) {
+    run("lumped, own tuning", config_.abs_lumped_config, *lumped_own_config_);
   }
 }
 
