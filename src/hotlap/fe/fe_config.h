@@ -31,6 +31,8 @@ struct FeConfig {
   std::string name;
   TyreSize size;
   TyreMeshOptions mesh;
+  /// Each rubber's bulk modulus over its initial shear modulus, 1 (sets YeohMaterial's bulk).
+  double bulk_to_shear_ratio = 0.0;
   std::vector<YeohMaterial> rubber;  ///< TyreRegion order (002 Table 1)
   std::vector<RebarMaterial> cords;  ///< TyreCord order (002 Tables 2-3)
   SolverOptions solver;
@@ -53,7 +55,8 @@ struct FeConfig {
   int vtu_frames = 0;  ///< deformed shapes written per step (>= 1: at least the last)
 };
 
-/// Reads and validates `path`. Throws InputError naming the file, field, value and range.
+/// Reads and validates `path` (its numbers and counts as fe_config_fields.h lists them). Throws
+/// InputError naming the file, field, value and range.
 FeConfig LoadFeConfig(const std::filesystem::path& path);
 
 }  // namespace hotlap::fe
