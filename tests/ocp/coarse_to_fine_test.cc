@@ -277,6 +277,23 @@ TEST(FallbackStartTest, AFailedStartIsSolvedAgainFromTheOtherAndReported) {
   const OptimalLapRun alone = RunOptimalLap(car, track, o, &warm_up);
   EXPECT_TRUE(alone.failed_starts.empty());
   EXPECT_EQ(alone.started_from, "the given start point");
+
+  // A slow start point given up early (start_point_max_iterations): the solution with every
+  // variable 5% off (more than 2 iterations from converged) stops after 2, and the default start
+  // runs with the full limit.
+  o.start_point_fallback = true;
+  o.ipopt.max_iterations = 3000;
+  o.start_point_max_iterations = 2;
+  o.start_point = solved.solution.solve.x;
+  for (double& v : o.start_point) v *= 1.05;
+  const OptimalLapRun capped = RunOptimalLap(car, track, o, &warm_up);
+  ASSERT_EQ(capped.failed_starts.size(), 1u);
+  EXPECT_EQ(capped.failed_starts[0].from, "the given start point");
+  EXPECT_EQ(capped.failed_starts[0].iterations, 2);
+  ASSERT_TRUE(capped.solution.solve.ok()) << capped.solution.solve.message;
+  EXPECT_EQ(capped.started_from, "the QSS guess");
+  EXPECT_GT(capped.solution.solve.iterations, 2);  // the full limit, not the start point's
+  EXPECT_NEAR(capped.solution.lap_time, solved.solution.lap_time, 2e-3);
 }
 
 }  // namespace

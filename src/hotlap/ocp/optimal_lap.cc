@@ -376,17 +376,23 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& any_car, const track::Track& tra
   run.qss_lap_time = w.guess.lap_time;
 
   const bool adaptive = options.tolerance_s > 0.0 && options.collocation == Collocation::kTrapezoid;
-  LapProblemOptions lap = SolveFromStart(hot_car, track, options, adaptive, w, run);
+  const bool caller_start = !options.start_point.empty();
+  // A caller's start point that may fall back gets its own iteration limit: a slow start is
+  // given up early rather than run to the full limit.
+  OptimalLapOptions current = options;
+  if (caller_start && options.start_point_fallback && options.start_point_max_iterations > 0) {
+    current.ipopt.max_iterations =
+        std::min(options.start_point_max_iterations, options.ipopt.max_iterations);
+  }
+  LapProblemOptions lap = SolveFromStart(hot_car, track, current, adaptive, w, run);
   // Robust starts: a fixed-mesh solve that fails from its start (at the iteration limit, at a
   // locally infeasible point, or lost in restoration or numerical trouble; not stopped or out of
   // time) is solved again from the next: a caller's start point (with start_point_fallback) falls
   // back to the default start, a coarse solution to the QSS guess, the guess to a coarse solve at
   // twice the spacing. Every failed attempt is reported (OptimalLapRun::failed_starts).
-  const bool caller_start = !options.start_point.empty();
   int retries = !options.fallback_start || adaptive || options.presolved || options.coarse_start ? 0
                 : caller_start ? (options.start_point_fallback ? 2 : 0)
                                : 1;
-  OptimalLapOptions current = options;
   for (; retries > 0 && StartFailed(run.solution.solve.status); --retries) {
     OptimalLapOptions other = current;
     if (!current.start_point.empty()) {
@@ -394,6 +400,7 @@ OptimalLapRun RunOptimalLap(const vehicle::Car& any_car, const track::Track& tra
       other.ipopt.warm_z_lower.clear();
       other.ipopt.warm_z_upper.clear();
       other.ipopt.warm_lambda.clear();
+      other.ipopt.max_iterations = options.ipopt.max_iterations;
     } else {
       // The fine solve started from the coarse solution only where that converged.
       const bool from_coarse = current.coarse_step_m > current.step_m && run.coarse.ok();

@@ -130,6 +130,10 @@ struct OptimalLapOptions {
   /// fail too, from the other, each failure reported. Off: the start point is the caller's alone
   /// (a stint's laps, a mesh check).
   bool start_point_fallback = false;
+  /// With start_point_fallback: the solve from start_point stops after this many iterations (a
+  /// slow start counts as failed, as SolveOptimalRuns' start_max_iterations) and the default
+  /// start, with ipopt.max_iterations, is tried; 0: ipopt.max_iterations for both.
+  int start_point_max_iterations = 0;
   /// Coarse to fine: called with the coarse solve (converged or not) before the fine solve starts.
   std::function<void(const LapSolution& coarse)> on_coarse_solve;
   /// The transcription of the step_m solve and of the coarse one (step_m and coarse_step_m are

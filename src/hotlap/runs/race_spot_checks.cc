@@ -76,6 +76,9 @@ RaceSpotChecks RunRaceSpotChecks(const vehicle::Car& car, const track::Track& tr
   // last one's solution: the laps differ only in the state they start from.
   o.wear_in_programme = true;
   o.start_point_fallback = true;
+  // A neighbouring age's lap is a close start: one that is not done in 150 iterations (the lap
+  // cache's limit) is given up for the default start rather than run to 1000.
+  o.start_point_max_iterations = 150;
   ocp::LapWarmUp warm = ocp::RunLapWarmUp(car, track, o);
   for (int age : ages) {
     if (progress) progress(fmt::format("the optimal lap at age {} (a {:g} m mesh)", age, step_m));
