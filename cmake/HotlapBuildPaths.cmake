@@ -12,7 +12,15 @@ file(CONFIGURE OUTPUT ${HOTLAP_SOURCE_DIR_SOURCE} CONTENT
 const char hotlap_build::kSourceDir[] = R\"hotlap(${PROJECT_SOURCE_DIR})hotlap\";
 ")
 function(hotlap_force_include_build_paths target)
-  target_compile_options(${target} PRIVATE -include ${HOTLAP_BUILD_PATHS_HEADER})
+  get_target_property(pch ${target} PRECOMPILE_HEADERS)
+  if(pch)
+    # Into the target's precompiled header (an -include before it would keep GCC from using it),
+    # by its name on an include path: the header list then holds no checkout's path.
+    target_include_directories(${target} PRIVATE ${PROJECT_SOURCE_DIR}/cmake)
+    target_precompile_headers(${target} PRIVATE <hotlap_build_paths.h>)
+  else()
+    target_compile_options(${target} PRIVATE -include ${HOTLAP_BUILD_PATHS_HEADER})
+  endif()
 endfunction()
 # After the hotlap and make_example_log targets exist (their file names are generator expressions).
 function(hotlap_generate_test_paths)

@@ -135,12 +135,14 @@ fi
 
 # Build: Clang with HOTLAP_FUZZ=ON (libFuzzer coverage, ASan, UBSan), -O1 with line tables for the
 # sanitizers' stack traces and assertions left on (an assertion that fires is a finding too).
-# The same build holds scripts/sanitize.sh --fast's unit tests of the reader areas.
+# The same build holds scripts/sanitize.sh --fast's unit tests of the reader areas. Without the
+# precompiled header (HOTLAP_PCH, cmake/HotlapPrecompiledHeaders.cmake): this build also checks
+# that every source of those areas includes what it uses.
 configure() {
   cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only" -DCMAKE_CXX_COMPILER=clang++ \
     -DHOTLAP_FUZZ=ON -DHOTLAP_BUILD_TESTS=ON "-DHOTLAP_TEST_AREAS=common;logs;tyre;brake;track;vehicle" \
-    -DHOTLAP_BUILD_BENCH=OFF -DHOTLAP_BUILD_PYTHON=OFF >/dev/null
+    -DHOTLAP_BUILD_BENCH=OFF -DHOTLAP_BUILD_PYTHON=OFF -DHOTLAP_PCH=OFF >/dev/null
 }
 if [ "$which" = "--configure" ]; then
   configure

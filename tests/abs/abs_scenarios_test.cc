@@ -12,17 +12,17 @@ namespace {
 using hotlap::sim::AbsConfig;
 using hotlap::sim::AbsControl;
 
-const AbsConfig& Config() {
+const AbsConfig& ScenarioConfig() {
   static const AbsConfig c =
       hotlap::sim::LoadAbsConfig(hotlap::test::SourcePath("data/abs/paper.yaml"));
   return c;
 }
 
 TEST(AbsScenariosTest, ComparesEverySurfaceWithAndWithoutAbs) {
-  const auto runs = hotlap::sim::RunAbsComparison(Config(), Config().event);
-  ASSERT_EQ(runs.size(), 2 * Config().surfaces.size());
+  const auto runs = hotlap::sim::RunAbsComparison(ScenarioConfig(), ScenarioConfig().event);
+  ASSERT_EQ(runs.size(), 2 * ScenarioConfig().surfaces.size());
   for (size_t i = 0; i < runs.size(); i += 2) {
-    EXPECT_EQ(runs[i].surface, Config().surfaces[i / 2].name);
+    EXPECT_EQ(runs[i].surface, ScenarioConfig().surfaces[i / 2].name);
     EXPECT_EQ(runs[i].control, AbsControl::kAbs);
     EXPECT_EQ(runs[i + 1].control, AbsControl::kDriverOnly);
     ASSERT_TRUE(runs[i].metrics.stopped && runs[i + 1].metrics.stopped) << runs[i].surface;
@@ -32,13 +32,14 @@ TEST(AbsScenariosTest, ComparesEverySurfaceWithAndWithoutAbs) {
 }
 
 TEST(AbsScenariosTest, ASeriesOfStopsHeatsTheDisc) {
-  const auto series = hotlap::sim::RunAbsStopSeries(Config(), Config().event);
-  ASSERT_EQ(series.stops.size(), static_cast<size_t>(Config().scenarios.stop_series_count));
+  const auto series = hotlap::sim::RunAbsStopSeries(ScenarioConfig(), ScenarioConfig().event);
+  ASSERT_EQ(series.stops.size(), static_cast<size_t>(ScenarioConfig().scenarios.stop_series_count));
   // Each stop starts hotter, so each peaks higher, toward a steady cycle.
   for (size_t k = 1; k < series.stops.size(); ++k) {
     EXPECT_GT(series.stops[k].peak_disc_temp_K, series.stops[k - 1].peak_disc_temp_K) << k;
-    EXPECT_NEAR(series.stop_start_s[k] - series.stop_start_s[k - 1],
-                *series.stops[k - 1].stop_time_s + Config().scenarios.stop_series_interval_s, 1e-9);
+    EXPECT_NEAR(
+        series.stop_start_s[k] - series.stop_start_s[k - 1],
+        *series.stops[k - 1].stop_time_s + ScenarioConfig().scenarios.stop_series_interval_s, 1e-9);
   }
   const double first_rise = series.stops[1].peak_disc_temp_K - series.stops[0].peak_disc_temp_K;
   const double last_rise =

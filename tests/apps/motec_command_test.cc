@@ -15,13 +15,13 @@ namespace {
 namespace fs = std::filesystem;
 using hotlap::test::Contains;
 
-const fs::path kMotec = hotlap::test::SourcePath("tests/data/motec/darlington_i2.csv");
+const fs::path kMotecI2Csv = hotlap::test::SourcePath("tests/data/motec/darlington_i2.csv");
 
 TEST(MotecCommandTest, ReplaysOneLapOfAMotecExport) {
   const hotlap::test::TempDir tmp;
   const fs::path out = tmp.path() / "lap2.csv";
   const auto r = hotlap::test::RunHotlap(
-      "replay --telemetry " + kMotec.string() + " --lap 2 --out " + out.string(), tmp.path());
+      "replay --telemetry " + kMotecI2Csv.string() + " --lap 2 --out " + out.string(), tmp.path());
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(Contains(r.out, "MoTeC channels not mapped (kept): G Force Lat, Engine RPM"));
   const hotlap::CsvTable table = hotlap::ReadCsv(out);
@@ -37,7 +37,7 @@ TEST(MotecCommandTest, ALapThatIsNotThereIsExit2NamingTheLaps) {
   const hotlap::test::TempDir tmp;
   const fs::path out = tmp.path() / "out.csv";
   const auto r = hotlap::test::RunHotlap(
-      "replay --telemetry " + kMotec.string() + " --lap 7 --out " + out.string(), tmp.path());
+      "replay --telemetry " + kMotecI2Csv.string() + " --lap 7 --out " + out.string(), tmp.path());
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_TRUE(Contains(r.err, "lap 7: no such lap; the log has laps 1 to 3"));
   EXPECT_FALSE(fs::exists(out));
@@ -49,7 +49,7 @@ TEST(MotecCommandTest, AChannelMapWithoutTheLoadsNamesTheMissingChannel) {
       hotlap::test::WriteTextFile(tmp.path() / "map.yaml", "channels:\n  Ground Speed: speed\n");
   const fs::path out = tmp.path() / "out.csv";
   const auto r =
-      hotlap::test::RunHotlap("replay --telemetry " + kMotec.string() + " --channel-map " +
+      hotlap::test::RunHotlap("replay --telemetry " + kMotecI2Csv.string() + " --channel-map " +
                                   map.string() + " --out " + out.string(),
                               tmp.path());
   EXPECT_EQ(r.exit_code, 2) << r.err;

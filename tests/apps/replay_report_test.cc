@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 using hotlap::test::Contains;
 using hotlap::test::ReadTextFile;
 
-const fs::path kExample = fs::path(HOTLAP_SOURCE_DIR) / "data/telemetry/darlington_example.csv";
+const fs::path kExampleLog = fs::path(HOTLAP_SOURCE_DIR) / "data/telemetry/darlington_example.csv";
 
 class ReplayReportTest : public ::testing::Test {
  protected:
@@ -44,7 +44,7 @@ class ReplayReportTest : public ::testing::Test {
 
 TEST_F(ReplayReportTest, WritesAReportThatRendersAndMatchesTheChannels) {
   const fs::path csv = dir_ / "out.csv", html = dir_ / "replay report.html";
-  ASSERT_EQ(Run("replay --telemetry " + kExample.string() + " --out " + csv.string() +
+  ASSERT_EQ(Run("replay --telemetry " + kExampleLog.string() + " --out " + csv.string() +
                 " --report '" + html.string() + "'"),
             0)
       << err_;
@@ -91,7 +91,7 @@ TEST_F(ReplayReportTest, WritesAReportThatRendersAndMatchesTheChannels) {
 
 TEST_F(ReplayReportTest, MissingReportFolderFailsBeforeWork) {
   const fs::path csv = dir_ / "out.csv";
-  EXPECT_EQ(Run("replay --telemetry " + kExample.string() + " --out " + csv.string() +
+  EXPECT_EQ(Run("replay --telemetry " + kExampleLog.string() + " --out " + csv.string() +
                 " --report " + (dir_ / "nope" / "r.html").string()),
             2);
   EXPECT_TRUE(Contains(err_, "--report"));

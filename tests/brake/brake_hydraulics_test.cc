@@ -15,33 +15,33 @@ using hotlap::brake::CalcBrakeTorqueCapacity;
 using hotlap::brake::CalcPressureRate;
 using hotlap::brake::PressureDelayLine;
 
-constexpr double kMPa = 1e6;
+constexpr double kPaPerMPa = 1e6;
 
 BrakeHydraulicsParams<double> Params() {
   return {.delay = 0.01,
           .time_constant = 0.01,
-          .max_rise_rate = 80 * kMPa,
-          .max_fall_rate = 150 * kMPa,
-          .max_pressure = 13 * kMPa,
+          .max_rise_rate = 80 * kPaPerMPa,
+          .max_fall_rate = 150 * kPaPerMPa,
+          .max_pressure = 13 * kPaPerMPa,
           .torque_gain = 150e-6};
 }
 
 TEST(BrakeHydraulicsTest, LagsTowardTheTargetWithinTheRateLimits) {
   const auto p = Params();
   // Small error: first order, (target - p) / tau.
-  EXPECT_DOUBLE_EQ(CalcPressureRate(p, 5 * kMPa, 5.1 * kMPa), 0.1 * kMPa / 0.01);
-  EXPECT_DOUBLE_EQ(CalcPressureRate(p, 5 * kMPa, 4.5 * kMPa), -0.5 * kMPa / 0.01);
+  EXPECT_DOUBLE_EQ(CalcPressureRate(p, 5 * kPaPerMPa, 5.1 * kPaPerMPa), 0.1 * kPaPerMPa / 0.01);
+  EXPECT_DOUBLE_EQ(CalcPressureRate(p, 5 * kPaPerMPa, 4.5 * kPaPerMPa), -0.5 * kPaPerMPa / 0.01);
   // Large errors: the rise and fall limits.
-  EXPECT_DOUBLE_EQ(CalcPressureRate(p, 0.0, 10 * kMPa), 80 * kMPa);
-  EXPECT_DOUBLE_EQ(CalcPressureRate(p, 10 * kMPa, 0.0), -150 * kMPa);
+  EXPECT_DOUBLE_EQ(CalcPressureRate(p, 0.0, 10 * kPaPerMPa), 80 * kPaPerMPa);
+  EXPECT_DOUBLE_EQ(CalcPressureRate(p, 10 * kPaPerMPa, 0.0), -150 * kPaPerMPa);
   // At the target: at rest.
-  EXPECT_DOUBLE_EQ(CalcPressureRate(p, 7 * kMPa, 7 * kMPa), 0.0);
+  EXPECT_DOUBLE_EQ(CalcPressureRate(p, 7 * kPaPerMPa, 7 * kPaPerMPa), 0.0);
 }
 
 TEST(BrakeHydraulicsTest, TargetsAreClampedToWhatTheSystemDelivers) {
   const auto p = Params();
-  EXPECT_DOUBLE_EQ(CalcPressureRate(p, 13 * kMPa, 20 * kMPa), 0.0);  // at p_max already
-  EXPECT_DOUBLE_EQ(CalcPressureRate(p, 0.0, -3 * kMPa), 0.0);        // nothing below zero
+  EXPECT_DOUBLE_EQ(CalcPressureRate(p, 13 * kPaPerMPa, 20 * kPaPerMPa), 0.0);  // at p_max already
+  EXPECT_DOUBLE_EQ(CalcPressureRate(p, 0.0, -3 * kPaPerMPa), 0.0);             // nothing below zero
 }
 
 TEST(BrakeHydraulicsTest, StepResponseRisesAtTheLimitThenSettlesExponentially) {
@@ -51,21 +51,22 @@ TEST(BrakeHydraulicsTest, StepResponseRisesAtTheLimitThenSettlesExponentially) {
   double x = 0.0;
   const double h = 1e-5;
   for (int i = 0; i < 6000; ++i) {
-    x = hotlap::Rk4Step([&](double, double s) { return CalcPressureRate(p, s, 4 * kMPa); }, i * h,
-                        x, h);
+    x = hotlap::Rk4Step([&](double, double s) { return CalcPressureRate(p, s, 4 * kPaPerMPa); },
+                        i * h, x, h);
     const double t = (i + 1) * h;
     if (i + 1 == 2000) {
-      EXPECT_NEAR(x, 1.6 * kMPa, 1e-3 * kMPa);
+      EXPECT_NEAR(x, 1.6 * kPaPerMPa, 1e-3 * kPaPerMPa);
     }
     if (i + 1 == 6000) {
-      EXPECT_NEAR(x, 4 * kMPa - 0.8 * kMPa * std::exp(-(t - 0.04) / 0.01), 1e-3 * kMPa);
+      EXPECT_NEAR(x, 4 * kPaPerMPa - 0.8 * kPaPerMPa * std::exp(-(t - 0.04) / 0.01),
+                  1e-3 * kPaPerMPa);
     }
   }
 }
 
 TEST(BrakeHydraulicsTest, TorqueIsTheGainTimesThePressure) {
   const auto p = Params();
-  EXPECT_DOUBLE_EQ(CalcBrakeTorqueCapacity(p, 10 * kMPa), 1500.0);
+  EXPECT_DOUBLE_EQ(CalcBrakeTorqueCapacity(p, 10 * kPaPerMPa), 1500.0);
   EXPECT_DOUBLE_EQ(CalcBrakeTorqueCapacity(p, -1.0), 0.0);
 }
 
@@ -89,13 +90,13 @@ TYPED_TEST(BrakeHydraulicsScalarTest, InstantiatesAndAgreesWithDouble) {
   using T = TypeParam;
   const auto pd = Params();
   const BrakeHydraulicsParams<T> p = pd.template Cast<T>();
-  for (double pressure : {0.0, 3 * kMPa, 9 * kMPa}) {
-    for (double target : {0.0, 3.05 * kMPa, 12 * kMPa}) {
+  for (double pressure : {0.0, 3 * kPaPerMPa, 9 * kPaPerMPa}) {
+    for (double target : {0.0, 3.05 * kPaPerMPa, 12 * kPaPerMPa}) {
       EXPECT_DOUBLE_EQ(hotlap::ValueOf(CalcPressureRate(p, T(pressure), T(target))),
                        CalcPressureRate(pd, pressure, target));
     }
   }
-  EXPECT_DOUBLE_EQ(hotlap::ValueOf(CalcBrakeTorqueCapacity(p, T(5 * kMPa))), 750.0);
+  EXPECT_DOUBLE_EQ(hotlap::ValueOf(CalcBrakeTorqueCapacity(p, T(5 * kPaPerMPa))), 750.0);
 }
 
 TEST(BrakeHydraulicsTest, DerivativesMatchCentralDifferences) {
@@ -103,7 +104,7 @@ TEST(BrakeHydraulicsTest, DerivativesMatchCentralDifferences) {
   const auto pd = Params();
   // In the linear part (small error) and on the rate limit.
   for (const auto& [pressure_case, target_case] :
-       {std::pair{5 * kMPa, 5.2 * kMPa}, std::pair{5 * kMPa, 9 * kMPa}}) {
+       {std::pair{5 * kPaPerMPa, 5.2 * kPaPerMPa}, std::pair{5 * kPaPerMPa, 9 * kPaPerMPa}}) {
     // Copies: Clang 14 cannot capture structured bindings in the lambdas below.
     const double pressure = pressure_case, target = target_case;
     BrakeHydraulicsParams<J> p = pd.Cast<J>();

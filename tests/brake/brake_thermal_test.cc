@@ -27,8 +27,9 @@ double Quadratic(const std::array<std::array<double, 3>, 3>& m, double u, double
   }
   return sum;
 }
-constexpr std::array<std::array<double, 3>, 3> kPDisc = {{{6, 3, 2}, {3, 12, 2}, {2, 2, 10}}};
-constexpr std::array<std::array<double, 3>, 3> kPCal = {{{1, .5, .2}, {.5, 4, .2}, {.2, .2, 2}}};
+constexpr std::array<std::array<double, 3>, 3> kDiscCubic = {{{6, 3, 2}, {3, 12, 2}, {2, 2, 10}}};
+constexpr std::array<std::array<double, 3>, 3> kCalliperCubic = {
+    {{1, .5, .2}, {.5, 4, .2}, {.2, .2, 2}}};
 
 // The worked point: u = 70 m/s, Fx = -3000 N (braking), T_d = 600 K, T_k = 400 K, T_0 = 298.15 K.
 BrakeInput<double> WorkedInput() { return {70.0, -3000.0, 298.15}; }
@@ -42,10 +43,10 @@ TEST(BrakeThermalTest, HeatFlowsMatchHandComputation) {
   const double q1 = 70.0 * 3000.0;                                    // 210 kW
   const double q2 = 2.0 * 0.5 * (9472e-6) / 0.025 * (600.0 - 400.0);  // 75.776 W
   const double q3 = 0.48 * kSigma * 0.6302 * (600.0 * 600.0 * 600.0 * 600.0 - t0_4);
-  const double ha_d = Quadratic(kPDisc, 70.0, 600.0);  // 19.3709 W/K
+  const double ha_d = Quadratic(kDiscCubic, 70.0, 600.0);  // 19.3709 W/K
   const double q4 = ha_d * (600.0 - 298.15);
   const double q5 = 0.25 * kSigma * 12.81e-4 * (400.0 * 400.0 * 400.0 * 400.0 - t0_4);
-  const double ha_k = Quadratic(kPCal, 70.0, 400.0);  // 3.77844 W/K
+  const double ha_k = Quadratic(kCalliperCubic, 70.0, 400.0);  // 3.77844 W/K
   const double q6 = ha_k * (400.0 - 298.15);
   const double dtd = (0.95 * q1 - q2 - q3 - q4) / (0.1 * 8.8 * 480.0);
   const double dtk = (0.05 * q1 + q2 - q5 - q6) / (5.0312 * 921.1);

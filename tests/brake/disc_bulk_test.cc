@@ -53,11 +53,13 @@ TEST(DiscBulkTest, FlowsMatchHandComputation) {
 }
 
 // A brake state with the net heat into it (J: the brake's work less every loss) integrated beside.
-struct Augmented {
+struct BulkAugmented {
   BrakeState<double> x;
   double net_in = 0.0;
-  Augmented operator+(const Augmented& b) const { return {x + b.x, net_in + b.net_in}; }
-  friend Augmented operator*(double k, const Augmented& a) { return {k * a.x, k * a.net_in}; }
+  BulkAugmented operator+(const BulkAugmented& b) const { return {x + b.x, net_in + b.net_in}; }
+  friend BulkAugmented operator*(double k, const BulkAugmented& a) {
+    return {k * a.x, k * a.net_in};
+  }
 };
 
 // Braking pulses with the rim a fixed sink: the heat into the brake is what the three masses
@@ -65,16 +67,16 @@ struct Augmented {
 TEST(DiscBulkTest, ConservesEnergy) {
   const BrakeThermalParams<double> p = BulkParams();
   const double rim = 340.0;
-  const auto rhs = [&](double t, const Augmented& s) {
+  const auto rhs = [&](double t, const BulkAugmented& s) {
     const BrakeInput<double> in{60.0 + 20.0 * std::sin(0.4 * t), 5000.0 * std::sin(1.1 * t), 300.0};
     BrakeHeatFlows<double> q;
-    Augmented d;
+    BulkAugmented d;
     d.x = CalcBrakeDerivatives(p, s.x, CalcBrakeInputTerms(p, in), &q, rim);
     d.net_in = q.q1 - q.q3 - q.q4 - q.q5 - q.q6 - q.bulk_convection - q.ToRim();
     return d;
   };
-  Augmented s{{500.0, 350.0, 450.0}, 0.0};
-  const Augmented start = s;
+  BulkAugmented s{{500.0, 350.0, 450.0}, 0.0};
+  const BulkAugmented start = s;
   for (int i = 0; i < 4000; ++i) s = Rk4Step(rhs, i * 0.005, s, 0.005);
   const double disc = 8.8 * 480.0;
   const double stored = 0.1 * disc * (s.x.disc_temp - start.x.disc_temp) +

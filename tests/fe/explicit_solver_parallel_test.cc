@@ -20,16 +20,17 @@ namespace {
 
 // 12 x 8 x 6 elements of 2 mm: 576 elements and 819 nodes, more than one block of the solver's
 // fixed-block sums (512) in both, so the sums' order is exercised too.
-constexpr int kNx = 12, kNy = 8, kNz = 6;
-constexpr double kH = 0.002;
+constexpr int kBlockNx = 12, kBlockNy = 8, kBlockNz = 6;
+constexpr double kBlockH = 0.002;
 
 Mesh Block() {
-  Mesh mesh = MakeBlockMesh(kNx * kH, kNy * kH, kNz * kH, kNx, kNy, kNz);
-  testing::AddBlockPressureFaces(mesh, kNx, kNy, kNz, /*top=*/true);
+  Mesh mesh = MakeBlockMesh(kBlockNx * kBlockH, kBlockNy * kBlockH, kBlockNz * kBlockH, kBlockNx,
+                            kBlockNy, kBlockNz);
+  testing::AddBlockPressureFaces(mesh, kBlockNx, kBlockNy, kBlockNz, /*top=*/true);
   return mesh;
 }
 
-struct Result {
+struct ParallelResult {
   std::vector<Eigen::Vector3d> x, v;
   Energies energies;
   double worst_balance = 0.0;  // max |balance error| / energy scale over the run
@@ -39,17 +40,19 @@ struct Result {
 // struck on a corner (0.3 x (2, -1, 3) N for 100 steps: a 1 N push on one 2 mm corner is so
 // violent that the O(dt^2) balance error of the nonlinear motion reaches 3e-3): every force kind of
 // the element loop is active (rubber, hourglass, bulk viscosity in compression and tension).
-Result RunBlock(int threads, Assembly assembly, double pulse_N = 0.3, int steps = 400,
-                const SolverOptions& options = {}) {
+ParallelResult RunBlock(int threads, Assembly assembly, double pulse_N = 0.3, int steps = 400,
+                        const SolverOptions& options = {}) {
   const Mesh mesh = Block();
   ExplicitSolver s(mesh, {testing::Tread()}, {}, options);
   s.set_threads(threads);
   s.set_assembly(assembly);
   EXPECT_EQ(s.threads(), threads);
   s.SetInitialVelocity(testing::SpinStretchNoiseVelocities(
-      mesh.nodes, Eigen::Vector3d(0.5 * kNx * kH, 0.5 * kNy * kH, 0.5 * kNz * kH), 5));
+      mesh.nodes,
+      Eigen::Vector3d(0.5 * kBlockNx * kBlockH, 0.5 * kBlockNy * kBlockH, 0.5 * kBlockNz * kBlockH),
+      5));
   s.set_pressure(50e3);
-  Result out;
+  ParallelResult out;
   double scale = 0.0;
   for (int k = 0; k < steps; ++k) {
     s.applied_forces().back() = k < 100 ? Eigen::Vector3d(pulse_N * Eigen::Vector3d(2.0, -1.0, 3.0))
@@ -84,7 +87,8 @@ TEST(FeParallel, ColoursShareNoNodeAndCoverEveryElementOnce) {
 // Coloured assembly: each node receives one element's force per colour, the colours in a fixed
 // order, and every sum runs over fixed blocks; so the thread count cannot change a single bit.
 TEST(FeParallel, ColouredRunIsBitIdenticalOnOneAndTwoThreads) {
-  const Result one = RunBlock(1, Assembly::kColoured), two = RunBlock(2, Assembly::kColoured);
+  const ParallelResult one = RunBlock(1, Assembly::kColoured),
+                       two = RunBlock(2, Assembly::kColoured);
   ASSERT_EQ(one.x.size(), two.x.size());
   for (size_t a = 0; a < one.x.size(); ++a) {
     ASSERT_EQ(one.x[a], two.x[a]) << "node " << a;
@@ -108,8 +112,9 @@ TEST(FeParallel, ColouredRunIsBitIdenticalOnOneAndTwoThreads) {
 // the size for positions, 1e-9 of the energy scale) are far above that and far below any real error
 // (a lost or doubled element force moves nodes by about 1e-6 of the size in one step here).
 TEST(FeParallel, ThreadBuffersAreDeterministicAndAgreeToRoundOff) {
-  const Result a = RunBlock(2, Assembly::kThreadBuffers), b = RunBlock(2, Assembly::kThreadBuffers);
-  const Result ref = RunBlock(1, Assembly::kThreadBuffers);
+  const ParallelResult a = RunBlock(2, Assembly::kThreadBuffers),
+                       b = RunBlock(2, Assembly::kThreadBuffers);
+  const ParallelResult ref = RunBlock(1, Assembly::kThreadBuffers);
   double max_dx = 0.0;
   bool any_difference = false;
   for (size_t n = 0; n < a.x.size(); ++n) {
@@ -117,7 +122,7 @@ TEST(FeParallel, ThreadBuffersAreDeterministicAndAgreeToRoundOff) {
     max_dx = std::max(max_dx, (a.x[n] - ref.x[n]).norm());
     any_difference = any_difference || a.x[n] != ref.x[n];
   }
-  const double size = kNx * kH;
+  const double size = kBlockNx * kBlockH;
   EXPECT_LT(max_dx, 1e-10 * size);
   const double scale = ref.energies.external_work + ref.energies.initial_kinetic;
   EXPECT_NEAR(a.energies.internal, ref.energies.internal, 1e-9 * scale);
@@ -133,14 +138,14 @@ TEST(FeParallel, ThreadBuffersAreDeterministicAndAgreeToRoundOff) {
 TEST(FeParallel, ThreadBuffersCarryTheViscousHourglassForces) {
   SolverOptions options;
   options.hourglass_viscous = 0.1;
-  const Result a = RunBlock(2, Assembly::kThreadBuffers, 0.3, 400, options);
-  const Result ref = RunBlock(1, Assembly::kThreadBuffers, 0.3, 400, options);
+  const ParallelResult a = RunBlock(2, Assembly::kThreadBuffers, 0.3, 400, options);
+  const ParallelResult ref = RunBlock(1, Assembly::kThreadBuffers, 0.3, 400, options);
   const double scale = ref.energies.external_work + ref.energies.initial_kinetic;
   EXPECT_GT(ref.energies.hourglass_dissipated, 1e-6 * scale);
   EXPECT_NEAR(a.energies.hourglass_dissipated, ref.energies.hourglass_dissipated, 1e-9 * scale);
   double max_dx = 0.0;
   for (size_t n = 0; n < a.x.size(); ++n) max_dx = std::max(max_dx, (a.x[n] - ref.x[n]).norm());
-  EXPECT_LT(max_dx, 1e-10 * kNx * kH);
+  EXPECT_LT(max_dx, 1e-10 * kBlockNx * kBlockH);
   EXPECT_LT(a.worst_balance, 1e-3);
 }
 
@@ -154,7 +159,7 @@ TEST(FeParallel, InvertedElementIsReportedFromTheParallelLoop) {
     s.set_assembly(assembly);
     std::vector<Eigen::Vector3d> x = mesh.nodes;
     // Element 300 turned inside out: its top face pushed below its bottom face.
-    for (int a = 4; a < 8; ++a) x[mesh.elements[300][a]].z() -= 2.0 * kH;
+    for (int a = 4; a < 8; ++a) x[mesh.elements[300][a]].z() -= 2.0 * kBlockH;
     s.SetPositions(x);
     try {
       s.Step();

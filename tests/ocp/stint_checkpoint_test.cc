@@ -18,7 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-SolveResult Example(double scale) {
+SolveResult ExampleResult(double scale) {
   SolveResult r;
   r.status = SolveStatus::kStopped;
   r.message = "checkpoint";
@@ -36,18 +36,18 @@ TEST(StintCheckpointsTest, FilesHoldWhatWasSavedForThisStintOnly) {
   const StintCheckpoints mine(dir.path() / "a" / "b", 42);  // created with its parents
   EXPECT_FALSE(mine.ReadGreedyLap(1).has_value());
   EXPECT_FALSE(mine.ReadStintIterate().has_value());
-  mine.WriteGreedyLap(1, PresolvedLap{Example(1.0), Example(2.0), {}, {}, {}});
-  mine.WriteStintIterate(Example(3.0));
+  mine.WriteGreedyLap(1, PresolvedLap{ExampleResult(1.0), ExampleResult(2.0), {}, {}, {}});
+  mine.WriteStintIterate(ExampleResult(3.0));
   const std::optional<PresolvedLap> lap = mine.ReadGreedyLap(1);
   ASSERT_TRUE(lap.has_value());
-  EXPECT_EQ(lap->coarse.x, Example(1.0).x);
-  EXPECT_EQ(lap->fine.x, Example(2.0).x);
-  EXPECT_EQ(lap->fine.lambda, Example(2.0).lambda);
+  EXPECT_EQ(lap->coarse.x, ExampleResult(1.0).x);
+  EXPECT_EQ(lap->fine.x, ExampleResult(2.0).x);
+  EXPECT_EQ(lap->fine.lambda, ExampleResult(2.0).lambda);
   EXPECT_FALSE(mine.ReadGreedyLap(2).has_value());
   const std::optional<SolveResult> it = mine.ReadStintIterate();
   ASSERT_TRUE(it.has_value());
-  EXPECT_EQ(it->x, Example(3.0).x);
-  EXPECT_EQ(it->z_upper, Example(3.0).z_upper);
+  EXPECT_EQ(it->x, ExampleResult(3.0).x);
+  EXPECT_EQ(it->z_upper, ExampleResult(3.0).z_upper);
   EXPECT_EQ(it->iterations, 15);
   EXPECT_EQ(it->barrier_mu, 1e-5);
   EXPECT_EQ(mine.foreign_files(), 0);

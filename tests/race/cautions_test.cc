@@ -13,7 +13,7 @@
 namespace hotlap::race {
 namespace {
 
-FallOff Linear(double per_lap) {
+FallOff LinearFallOff(double per_lap) {
   FallOff f;
   f.reference_fuel_kg = 25.0;
   f.fuel_s_per_kg = 0.004;
@@ -23,7 +23,7 @@ FallOff Linear(double per_lap) {
 
 TEST(CautionsTest, WithoutCautionsEveryRaceIsTheDeterministicTime) {
   const RaceRules r = SouthernFiveHundred();
-  const FallOff f = Linear(0.03);
+  const FallOff f = LinearFallOff(0.03);
   std::vector<std::vector<PitStop>> plans = {OptimalPlan(r, f).stops};
   for (const RacePlan& p : FixedPlans(r, f)) plans.push_back(p.stops);
   for (const auto& stops : plans) {
@@ -36,7 +36,7 @@ TEST(CautionsTest, WithoutCautionsEveryRaceIsTheDeterministicTime) {
 
 TEST(CautionsTest, TheSouthern500ModelGivesTheRecordsCount) {
   const RaceRules r = SouthernFiveHundred();
-  const FallOff f = Linear(0.03);
+  const FallOff f = LinearFallOff(0.03);
   const MonteCarloResult mc =
       SimulatePlan(r, f, OptimalPlan(r, f).stops, SouthernFiveHundredCautions(), 2000);
   // 2023: 8 cautions (facts); within 20%.
@@ -47,7 +47,7 @@ TEST(CautionsTest, TheSouthern500ModelGivesTheRecordsCount) {
 
 TEST(CautionsTest, DrawsRepeatAndTheStandardErrorFalls) {
   const RaceRules r = SouthernFiveHundred();
-  const FallOff f = Linear(0.03);
+  const FallOff f = LinearFallOff(0.03);
   const auto stops = OptimalPlan(r, f).stops;
   const CautionModel m = SouthernFiveHundredCautions();
   EXPECT_EQ(SimulatePlan(r, f, stops, m, 50).mean_time_s,
@@ -68,7 +68,7 @@ TEST(CautionsTest, AGreenStopCaughtByACautionCostsALap) {
   RaceRules r = SouthernFiveHundred();
   r.laps = 60;
   r.stage_ends = {};
-  FallOff f = Linear(0.0);
+  FallOff f = LinearFallOff(0.0);
   f.lap_time_s[0] = f.lap_time_s[1];
   f.fuel_s_per_kg = 0.0;
   const CautionModel m = SouthernFiveHundredCautions();
@@ -92,7 +92,7 @@ TEST(CautionsTest, AGreenStopCaughtByACautionCostsALap) {
 // always a second ahead gains a second with no error, however much the races themselves spread.
 TEST(CautionsTest, ThePairedGainIsRaceByRace) {
   const RaceRules r = SouthernFiveHundred();
-  const FallOff f = Linear(0.03);
+  const FallOff f = LinearFallOff(0.03);
   std::vector<double> times;
   SimulatePlan(r, f, OptimalPlan(r, f).stops, SouthernFiveHundredCautions(), 200, &times);
   ASSERT_EQ(times.size(), 200u);

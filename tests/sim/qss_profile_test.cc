@@ -13,7 +13,7 @@
 namespace hotlap::sim {
 namespace {
 
-const vehicle::Car& Gen7() {
+const vehicle::Car& ProfileGen7() {
   static const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
   return car;
 }
@@ -40,7 +40,7 @@ double LapTime(const std::vector<RoadPoint>& road, const SpeedProfile& p) {
 // profile a search from scratch gives, to the searches' tolerances (1 mm/s on a cornering limit,
 // 0.5 N on a drive or brake force), in a fraction of the force balances.
 TEST(QssProfileTest, ProfileFromTheLastOneIsTheProfileFromScratch) {
-  const QssVehicle car(*Gen7().vehicle);
+  const QssVehicle car(*ProfileGen7().vehicle);
   const std::vector<RoadPoint> road = testing::Oval(400.0, 150.0, 60.0);
   std::array<std::vector<double>, 4> grip;
   for (auto& g : grip) g.assign(road.size(), 0.95);
@@ -70,7 +70,7 @@ TEST(QssProfileTest, ProfileFromTheLastOneIsTheProfileFromScratch) {
 
 // A search started from a nearby answer (LimitSearch) finds the same limit, and leaves its own.
 TEST(QssProfileTest, LimitSearchFromANearbyAnswer) {
-  const QssVehicle car(*Gen7().vehicle);
+  const QssVehicle car(*ProfileGen7().vehicle);
   const std::vector<RoadPoint> road = testing::Circle(150.0, 12.0);
   const std::array<double, 4> grip = {0.95, 0.95, 0.95, 0.95};
   LimitSearch search;

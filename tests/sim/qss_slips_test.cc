@@ -14,7 +14,7 @@
 namespace hotlap::sim {
 namespace {
 
-const vehicle::VehicleParams& Gen7() {
+const vehicle::VehicleParams& Gen7Params() {
   static const vehicle::Car car = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
   return *car.vehicle;
 }
@@ -22,7 +22,7 @@ const vehicle::VehicleParams& Gen7() {
 const std::vector<vehicle::InvertibleTyre>& Tyres() {
   static const std::vector<vehicle::InvertibleTyre> tyres = [] {
     std::vector<vehicle::InvertibleTyre> t;
-    for (Corner c : kAllCorners) t.emplace_back(Gen7().corner(c));
+    for (Corner c : kAllCorners) t.emplace_back(Gen7Params().corner(c));
     return t;
   }();
   return tyres;
@@ -31,7 +31,7 @@ const std::vector<vehicle::InvertibleTyre>& Tyres() {
 // The forces a corner's model makes at given slips (grip factor applied).
 std::pair<double, double> Forces(Corner corner, const vehicle::TyreConditions& c, double kappa,
                                  double alpha) {
-  return vehicle::testing::CornerForces(Gen7().corner(corner), c, kappa, alpha);
+  return vehicle::testing::CornerForces(Gen7Params().corner(corner), c, kappa, alpha);
 }
 
 // A point mid-turn: the forces the four tyres make at a slip angle of about 2 degrees (the
@@ -47,8 +47,8 @@ PointTargets MidTurn(double load_scale = 1.0) {
     const int k = CornerIndex(c);
     std::tie(t.fx[k], t.fy[k]) = Forces(c, t.conditions[k], -0.01, -0.035);
   }
-  const double rl = Gen7().corner(Corner::kRearLeft).rolling_radius;
-  const double rr = Gen7().corner(Corner::kRearRight).rolling_radius;
+  const double rl = Gen7Params().corner(Corner::kRearLeft).rolling_radius;
+  const double rr = Gen7Params().corner(Corner::kRearRight).rolling_radius;
   const double omega = 1.01 * 61.0 / (0.5 * (rl + rr));
   for (const auto& [c, r] : {std::pair{Corner::kRearLeft, rl}, std::pair{Corner::kRearRight, rr}}) {
     const int k = CornerIndex(c);

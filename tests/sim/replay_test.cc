@@ -25,7 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-vehicle::Car Gen7() {
+vehicle::Car Gen7Car() {
   return vehicle::LoadCar(fs::path(HOTLAP_SOURCE_DIR) / "data/cars/gen7/car.yaml");
 }
 
@@ -59,7 +59,7 @@ class ReplayRateTest : public ::testing::TestWithParam<double> {};
 // The default sub-stepping keeps the error below 0.05 degC against a step 32 times finer, at
 // logging rates from 10 Hz to 1 kHz.
 TEST_P(ReplayRateTest, DefaultStepIsWithinToleranceOfMuchFinerStep) {
-  const vehicle::Car car = Gen7();
+  const vehicle::Car car = Gen7Car();
   const ReplayInputs inputs = ResampleReplayInputs(ExampleInputs(), GetParam());
   ReplayOptions normal;
   ReplayOptions fine;
@@ -80,7 +80,7 @@ INSTANTIATE_TEST_SUITE_P(LoggingRates, ReplayRateTest,
 // Fourth order on a smooth stretch: a log at 1 Hz of steady braking with gentle loads, so no
 // input changes sign and the film temperature stays inside one interval of the air table.
 TEST(ReplayTest, ConvergesAtFourthOrderOnSmoothInputs) {
-  const vehicle::Car car = Gen7();
+  const vehicle::Car car = Gen7Car();
   ReplayInputs in;
   const int n = 8;
   for (int k = 0; k < n; ++k) {
@@ -136,7 +136,7 @@ TEST(ReplayTest, ConvergesAtFourthOrderOnSmoothInputs) {
 // two-mass tyre and lumped disc integrated apart, bit for bit: the same integrator the fits use
 // (sim::IntegrateTyre, sim::IntegrateBrake), so the gas-and-rim model left the paper's untouched.
 TEST(ReplayTest, ThePaperModelsReplayAsPublished) {
-  const vehicle::Car car = vehicle::PaperModelsOf(Gen7());
+  const vehicle::Car car = vehicle::PaperModelsOf(Gen7Car());
   const ReplayInputs in = ExampleInputs();
   const ReplayInitialState start = WarmStart(car);
   const ReplayResult r = RunReplay(car, in, start, {});
@@ -172,7 +172,7 @@ TEST(ReplayTest, ThePaperModelsReplayAsPublished) {
 // The gas-and-rim car over the same log: each balance closes to rounding, a stretch boundary
 // splits the run's audit into two that add up to it, and no tyre makes more heat than work.
 TEST(ReplayTest, TheAuditClosesAndAddsUpOverStretches) {
-  const vehicle::Car car = Gen7();
+  const vehicle::Car car = Gen7Car();
   const ReplayInputs in = ExampleInputs();
   const ReplayResult whole = RunReplay(car, in, WarmStart(car), {});
   ReplayOptions split;
@@ -280,7 +280,7 @@ TEST(ReplayTest, ResampleCoversTheLogOnAUniformGrid) {
   EXPECT_DOUBLE_EQ(r.ambient_temp[6], 293.0);
   EXPECT_DOUBLE_EQ(r.track_temp[2], 302.0);
   // The result is a log the replay accepts.
-  const vehicle::Car car = Gen7();
+  const vehicle::Car car = Gen7Car();
   EXPECT_NO_THROW(RunReplay(car, r, WarmStart(car), {}));
 }
 
@@ -332,7 +332,7 @@ TEST(ReplayTest, ResampleRejectsBadArguments) {
 }
 
 TEST(ReplayTest, RejectsNonIncreasingTimeAndWrongLengths) {
-  const vehicle::Car car = Gen7();
+  const vehicle::Car car = Gen7Car();
   ReplayInputs in = ResampleReplayInputs(ExampleInputs(), 10.0);
   ReplayInputs bad_time = in;
   bad_time.time[5] = bad_time.time[4];
@@ -402,7 +402,7 @@ TEST(ReplayTest, ALoggedBrakePowerIsTheBrakesInput) {
   }
   EXPECT_EQ(ResampleReplayInputs(in, 10.0).corners[2].brake_fx.size(),
             ResampleReplayInputs(in, 10.0).time.size());
-  const vehicle::Car car = Gen7();
+  const vehicle::Car car = Gen7Car();
   const ReplayResult r = RunReplay(car, in, WarmStart(car), {});
   const CornerHistory& h = r.corners[CornerIndex(Corner::kRearLeft)];
   const ReplayResult example = RunReplay(car, ExampleInputs(), WarmStart(car), {});
@@ -421,7 +421,7 @@ TEST(ReplayTest, ALoggedBrakePowerIsTheBrakesInput) {
 }
 
 TEST(ReplayTest, DivergenceIsReportedNotReturned) {
-  const vehicle::Car car = Gen7();
+  const vehicle::Car car = Gen7Car();
   ReplayInputs in = ResampleReplayInputs(ExampleInputs(), 10.0);
   // An absurd braking force heats the front-left disc far past any material limit.
   for (double& fx : in.corners[0].fx) fx = -5e6;
@@ -437,7 +437,7 @@ TEST(ReplayIoTest, InitialStatePrefersMeasuredThenOverridesThenCar) {
                                  "0.1,71.5,\n"
                                  "0.2,72,600\n");
   const Telemetry log = Telemetry::Read(csv);
-  const vehicle::Car car = Gen7();
+  const vehicle::Car car = Gen7Car();
   InitialTemperatureOverrides o;
   o.carcass_temp = CelsiusToKelvin(55.0);
   const ReplayInitialState s = InitialStateFor(log, car, o);

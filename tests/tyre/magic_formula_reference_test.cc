@@ -430,7 +430,7 @@ TyreForces<T> CalcMagicFormulaReference(const MagicFormulaParams<T>& p,
 
 // ---------------------------------------------------------------------------------------------
 
-MagicFormulaParams<double> LoadTestTir(const std::string& name) {
+MagicFormulaParams<double> LoadReferenceTir(const std::string& name) {
   return LoadMagicFormula(test::SourcePath("tests/data/tir/mfeval/" + name + ".tir"));
 }
 
@@ -438,8 +438,8 @@ MagicFormulaParams<double> LoadTestTir(const std::string& name) {
 // slip ratios to 1.2, slip angles to 80 deg, cambers to 7 deg, speeds from -10 to 70 m/s
 // (standstill and low speed included), pressures around INFLPRES or 0 (= INFLPRES), and exact
 // zeros of slip and camber.
-std::vector<TyreOperatingPoint<double>> RandomPoints(const MagicFormulaParams<double>& p, int n,
-                                                     unsigned seed) {
+std::vector<TyreOperatingPoint<double>> RandomReferencePoints(const MagicFormulaParams<double>& p,
+                                                              int n, unsigned seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<TyreOperatingPoint<double>> points;
@@ -460,7 +460,7 @@ std::vector<TyreOperatingPoint<double>> RandomPoints(const MagicFormulaParams<do
   return points;
 }
 
-std::array<double, 5> Outputs(const TyreForces<double>& f) {
+std::array<double, 5> ReferenceOutputs(const TyreForces<double>& f) {
   return {f.fx, f.fy, f.mx, f.my, f.mz};
 }
 
@@ -489,31 +489,31 @@ void ExpectSameUpToRounding(double got, double want, const std::string& what, do
   EXPECT_LE(d, kTolerance) << what << ": " << got << " vs " << want;
 }
 
-struct Case {
+struct ReferenceCase {
   const char* tir;
   int use_mode;
 };
 
-std::string CaseName(const ::testing::TestParamInfo<Case>& info) {
+std::string ReferenceCaseName(const ::testing::TestParamInfo<ReferenceCase>& info) {
   return std::string(info.param.tir) + "_mode" + std::to_string(info.param.use_mode);
 }
 
-class MagicFormulaReferenceTest : public ::testing::TestWithParam<Case> {
+class MagicFormulaReferenceTest : public ::testing::TestWithParam<ReferenceCase> {
  protected:
   void TearDown() override { internal::SetMathIsa(initial_isa_); }
   const internal::MathIsa initial_isa_ = internal::ActiveMathIsa();
 };
 
 TEST_P(MagicFormulaReferenceTest, DoublesAgreeWithTheReferenceUpToRounding) {
-  const auto p = LoadTestTir(GetParam().tir);
+  const auto p = LoadReferenceTir(GetParam().tir);
   const auto options = MagicFormulaOptions::FromUseMode(GetParam().use_mode);
   for (const auto isa : {internal::MathIsa::kGeneric, internal::MathIsa::kAvx2}) {
     if (!internal::SetMathIsa(isa)) continue;
     double worst = 0.0;
     int row = 0;
-    for (const auto& op : RandomPoints(p, 20000, 7 + GetParam().use_mode)) {
-      const auto got = Outputs(CalcMagicFormula(p, op, options));
-      const auto want = Outputs(CalcMagicFormulaReference(p, op, options));
+    for (const auto& op : RandomReferencePoints(p, 20000, 7 + GetParam().use_mode)) {
+      const auto got = ReferenceOutputs(CalcMagicFormula(p, op, options));
+      const auto want = ReferenceOutputs(CalcMagicFormulaReference(p, op, options));
       for (size_t k = 0; k < 5; ++k) {
         ExpectSameUpToRounding(got[k], want[k],
                                std::string(internal::MathIsaName(isa)) + " point " +
@@ -528,12 +528,12 @@ TEST_P(MagicFormulaReferenceTest, DoublesAgreeWithTheReferenceUpToRounding) {
 }
 
 TEST_P(MagicFormulaReferenceTest, JetsAgreeWithTheReferenceUpToRounding) {
-  const auto p = LoadTestTir(GetParam().tir);
+  const auto p = LoadReferenceTir(GetParam().tir);
   const auto p_jet = p.Cast<Jet2>();
   const auto options = MagicFormulaOptions::FromUseMode(GetParam().use_mode);
   double worst = 0.0;
   int row = 0;
-  for (const auto& op : RandomPoints(p, 2000, 99 + GetParam().use_mode)) {
+  for (const auto& op : RandomReferencePoints(p, 2000, 99 + GetParam().use_mode)) {
     TyreOperatingPoint<Jet2> op_jet;
     op_jet.fz = Jet2(op.fz);
     op_jet.slip_ratio = Jet2(op.slip_ratio, 0);
@@ -560,14 +560,14 @@ TEST_P(MagicFormulaReferenceTest, JetsAgreeWithTheReferenceUpToRounding) {
 // differ in the last bits).
 TEST_P(MagicFormulaReferenceTest, InstructionSetsAgreeUpToRounding) {
   if (!internal::MathIsaSupported(internal::MathIsa::kAvx2)) GTEST_SKIP() << "no AVX2 here";
-  const auto p = LoadTestTir(GetParam().tir);
+  const auto p = LoadReferenceTir(GetParam().tir);
   const auto options = MagicFormulaOptions::FromUseMode(GetParam().use_mode);
   double worst = 0.0;
-  for (const auto& op : RandomPoints(p, 5000, 3 + GetParam().use_mode)) {
+  for (const auto& op : RandomReferencePoints(p, 5000, 3 + GetParam().use_mode)) {
     internal::SetMathIsa(internal::MathIsa::kGeneric);
-    const auto generic = Outputs(CalcMagicFormula(p, op, options));
+    const auto generic = ReferenceOutputs(CalcMagicFormula(p, op, options));
     internal::SetMathIsa(internal::MathIsa::kAvx2);
-    const auto avx2 = Outputs(CalcMagicFormula(p, op, options));
+    const auto avx2 = ReferenceOutputs(CalcMagicFormula(p, op, options));
     for (size_t k = 0; k < 5; ++k) {
       ExpectSameUpToRounding(avx2[k], generic[k], "output " + std::to_string(k), worst);
     }
@@ -576,16 +576,20 @@ TEST_P(MagicFormulaReferenceTest, InstructionSetsAgreeUpToRounding) {
               worst);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Mfeval431, MagicFormulaReferenceTest,
-    ::testing::Values(
-        Case{"MagicFormula52_Parameters", 111}, Case{"MagicFormula52_Parameters", 121},
-        Case{"MagicFormula52_Parameters", 211}, Case{"MagicFormula52_Parameters", 221},
-        Case{"MagicFormula61_Parameters", 111}, Case{"MagicFormula61_Parameters", 121},
-        Case{"MagicFormula61_Parameters", 211}, Case{"MagicFormula61_Parameters", 221},
-        Case{"MagicFormula62_Parameters", 111}, Case{"MagicFormula62_Parameters", 221},
-        Case{"PacejkaBook_Defaults", 111}, Case{"PacejkaBook_Defaults", 221}),
-    CaseName);
+INSTANTIATE_TEST_SUITE_P(Mfeval431, MagicFormulaReferenceTest,
+                         ::testing::Values(ReferenceCase{"MagicFormula52_Parameters", 111},
+                                           ReferenceCase{"MagicFormula52_Parameters", 121},
+                                           ReferenceCase{"MagicFormula52_Parameters", 211},
+                                           ReferenceCase{"MagicFormula52_Parameters", 221},
+                                           ReferenceCase{"MagicFormula61_Parameters", 111},
+                                           ReferenceCase{"MagicFormula61_Parameters", 121},
+                                           ReferenceCase{"MagicFormula61_Parameters", 211},
+                                           ReferenceCase{"MagicFormula61_Parameters", 221},
+                                           ReferenceCase{"MagicFormula62_Parameters", 111},
+                                           ReferenceCase{"MagicFormula62_Parameters", 221},
+                                           ReferenceCase{"PacejkaBook_Defaults", 111},
+                                           ReferenceCase{"PacejkaBook_Defaults", 221}),
+                         ReferenceCaseName);
 
 }  // namespace
 }  // namespace hotlap::tyre

@@ -20,12 +20,12 @@
 namespace hotlap::tyre {
 namespace {
 
-MagicFormulaParams<double> LoadTestTir(const std::string& relative) {
+MagicFormulaParams<double> MfLoadTestTir(const std::string& relative) {
   return LoadMagicFormula(test::SourcePath("tests/data/tir/" + relative));
 }
 
-TyreOperatingPoint<double> Point(double fz, double kappa, double alpha, double gamma = 0.0,
-                                 double vx = 16.6, double pressure = 0.0) {
+TyreOperatingPoint<double> MfPoint(double fz, double kappa, double alpha, double gamma = 0.0,
+                                   double vx = 16.6, double pressure = 0.0) {
   TyreOperatingPoint<double> op;
   op.fz = fz;
   op.slip_ratio = kappa;
@@ -90,10 +90,10 @@ class MagicFormulaOracleTest : public ::testing::TestWithParam<OracleCase> {};
 
 TEST_P(MagicFormulaOracleTest, MatchesMfevalOnEveryRow) {
   const OracleCase c = GetParam();
-  const MagicFormulaParams<double> params = LoadTestTir(std::string("mfeval/") + c.tir + ".tir");
-  const OracleTable table = ReadOracle(test::SourcePath("tests/data/mf_reference/mfeval431_" +
-                                                        std::string(c.tir) + "_mode" +
-                                                        std::to_string(c.use_mode) + ".csv"));
+  const MagicFormulaParams<double> params = MfLoadTestTir(std::string("mfeval/") + c.tir + ".tir");
+  const OracleTable table =
+      ReadOracle(test::SourcePath("tests/data/mf_reference/mfeval431_" + std::string(c.tir) +
+                                  "_mode" + std::to_string(c.use_mode) + ".csv"));
   const auto& fz = table.Column("Fz_in");
   const auto& kappa = table.Column("kappa_in");
   const auto& alpha = table.Column("alpha_in");
@@ -116,7 +116,7 @@ TEST_P(MagicFormulaOracleTest, MatchesMfevalOnEveryRow) {
     ASSERT_EQ(use_mode[row], c.use_mode);
     ASSERT_EQ(phit[row], 0.0);
     const TyreForces<double> f = CalcMagicFormula(
-        params, Point(fz[row], kappa[row], alpha[row], gamma[row], vx[row], pressure[row]),
+        params, MfPoint(fz[row], kappa[row], alpha[row], gamma[row], vx[row], pressure[row]),
         options);
     const std::array<double, 5> got = {f.fx, f.fy, f.mx, f.my, f.mz};
     for (size_t k = 0; k < 5; ++k) {
@@ -142,11 +142,11 @@ INSTANTIATE_TEST_SUITE_P(Mfeval431, MagicFormulaOracleTest,
                          OracleName);
 
 TEST(MagicFormulaTest, SpotValuesOfMfeval) {
-  const auto p = LoadTestTir("mfeval/MagicFormula61_Parameters.tir");
-  const auto lateral = CalcMagicFormula(p, Point(6752, 0.0, DegToRad(5.0)), {});
+  const auto p = MfLoadTestTir("mfeval/MagicFormula61_Parameters.tir");
+  const auto lateral = CalcMagicFormula(p, MfPoint(6752, 0.0, DegToRad(5.0)), {});
   EXPECT_NEAR(lateral.fy, -6526.979, 1e-3);
   EXPECT_NEAR(lateral.mz, 45.4756, 1e-4);
-  const auto longitudinal = CalcMagicFormula(p, Point(6752, 0.1, 0.0), {});
+  const auto longitudinal = CalcMagicFormula(p, MfPoint(6752, 0.1, 0.0), {});
   EXPECT_NEAR(longitudinal.fx, 8306.088, 1e-3);
 }
 
@@ -156,18 +156,18 @@ TEST(MagicFormulaTest, SpotValuesOfMfeval) {
 class MagicFormulaChronoTest : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(MagicFormulaChronoTest, FiniteAndSignCorrect) {
-  const auto p = LoadTestTir(std::string("chrono/") + GetParam());
+  const auto p = MfLoadTestTir(std::string("chrono/") + GetParam());
   EXPECT_EQ(p.version, MagicFormulaVersion::kMf52);
   const double fz = p.FNOMIN;
   // Without limit checks (the 335/65R22.5 file's slip range is KPUMAX = 0: braking only).
   for (const auto limits : {MagicFormulaLimits::kNone, MagicFormulaLimits::kClamp}) {
     MagicFormulaOptions o;
     o.limits = limits;
-    const auto drive = CalcMagicFormula(p, Point(fz, 0.05, 0.0, 0.0, 20.0), o);
-    const auto brake = CalcMagicFormula(p, Point(fz, -0.05, 0.0, 0.0, 20.0), o);
-    const auto left = CalcMagicFormula(p, Point(fz, 0.0, DegToRad(3.0), 0.0, 20.0), o);
+    const auto drive = CalcMagicFormula(p, MfPoint(fz, 0.05, 0.0, 0.0, 20.0), o);
+    const auto brake = CalcMagicFormula(p, MfPoint(fz, -0.05, 0.0, 0.0, 20.0), o);
+    const auto left = CalcMagicFormula(p, MfPoint(fz, 0.0, DegToRad(3.0), 0.0, 20.0), o);
     const auto combined =
-        CalcMagicFormula(p, Point(fz, -0.05, DegToRad(3.0), DegToRad(2.0), 20.0), o);
+        CalcMagicFormula(p, MfPoint(fz, -0.05, DegToRad(3.0), DegToRad(2.0), 20.0), o);
     for (const auto& f : {drive, brake, left, combined}) {
       for (const double x : {f.fx, f.fy, f.mx, f.my, f.mz}) EXPECT_TRUE(std::isfinite(x));
     }
@@ -207,45 +207,46 @@ TEST(MagicFormulaTest, UseModesMapToOptions) {
 }
 
 TEST(MagicFormulaTest, LimitChecksClampToTheFileRanges) {
-  const auto p = LoadTestTir("mfeval/MagicFormula61_Parameters.tir");
+  const auto p = MfLoadTestTir("mfeval/MagicFormula61_Parameters.tir");
   MagicFormulaOptions none;
   none.limits = MagicFormulaLimits::kNone;
   // Load above FZMAX and slip angle above ALPMAX are clamped in 111, not in 211.
-  const auto at_max = CalcMagicFormula(p, Point(p.FZMAX, 0.0, p.ALPMAX), {});
-  const auto above = CalcMagicFormula(p, Point(p.FZMAX + 2000.0, 0.0, p.ALPMAX + 0.2), {});
+  const auto at_max = CalcMagicFormula(p, MfPoint(p.FZMAX, 0.0, p.ALPMAX), {});
+  const auto above = CalcMagicFormula(p, MfPoint(p.FZMAX + 2000.0, 0.0, p.ALPMAX + 0.2), {});
   EXPECT_DOUBLE_EQ(above.fy, at_max.fy);
   EXPECT_DOUBLE_EQ(above.fx, at_max.fx);
-  const auto above_none = CalcMagicFormula(p, Point(p.FZMAX + 2000.0, 0.0, p.ALPMAX + 0.2), none);
+  const auto above_none = CalcMagicFormula(p, MfPoint(p.FZMAX + 2000.0, 0.0, p.ALPMAX + 0.2), none);
   EXPECT_NE(above_none.fy, at_max.fy);
   // Camber and slip ratio too.
-  EXPECT_DOUBLE_EQ(CalcMagicFormula(p, Point(6000, 0.0, 0.05, p.CAMMAX + 0.1), {}).fy,
-                   CalcMagicFormula(p, Point(6000, 0.0, 0.05, p.CAMMAX), {}).fy);
-  EXPECT_DOUBLE_EQ(CalcMagicFormula(p, Point(6000, p.KPUMAX + 0.5, 0.0), {}).fx,
-                   CalcMagicFormula(p, Point(6000, p.KPUMAX, 0.0), {}).fx);
+  EXPECT_DOUBLE_EQ(CalcMagicFormula(p, MfPoint(6000, 0.0, 0.05, p.CAMMAX + 0.1), {}).fy,
+                   CalcMagicFormula(p, MfPoint(6000, 0.0, 0.05, p.CAMMAX), {}).fy);
+  EXPECT_DOUBLE_EQ(CalcMagicFormula(p, MfPoint(6000, p.KPUMAX + 0.5, 0.0), {}).fx,
+                   CalcMagicFormula(p, MfPoint(6000, p.KPUMAX, 0.0), {}).fx);
   // Pressure: 0 means INFLPRES; below PRESMIN is clamped.
-  EXPECT_DOUBLE_EQ(CalcMagicFormula(p, Point(6000, 0.05, 0.05, 0.0, 16.6, 0.0), {}).fx,
-                   CalcMagicFormula(p, Point(6000, 0.05, 0.05, 0.0, 16.6, p.INFLPRES), {}).fx);
-  EXPECT_DOUBLE_EQ(CalcMagicFormula(p, Point(6000, 0.05, 0.05, 0.0, 16.6, 1.0), {}).fx,
-                   CalcMagicFormula(p, Point(6000, 0.05, 0.05, 0.0, 16.6, p.PRESMIN), {}).fx);
+  EXPECT_DOUBLE_EQ(CalcMagicFormula(p, MfPoint(6000, 0.05, 0.05, 0.0, 16.6, 0.0), {}).fx,
+                   CalcMagicFormula(p, MfPoint(6000, 0.05, 0.05, 0.0, 16.6, p.INFLPRES), {}).fx);
+  EXPECT_DOUBLE_EQ(CalcMagicFormula(p, MfPoint(6000, 0.05, 0.05, 0.0, 16.6, 1.0), {}).fx,
+                   CalcMagicFormula(p, MfPoint(6000, 0.05, 0.05, 0.0, 16.6, p.PRESMIN), {}).fx);
 }
 
 TEST(MagicFormulaTest, ZeroLoadAndStandstillAreFinite) {
-  const auto p = LoadTestTir("mfeval/MagicFormula61_Parameters.tir");
-  for (const auto& op : {Point(0.0, 0.1, 0.1), Point(-100.0, 0.1, 0.1), Point(4000, 0.1, 0.1, 0, 0),
-                         Point(4000, 0.1, 0.1, 0, 0.3), Point(4000, 0.1, 0.1, 0, -10.0)}) {
+  const auto p = MfLoadTestTir("mfeval/MagicFormula61_Parameters.tir");
+  for (const auto& op :
+       {MfPoint(0.0, 0.1, 0.1), MfPoint(-100.0, 0.1, 0.1), MfPoint(4000, 0.1, 0.1, 0, 0),
+        MfPoint(4000, 0.1, 0.1, 0, 0.3), MfPoint(4000, 0.1, 0.1, 0, -10.0)}) {
     const auto f = CalcMagicFormula(p, op, {});
     for (const double x : {f.fx, f.fy, f.mx, f.my, f.mz}) EXPECT_TRUE(std::isfinite(x));
   }
-  const auto unloaded = CalcMagicFormula(p, Point(0.0, 0.1, 0.1), {});
+  const auto unloaded = CalcMagicFormula(p, MfPoint(0.0, 0.1, 0.1), {});
   EXPECT_EQ(unloaded.fx, 0.0);
   EXPECT_EQ(unloaded.fy, 0.0);
-  EXPECT_EQ(CalcMagicFormula(p, Point(4000, 0.1, 0.1, 0, 0), {}).my, 0.0);
+  EXPECT_EQ(CalcMagicFormula(p, MfPoint(4000, 0.1, 0.1, 0, 0), {}).my, 0.0);
 }
 
 TEST(MagicFormulaTest, ReversingFlipsTheLongitudinalForce) {
-  const auto p = LoadTestTir("mfeval/MagicFormula61_Parameters.tir");
-  const auto forward = CalcMagicFormula(p, Point(5000, 0.05, 0.0, 0.0, 10.0), {});
-  const auto backward = CalcMagicFormula(p, Point(5000, 0.05, 0.0, 0.0, -10.0), {});
+  const auto p = MfLoadTestTir("mfeval/MagicFormula61_Parameters.tir");
+  const auto forward = CalcMagicFormula(p, MfPoint(5000, 0.05, 0.0, 0.0, 10.0), {});
+  const auto backward = CalcMagicFormula(p, MfPoint(5000, 0.05, 0.0, 0.0, -10.0), {});
   EXPECT_DOUBLE_EQ(backward.fx, -forward.fx);
   EXPECT_GT(backward.my, 0.0);
   EXPECT_LT(forward.my, 0.0);
@@ -260,10 +261,10 @@ TYPED_TEST_SUITE(MagicFormulaScalarTest, test::AllScalarTypes);
 
 TYPED_TEST(MagicFormulaScalarTest, SameValuesAsDouble) {
   using T = TypeParam;
-  for (const char* file : {"mfeval/MagicFormula61_Parameters.tir",
-                           "mfeval/MagicFormula52_Parameters.tir"}) {
-    const auto p = LoadTestTir(file);
-    const auto op = Point(5000, -0.04, DegToRad(4.0), DegToRad(-2.0), 20.0);
+  for (const char* file :
+       {"mfeval/MagicFormula61_Parameters.tir", "mfeval/MagicFormula52_Parameters.tir"}) {
+    const auto p = MfLoadTestTir(file);
+    const auto op = MfPoint(5000, -0.04, DegToRad(4.0), DegToRad(-2.0), 20.0);
     const auto expected = CalcMagicFormula(p, op, {});
     TyreOperatingPoint<T> op_t;
     op_t.fz = T(op.fz);
@@ -271,8 +272,8 @@ TYPED_TEST(MagicFormulaScalarTest, SameValuesAsDouble) {
     op_t.slip_angle = T(op.slip_angle);
     op_t.camber = T(op.camber);
     op_t.speed = T(op.speed);
-    for (const auto options : {MagicFormulaOptions::FromUseMode(111),
-                               MagicFormulaOptions::FromUseMode(221)}) {
+    for (const auto options :
+         {MagicFormulaOptions::FromUseMode(111), MagicFormulaOptions::FromUseMode(221)}) {
       const auto f = CalcMagicFormula(p.Cast<T>(), op_t, options);
       const auto g = CalcMagicFormula(p, op, options);
       EXPECT_NEAR(ValueOf(f.fx), g.fx, 1e-9 * std::abs(g.fx)) << file;
@@ -285,21 +286,23 @@ TYPED_TEST(MagicFormulaScalarTest, SameValuesAsDouble) {
   }
 }
 
-std::array<double, 5> Outputs(const TyreForces<double>& f) { return {f.fx, f.fy, f.mx, f.my, f.mz}; }
+std::array<double, 5> MfOutputs(const TyreForces<double>& f) {
+  return {f.fx, f.fy, f.mx, f.my, f.mz};
+}
 
 // Jet derivatives with respect to kappa and alpha against central differences, for both
 // versions, both slip forms, at points away from the switching surfaces.
 TEST(MagicFormulaDerivativeTest, SlipDerivativesMatchCentralDifferences) {
-  for (const char* file : {"mfeval/MagicFormula61_Parameters.tir",
-                           "mfeval/MagicFormula52_Parameters.tir",
-                           "mfeval/PacejkaBook_Defaults.tir"}) {
-    const auto p = LoadTestTir(file);
+  for (const char* file :
+       {"mfeval/MagicFormula61_Parameters.tir", "mfeval/MagicFormula52_Parameters.tir",
+        "mfeval/PacejkaBook_Defaults.tir"}) {
+    const auto p = MfLoadTestTir(file);
     const auto p_jet = p.Cast<Jet2>();
     for (const int mode : {111, 121, 211}) {
       const auto options = MagicFormulaOptions::FromUseMode(mode);
-      for (const auto& op : {Point(0.8 * p.FNOMIN, 0.03, DegToRad(2.0), DegToRad(1.0), 25.0),
-                             Point(1.2 * p.FNOMIN, -0.12, DegToRad(-7.0), DegToRad(-2.0), 12.0),
-                             Point(p.FNOMIN, 0.2, DegToRad(0.5), 0.0, 30.0)}) {
+      for (const auto& op : {MfPoint(0.8 * p.FNOMIN, 0.03, DegToRad(2.0), DegToRad(1.0), 25.0),
+                             MfPoint(1.2 * p.FNOMIN, -0.12, DegToRad(-7.0), DegToRad(-2.0), 12.0),
+                             MfPoint(p.FNOMIN, 0.2, DegToRad(0.5), 0.0, 30.0)}) {
         TyreOperatingPoint<Jet2> op_jet;
         op_jet.fz = Jet2(op.fz);
         op_jet.slip_ratio = Jet2(op.slip_ratio, 0);
@@ -309,7 +312,7 @@ TEST(MagicFormulaDerivativeTest, SlipDerivativesMatchCentralDifferences) {
         const auto f = CalcMagicFormula(p_jet, op_jet, options);
         const std::array<Jet2, 5> jets = {f.fx, f.fy, f.mx, f.my, f.mz};
         const auto eval = [&](const TyreOperatingPoint<double>& x) {
-          return Outputs(CalcMagicFormula(p, x, options));
+          return MfOutputs(CalcMagicFormula(p, x, options));
         };
         const auto d_kappa = test::CentralDifference(
             op, [](auto& x) -> double& { return x.slip_ratio; }, eval);
@@ -330,11 +333,11 @@ TEST(MagicFormulaDerivativeTest, SlipDerivativesMatchCentralDifferences) {
 
 // Derivatives with respect to coefficients, as a fit needs them.
 TEST(MagicFormulaDerivativeTest, CoefficientDerivativesMatchCentralDifferences) {
-  const auto p = LoadTestTir("mfeval/MagicFormula61_Parameters.tir");
+  const auto p = MfLoadTestTir("mfeval/MagicFormula61_Parameters.tir");
   auto p_jet = p.Cast<Jet2>();
   p_jet.PDY1.v[0] = 1.0;
   p_jet.QDZ1.v[1] = 1.0;
-  const auto op = Point(7000, -0.05, DegToRad(3.0), DegToRad(1.0), 20.0);
+  const auto op = MfPoint(7000, -0.05, DegToRad(3.0), DegToRad(1.0), 20.0);
   TyreOperatingPoint<Jet2> op_jet;
   op_jet.fz = Jet2(op.fz);
   op_jet.slip_ratio = Jet2(op.slip_ratio);
@@ -343,10 +346,12 @@ TEST(MagicFormulaDerivativeTest, CoefficientDerivativesMatchCentralDifferences) 
   op_jet.speed = Jet2(op.speed);
   const auto f = CalcMagicFormula(p_jet, op_jet, {});
   const auto eval = [&](const MagicFormulaParams<double>& x) {
-    return Outputs(CalcMagicFormula(x, op, {}));
+    return MfOutputs(CalcMagicFormula(x, op, {}));
   };
-  const auto d_pdy1 = test::CentralDifference(p, [](auto& x) -> double& { return x.PDY1; }, eval);
-  const auto d_qdz1 = test::CentralDifference(p, [](auto& x) -> double& { return x.QDZ1; }, eval);
+  const auto d_pdy1 = test::CentralDifference(
+      p, [](auto& x) -> double& { return x.PDY1; }, eval);
+  const auto d_qdz1 = test::CentralDifference(
+      p, [](auto& x) -> double& { return x.QDZ1; }, eval);
   const std::array<Jet2, 5> jets = {f.fx, f.fy, f.mx, f.my, f.mz};
   for (size_t k = 0; k < 5; ++k) {
     const double scale = std::max(1.0, std::abs(jets[k].a));

@@ -17,7 +17,7 @@
 namespace hotlap::tyre {
 namespace {
 
-const std::filesystem::path kTir =
+const std::filesystem::path kGridTir =
     test::SourcePath("tests/data/tir/mfeval/MagicFormula61_Parameters.tir");
 
 TEST(OperatingPointFromTest, ConvertsEveryInputToSi) {
@@ -74,7 +74,7 @@ TEST(ParseGridAxisTest, RefusesBadTextWithTheReason) {
 
 class TyreGridTest : public ::testing::Test {
  protected:
-  const TyreForceModel<double> model_ = LoadTyreForceModel(kTir);
+  const TyreForceModel<double> model_ = LoadTyreForceModel(kGridTir);
 };
 
 TEST_F(TyreGridTest, LastAxisFastestAndEqualToOneByOne) {

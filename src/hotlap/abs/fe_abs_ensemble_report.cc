@@ -13,14 +13,6 @@ namespace hotlap::sim {
 
 namespace {
 
-report::LineChart TimeChart(const std::string& title, const std::string& label,
-                            const std::string& unit) {
-  return report::LineChart{.title = title,
-                           .x_axis = {.label = "time", .unit = "s"},
-                           .y_axis = {.label = label, .unit = unit},
-                           .x_link = "time"};
-}
-
 // The band of one channel: the members' mean, solid, between their smallest and largest value,
 // dotted, all in one colour.
 void AddBand(report::LineChart& chart, const std::string& label, const std::vector<double>& t,
@@ -114,15 +106,15 @@ void WriteFeAbsEnsembleReport(const std::filesystem::path& path, const FeAbsEnse
 
   page.AddHeading("Histories: the members' mean and their smallest and largest value");
   const std::vector<double>& t = e.time_s;
-  report::LineChart torque = TimeChart("Brake torque (cf. 002 Fig. 8)", "torque", "N m");
+  report::LineChart torque = report::TimeChart("Brake torque (cf. 002 Fig. 8)", "torque", "N m");
   AddBand(torque, "torque", t, e.torque_Nm, "#4e79a7");
   page.AddLineChart(torque);
   report::LineChart speeds =
-      TimeChart("Forward and circumferential speeds (cf. 002 Fig. 9)", "speed", "m/s");
+      report::TimeChart("Forward and circumferential speeds (cf. 002 Fig. 9)", "speed", "m/s");
   AddBand(speeds, "Vx", t, e.vx_mps, "#4e79a7");
   AddBand(speeds, "omega R_l", t, e.omega_r_mps, "#f28e2b");
   page.AddLineChart(speeds);
-  report::LineChart slip = TimeChart("Slip ratio (cf. 002 Fig. 10)", "slip", "");
+  report::LineChart slip = report::TimeChart("Slip ratio (cf. 002 Fig. 10)", "slip", "");
   AddBand(slip, "slip", t, e.slip, "#4e79a7");
   slip.series.push_back({.label = "0.135 (002 Fig. 10)",
                          .x = {t.front(), t.back()},

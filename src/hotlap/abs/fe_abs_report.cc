@@ -12,14 +12,6 @@ namespace hotlap::sim {
 
 namespace {
 
-report::LineChart TimeChart(const std::string& title, const std::string& label,
-                            const std::string& unit) {
-  return report::LineChart{.title = title,
-                           .x_axis = {.label = "time", .unit = "s"},
-                           .y_axis = {.label = label, .unit = unit},
-                           .x_link = "time"};
-}
-
 // The FE run's channels, sample by sample.
 struct FeChannels {
   std::vector<double> t, torque, vx, omega_r, slip, fx, balance;
@@ -132,13 +124,13 @@ void AddBrakingCharts(report::HtmlReport& page, const FeChannels& ch,
     }
   };
   page.AddHeading("Braking event (002 Figures 8 to 11)");
-  report::LineChart fig8 = TimeChart("Brake torque (cf. 002 Fig. 8)", "torque", "N m");
+  report::LineChart fig8 = report::TimeChart("Brake torque (cf. 002 Fig. 8)", "torque", "N m");
   fig8.series.push_back({.label = "ABS brake torque", .x = t, .y = ch.torque});
   add_lumped(fig8, "torque", &LumpedChannels::torque);
   page.AddLineChart(fig8);
 
   report::LineChart fig9 =
-      TimeChart("Forward and circumferential speeds (cf. 002 Fig. 9)", "speed", "m/s");
+      report::TimeChart("Forward and circumferential speeds (cf. 002 Fig. 9)", "speed", "m/s");
   fig9.series.push_back({.label = "Vx (rim)", .x = t, .y = ch.vx});
   fig9.series.push_back(
       {.label = "omega R_l", .x = t, .y = ch.omega_r, .style = report::LineStyle::kDashed});
@@ -146,7 +138,7 @@ void AddBrakingCharts(report::HtmlReport& page, const FeChannels& ch,
   add_lumped(fig9, "omega R_l", &LumpedChannels::omega_r);
   page.AddLineChart(fig9);
 
-  report::LineChart fig10 = TimeChart("Slip ratio (cf. 002 Fig. 10)", "slip", "");
+  report::LineChart fig10 = report::TimeChart("Slip ratio (cf. 002 Fig. 10)", "slip", "");
   fig10.series.push_back({.label = "slip", .x = t, .y = ch.slip});
   add_lumped(fig10, "slip", &LumpedChannels::slip);
   fig10.series.push_back({.label = "0.135 (002 Fig. 10)",
@@ -157,7 +149,7 @@ void AddBrakingCharts(report::HtmlReport& page, const FeChannels& ch,
   page.AddLineChart(fig10);
 
   report::LineChart fig11 =
-      TimeChart("Road longitudinal force (cf. 002 Fig. 11)", "road force Fx", "N");
+      report::TimeChart("Road longitudinal force (cf. 002 Fig. 11)", "road force Fx", "N");
   fig11.series.push_back({.label = "road Fx on the tyre", .x = t, .y = ch.fx});
   add_lumped(fig11, "Fx", &LumpedChannels::fx);
   page.AddLineChart(fig11);
@@ -166,14 +158,14 @@ void AddBrakingCharts(report::HtmlReport& page, const FeChannels& ch,
 void AddEnergyCharts(report::HtmlReport& page, const FeChannels& ch) {
   const std::vector<double>& t = ch.t;
   page.AddHeading("Energies");
-  report::LineChart energy = TimeChart("Energies of the braking step", "energy", "J");
+  report::LineChart energy = report::TimeChart("Energies of the braking step", "energy", "J");
   energy.series.push_back({.label = "kinetic", .x = t, .y = ch.kinetic});
   energy.series.push_back({.label = "internal (strain)", .x = t, .y = ch.internal});
   energy.series.push_back({.label = "friction dissipated", .x = t, .y = ch.friction});
   energy.series.push_back(
       {.label = "external work", .x = t, .y = ch.external, .style = report::LineStyle::kDashed});
   page.AddLineChart(energy);
-  report::LineChart error = TimeChart("Energy balance error", "balance error", "J");
+  report::LineChart error = report::TimeChart("Energy balance error", "balance error", "J");
   error.series.push_back({.label = "balance error", .x = t, .y = ch.balance});
   page.AddLineChart(error);
 }

@@ -10,11 +10,10 @@
 #include "hotlap/common/atomic_file.h"
 #include "hotlap/common/error.h"
 #include "hotlap/common/read_file.h"
+#include "hotlap/common/special_values.h"
 
 namespace hotlap {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string_view Trim(std::string_view s) {
   constexpr std::string_view kSpace = " \t\r\n\f\v";

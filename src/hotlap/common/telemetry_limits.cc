@@ -1,4 +1,5 @@
 #include "hotlap/common/telemetry_limits.h"
+#include "hotlap/common/special_values.h"
 
 #include <limits>
 #include <numbers>
@@ -6,7 +7,6 @@
 namespace hotlap {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kAbsoluteZero = 0.0;     // K
 constexpr double kHottest = 2273.15;      // K: 2000 degC, above a carbon disc's peak in a stop
 constexpr double kFastest = 150.0;        // m/s: 540 km/h, above any circuit car's top speed
@@ -55,9 +55,9 @@ std::optional<ChannelLimits> LimitsOf(std::string_view quantity) {
   return std::nullopt;
 }
 
-bool IsRefused(std::string_view quantity, double si_value) {
+bool IsRefused(std::string_view quantity, double value) {
   const std::optional<ChannelLimits> limits = LimitsOf(quantity);
-  return limits && (si_value < limits->refuse_below || si_value > limits->refuse_above);
+  return limits && (value < limits->refuse_below || value > limits->refuse_above);
 }
 
 }  // namespace hotlap

@@ -31,8 +31,8 @@ struct ChannelLimits {
 /// the heat flows, wear, grip_factor).
 std::optional<ChannelLimits> LimitsOf(std::string_view quantity);
 
-/// True if `si_value` of `quantity` is one LimitsOf() refuses (outside [refuse_below,
+/// True if `value` (SI) of `quantity` is one LimitsOf() refuses (outside [refuse_below,
 /// refuse_above]); false for NaN and for quantities without limits.
-bool IsRefused(std::string_view quantity, double si_value);
+bool IsRefused(std::string_view quantity, double value);
 
 }  // namespace hotlap

@@ -4,11 +4,6 @@ namespace hotlap::fe {
 
 namespace {
 
-// omega y-hat x r.
-Eigen::Vector3d SpinVelocity(double omega, const Eigen::Vector3d& r) {
-  return {omega * r.z(), 0.0, -omega * r.x()};
-}
-
 bool IsTiedToRim(const ExplicitModel& model, const ExplicitState& state, size_t a) {
   return state.rim_settings && model.is_rim_node[a];
 }

@@ -157,6 +157,11 @@ void SetInitialVelocity(const ExplicitModel& model, const std::vector<Eigen::Vec
 /// change of its kinetic energy is booked as external work after the first step.
 void SetRimMotion(const ExplicitModel& model, double vx_mps, double vz_mps, double spin_rad_per_s,
                   ExplicitState& state);
+/// The velocity omega y-hat x r of a point at r from the spin axis (the rim's y axis), m/s.
+inline Eigen::Vector3d SpinVelocity(double omega, const Eigen::Vector3d& r) {
+  return {omega * r.z(), 0.0, -omega * r.x()};
+}
+
 /// Adds translational mass to the rim (a quarter car for braking), kg; its spin inertia stays.
 /// The added mass's kinetic energy at the rim's speed is booked as external work.
 void AddRimTranslationalMass(double mass_kg, ExplicitState& state);

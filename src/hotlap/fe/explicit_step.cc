@@ -40,11 +40,6 @@ Eigen::Matrix3d RotationY(double angle) {
   return r;
 }
 
-// omega y-hat x r.
-Eigen::Vector3d SpinVelocity(double omega, const Eigen::Vector3d& r) {
-  return {omega * r.z(), 0.0, -omega * r.x()};
-}
-
 // What a step's loops need: the counts, the thread count and how the elements are assembled.
 struct StepPlan {
   long nn = 0, ne = 0, nf = 0, node_blocks = 0, elem_blocks = 0;

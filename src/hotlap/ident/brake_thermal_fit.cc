@@ -1,4 +1,5 @@
 #include "hotlap/ident/brake_thermal_fit.h"
+#include "hotlap/common/special_values.h"
 
 #include <algorithm>
 #include <array>
@@ -19,9 +20,6 @@
 namespace hotlap::ident {
 
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Every parameter of the brake model over a log, in fit order.
 enum Index : int { kGamma, kXi, kDisc = 2, kCalliper = 8, kDisc0 = 14, kCalliper0, kCount };

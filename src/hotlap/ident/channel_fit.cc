@@ -1,4 +1,5 @@
 #include "hotlap/ident/channel_fit.h"
+#include "hotlap/common/special_values.h"
 
 #include <algorithm>
 #include <array>
@@ -22,9 +23,6 @@ namespace hotlap::ident {
 
 namespace {
 
-constexpr double kZ95 = 1.959963984540054;  // two-sided 95% normal quantile
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Singular values of the whitened Jacobian below this fraction of the largest count as zero
 // (ceres::Covariance's own default test is 1e-7, the square root of its
 // min_reciprocal_condition_number 1e-14; this is a little stricter, so Ceres never refuses).
@@ -566,7 +564,7 @@ class ChannelFitter {
           double& out = joint ? (side < 0 ? e.joint_likelihood_low : e.joint_likelihood_high)
                               : (side < 0 ? e.likelihood_low : e.likelihood_high);
           const std::optional<double> end =
-              IntervalEnd(i, d, joint ? z_joint : kZ95, side, cost_best);
+              IntervalEnd(i, d, joint ? z_joint : internal::kZ95, side, cost_best);
           if (end) out = *end;
         }
       }

@@ -8,6 +8,9 @@
 
 namespace hotlap::ident::internal {
 
+/// The two-sided 95% quantile of the standard normal distribution (the intervals' z).
+inline constexpr double kZ95 = 1.959963984540054;
+
 /// The sensor-lag diagnostic of ChannelStats::apparent_lag: fills apparent_lag and its standard
 /// error of every channel of `result` from the predictions at the solution (with their Jacobian,
 /// model units), the parameters' scales and the noise levels in result->channels.

@@ -1,3 +1,4 @@
+#include "hotlap/common/special_values.h"
 #include "hotlap/ident/channel_fit.h"
 
 #include <algorithm>
@@ -20,10 +21,6 @@
 namespace hotlap::ident {
 
 namespace {
-
-constexpr double kZ95 = 1.959963984540054;  // two-sided 95% normal quantile
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string Describe(const FitParameter& p, double value) {
   return fmt::format("{:.4g}{}{}", value + p.display_offset, p.unit.empty() ? "" : " ", p.unit);
@@ -119,8 +116,9 @@ void SummarizeEstimates(FitResult& result, const FitOptions& options) {
     const double var = result.covariance(i, i);
     if (!std::isfinite(var)) e.undetermined = true;
     e.std_error = e.undetermined ? kInf : std::sqrt(std::max(var, 0.0));
-    e.ci_low = e.undetermined ? p.lower : std::max(p.lower, e.value - kZ95 * e.std_error);
-    e.ci_high = e.undetermined ? p.upper : std::min(p.upper, e.value + kZ95 * e.std_error);
+    e.ci_low = e.undetermined ? p.lower : std::max(p.lower, e.value - internal::kZ95 * e.std_error);
+    e.ci_high =
+        e.undetermined ? p.upper : std::min(p.upper, e.value + internal::kZ95 * e.std_error);
     e.joint_low = e.undetermined ? p.lower : std::max(p.lower, e.value - z_joint * e.std_error);
     e.joint_high = e.undetermined ? p.upper : std::min(p.upper, e.value + z_joint * e.std_error);
     if (!e.undetermined && std::isfinite(e.std_error)) {
@@ -140,7 +138,7 @@ void SummarizeEstimates(FitResult& result, const FitOptions& options) {
     const double tol = std::min(std::isfinite(range) ? 1e-6 * range : kInf, 1e-4 * p.scale);
     e.at_bound = e.value - p.lower <= tol || p.upper - e.value <= tol;
     const double half_width =
-        std::max({kZ95 * e.std_error, e.value - e.ci_low, e.ci_high - e.value});
+        std::max({internal::kZ95 * e.std_error, e.value - e.ci_low, e.ci_high - e.value});
     const bool narrow = p.role == ParameterRole::kModel
                             ? half_width <= options.max_relative_ci * std::abs(e.value)
                             : half_width <= options.max_nuisance_ci;

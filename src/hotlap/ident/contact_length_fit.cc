@@ -1,4 +1,5 @@
 #include "hotlap/ident/contact_length_fit.h"
+#include "hotlap/common/special_values.h"
 
 #include <cmath>
 #include <limits>
@@ -13,7 +14,6 @@ namespace hotlap::ident {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kMinLoad = 200.0;  // N: below this the wheel is taken as off the ground
 
 // Rolling radius from the load through the contact-length law.

@@ -1,4 +1,5 @@
 #include "hotlap/ident/fit_log.h"
+#include "hotlap/common/special_values.h"
 
 #include <algorithm>
 #include <charconv>
@@ -13,8 +14,6 @@
 namespace hotlap::ident {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string_view Trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);

@@ -1,4 +1,5 @@
 #include "hotlap/ident/tyre_thermal_fit.h"
+#include "hotlap/common/special_values.h"
 
 #include <array>
 #include <cmath>
@@ -18,8 +19,6 @@
 namespace hotlap::ident {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Every parameter of the tyre model over a log; the fits free a subset.
 enum Index : int { kP1, kP2, kP3, kP4, kP5, kWp1, kWp2, kTread0, kCarcass0, kWear0, kCount };

@@ -1,4 +1,5 @@
 #include "hotlap/logs/motec_csv.h"
+#include "hotlap/common/special_values.h"
 
 #include <algorithm>
 #include <charconv>
@@ -18,7 +19,6 @@
 namespace hotlap {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr std::string_view kSpace = " \t\r\f\v";
 
 std::string_view Trim(std::string_view s) {

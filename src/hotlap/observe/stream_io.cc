@@ -1,4 +1,5 @@
 #include "hotlap/observe/stream_io.h"
+#include "hotlap/common/special_values.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -20,8 +21,6 @@
 namespace hotlap::observe {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string_view Trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);

@@ -1,4 +1,5 @@
 #include "hotlap/ocp/f1_lap_problem.h"
+#include "hotlap/common/special_values.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +19,6 @@ namespace {
 
 using vehicle::F1CarParams;
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kKmh = 1.0 / 3.6;
 
 // ---- Elements (ocp/element.h): each a small function of a few node variables. ----

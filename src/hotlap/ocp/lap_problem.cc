@@ -1,4 +1,5 @@
 #include "hotlap/ocp/lap_problem.h"
+#include "hotlap/common/special_values.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,8 +25,6 @@ namespace {
 
 using internal::NodeRoad;
 using vehicle::VehicleParams;
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Variable indices of one node.
 struct NodeVars {

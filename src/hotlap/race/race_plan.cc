@@ -1,4 +1,5 @@
 #include "hotlap/race/race_plan.h"
+#include "hotlap/common/special_values.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -12,8 +13,6 @@
 namespace hotlap::race {
 
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double FuelMass(const RaceRules& r, int laps_left) { return r.FuelAboard(laps_left); }
 

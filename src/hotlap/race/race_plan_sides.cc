@@ -9,13 +9,12 @@
 #include <fmt/format.h>
 
 #include "hotlap/common/error.h"
+#include "hotlap/common/special_values.h"
 #include "hotlap/race/race_plan.h"
 
 namespace hotlap::race {
 
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 enum Choice : uint8_t { kStay = 0, kFuel = 1, kFour = 2, kRight = 3 };
 

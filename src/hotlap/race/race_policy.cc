@@ -1,4 +1,5 @@
 #include "hotlap/race/race_policy.h"
+#include "hotlap/common/special_values.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,8 +14,6 @@
 namespace hotlap::race {
 
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The states (age, fuel units, sets used) of one lap as a flat array.
 struct StateGrid {

@@ -85,6 +85,13 @@ HtmlReport::HtmlReport(std::string title, ReportOptions options)
   }
 }
 
+LineChart TimeChart(const std::string& title, const std::string& label, const std::string& unit) {
+  return LineChart{.title = title,
+                   .x_axis = {.label = "time", .unit = "s"},
+                   .y_axis = {.label = label, .unit = unit},
+                   .x_link = "time"};
+}
+
 void HtmlReport::AddMetadata(std::string key, std::string value) {
   metadata_.emplace_back(std::move(key), std::move(value));
 }

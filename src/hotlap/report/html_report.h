@@ -82,6 +82,10 @@ struct LineChart {
   ChartWidth width = ChartWidth::kCell;
 };
 
+/// An empty chart of `label` (in `unit`) against time in seconds, zooming with the other charts
+/// linked on "time".
+LineChart TimeChart(const std::string& title, const std::string& label, const std::string& unit);
+
 /// A path y(x) drawn with equal scales on both axes (a track map), coloured by `value` along
 /// the way (viridis, low dark blue to high yellow), with a colour bar. x, y and value have the
 /// same length. value_axis.min/max fix the colour scale; x_axis/y_axis ranges are ignored (the

@@ -1,4 +1,5 @@
 #include "hotlap/sim/qss_profile.h"
+#include "hotlap/common/special_values.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +18,6 @@ namespace {
 
 using vehicle::VehicleParams;
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kCapacitySpeed = 50.0;  // m/s at which the tyre peaks are tabulated
 
 // A road point and its trigonometry, computed once for the many force balances of its searches.
