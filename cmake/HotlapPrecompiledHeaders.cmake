@@ -1,7 +1,7 @@
 # Precompiled headers (HOTLAP_PCH, docs/validation/build-times.md): the standard and third-party
 # headers most sources include, parsed once per target instead of once per source. Every source
-# still includes what it uses (a build with -DHOTLAP_PCH=OFF, as the sanitizer build is, checks
-# that), so the list changes speed, never meaning.
+# still includes what it uses (a build with -DHOTLAP_PCH=OFF checks that; the Clang build of
+# scripts/fuzz.sh is one, for the reader areas), so the list changes speed, never meaning.
 #
 #   hotlap_precompile_headers(TARGET [HEADER...])  TARGET's own precompiled header: the list below
 #                                                   and the extra HEADERs (gtest, CLI11)
