@@ -4,13 +4,14 @@
     tools/before_after.py run BUILD_DIR OUT_DIR [--only NAME,...]
     tools/before_after.py compare BEFORE_DIR AFTER_DIR [--rtol X]
 
-`run` runs the example commands below (readers, replay, the QSS lap, synth, fits, observe, ABS,
-a race, a coarse optimal lap and a coarse stint with --threads 1, and the same runs from Python)
-with BUILD_DIR's `hotlap` and Python module, each in a folder of its own under OUT_DIR: what it
-writes, its standard output and error and its exit status. `compare` compares two such folders file by file:
-byte for byte for every command but the optimal laps, once timings ("in 0.52 s", "done in",
-wall-clock keys of the JSON summaries) and the repository's path are masked; the optimal laps'
-numbers within a relative tolerance (--rtol, default 1e-4: the solver's), their text exactly.
+`run` runs the example commands below (readers, replay, the QSS lap, synth, fits, observe, ABS, the
+FE tyre's inflation, a race, a coarse optimal lap and a coarse stint with --threads 1, and the same
+runs from Python) with BUILD_DIR's `hotlap` and Python module, each in a folder of its own under
+OUT_DIR: what it writes, its standard output and error and its exit status. `compare` compares two
+such folders file by file: byte for byte for every command but the optimal laps, once timings ("in
+0.52 s", "done in", wall-clock keys of the JSON summaries) and the repository's path are masked;
+the optimal laps' numbers within a relative tolerance (--rtol, default 1e-4: the solver's), their
+text exactly.
 It prints one line a command and exits 1 if any differs.
 
 To take the "before" of a change: build the commit before it (scripts/build.sh), `run` into a
@@ -111,6 +112,10 @@ COMMANDS = [
     # ABS.
     ("abs", "exact", ["hotlap", "abs", "--out", "abs", "--json", "a.json"]),
     ("abs_no_abs", "exact", ["hotlap", "abs", "--no-abs", "--drum", "--out", "abs"]),
+    # The finite-element tyre's file read and its inflation (one thread: the same sums).
+    ("fe_inflate", "exact",
+     ["hotlap", "fe", "inflate", "--config", "{repo}/data/fe/paper_235_75r15.yaml", "--threads",
+      "1", "--out", "fe", "--json", "fe.json"]),
     # Race strategy.
     ("race", "exact",
      ["hotlap", "race", "--laps", "120", "--stages", "40,80", "--tyre-sets", "5",
@@ -255,6 +260,10 @@ TIME_PATTERNS = [
     (re.compile(r"(Total (CPU|seconds|wall)[^=]*=)\s*[0-9.]+"), r"\1 <t>"),
     (re.compile(r"\b[0-9.]+ s (wall|cpu)\b"), "<t> s \\1"),
     (re.compile(r"(\d+ / )[0-9.]+ s<"), r"\1<t> s<"),  # the optimal lap page's iterations / time
+    # The FE solver's progress and its element updates per second.
+    (re.compile(r"about [0-9.]+ s left"), "about <t> s left"),
+    (re.compile(r"\([0-9.e+]+ per second\)"), "(<n> per second)"),
+    (re.compile(r'"element_updates_per_s"(\s*:\s*)[-0-9.e+]+'), r'"element_updates_per_s"\1<n>'),
 ]
 NUMBER = re.compile(rb"[-+]?(?:\d+\.\d*|\.\d+|\d+)(?:[eE][-+]?\d+)?")
 

@@ -89,8 +89,9 @@ TEST(WheelFilterTest, WithoutReadingsTheMeanIsTheReplayOfTheCarsModels) {
     EXPECT_NEAR(e.calliper_temp, truth.calliper_temp.back(), 1e-8);
     EXPECT_NEAR(e.gas_temp, truth.gas_temp.back(), 1e-8);
     EXPECT_NEAR(e.pressure, truth.pressure.back(), 1e-5);
-    if (!truth.disc_bulk_temp.empty())
+    if (!truth.disc_bulk_temp.empty()) {
       EXPECT_NEAR(e.disc_bulk_temp, truth.disc_bulk_temp.back(), 1e-8);
+    }
     EXPECT_NEAR(e.wear, truth.wear.back(), 1e-12);
     // Nothing read: the bands grow from the start's.
     EXPECT_GT(e.carcass_temp_sd, DefaultConfig().initial_sd.carcass_temp * 0.5);

@@ -358,7 +358,7 @@ class CornerReplay {
 
   // The gas-and-rim tyre and its brake together: the rim takes the brake's heat.
   void RunTogether(const tyre::TyreState<double>& tyre, const brake::BrakeState<double>& brake) {
-    constexpr size_t kN = kTyreEnergyCount + kBrakeEnergyCount;
+    constexpr size_t kN = size_t{kTyreEnergyCount} + size_t{kBrakeEnergyCount};
     using State = WithEnergies<WheelState<double>, kN>;
     using Terms = std::pair<tyre::TyreInputTerms<double>, brake::BrakeInputTerms<double>>;
     IntegrateOverSamples(
