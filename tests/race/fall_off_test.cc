@@ -59,7 +59,9 @@ TEST(FallOffTest, SixtyLapsAtDarlingtonLoseTwoToThreeAndAHalfSecondsFromTheWear)
     const int after = f.right_stop_after_laps[i];
     for (int k = 5; k < 60; ++k) {
       EXPECT_GT(f.right_stop_lap_time_s[i][k], f.lap_time_s[k]) << after << " " << k;
-      if (after + k < 60) EXPECT_LT(f.right_stop_lap_time_s[i][k], f.lap_time_s[after + k]);
+      if (after + k < 60) {
+        EXPECT_LT(f.right_stop_lap_time_s[i][k], f.lap_time_s[after + k]);
+      }
     }
   }
   // A right-side stop between two of them, driven: the interpolated two-age times hold it within

@@ -21,33 +21,18 @@ class ReplayRunTest : public ::testing::Test {
   const vehicle::Car car_ = vehicle::LoadCar(test::Gen7Dir() / "car.yaml");
 };
 
-// Options with one member set (designated initialisers would leave the optional temperatures
-// to GCC's missing-initialiser warning).
-ReplayRunOptions ReplayOptionsWithStep(double max_step_s) {
-  ReplayRunOptions o;
-  o.max_step_s = max_step_s;
-  return o;
-}
-
-ReplayRunOptions ReplayOptionsWithHeatFlows() {
-  ReplayRunOptions o;
-  o.heat_flows = true;
-  return o;
-}
-
 TEST_F(ReplayRunTest, AStepThatIsNotPositiveIsNamedInTheCallersSpelling) {
+  EXPECT_EQ(
+      test::InputErrorOf([&] { RunReplay(car_, log_, {.max_step_s = 0.0}, NameStyle::kPython); }),
+      "max_step_s 0 must be > 0");
   EXPECT_EQ(test::InputErrorOf(
-                [&] { RunReplay(car_, log_, ReplayOptionsWithStep(0.0), NameStyle::kPython); }),
-            "max_step_s 0 must be > 0");
-  EXPECT_EQ(test::InputErrorOf([&] {
-              RunReplay(car_, log_, ReplayOptionsWithStep(-1.0), NameStyle::kCommandLine);
-            }),
+                [&] { RunReplay(car_, log_, {.max_step_s = -1.0}, NameStyle::kCommandLine); }),
             "--max-step-s -1 must be > 0");
 }
 
 TEST_F(ReplayRunTest, HeatFlowsAddColumnsAndTheChannelsCarryTheRunsMetadata) {
   const ReplayRun plain = RunReplay(car_, log_, {}, NameStyle::kPython);
-  const ReplayRun flows = RunReplay(car_, log_, ReplayOptionsWithHeatFlows(), NameStyle::kPython);
+  const ReplayRun flows = RunReplay(car_, log_, {.heat_flows = true}, NameStyle::kPython);
   EXPECT_EQ(flows.columns.names.size(), plain.columns.names.size() + 4 * 7);
   EXPECT_EQ(plain.result.time.size(), log_.size());
   test::TempDir dir;

@@ -35,10 +35,7 @@ TEST(SynthRun, OptionsProcessNoiseAndText) {
   EXPECT_TRUE(test::Contains(text, "hotlap synth: car 'gen7' with the car's parameters, 1 lap(s)"));
   EXPECT_TRUE(test::Contains(text, "samples at 10 Hz"));
   EXPECT_TRUE(test::Contains(text, "truth with process noise from "));
-  SynthRunOptions plain_options;
-  plain_options.rate_hz = 10.0;
-  plain_options.step_m = 4.0;
-  const SynthRun plain = RunSynth(car, track, plain_options);
+  const SynthRun plain = RunSynth(car, track, {.rate_hz = 10.0, .step_m = 4.0});
   EXPECT_TRUE(plain.process_noise_file.empty());
   EXPECT_FALSE(test::Contains(SynthRunText(plain, car, track), "process noise"));
 }

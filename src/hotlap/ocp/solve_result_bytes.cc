@@ -52,7 +52,7 @@ struct Reader {
     if (n > (in.size() - at) / sizeof(double))
       throw InputError("solve results: the bytes end early");
     std::vector<double> v(n);
-    std::memcpy(v.data(), in.data() + at, n * sizeof(double));
+    if (n > 0) std::memcpy(v.data(), in.data() + at, n * sizeof(double));  // data() may be null
     at += n * sizeof(double);
     return v;
   }
