@@ -79,7 +79,7 @@ void BinaryReader::Damaged(const std::string& what) const {
 
 void BinaryReader::GetRaw(void* p, size_t n) {
   if (n > data_.size() - at_) Damaged("it ends early");
-  std::memcpy(p, data_.data() + at_, n);
+  if (n > 0) std::memcpy(p, data_.data() + at_, n);  // p may be an empty vector's null data()
   at_ += n;
 }
 
