@@ -24,4 +24,10 @@ if(HOTLAP_SANITIZE)
     -fno-omit-frame-pointer)
   add_compile_options(${hotlap_sanitize_flags})
   add_link_options(-fsanitize=address,undefined)
+  # Eigen 3.4 switches to its hand-made aligned allocator when __SANITIZE_ADDRESS__ is defined,
+  # while Debian's Ceres (not sanitized) was built with the plain malloc one; the linker keeps one
+  # copy of each Eigen function both instantiate, so a block could be allocated one way and freed
+  # the other. ASan's malloc is 16-byte aligned (docs/validation/reliability.md), which is all
+  # Eigen asks of it: every object then uses malloc and free.
+  add_compile_definitions(EIGEN_MALLOC_ALREADY_ALIGNED=1)
 endif()
