@@ -272,38 +272,52 @@ TEST(FeRoad, StaticSideLoadBelowMuSIsHeldWhereTheViscousStickCrept) {
 // mu g). From rest, 1.0 m g > mu_s m g slides (the net 0.1 g is a small difference of large terms,
 // and the bouncing block's fluctuating slip speeds lower its mean mu by 5-10%, with either stick
 // model: only the sliding is asserted).
+// The bouncing block is chaotic: a start speed changed by 1e-12 m/s, or another element kernel's
+// or compiler's rounding, moves the speed at 0.1 s by up to +-0.07 m/s (standard deviation 0.02,
+// 3.5% of the friction's share; 24 members, portable and AVX2 kernels alike). So the hand
+// integral is compared with the mean of an ensemble of 24 such starts (its standard error
+// 0.0045 m/s), and every member must slide.
 TEST(FeRoad, SideLoadAboveMuKSlides) {
   const double h = 0.01, g = 9.81;
-  for (const auto& [v0, side] : {std::pair{2.0, 0.7}, std::pair{0.0, 1.0}}) {
-    std::vector<int> top;
-    const Mesh mesh = BlockOnRoad(h, 2, 2, 1, &top);
-    ExplicitSolver s(mesh, {testing::Tread()}, {}, SolverOptions{});
-    s.SetRoad(TestRoad());
-    const std::vector<double>& m_node = s.node_masses();
-    double mass = 0.0;
-    for (size_t a = 0; a < mesh.nodes.size(); ++a) {
-      mass += m_node[a];
-      s.applied_forces()[a] = Eigen::Vector3d(side * m_node[a] * g, 0, -m_node[a] * g);
+  const int members = 24;
+  for (const auto& [v_start, side] : {std::pair{2.0, 0.7}, std::pair{0.0, 1.0}}) {
+    double mean_v = 0.0, predicted = v_start, friction_share = 0.0;
+    for (int member = 0; member < members; ++member) {
+      const double v0 = v_start + 1e-12 * member;  // a perturbation at the rounding's scale
+      std::vector<int> top;
+      const Mesh mesh = BlockOnRoad(h, 2, 2, 1, &top);
+      ExplicitSolver s(mesh, {testing::Tread()}, {}, SolverOptions{});
+      s.SetRoad(TestRoad());
+      const std::vector<double>& m_node = s.node_masses();
+      double mass = 0.0;
+      for (size_t a = 0; a < mesh.nodes.size(); ++a) {
+        mass += m_node[a];
+        s.applied_forces()[a] = Eigen::Vector3d(side * m_node[a] * g, 0, -m_node[a] * g);
+      }
+      s.SetInitialVelocity(
+          std::vector<Eigen::Vector3d>(mesh.nodes.size(), Eigen::Vector3d(v0, 0, 0)));
+      double v_hand = v_start, share = 0.0;
+      while (s.time() < 0.1) {
+        const double mu = CalcFrictionCoefficient(PaperFriction(), v_hand);
+        v_hand += (side - mu) * g * s.time_step();
+        share += mu * g * s.time_step();
+        s.Step();
+      }
+      double momentum = 0.0;
+      for (size_t a = 0; a < mesh.nodes.size(); ++a) momentum += m_node[a] * s.velocities()[a].x();
+      const double v = momentum / mass;
+      EXPECT_GT(v, v_start + (v_start > 0.0 ? 0.0 : 0.05)) << "member " << member;
+      EXPECT_GT(s.energies().friction, 0.0);
+      mean_v += v / members;
+      predicted = v_hand;
+      friction_share = share;
     }
-    s.SetInitialVelocity(
-        std::vector<Eigen::Vector3d>(mesh.nodes.size(), Eigen::Vector3d(v0, 0, 0)));
-    double predicted = v0, friction_share = 0.0;
-    while (s.time() < 0.1) {
-      const double mu = CalcFrictionCoefficient(PaperFriction(), predicted);
-      predicted += (side - mu) * g * s.time_step();
-      friction_share += mu * g * s.time_step();
-      s.Step();
+    std::printf(
+        "v0 %.1f m/s, side %.1f m g: mean v %.5f m/s, predicted %.5f m/s (friction %.4f m/s)\n",
+        v_start, side, mean_v, predicted, friction_share);
+    if (v_start > 0.0) {
+      EXPECT_NEAR(mean_v, predicted, 0.03 * friction_share);
     }
-    double momentum = 0.0;
-    for (size_t a = 0; a < mesh.nodes.size(); ++a) momentum += m_node[a] * s.velocities()[a].x();
-    const double v = momentum / mass;
-    std::printf("v0 %.1f m/s, side %.1f m g: v %.5f m/s, predicted %.5f m/s (friction %.4f m/s)\n",
-                v0, side, v, predicted, friction_share);
-    EXPECT_GT(v, v0 + 0.05);
-    if (v0 > 0.0) {
-      EXPECT_NEAR(v, predicted, 0.03 * friction_share);
-    }
-    EXPECT_GT(s.energies().friction, 0.0);
   }
 }
 
