@@ -169,8 +169,11 @@ TEST_F(RaceCommandTest, RightSideStopsDriveTheirOwnLapsAndAreCheckedAgainstThem)
 
 TEST_F(RaceCommandTest, SpotChecksSolveTheOptimalLapFromTheFallOffsStates) {
   const fs::path json = dir() / "spots.json";
+  // Ages 1 and 2: the second solve starts from the first's lap and converges from it (59
+  // iterations against 81; from age 1 to age 5 the start is given up after 150 and the lap
+  // solved from the guess, 194 in all: the fallback has its own tests, FallbackStartTest).
   const test::RunResult r = Run(kShort +
-                                " --races 0 --no-policy --spot-checks 1,5 --spot-check-step-m 20 "
+                                " --races 0 --no-policy --spot-checks 1,2 --spot-check-step-m 20 "
                                 "--json " +
                                 json.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
