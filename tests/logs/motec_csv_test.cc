@@ -36,17 +36,6 @@ std::string Value(const Telemetry& log, const std::string& key) {
   return "<absent>";
 }
 
-// The InputError message of `f`, or "" if it did not throw one.
-template <class F>
-std::string MotecErrorOf(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(MotecCsvTest, RecognisedByItsFirstRecord) {
   EXPECT_TRUE(IsMotecCsv(kMotec));
   EXPECT_FALSE(IsMotecCsv(kEquivalent));
@@ -120,9 +109,9 @@ TEST(MotecCsvTest, LapsSplitAtTheBeacons) {
 }
 
 TEST(MotecCsvTest, LapOutOfRangeNamesTheLapsThereAre) {
-  const std::string m = MotecErrorOf([] { Telemetry::Read(kMotec, "time", {.lap = 4}); });
+  const std::string m = test::InputErrorOf([] { Telemetry::Read(kMotec, "time", {.lap = 4}); });
   EXPECT_TRUE(Contains(m, "darlington_i2.csv: lap 4: no such lap; the log has laps 1 to 3"));
-  const std::string none = MotecErrorOf([] {
+  const std::string none = test::InputErrorOf([] {
     Telemetry::Read(test::SourcePath("data/telemetry/darlington_example.csv"), "time", {.lap = 1});
   });
   EXPECT_TRUE(Contains(none, "no 'lap' column"));
@@ -133,7 +122,7 @@ TEST(MotecCsvTest, MissingChannelNamesTheMotecChannelsThatMapToIt) {
   std::string text = ReadTextFile(kMotec);
   text = ReplaceOnce(text, "\"Tyre Load FL\"", "\"Load FL\"");
   const Telemetry log = Telemetry::Read(WriteTextFile(dir.path() / "m.csv", text));
-  const std::string m = MotecErrorOf([&] { log.Channel("fz", Corner::kFrontLeft); });
+  const std::string m = test::InputErrorOf([&] { log.Channel("fz", Corner::kFrontLeft); });
   EXPECT_TRUE(Contains(m, "missing column 'fz_fl_N' or 'fz_fl_kN'"));
   EXPECT_TRUE(Contains(m, "'Tyre Load FL'"));
   EXPECT_TRUE(Contains(m, "motec_channels.yaml"));
@@ -145,7 +134,7 @@ std::string ErrorOfEdited(const std::string& from, const std::string& to) {
   test::TempDir dir;
   const fs::path file =
       WriteTextFile(dir.path() / "bad.csv", ReplaceOnce(ReadTextFile(kMotec), from, to));
-  return MotecErrorOf([&] { Telemetry::Read(file); });
+  return test::InputErrorOf([&] { Telemetry::Read(file); });
 }
 
 // An unmapped channel with text in it (a gear shown as "N") is left out and said so in the
@@ -253,14 +242,15 @@ TEST(MotecChannelMapTest, UnitConversionsAgainstHandComputedValues) {
   EXPECT_NEAR(convert(48.0, "psi", "pressure"), 330.948350072, 1e-9);  // 48 x 6.894757293
   EXPECT_NEAR(convert(2.2, "bar", "pressure"), 220.0, 1e-12);
   EXPECT_NEAR(convert(185.0, "degF", "gas_temp"), 85.0, 1e-12);
-  EXPECT_FALSE(
-      MotecErrorOf([] { MotecConversionFor("degC", "pressure", "ch 'Tyre Pres FL'"); }).empty());
+  EXPECT_FALSE(test::InputErrorOf([] {
+                 MotecConversionFor("degC", "pressure", "ch 'Tyre Pres FL'");
+               }).empty());
   // Units of kinds hotlap has no channel for are known, and refused for a channel of another kind.
   for (const char* unit : {"bar", "psi", "kPa", "g", "rpm", "rad"}) EXPECT_TRUE(IsMotecUnit(unit));
-  EXPECT_TRUE(Contains(MotecErrorOf([] { MotecConversionFor("g", "speed", "ch 'Lat G'"); }),
+  EXPECT_TRUE(Contains(test::InputErrorOf([] { MotecConversionFor("g", "speed", "ch 'Lat G'"); }),
                        "ch 'Lat G': unit 'g' is not a unit of speed (it takes 'km/h', 'mph' or "
                        "'m/s')"));
-  EXPECT_TRUE(Contains(MotecErrorOf([] { MotecConversionFor("furlong", "fx", "ch 'X'"); }),
+  EXPECT_TRUE(Contains(test::InputErrorOf([] { MotecConversionFor("furlong", "fx", "ch 'X'"); }),
                        "ch 'X': unknown unit 'furlong'"));
 }
 
@@ -281,7 +271,7 @@ TEST(MotecChannelMapTest, ShippedMapAndBadMaps) {
   test::TempDir dir;
   const auto error_of_map = [&](const std::string& text) {
     const fs::path file = WriteTextFile(dir.path() / "map.yaml", text);
-    return MotecErrorOf([&] { LoadMotecChannelMap(file); });
+    return test::InputErrorOf([&] { LoadMotecChannelMap(file); });
   };
   EXPECT_TRUE(Contains(error_of_map("channels:\n  Speed: velocity\n"),
                        "map.yaml:2: 'Speed': 'velocity' is not a hotlap channel"));
